@@ -1,0 +1,93 @@
+#include "linkage/chart.hpp"
+
+#include <algorithm>
+
+namespace sl {
+
+double chainAmplitude(int rods, double base) {
+  const double m = rods;
+  const double oneMinusCos = std::max((m - base) * (m - 2.0 + base), 0.0);  // times 2d
+  const double onePlusCos = std::max((base + 2.0 - m) * (base + m), 0.0);    // times 2d
+  return 2.0 * std::atan2(std::sqrt(oneMinusCos), std::sqrt(onePlusCos));
+}
+
+Eigen::Matrix2Xd hingePositions(const Chain& chain, const Eigen::VectorXd& coords) {
+  return hingePositionsOnSphere<double>(chain, spherePointFromCoordinates<double>(coords));
+}
+
+Eigen::Matrix2Xd hingePositionsAt(const Chain& chain, const Eigen::VectorXd& spherePoint) {
+  return hingePositionsOnSphere<double>(chain, spherePoint);
+}
+
+namespace {
+
+// The scaled sphere point v (|v| = alpha_m(d)) of an m-rod chain on base d, from its hinges in its own
+// frame: the inverse of detail::scaledChainHinges, level by level.
+Eigen::VectorXd scaledPointFromHinges(int m, double d, const Eigen::Matrix2Xd& hinges) {
+  if (m == 2) return Eigen::VectorXd::Constant(1, std::atan2(hinges(1, 0), hinges(0, 0)));  // the elbow angle
+  const Eigen::Vector2d last = hinges.col(m - 2);
+  const double theta = std::atan2(-last.y(), d - last.x());
+  const double subBase = last.norm();
+  const Eigen::Vector2d u = last / subBase;
+  Eigen::Matrix2Xd inner(2, m - 2);
+  for (int k = 0; k < m - 2; ++k)  // rotate by conj(u) into the inner chain's frame
+    inner.col(k) << u.x() * hinges(0, k) + u.y() * hinges(1, k), -u.y() * hinges(0, k) + u.x() * hinges(1, k);
+  const Eigen::VectorXd innerV = scaledPointFromHinges(m - 1, subBase, inner);
+  const double innerAlpha = innerV.norm();
+
+  // |v_rest| = sin(alpha'/2) / Q: from the inner chain's shape, not from alpha - theta.
+  const double alpha = chainAmplitude(m, d);
+  const double sincProduct = sinc(0.5 * (alpha + theta)) * sinc(0.5 * (alpha - theta));
+  const double outer = m - 1.0;
+  const double q = std::sqrt(d * sincProduct * (m - 3.0 + subBase) / (4.0 * subBase * (outer + subBase)));
+  Eigen::VectorXd v(m - 1);
+  v.head(m - 2) = innerV * (0.5 * sinc(0.5 * innerAlpha) / q);
+  v(m - 2) = theta;
+  return v;
+}
+
+}  // namespace
+
+Eigen::VectorXd spherePointFromHinges(const Chain& chain, const Eigen::Matrix2Xd& hinges) {
+  const Eigen::VectorXd v = scaledPointFromHinges(chain.rods, chain.baseLength, hinges);
+  return v.normalized();
+}
+
+Eigen::VectorXd coordinatesFromHinges(const Chain& chain, const Eigen::Matrix2Xd& hinges, double previousT) {
+  return coordinatesFromSpherePoint(spherePointFromHinges(chain, hinges), previousT);
+}
+
+namespace {
+template <class Map>
+Eigen::MatrixXd forwardJacobian(const Eigen::VectorXd& at, Map&& map, Eigen::Index outputs) {
+  using Dual = Eigen::AutoDiffScalar<Eigen::VectorXd>;
+  const Eigen::Index k = at.size();
+  VectorX<Dual> arg(k);
+  for (Eigen::Index i = 0; i < k; ++i) arg(i) = Dual(at(i), k, i);
+  const HingeMatrix<Dual> hinges = map(arg);
+  Eigen::MatrixXd jacobian(outputs, k);
+  for (Eigen::Index h = 0; h < hinges.cols(); ++h)
+    for (int c = 0; c < 2; ++c) {
+      const Eigen::VectorXd& derivative = hinges(c, h).derivatives();
+      jacobian.row(2 * h + c) = derivative.size() ? Eigen::RowVectorXd(derivative.transpose())
+                                                  : Eigen::RowVectorXd::Zero(k);
+    }
+  return jacobian;
+}
+}  // namespace
+
+Eigen::MatrixXd chartJacobian(const Chain& chain, const std::vector<int>& axes, const Eigen::VectorXd& coords) {
+  using Dual = Eigen::AutoDiffScalar<Eigen::VectorXd>;
+  return forwardJacobian(
+      coords, [&](const VectorX<Dual>& c) { return hingePositionsInChart<Dual>(chain, axes, c); },
+      2 * chain.hingeCount());
+}
+
+Eigen::MatrixXd sphereJacobian(const Chain& chain, const Eigen::VectorXd& spherePoint) {
+  using Dual = Eigen::AutoDiffScalar<Eigen::VectorXd>;
+  return forwardJacobian(
+      spherePoint, [&](const VectorX<Dual>& x) { return hingePositionsOnSphere<Dual>(chain, x); },
+      2 * chain.hingeCount());
+}
+
+}  // namespace sl
