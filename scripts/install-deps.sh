@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages sphere-linkages needs, only those that are missing.
+# Runs apt-get as root, or through sudo otherwise.
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build pkg-config          # toolchain
+  libeigen3-dev libboost-dev                            # linear algebra, AutoDiff, Boost.Odeint
+  nlohmann-json3-dev libcli11-dev                       # scene files, command line
+  libosmesa6-dev libstb-dev libdeflate-dev libssl-dev   # headless GL, fonts/images, PNG deflate, SHA-256
+  fonts-dejavu-core ffmpeg                              # the font the frames use, video encoding
+  libgtest-dev libbenchmark-dev parallel gnuplot-nox    # tests, benchmarks, sharded renders, charts
+  clang libclang-rt-14-dev                              # fuzzing (libFuzzer) and sanitizer runtimes
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+as_root=()
+[ "$(id -u)" -eq 0 ] || as_root=(sudo)
+echo "install-deps: installing ${missing[*]}"
+"${as_root[@]}" apt-get update -qq
+DEBIAN_FRONTEND=noninteractive "${as_root[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
