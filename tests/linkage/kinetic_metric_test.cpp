@@ -5,6 +5,7 @@
 
 #include "linkage/chart.hpp"
 #include "linkage/kinetic_metric.hpp"
+#include "linkage/sphere_coordinates.hpp"
 
 namespace sl {
 namespace {
@@ -100,6 +101,50 @@ TEST(KineticMetric, MassMatrixIsBlockTridiagonalAsInSectionOne) {
     T += 0.5 * chain.rodMasses(k) * simpson;
   }
   EXPECT_NEAR(kineticEnergy(mass, v), T, 1e-14);
+}
+
+}  // namespace
+}  // namespace sl
+
+namespace sl {
+namespace {
+
+TEST(KineticMetric, SecondChartCoversThePoleWithAPositiveDefiniteMetric) {
+  // Chart 1 of the atlas is regular where the spec's chart has its poles: its pullback metric exists
+  // there (AD and central differences agree) and is positive definite, exactly at the pole too.
+  Chain chain = Chain::uniform(4, 3.0);
+  const std::vector<int> axes1 = sphereChartAxes(3, 1);
+  for (double gap : {0.0, 1e-12, 1e-6, 0.1}) {
+    const Eigen::Vector3d x = Eigen::Vector3d(gap, 0.5 * gap, 1.0).normalized();  // near the north pole
+    const Eigen::VectorXd c1 = coordinatesInChart(axes1, x);
+    const Eigen::MatrixXd ad = kineticMetricPullback(chain, axes1, c1);
+    const Eigen::MatrixXd fd = kineticMetricCentralDifferences(chain, axes1, c1);
+    EXPECT_LE((fd - ad).cwiseAbs().maxCoeff() / ad.cwiseAbs().maxCoeff(), 1e-8) << "gap " << gap;
+    EXPECT_GT(ad.ldlt().vectorD().minCoeff(), 1e-3) << "gap " << gap;
+  }
+}
+
+TEST(KineticMetric, ChartsAgreeAsTensorsOnTheirOverlap) {
+  // h1 = A^T h0 A with A = d c0 / d c1: the same metric seen through two charts.
+  for (int n : {4, 5}) {
+    Chain chain = Chain::uniform(n, n - 0.8);
+    chain.rodMasses.setConstant(0.25);
+    const int dim = n - 1;
+    const std::vector<int> axes0 = sphereChartAxes(dim, 0), axes1 = sphereChartAxes(dim, 1);
+    const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(dim, 0.4, 1.1).normalized();
+    const Eigen::VectorXd c0 = coordinatesInChart(axes0, x), c1 = coordinatesInChart(axes1, x);
+    Eigen::MatrixXd A(n - 2, n - 2);
+    for (int j = 0; j < n - 2; ++j) {
+      const double h = 1e-6;
+      const Eigen::VectorXd e = h * Eigen::VectorXd::Unit(n - 2, j);
+      const Eigen::VectorXd xp = spherePointInChart<double>(axes1, Eigen::VectorXd(c1 + e));
+      const Eigen::VectorXd xm = spherePointInChart<double>(axes1, Eigen::VectorXd(c1 - e));
+      A.col(j) = (coordinatesInChart(axes0, xp, c0(n - 3)) - coordinatesInChart(axes0, xm, c0(n - 3))) / (2 * h);
+    }
+    const Eigen::MatrixXd h0 = kineticMetricPullback(chain, axes0, c0);
+    const Eigen::MatrixXd h1 = kineticMetricPullback(chain, axes1, c1);
+    EXPECT_LE((A.transpose() * h0 * A - h1).cwiseAbs().maxCoeff() / h1.cwiseAbs().maxCoeff(), 1e-8) << "n=" << n;
+  }
 }
 
 }  // namespace
