@@ -1,0 +1,314 @@
+#include "scene/scene_loader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "scene/did_you_mean.hpp"
+#include "scene/json_error_path.hpp"
+#include "scene/json_fields.hpp"
+#include "scene/scene_sections.hpp"
+
+namespace sl {
+
+using nlohmann::json;
+
+namespace {
+
+bool contains(const std::vector<std::string>& names, const std::string& name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string text;
+  for (const std::string& name : names) text += text.empty() ? name : ", " + name;
+  return text;
+}
+
+// A scene name becomes a folder name: keep it to characters that are safe everywhere.
+bool isSafeName(const std::string& name) {
+  return !name.empty() && name != "." && name != ".." &&
+         std::all_of(name.begin(), name.end(), [](char c) {
+           return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.';
+         });
+}
+
+void readLinkage(const json& value, Scene& scene, const SceneLimits& limits, std::vector<SceneProblem>& problems) {
+  const JsonObject linkage(value, "linkage", problems, {"rods", "L", "hinge_masses", "rod_masses"});
+  Chain& chain = scene.chain;
+  bool rodsKnown = false;  // L is judged against n only when n itself is valid
+  if (const auto rods = linkage.integer("rods", true)) {
+    if (*rods < 3 || *rods > limits.maxRods) {
+      linkage.report("rods", "found " + std::to_string(*rods) + "; expected an integer from 3 to " +
+                                 std::to_string(limits.maxRods) + " (fewer than 3 rods cannot move)");
+    } else {
+      chain.rods = static_cast<int>(*rods);
+      rodsKnown = true;
+    }
+  }
+  const int n = chain.rods;
+  if (const auto base = linkage.number("L", true)) {
+    if (rodsKnown && (*base <= n - 2 || *base >= n)) {
+      std::ostringstream allowed;
+      allowed << "a length strictly between n-2 = " << n - 2 << " and n = " << n
+              << " (outside it the configuration space is not a sphere)";
+      linkage.report("L", "found " + describeJson((*linkage.member("L"))) + "; expected " + allowed.str());
+    }
+    chain.baseLength = *base;
+  }
+  chain.hingeMasses = Eigen::VectorXd::Ones(n - 1);
+  chain.rodMasses = Eigen::VectorXd::Zero(n);
+  if (const auto masses = linkage.numbers("hinge_masses")) {
+    if (linkage.checkSize("hinge_masses", *masses, n - 1, "one per interior hinge, n-1")) {
+      if (masses->minCoeff() <= 0) linkage.report("hinge_masses", "expected positive masses");
+      chain.hingeMasses = *masses;
+    }
+  }
+  if (const auto masses = linkage.numbers("rod_masses")) {
+    if (linkage.checkSize("rod_masses", *masses, n, "one per rod, n")) {
+      if (masses->minCoeff() < 0) linkage.report("rod_masses", "expected non-negative masses");
+      chain.rodMasses = *masses;
+    }
+  }
+}
+
+void readDrag(const JsonObject& initial, Scene& scene, std::vector<SceneProblem>& problems) {
+  const JsonObject drag(*initial.member("drag"), initial.pathOf("drag"), problems, {"point", "direction"});
+  const long size = scene.chain.rods - 1;
+  const std::string what = "a vector of R^(n-1), n-1 = " + std::to_string(size);
+  InitialSpec& spec = scene.initial;
+  if (const auto point = drag.numbers("point", true); point && drag.checkSize("point", *point, size, what)) {
+    if (point->norm() == 0) drag.report("point", "found the zero vector; expected a non-zero vector (normalised onto the sphere)");
+    spec.dragPoint = *point;
+  }
+  if (const auto direction = drag.numbers("direction", true);
+      direction && drag.checkSize("direction", *direction, size, what)) {
+    spec.dragDirection = *direction;
+  }
+  if (spec.dragPoint.size() == size && spec.dragDirection.size() == size && spec.dragPoint.norm() > 0) {
+    const Eigen::VectorXd x = spec.dragPoint.normalized();
+    const Eigen::VectorXd tangent = spec.dragDirection - x * x.dot(spec.dragDirection);
+    if (spec.unitSpeed && tangent.norm() <= 1e-12 * std::max(1.0, spec.dragDirection.norm())) {
+      drag.report("direction", "has no component tangent to the sphere at the point; unit_speed needs a release direction");
+    }
+  }
+}
+
+void readInitial(const json& value, Scene& scene, std::vector<SceneProblem>& problems) {
+  const JsonObject initial(value, "initial", problems, {"coords", "velocity", "drag", "unit_speed"});
+  if (!initial.isObject()) return;
+  InitialSpec& spec = scene.initial;
+  spec.unitSpeed = initial.boolean("unit_speed").value_or(false);
+  const bool hasDrag = initial.has("drag");
+  const bool hasCoords = initial.has("coords") || initial.has("velocity");
+  if (hasDrag && hasCoords) {
+    initial.report("drag", "given together with coords/velocity; expected one start: either coords and velocity, or drag");
+    return;
+  }
+  if (hasDrag) {
+    spec.kind = InitialSpec::Kind::Drag;
+    readDrag(initial, scene, problems);
+    return;
+  }
+  const long size = scene.chain.rods - 2;
+  const std::string what = "chart coordinates, outermost first, n-2 = " + std::to_string(size);
+  if (const auto coords = initial.numbers("coords", true); coords && initial.checkSize("coords", *coords, size, what)) {
+    spec.coords = *coords;
+  }
+  if (const auto velocity = initial.numbers("velocity", true);
+      velocity && initial.checkSize("velocity", *velocity, size, what)) {
+    spec.velocity = *velocity;
+    if (spec.unitSpeed && velocity->norm() == 0) {
+      initial.report("velocity", "is zero; unit_speed needs a non-zero velocity to normalise");
+    }
+  }
+}
+
+void readWatchdog(const JsonObject& run, RunConfig& config, std::vector<SceneProblem>& problems) {
+  const JsonObject watchdog(*run.member("watchdog"), run.pathOf("watchdog"), problems,
+                            {"max_energy_drift", "max_rod_length_error", "max_steps"});
+  if (const auto drift = watchdog.number("max_energy_drift"); drift && watchdog.checkPositive("max_energy_drift", *drift)) {
+    config.maxRelativeEnergyDrift = *drift;
+  }
+  if (const auto error = watchdog.number("max_rod_length_error");
+      error && watchdog.checkPositive("max_rod_length_error", *error)) {
+    config.maxRodLengthError = *error;
+  }
+  if (const auto steps = watchdog.integer("max_steps"); steps && watchdog.checkPositive("max_steps", double(*steps))) {
+    config.maxSteps = *steps;
+  }
+}
+
+std::optional<ColorRGB> readColor(const JsonObject& object, const std::string& key) {
+  const auto rgb = object.numbers(key);
+  if (!rgb) return std::nullopt;
+  if (!object.checkSize(key, *rgb, 3, "red, green, blue from 0 to 1")) return std::nullopt;
+  if (rgb->minCoeff() < 0 || rgb->maxCoeff() > 1) {
+    object.report(key, "expected red, green, blue each from 0 to 1");
+    return std::nullopt;
+  }
+  return ColorRGB{float((*rgb)(0)), float((*rgb)(1)), float((*rgb)(2))};
+}
+
+RunSpec readRun(const json& value, const std::string& path, const Scene& scene, const SceneLimits& limits,
+                std::vector<SceneProblem>& problems) {
+  const JsonObject run(value, path, problems, {"name", "method", "integrator", "tolerance", "step", "color", "watchdog"});
+  RunSpec spec;
+  spec.name = run.string("name", true).value_or("");
+  if (run.has("name") && spec.name.empty()) run.report("name", "is empty; expected a name shown in the panels");
+  if (const auto method = run.string("method")) {
+    if (!contains(limits.methods, *method)) {
+      run.report("method", "found \"" + *method + "\"" + didYouMean(*method, limits.methods) + "; expected one of " +
+                               joined(limits.methods));
+    }
+    spec.config.method = *method;
+  }
+  if (const auto integrator = run.string("integrator")) {
+    if (!contains(limits.integrators, *integrator)) {
+      run.report("integrator", "found \"" + *integrator + "\"" + didYouMean(*integrator, limits.integrators) +
+                                   "; expected one of " + joined(limits.integrators));
+    }
+    spec.config.integrator = *integrator;
+  }
+  if (const auto tolerance = run.number("tolerance")) {
+    if (run.checkRange("tolerance", *tolerance, 1e-16, 1e-1, "a tolerance from 1e-16 to 0.1")) {
+      spec.config.tolerance = *tolerance;
+    }
+  }
+  if (const auto step = run.number("step"); step && run.checkPositive("step", *step)) {
+    if (*step > scene.duration) {
+      std::ostringstream message;
+      message << "found " << *step << "; expected a step no longer than the duration " << scene.duration;
+      run.report("step", message.str());
+    }
+    spec.config.step = *step;
+  }
+  spec.color = readColor(run, "color");
+  if (run.has("watchdog")) readWatchdog(run, spec.config, problems);
+  return spec;
+}
+
+void readRuns(const json* value, Scene& scene, const SceneLimits& limits, std::vector<SceneProblem>& problems) {
+  if (value == nullptr) {
+    problems.push_back({"runs", "missing; expected an array of runs, each with a name and a method"});
+    return;
+  }
+  if (!value->is_array() || value->empty()) {
+    problems.push_back({"runs", "found " + describeJson(*value) + "; expected a non-empty array of runs"});
+    return;
+  }
+  std::set<std::string> names;
+  for (size_t i = 0; i < value->size(); ++i) {
+    const std::string path = indexPath("runs", i);
+    RunSpec run = readRun((*value)[i], path, scene, limits, problems);
+    if (!run.name.empty() && !names.insert(run.name).second) {
+      problems.push_back({path + ".name", "\"" + run.name + "\" is used by an earlier run; expected unique names"});
+    }
+    scene.runs.push_back(std::move(run));
+  }
+}
+
+void readOutput(const json& value, Scene& scene, const SceneLimits& limits, std::vector<SceneProblem>& problems) {
+  const JsonObject output(value, "output", problems, {"fps", "width", "height", "folder", "png", "video"});
+  OutputSpec& spec = scene.output;
+  if (const auto fps = output.integer("fps")) {
+    if (*fps < 1 || *fps > 1000) {
+      output.report("fps", "found " + std::to_string(*fps) + "; expected an integer from 1 to 1000");
+    } else {
+      spec.fps = static_cast<int>(*fps);
+    }
+  }
+  const auto width = output.integer("width");
+  const auto height = output.integer("height");
+  spec.width = static_cast<int>(std::clamp<long>(width.value_or(spec.width), -1, 1 << 30));
+  spec.height = static_cast<int>(std::clamp<long>(height.value_or(spec.height), -1, 1 << 30));
+  spec.folder = output.string("folder").value_or("renders/" + scene.name);
+  if (spec.folder.empty()) output.report("folder", "is empty; expected a folder for the frames");
+  spec.png = output.boolean("png").value_or(true);
+  spec.video = output.string("video").value_or("");
+  for (SceneProblem& problem : checkImageSize(spec.width, spec.height, !spec.video.empty(), limits, "output")) {
+    problems.push_back(std::move(problem));
+  }
+}
+
+}  // namespace
+
+std::vector<SceneProblem> checkImageSize(int width, int height, bool forVideo, const SceneLimits& limits,
+                                         const std::string& path) {
+  std::vector<SceneProblem> problems;
+  const int minimum = 16;
+  const std::string allowed = "from " + std::to_string(minimum) + " to " + std::to_string(limits.maxImageSize) +
+                              " pixels (the renderer's largest size)";
+  for (const auto& [key, value] : {std::pair{"width", width}, std::pair{"height", height}}) {
+    const std::string where = path + "." + key;
+    if (value < minimum || value > limits.maxImageSize) {
+      problems.push_back({where, "found " + std::to_string(value) + "; expected " + allowed});
+    } else if (forVideo && value % 2 != 0) {
+      problems.push_back({where, "found " + std::to_string(value) + "; a video (yuv420p) needs an even size"});
+    }
+  }
+  return problems;
+}
+
+std::vector<SceneProblem> checkFrameCount(double duration, int fps, const SceneLimits& limits) {
+  const double frames = std::ceil(duration * fps) + 1;
+  if (frames <= static_cast<double>(limits.maxFrames)) return {};
+  std::ostringstream message;
+  message << "found " << duration << " s at " << fps << " fps = " << frames << " frames; at most " << limits.maxFrames
+          << " frames are allowed (split the animation into several scenes)";
+  return {{"duration", message.str()}};
+}
+
+Scene parseScene(const std::string& text, const std::string& file, const SceneLimits& limits) {
+  json document;
+  try {
+    document = json::parse(text);
+  } catch (const json::exception& error) {
+    // nlohmann says "parse error at line L, column C: ..." (or "number overflow parsing '1e999'"): keep
+    // that, drop its "[json.exception...]" tag, and add the JSON path where reading stopped.
+    std::string message = error.what();
+    if (const size_t tag = message.find("] "); tag != std::string::npos) message = message.substr(tag + 2);
+    if (message.find("overflow") != std::string::npos) message += " (numbers must be finite doubles)";
+    throw SceneError(file, {{jsonPathOfParseError(text), "malformed JSON: " + message}});
+  }
+
+  std::vector<SceneProblem> problems;
+  Scene scene;
+  scene.file = file;
+  const JsonObject top(document, "", problems,
+                       {"name", "title", "linkage", "initial", "duration", "runs", "output", "view"});
+  if (!top.isObject()) throw SceneError(file, problems);
+
+  scene.name = top.string("name", true).value_or("");
+  if (top.has("name") && !isSafeName(scene.name)) {
+    top.report("name", "found \"" + scene.name + "\"; expected a non-empty name of letters, digits, '-', '_' or '.' (it names the output folder)");
+  }
+  scene.title = top.string("title").value_or(scene.name);
+  if (const auto duration = top.number("duration", true); duration && top.checkPositive("duration", *duration)) {
+    scene.duration = *duration;
+  }
+  if (top.has("linkage")) readLinkage(*top.member("linkage"), scene, limits, problems);
+  else top.reportMissing("linkage", "an object with rods and L");
+  if (top.has("initial")) readInitial(*top.member("initial"), scene, problems);
+  else top.reportMissing("initial", "an object with coords and velocity, or drag");
+  readRuns(top.member("runs"), scene, limits, problems);
+  readOutput(top.has("output") ? *top.member("output") : json::object(), scene, limits, problems);
+  for (SceneProblem& problem : checkFrameCount(scene.duration, scene.output.fps, limits)) problems.push_back(problem);
+  detail::readView(top.has("view") ? *top.member("view") : json::object(), scene, problems);
+
+  if (!problems.empty()) throw SceneError(file, std::move(problems));
+  return scene;
+}
+
+Scene loadScene(const std::string& file, const SceneLimits& limits) {
+  std::ifstream stream(file, std::ios::binary);
+  if (!stream) throw SceneError(file, {{"", "cannot open the file for reading"}});
+  std::ostringstream text;
+  text << stream.rdbuf();
+  if (stream.bad()) throw SceneError(file, {{"", "cannot read the file"}});
+  return parseScene(text.str(), file, limits);
+}
+
+}  // namespace sl

@@ -1,0 +1,178 @@
+// The "view" section: panels, camera, linkage layout, trails and fades, mapped onto RenderSettings.
+
+#include <algorithm>
+
+#include "scene/did_you_mean.hpp"
+#include "scene/json_fields.hpp"
+#include "scene/scene_sections.hpp"
+
+namespace sl::detail {
+
+using nlohmann::json;
+
+namespace {
+
+const std::vector<std::string> kPanelNames = {"sphere", "linkage", "plot", "text"};
+const std::vector<std::string> kPlotNames = {"divergence", "energy"};
+const std::vector<std::string> kLayoutNames = {"single", "side-by-side", "overlay"};
+
+// Reports an unknown word with a suggestion; returns its index in names, or -1.
+int pickName(const std::string& path, const std::string& word, const std::vector<std::string>& names,
+             std::vector<SceneProblem>& problems) {
+  const auto found = std::find(names.begin(), names.end(), word);
+  if (found != names.end()) return static_cast<int>(found - names.begin());
+  std::string allowed;
+  for (const std::string& name : names) allowed += allowed.empty() ? name : ", " + name;
+  problems.push_back({path, "found \"" + word + "\"" + didYouMean(word, names) + "; expected one of " + allowed});
+  return -1;
+}
+
+PanelKind panelKind(int index) {
+  static constexpr PanelKind kinds[] = {PanelKind::Sphere, PanelKind::Linkage, PanelKind::Plot, PanelKind::Text};
+  return kinds[index];
+}
+
+// A plot with no kind given: divergence needs two runs to compare, otherwise the energy error.
+PlotSpec defaultPlot(const Scene& scene) {
+  return {scene.runs.size() >= 2 ? PlotKind::Divergence : PlotKind::EnergyError, true};
+}
+
+void addPanel(const json& value, const std::string& path, Scene& scene, std::vector<SceneProblem>& problems) {
+  PanelSpec panel;
+  PlotSpec plot = defaultPlot(scene);
+  int kind = -1;
+  if (value.is_string()) {
+    kind = pickName(path, value.get<std::string>(), kPanelNames, problems);
+  } else {
+    const JsonObject object(value, path, problems, {"panel", "plot", "scale", "rect"});
+    if (!object.isObject()) return;
+    if (const auto name = object.string("panel", true)) kind = pickName(object.pathOf("panel"), *name, kPanelNames, problems);
+    if (const auto name = object.string("plot")) {
+      const int plotKind = pickName(object.pathOf("plot"), *name, kPlotNames, problems);
+      if (plotKind >= 0) plot.kind = plotKind == 0 ? PlotKind::Divergence : PlotKind::EnergyError;
+    }
+    if (const auto scale = object.string("scale")) {
+      const int logOrLinear = pickName(object.pathOf("scale"), *scale, {"log", "linear"}, problems);
+      plot.logY = logOrLinear != 1;
+    }
+    if (const auto rect = object.numbers("rect"); rect && object.checkSize("rect", *rect, 4, "x, y, width, height as fractions")) {
+      if (rect->minCoeff() < 0 || rect->maxCoeff() > 1 || (*rect)(2) <= 0 || (*rect)(3) <= 0) {
+        object.report("rect", "expected fractions of the frame from 0 to 1, with positive width and height");
+      }
+      panel.rect = std::array<double, 4>{(*rect)(0), (*rect)(1), (*rect)(2), (*rect)(3)};
+    }
+  }
+  if (kind < 0) return;
+  panel.kind = panelKind(kind);
+  if (panel.kind == PanelKind::Plot) {
+    if (plot.kind == PlotKind::Divergence && scene.runs.size() < 2) {
+      problems.push_back({path, "a divergence plot compares runs; expected at least 2 runs, found " +
+                                    std::to_string(scene.runs.size())});
+    }
+    panel.plotIndex = static_cast<int>(scene.view.plots.size());
+    scene.view.plots.push_back(plot);
+  }
+  scene.view.render.panels.push_back(panel);
+}
+
+void readPanels(const JsonObject& view, Scene& scene, std::vector<SceneProblem>& problems) {
+  const json* panels = view.member("panels");
+  if (panels == nullptr) {
+    for (const char* name : {"sphere", "linkage"}) addPanel(json(name), "view.panels", scene, problems);
+    return;
+  }
+  if (!panels->is_array() || panels->empty()) {
+    view.report("panels", "found " + describeJson(*panels) + "; expected a non-empty array of panels");
+    return;
+  }
+  for (size_t i = 0; i < panels->size(); ++i) addPanel((*panels)[i], indexPath("view.panels", i), scene, problems);
+}
+
+void readCamera(const JsonObject& view, CameraSpec& camera, std::vector<SceneProblem>& problems) {
+  const JsonObject object(*view.member("camera"), view.pathOf("camera"), problems,
+                          {"direction", "orbit_degrees_per_second", "field_of_view"});
+  if (const auto direction = object.numbers("direction");
+      direction && object.checkSize("direction", *direction, 3, "x, y, z towards the eye")) {
+    if (direction->norm() == 0) object.report("direction", "found the zero vector; expected a direction");
+    camera.viewDirection = {(*direction)(0), (*direction)(1), (*direction)(2)};
+  }
+  if (const auto orbit = object.number("orbit_degrees_per_second")) camera.orbitDegreesPerSecond = *orbit;
+  if (const auto fov = object.number("field_of_view");
+      fov && object.checkRange("field_of_view", *fov, 1, 120, "an angle from 1 to 120 degrees")) {
+    camera.fieldOfViewDegrees = *fov;
+  }
+}
+
+void readLinkageChoice(const JsonObject& view, Scene& scene, std::vector<SceneProblem>& problems) {
+  RenderSettings& render = scene.view.render;
+  if (const auto layout = view.string("linkage_layout")) {
+    const int index = pickName(view.pathOf("linkage_layout"), *layout, kLayoutNames, problems);
+    if (index >= 0) {
+      static constexpr LinkageLayout layouts[] = {LinkageLayout::SingleRun, LinkageLayout::SideBySide,
+                                                  LinkageLayout::Overlay};
+      render.linkageLayout = layouts[index];
+    }
+  }
+  if (const auto run = view.string("linkage_run")) {
+    std::vector<std::string> names;
+    for (const RunSpec& spec : scene.runs) names.push_back(spec.name);
+    render.linkageRun = std::max(0, pickName(view.pathOf("linkage_run"), *run, names, problems));
+  }
+}
+
+void readTrails(const JsonObject& view, Scene& scene) {
+  const auto hinges = view.numbers("trails");
+  if (!hinges) return;
+  const int count = scene.chain.hingeCount();
+  for (Eigen::Index i = 0; i < hinges->size(); ++i) {
+    const double hinge = (*hinges)(i);
+    if (hinge != static_cast<int>(hinge) || hinge < 1 || hinge > count) {
+      view.report("trails", "found " + describeJson(json(hinge)) + "; expected hinge numbers from 1 to n-1 = " +
+                                std::to_string(count));
+      return;
+    }
+    scene.view.trailHinges.push_back(static_cast<int>(hinge));
+  }
+}
+
+void readFades(const JsonObject& view, Scene& scene) {
+  RenderSettings& render = scene.view.render;
+  if (const auto fade = view.number("path_fade_seconds");
+      fade && view.checkRange("path_fade_seconds", *fade, 0, 1e9, "0 (never fades) or a positive time")) {
+    render.pathFadeSeconds = *fade;
+  }
+  if (const auto fade = view.number("trail_fade_seconds"); fade && view.checkPositive("trail_fade_seconds", *fade)) {
+    render.trailFadeSeconds = *fade;
+  }
+  if (const auto samples = view.integer("path_samples_per_frame")) {
+    if (*samples < 1 || *samples > 100) {
+      view.report("path_samples_per_frame", "found " + std::to_string(*samples) + "; expected an integer from 1 to 100");
+    } else {
+      scene.view.pathSamplesPerFrame = static_cast<int>(*samples);
+    }
+  }
+}
+
+}  // namespace
+
+void readView(const json& value, Scene& scene, std::vector<SceneProblem>& problems) {
+  const JsonObject view(value, "view", problems,
+                        {"panels", "camera", "linkage_layout", "linkage_run", "trails", "trail_fade_seconds",
+                         "path_fade_seconds", "path_samples_per_frame", "background", "antialias"});
+  if (!view.isObject()) return;
+  RenderSettings& render = scene.view.render;
+  render.width = scene.output.width;
+  render.height = scene.output.height;
+  readPanels(view, scene, problems);
+  if (view.has("camera")) readCamera(view, render.camera, problems);
+  readLinkageChoice(view, scene, problems);
+  readTrails(view, scene);
+  readFades(view, scene);
+  if (const auto rgb = view.numbers("background"); rgb && view.checkSize("background", *rgb, 3, "red, green, blue")) {
+    if (rgb->minCoeff() < 0 || rgb->maxCoeff() > 1) view.report("background", "expected red, green, blue each from 0 to 1");
+    render.background = {float((*rgb)(0)), float((*rgb)(1)), float((*rgb)(2))};
+  }
+  render.antialias = view.boolean("antialias").value_or(render.antialias);
+}
+
+}  // namespace sl::detail
