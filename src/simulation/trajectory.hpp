@@ -2,6 +2,7 @@
 // A run: one geodesic method integrated from an initial state, watched for failure, sampled on demand.
 // Contract shared with frames/, cli/ and bench; simulation/ owns the implementation.
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,6 +35,7 @@ struct Sample {
   Eigen::VectorXd coords;        // chart coordinates of the spec's chart, outermost first; t unwrapped
   Eigen::VectorXd rates;         // their time derivatives (may be non-finite at a pole of the chart)
   Eigen::VectorXd spherePoint;   // x in S^(n-2), R^(n-1)
+  Eigen::VectorXd sphereVelocity;  // xdot, tangent at x (chart-free velocity: restarts a run exactly)
   Eigen::Matrix2Xd hinges;       // interior hinges p1..p(n-1)
   Eigen::Matrix2Xd hingeVelocities;
   double energy = 0;             // (1/2) g(v, v)

@@ -1,0 +1,169 @@
+#include "simulation/chart_system.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "linkage/chart.hpp"
+#include "linkage/sphere_coordinates.hpp"
+#include "simulation/exact_fields.hpp"
+#include "simulation/published_fields.hpp"
+
+namespace sl {
+
+Eigen::VectorXd sphereVelocityInChart(const std::vector<int>& axes, const Eigen::VectorXd& coords,
+                                      const Eigen::VectorXd& rates) {
+  const Eigen::VectorXd s = sphereVelocityFromCoordinateRates(coords, rates);
+  Eigen::VectorXd xdot(s.size());
+  for (Eigen::Index i = 0; i < s.size(); ++i) xdot(axes[static_cast<size_t>(i)]) = s(i);
+  return xdot;
+}
+
+Eigen::VectorXd ratesInChart(const std::vector<int>& axes, const Eigen::VectorXd& coords, const Eigen::VectorXd& xdot) {
+  Eigen::VectorXd s(xdot.size());
+  for (Eigen::Index i = 0; i < s.size(); ++i) s(i) = xdot(axes[static_cast<size_t>(i)]);
+  return coordinateRatesFromSphereVelocity(coords, s);
+}
+
+namespace {
+
+void requireSpecChain(const std::string& name, const Chain& chain) {
+  if (chain.rods != 4)
+    throw std::invalid_argument("method '" + name + "' is the spec's 4-rod method (chart (phi, t)); the chain has " +
+                                std::to_string(chain.rods) + " rods: use christoffel, embedded or ambient");
+  if ((chain.hingeMasses.array() != 1.0).any() || chain.hasRodMass())
+    throw std::invalid_argument("method '" + name +
+                                "' assumes unit hinge masses and massless rods (spec section 1): use christoffel, "
+                                "embedded or ambient for other masses");
+}
+
+template <class Field>
+ChartAcceleration published(double baseLength, Field field) {
+  return [baseLength, field](const std::vector<int>&, const Eigen::VectorXd& c, const Eigen::VectorXd& v) {
+    return Eigen::VectorXd(field(baseLength, Eigen::Vector2d(c), Eigen::Vector2d(v)));
+  };
+}
+
+}  // namespace
+
+ChartMethod chartMethod(const std::string& name, const Chain& chain) {
+  if (name == "christoffel-fd") {
+    requireSpecChain(name, chain);
+    return {published(chain.baseLength, christoffelFdAcceleration), false};
+  }
+  if (name == "embedded-fd") {
+    requireSpecChain(name, chain);
+    return {published(chain.baseLength, embeddedFdAcceleration), false};
+  }
+  if (name == "christoffel")
+    return {[chain](const std::vector<int>& axes, const Eigen::VectorXd& c, const Eigen::VectorXd& v) {
+              return christoffelAcceleration(chain, axes, c, v);
+            },
+            true};
+  if (name == "embedded")
+    return {[chain](const std::vector<int>& axes, const Eigen::VectorXd& c, const Eigen::VectorXd& v) {
+              return embeddedAcceleration(chain, axes, c, v);
+            },
+            true};
+  throw std::invalid_argument("unknown chart method '" + name + "'");
+}
+
+ChartSystem::ChartSystem(const Chain& chain, ChartMethod method, const InitialState& start)
+    : chain_(chain), method_(std::move(method)) {
+  const int ambient = chain.rods - 1;
+  switchBelow_ = 0.7 / std::sqrt(static_cast<double>(sphereChartCount(ambient)));
+  const int first = method_.usesAtlas ? bestSphereChart(start.spherePoint) : 0;
+  enterChart(first, start.spherePoint, start.sphereVelocity, start_);
+  switches_ = 0;
+}
+
+void ChartSystem::enterChart(int chart, const Eigen::VectorXd& x, const Eigen::VectorXd& xdot, State& y) {
+  chart_ = chart;
+  axes_ = sphereChartAxes(chain_.rods - 1, chart);
+  const Eigen::VectorXd c = coordinatesInChart(axes_, x);
+  const Eigen::VectorXd v = ratesInChart(axes_, c, xdot);
+  const Eigen::Index k = c.size();
+  y.resize(static_cast<size_t>(2 * k));
+  Eigen::Map<Eigen::VectorXd>(y.data(), k) = c;
+  Eigen::Map<Eigen::VectorXd>(y.data() + k, k) = v;
+  ++switches_;
+}
+
+void ChartSystem::derivative(const State& y, State& dydt) const {
+  const Eigen::Index k = static_cast<Eigen::Index>(y.size() / 2);
+  const Eigen::Map<const Eigen::VectorXd> c(y.data(), k), v(y.data() + k, k);
+  dydt.resize(y.size());
+  Eigen::Map<Eigen::VectorXd>(dydt.data(), k) = v;
+  Eigen::Map<Eigen::VectorXd>(dydt.data() + k, k) = method_.acceleration(axes_, c, v);
+}
+
+bool ChartSystem::adjust(State& y) {
+  if (!method_.usesAtlas) return false;
+  const Eigen::Index k = static_cast<Eigen::Index>(y.size() / 2);
+  const Eigen::VectorXd c = Eigen::Map<const Eigen::VectorXd>(y.data(), k);
+  const Eigen::VectorXd x = spherePointInChart<double>(axes_, c);
+  if (sphereChartRegularity(x, chart_) >= switchBelow_) return false;
+  const Eigen::VectorXd xdot = sphereVelocityInChart(axes_, c, Eigen::Map<const Eigen::VectorXd>(y.data() + k, k));
+  enterChart(bestSphereChart(x), x, xdot, y);
+  return true;
+}
+
+std::optional<MethodFailure> ChartSystem::inspect(const State& y) const {
+  if (method_.usesAtlas) return std::nullopt;
+  // Chart 0's latitudes live in [-pi/2, pi/2]; past that the chart folds back over the pole and the run
+  // would silently retrace its path (spec section 4's caveat).
+  const Eigen::Index k = static_cast<Eigen::Index>(y.size() / 2);
+  for (Eigen::Index level = 0; level + 1 < k; ++level)
+    if (std::abs(y[static_cast<size_t>(level)]) >= M_PI / 2)
+      return MethodFailure{"pole-fold-back", "single chart (phi, t) folded back over the pole: |c" +
+                                                 std::to_string(level + 1) + "| = " +
+                                                 std::to_string(std::abs(y[static_cast<size_t>(level)])) +
+                                                 " >= pi/2"};
+  return std::nullopt;
+}
+
+Observation ChartSystem::observe(const State& y) const {
+  const Eigen::Index k = static_cast<Eigen::Index>(y.size() / 2);
+  const Eigen::VectorXd c = Eigen::Map<const Eigen::VectorXd>(y.data(), k);
+  const Eigen::VectorXd v = Eigen::Map<const Eigen::VectorXd>(y.data() + k, k);
+  Observation o;
+  o.spherePoint = spherePointInChart<double>(axes_, c);
+  o.sphereVelocity = sphereVelocityInChart(axes_, c, v);
+  o.hinges = hingePositionsInChart<double>(chain_, axes_, c);
+  const Eigen::VectorXd stacked = chartJacobian(chain_, axes_, c) * v;
+  o.hingeVelocities = Eigen::Map<const Eigen::Matrix2Xd>(stacked.data(), 2, chain_.hingeCount());
+  if (chart_ == 0) {
+    o.chartZeroCoords = c;
+    o.chartZeroRates = v;
+  }
+  return o;
+}
+
+std::string ChartSystem::describe(const State& y) const {
+  std::ostringstream out;
+  out.precision(17);
+  out << "chart " << chart_ << ", coords (";
+  for (size_t i = 0; i < y.size() / 2; ++i) out << (i ? ", " : "") << y[i];
+  out << "), rates (";
+  for (size_t i = y.size() / 2; i < y.size(); ++i) out << (i > y.size() / 2 ? ", " : "") << y[i];
+  out << ")";
+  return out.str();
+}
+
+}  // namespace sl
+
+namespace sl {
+
+StepSummary ChartSystem::summarize(const State& y, double previousT) const {
+  const Eigen::Index k = static_cast<Eigen::Index>(y.size() / 2);
+  const Eigen::VectorXd c = Eigen::Map<const Eigen::VectorXd>(y.data(), k);
+  const Eigen::VectorXd v = Eigen::Map<const Eigen::VectorXd>(y.data() + k, k);
+  const Eigen::VectorXd stacked = chartJacobian(chain_, axes_, c) * v;
+  StepSummary summary;
+  summary.energy = kineticEnergy(ambientMassMatrix(chain_), Eigen::Map<const Eigen::Matrix2Xd>(stacked.data(), 2, chain_.hingeCount()));
+  summary.rodLengthError = rodLengthError(chain_, hingePositionsInChart<double>(chain_, axes_, c));
+  summary.chartZeroT = chart_ == 0 ? c(k - 1) : coordinatesFromSpherePoint(spherePointInChart<double>(axes_, c), previousT)(k - 1);
+  return summary;
+}
+
+}  // namespace sl

@@ -1,0 +1,62 @@
+#pragma once
+// The intrinsic methods as an ODE on (coords, rates) in a chart of the sphere S^(n-2).
+// With an atlas (christoffel, embedded) the system changes chart between steps when the current chart's
+// regularity falls below switchBelow, to the best chart at that point (hysteresis: the best chart's
+// regularity is always above 1/sqrt(chart count) > switchBelow), converting through x and xdot.
+// Without an atlas (the published -fd methods) it stays in chart 0 and reports the pole fold-back.
+
+#include <functional>
+#include <memory>
+
+#include "linkage/chain.hpp"
+#include "simulation/geodesic_system.hpp"
+#include "simulation/trajectory.hpp"
+
+namespace sl {
+
+// a = acceleration(axes, coords, rates) in the chart with those axes.
+using ChartAcceleration =
+    std::function<Eigen::VectorXd(const std::vector<int>&, const Eigen::VectorXd&, const Eigen::VectorXd&)>;
+
+struct ChartMethod {
+  ChartAcceleration acceleration;
+  bool usesAtlas = true;
+};
+
+// The method by name (christoffel-fd, embedded-fd, christoffel, embedded); throws std::invalid_argument for
+// unknown names and for -fd methods on chains they do not cover (4 rods, unit hinge masses, massless rods).
+ChartMethod chartMethod(const std::string& name, const Chain& chain);
+
+class ChartSystem : public GeodesicSystem {
+ public:
+  ChartSystem(const Chain& chain, ChartMethod method, const InitialState& start);
+
+  State initialState() const override { return start_; }
+  void derivative(const State& y, State& dydt) const override;
+  bool adjust(State& y) override;
+  std::optional<MethodFailure> inspect(const State& y) const override;
+  Observation observe(const State& y) const override;
+  StepSummary summarize(const State& y, double previousT) const override;
+  std::string describe(const State& y) const override;
+
+  int chart() const { return chart_; }
+  int chartSwitches() const { return switches_; }
+
+ private:
+  void enterChart(int chart, const Eigen::VectorXd& x, const Eigen::VectorXd& xdot, State& y);
+
+  Chain chain_;
+  ChartMethod method_;
+  int chart_ = 0;
+  std::vector<int> axes_;
+  double switchBelow_ = 0;
+  int switches_ = 0;
+  State start_;
+};
+
+// Sphere velocity xdot = d/dt x(c) in a chart, and the rates of a chart from (x, xdot).
+Eigen::VectorXd sphereVelocityInChart(const std::vector<int>& axes, const Eigen::VectorXd& coords,
+                                      const Eigen::VectorXd& rates);
+Eigen::VectorXd ratesInChart(const std::vector<int>& axes, const Eigen::VectorXd& coords, const Eigen::VectorXd& xdot);
+
+}  // namespace sl

@@ -1,0 +1,47 @@
+#pragma once
+// The linear algebra of the rod constraints, in O(n) (spec section 1's mass matrix M, block-tridiagonal).
+// Rod k joins p_(k-1) and p_k (p_0 = 0 and p_n = (L, 0) pinned); its constraint is
+// c_k = (|p_k - p_(k-1)|^2 - 1) / 2 with gradient row G_k. For a right-hand side r (one entry per rod),
+// solve() returns the M-orthogonal correction x = M^-1 G^T mu with (G M^-1 G^T) mu = r, so that G x = r.
+// It serves the index-1 accelerations (r = -|relative velocity|^2) and both projections.
+//   Massless rods: M is diagonal, G M^-1 G^T is tridiagonal SPD -> Thomas algorithm, no pivoting needed.
+//   Rod masses: M^-1 is dense, so the banded KKT system [M G^T; G 0] is solved instead, unknowns
+//   interleaved per hinge (bandwidth 3), by Eigen's SparseLU (pattern analysed once).
+
+#include <memory>
+
+#include <Eigen/Dense>
+
+#include "linkage/chain.hpp"
+
+namespace sl {
+
+class ConstraintSolver {
+ public:
+  explicit ConstraintSolver(const Chain& chain);
+  ~ConstraintSolver();
+  ConstraintSolver(ConstraintSolver&&) noexcept;
+
+  // hinges: 2 x (n-1); rhs: n entries; correction: 2 x (n-1). Throws std::runtime_error if the system is
+  // singular (a fully stretched chain).
+  void solve(const Eigen::Matrix2Xd& hinges, const Eigen::VectorXd& rhs, Eigen::Matrix2Xd& correction);
+
+  // Rod vectors D_k = p_k - p_(k-1), k = 1..n, pins included: 2 x n.
+  void rodVectors(const Eigen::Matrix2Xd& hinges, Eigen::Matrix2Xd& rods) const;
+  // The same differences for hinge velocities (the pins do not move).
+  static void relativeVelocities(const Eigen::Matrix2Xd& velocities, Eigen::Matrix2Xd& relative);
+
+ private:
+  void solveTridiagonal(const Eigen::VectorXd& rhs, Eigen::Matrix2Xd& correction);
+  void solveKkt(const Eigen::VectorXd& rhs, Eigen::Matrix2Xd& correction);
+
+  double baseLength_;
+  Eigen::VectorXd inverseMass_;  // w_h for p_0..p_n: 0 at the pins
+  bool diagonalMass_;
+  Eigen::Matrix2Xd rods_;
+  Eigen::VectorXd lower_, diagonal_, upper_, mu_;  // Thomas work space
+  struct Kkt;
+  std::unique_ptr<Kkt> kkt_;
+};
+
+}  // namespace sl

@@ -1,0 +1,54 @@
+#pragma once
+// What a geodesic method hands to the integrators: a first-order ODE y' = f(y) on a flat state vector,
+// plus the hooks a run needs between steps. Two kinds exist: ChartSystem (coordinates and rates in a
+// chart of the sphere) and AmbientSystem (hinge positions and velocities under rod constraints).
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+namespace sl {
+
+using State = std::vector<double>;
+
+// Where a state sits physically; the run derives energy, rod-length error and chart-0 coordinates.
+struct Observation {
+  Eigen::VectorXd spherePoint;
+  Eigen::VectorXd sphereVelocity;
+  Eigen::Matrix2Xd hinges;
+  Eigen::Matrix2Xd hingeVelocities;
+  std::optional<Eigen::VectorXd> chartZeroCoords;  // when the state already is in chart 0 (t continuous)
+  std::optional<Eigen::VectorXd> chartZeroRates;
+};
+
+// What the run watches after every step.
+struct StepSummary {
+  double energy = 0;          // (1/2) g(v, v)
+  double rodLengthError = 0;  // max_k | |p_k - p_(k-1)| - 1 |
+  double chartZeroT = 0;      // chart 0's last coordinate, unwrapped near the previous one
+};
+
+struct MethodFailure {
+  std::string reason;  // a StopInfo reason
+  std::string detail;
+};
+
+class GeodesicSystem {
+ public:
+  virtual ~GeodesicSystem() = default;
+  virtual State initialState() const = 0;
+  virtual void derivative(const State& y, State& dydt) const = 0;
+  // Between steps (never inside one): change chart or project onto the constraints. True when y changed,
+  // which restarts the integrator from y.
+  virtual bool adjust(State& y) { return false; }
+  // A failure the method itself can see in a state (the single chart folding back over a pole).
+  virtual std::optional<MethodFailure> inspect(const State& y) const { return std::nullopt; }
+  virtual Observation observe(const State& y) const = 0;
+  virtual StepSummary summarize(const State& y, double previousT) const = 0;
+  // A short description of the state for failure reports ("chart 1, coords (..)").
+  virtual std::string describe(const State& y) const = 0;
+};
+
+}  // namespace sl

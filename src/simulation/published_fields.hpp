@@ -1,0 +1,21 @@
+#pragma once
+// The two geodesic vector fields exactly as the spec publishes them, 4 rods, chart (phi, t), unit hinge
+// masses and massless rods. Fixed-size and allocation-free: they are the speed baseline.
+//   christoffel-fd (section 4): metric4 (kineticMetricPublished) and its partials by central differences,
+//                               eps = 1e-5, then the six Christoffel symbols of the 2D cheatsheet.
+//   embedded-fd    (section 5): first and second partials of q = Psi(phi, t) in R^6 by central differences,
+//                               eps = 1e-4, then the 2x2 normal-acceleration system.
+
+#include <Eigen/Dense>
+
+namespace sl {
+
+// (phiddot, tddot) from (phi, t) and (phidot, tdot).
+Eigen::Vector2d christoffelFdAcceleration(double baseLength, const Eigen::Vector2d& coords, const Eigen::Vector2d& rates);
+Eigen::Vector2d embeddedFdAcceleration(double baseLength, const Eigen::Vector2d& coords, const Eigen::Vector2d& rates);
+
+// Psi^4_L(phi, t) stacked as (p1, p2, p3) in R^6, fixed-size: the recursion of linkage/chart.hpp written
+// out for 4 rods (the spec's psi4Position with nu_in in its cancellation-free form).
+Eigen::Matrix<double, 6, 1> fourRodHinges(double baseLength, double phi, double t);
+
+}  // namespace sl

@@ -1,0 +1,115 @@
+#include "simulation/steppers.hpp"
+
+#include <stdexcept>
+
+#include <boost/numeric/odeint.hpp>
+
+namespace sl {
+
+namespace odeint = boost::numeric::odeint;
+
+namespace {
+
+// Odeint calls systems as f(x, dxdt, t); ours are autonomous.
+struct OdeintSystem {
+  const GeodesicSystem* system;
+  void operator()(const State& y, State& dydt, double) const { system->derivative(y, dydt); }
+};
+
+// Fixed-step classical RK4. The derivative at the end of a step is the first stage of the next one, so the
+// Hermite data costs nothing extra. Step k ends at start + k h exactly (no accumulated additions).
+class Rk4Hermite : public Stepper {
+ public:
+  explicit Rk4Hermite(double step) : h_(step) {}
+
+  void initialize(const GeodesicSystem& system, const State& y, double t) override {
+    origin_ = t, count_ = 0, t0_ = t1_ = t;
+    y1_ = y;
+    system.derivative(y1_, f1_);
+  }
+  void doStep(const GeodesicSystem& system) override {
+    y0_ = y1_, f0_ = f1_, t0_ = t1_;
+    rk4_.do_step(OdeintSystem{&system}, y1_, f0_, t0_, h_);
+    t1_ = origin_ + static_cast<double>(++count_) * h_;
+    system.derivative(y1_, f1_);
+  }
+  double startTime() const override { return t0_; }
+  double endTime() const override { return t1_; }
+  const State& endState() const override { return y1_; }
+  void stateAt(double t, State& y) override {
+    const double dt = t1_ - t0_;
+    if (dt == 0) {
+      y = y1_;
+      return;
+    }
+    const double s = (t - t0_) / dt, s2 = s * s, s3 = s2 * s;  // cubic Hermite basis on [0, 1]
+    const double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s, h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
+    y.resize(y1_.size());
+    for (size_t i = 0; i < y.size(); ++i) y[i] = h00 * y0_[i] + h10 * dt * f0_[i] + h01 * y1_[i] + h11 * dt * f1_[i];
+  }
+
+ private:
+  odeint::runge_kutta4<State> rk4_;
+  double h_, origin_ = 0, t0_ = 0, t1_ = 0;
+  long count_ = 0;
+  State y0_, y1_, f0_, f1_;
+};
+
+// Any Odeint dense-output stepper. The step size it last chose carries over restarts.
+template <class Dense>
+class DenseOutput : public Stepper {
+ public:
+  DenseOutput(Dense dense, double firstStep) : dense_(std::move(dense)), suggested_(firstStep) {}
+
+  void initialize(const GeodesicSystem&, const State& y, double t) override {
+    if (started_) suggested_ = dense_.current_time_step();
+    dense_.initialize(y, t, suggested_);
+    started_ = true;
+    t0_ = t1_ = t;
+  }
+  void doStep(const GeodesicSystem& system) override {
+    const auto interval = dense_.do_step(OdeintSystem{&system});
+    t0_ = interval.first, t1_ = interval.second;
+  }
+  double startTime() const override { return t0_; }
+  double endTime() const override { return t1_; }
+  const State& endState() const override { return dense_.current_state(); }
+  void stateAt(double t, State& y) override {
+    y.resize(dense_.current_state().size());
+    if (t == t1_) y = dense_.current_state();  // exact, also before the first step
+    else dense_.calc_state(t, y);
+  }
+
+ private:
+  Dense dense_;
+  double suggested_;
+  bool started_ = false;
+  double t0_ = 0, t1_ = 0;
+};
+
+template <class Dense>
+std::unique_ptr<Stepper> dense(Dense stepper, double firstStep) {
+  return std::make_unique<DenseOutput<Dense>>(std::move(stepper), firstStep);
+}
+
+}  // namespace
+
+const std::vector<std::string>& stepperNames() {
+  static const std::vector<std::string> names = {"rk4", "dopri5", "bulirsch-stoer"};
+  return names;
+}
+
+std::unique_ptr<Stepper> makeStepper(const std::string& integrator, double tolerance, double step) {
+  if (integrator == "rk4") return std::make_unique<Rk4Hermite>(step);
+  // A cautious first step; the controllers grow it within a few steps.
+  const double firstStep = 1e-3;
+  if (integrator == "dopri5")
+    return dense(odeint::make_dense_output(tolerance, tolerance, odeint::runge_kutta_dopri5<State>()), firstStep);
+  if (integrator == "bulirsch-stoer")
+    // control_interpolation: the error of the dense output itself enters the step control, so that samples
+    // between the (long) extrapolation steps are as accurate as the steps.
+    return dense(odeint::bulirsch_stoer_dense_out<State>(tolerance, tolerance, 1.0, 1.0, 0.0, true), firstStep);
+  throw std::invalid_argument("unknown integrator '" + integrator + "' (expected rk4, dopri5 or bulirsch-stoer)");
+}
+
+}  // namespace sl

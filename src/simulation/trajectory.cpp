@@ -1,0 +1,181 @@
+#include "simulation/trajectory.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "linkage/sphere_coordinates.hpp"
+#include "simulation/ambient_system.hpp"
+#include "simulation/chart_system.hpp"
+#include "simulation/initial_state.hpp"
+#include "simulation/steppers.hpp"
+
+namespace sl {
+
+namespace {
+
+// Counts vector-field evaluations of the wrapped system.
+class CountingSystem : public GeodesicSystem {
+ public:
+  explicit CountingSystem(std::unique_ptr<GeodesicSystem> inner) : inner_(std::move(inner)) {}
+  State initialState() const override { return inner_->initialState(); }
+  void derivative(const State& y, State& dydt) const override {
+    ++evaluations;
+    inner_->derivative(y, dydt);
+  }
+  bool adjust(State& y) override { return inner_->adjust(y); }
+  std::optional<MethodFailure> inspect(const State& y) const override { return inner_->inspect(y); }
+  Observation observe(const State& y) const override { return inner_->observe(y); }
+  StepSummary summarize(const State& y, double previousT) const override { return inner_->summarize(y, previousT); }
+  std::string describe(const State& y) const override { return inner_->describe(y); }
+  mutable long evaluations = 0;
+
+ private:
+  std::unique_ptr<GeodesicSystem> inner_;
+};
+
+std::unique_ptr<GeodesicSystem> makeSystem(const Chain& chain, const InitialState& start, const RunConfig& config) {
+  if (config.method == "ambient") {
+    // Project once the rods drift past a tenth of the tolerance (never below rounding level).
+    const double projectBeyond = std::max(1e-14, 0.1 * std::min(config.tolerance, config.maxRodLengthError));
+    return std::make_unique<AmbientSystem>(chain, start, projectBeyond);
+  }
+  return std::make_unique<ChartSystem>(chain, chartMethod(config.method, chain), start);
+}
+
+void validateConfig(const RunConfig& config) {
+  const std::vector<std::string> methods = methodNames(), integrators = integratorNames();
+  if (std::find(methods.begin(), methods.end(), config.method) == methods.end())
+    throw std::invalid_argument("unknown method '" + config.method +
+                                "' (expected christoffel-fd, embedded-fd, christoffel, embedded or ambient)");
+  if (std::find(integrators.begin(), integrators.end(), config.integrator) == integrators.end())
+    throw std::invalid_argument("unknown integrator '" + config.integrator + "' (expected rk4, dopri5 or bulirsch-stoer)");
+  if (!(config.tolerance > 0) || !std::isfinite(config.tolerance))
+    throw std::invalid_argument("tolerance must be positive and finite");
+  if (!(config.step > 0) || !std::isfinite(config.step)) throw std::invalid_argument("step must be positive and finite");
+  if (!(config.maxRelativeEnergyDrift > 0) || !(config.maxRodLengthError > 0))
+    throw std::invalid_argument("watchdog limits must be positive");
+  if (config.maxSteps <= 0) throw std::invalid_argument("maxSteps must be positive");
+}
+
+bool allFinite(const State& y) {
+  return std::all_of(y.begin(), y.end(), [](double v) { return std::isfinite(v); });
+}
+
+std::string formatTime(double t) {
+  std::ostringstream out;
+  out.precision(17);
+  out << t;
+  return out.str();
+}
+
+}  // namespace
+
+std::vector<std::string> methodNames() { return {"christoffel-fd", "embedded-fd", "christoffel", "embedded", "ambient"}; }
+std::vector<std::string> integratorNames() { return stepperNames(); }
+bool integratorIsAdaptive(const std::string& integrator) { return integrator != "rk4"; }
+
+struct Trajectory::Impl {
+  Chain chain;
+  RunConfig config;
+  AmbientMassMatrix mass;
+  std::unique_ptr<CountingSystem> system;
+  std::unique_ptr<Stepper> stepper;
+  State start;
+  double initialEnergy = 0;
+  double chartZeroTAtStart = 0, chartZeroTAtEnd = 0;  // of the current step, for unwrapping t
+  long steps = 0;
+  double lastSampleTime = 0;
+  std::optional<StopInfo> stop;
+
+  void halt(const std::string& reason, double time, const std::string& detail) { stop = StopInfo{reason, time, detail}; }
+
+  // One integration step with every watchdog; on failure the run stops at the step's start time.
+  void advance() {
+    const double t0 = stepper->endTime();
+    if (steps >= config.maxSteps)
+      return halt("max-steps", t0, "reached maxSteps = " + std::to_string(config.maxSteps));
+    State y = stepper->endState();
+    if (system->adjust(y)) stepper->initialize(*system, y, t0);
+    try {
+      stepper->doStep(*system);
+    } catch (const std::exception& e) {
+      return halt("step-size-collapse", t0, std::string("integrator gave up: ") + e.what());
+    }
+    ++steps;
+    const State& end = stepper->endState();
+    const double t1 = stepper->endTime();
+    if (!allFinite(end) || !std::isfinite(t1))
+      return halt("non-finite", t0, "state became non-finite in the step from t = " + formatTime(t0) + "; last good state " + system->describe(y));
+    if (!(t1 - t0 > 1e-13 * std::max(1.0, std::abs(t0))))
+      return halt("step-size-collapse", t0, "step size " + formatTime(t1 - t0) + " at t = " + formatTime(t0));
+    if (const auto failure = system->inspect(end)) return halt(failure->reason, t0, failure->detail + " at t = " + formatTime(t1));
+    const StepSummary summary = system->summarize(end, chartZeroTAtEnd);
+    const double drift = std::abs(summary.energy - initialEnergy) / initialEnergy;
+    if (!(drift <= config.maxRelativeEnergyDrift))
+      return halt("energy-blow-up", t0, "relative energy drift " + formatTime(drift) + " at t = " + formatTime(t1));
+    if (!(summary.rodLengthError <= config.maxRodLengthError))
+      return halt("rod-length", t0, "rod-length error " + formatTime(summary.rodLengthError) + " at t = " + formatTime(t1));
+    chartZeroTAtStart = chartZeroTAtEnd;
+    chartZeroTAtEnd = summary.chartZeroT;
+  }
+
+  Sample sample(double t, const State& y) const {
+    const Observation o = system->observe(y);
+    Sample s;
+    s.time = t;
+    s.spherePoint = o.spherePoint;
+    s.sphereVelocity = o.sphereVelocity;
+    s.hinges = o.hinges;
+    s.hingeVelocities = o.hingeVelocities;
+    s.coords = o.chartZeroCoords ? *o.chartZeroCoords : coordinatesFromSpherePoint(o.spherePoint, chartZeroTAtStart);
+    s.rates = o.chartZeroRates ? *o.chartZeroRates : coordinateRatesFromSphereVelocity(s.coords, o.sphereVelocity);
+    if (!s.rates.allFinite()) s.rates.setZero();  // chart 0's singular set: no rates there (never NaN)
+    s.energy = kineticEnergy(mass, s.hingeVelocities);
+    s.relativeEnergyDrift = std::abs(s.energy - initialEnergy) / initialEnergy;
+    s.rodLengthError = rodLengthError(chain, s.hinges);
+    return s;
+  }
+};
+
+Trajectory::Trajectory(const Chain& chain, const InitialState& start, const RunConfig& config)
+    : impl_(std::make_unique<Impl>()) {
+  chain.validate();
+  validateConfig(config);
+  validateInitialState(chain, start);
+  Impl& run = *impl_;
+  run.chain = chain;
+  run.config = config;
+  run.mass = ambientMassMatrix(chain);
+  run.system = std::make_unique<CountingSystem>(makeSystem(chain, start, config));
+  run.stepper = makeStepper(config.integrator, config.tolerance, config.step);
+  run.start = run.system->initialState();
+  const StepSummary summary = run.system->summarize(run.start, start.spherePoint.size() >= 2 ? std::atan2(start.spherePoint(1), start.spherePoint(0)) : 0.0);
+  run.initialEnergy = summary.energy;
+  if (!(run.initialEnergy > 0)) throw std::invalid_argument("the initial velocity is zero: nothing moves");
+  run.chartZeroTAtStart = run.chartZeroTAtEnd = summary.chartZeroT;
+  run.stepper->initialize(*run.system, run.start, 0.0);
+}
+
+Trajectory::~Trajectory() = default;
+Trajectory::Trajectory(Trajectory&&) noexcept = default;
+Trajectory& Trajectory::operator=(Trajectory&&) noexcept = default;
+
+std::optional<Sample> Trajectory::sampleAt(double t) {
+  Impl& run = *impl_;
+  if (!std::isfinite(t) || t < 0) throw std::invalid_argument("sample time must be finite and >= 0");
+  if (t < run.lastSampleTime) throw std::invalid_argument("sample times must be non-decreasing");
+  run.lastSampleTime = t;
+  while (!run.stop && t > run.stepper->endTime()) run.advance();
+  if (run.stop && t > run.stop->time) return std::nullopt;
+  State y;
+  run.stepper->stateAt(t, y);
+  return run.sample(t, y);
+}
+
+const std::optional<StopInfo>& Trajectory::stop() const { return impl_->stop; }
+long Trajectory::vectorFieldEvaluations() const { return impl_->system->evaluations; }
+long Trajectory::steps() const { return impl_->steps; }
+
+}  // namespace sl

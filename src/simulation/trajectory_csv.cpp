@@ -1,0 +1,124 @@
+#include "simulation/trajectory_csv.hpp"
+
+#include <charconv>
+#include <istream>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+
+namespace sl {
+
+namespace {
+
+void appendNumber(std::string& line, double value) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  line.append(buffer, result.ptr);
+}
+
+std::vector<std::string> splitFields(const std::string& line) {
+  std::vector<std::string> fields;
+  std::string field;
+  std::istringstream in(line);
+  while (std::getline(in, field, ',')) fields.push_back(field);
+  if (!line.empty() && line.back() == ',') fields.emplace_back();
+  return fields;
+}
+
+}  // namespace
+
+std::vector<std::string> trajectoryCsvColumns(int rods) {
+  std::vector<std::string> columns = {"run", "time"};
+  const int k = rods - 2;
+  if (rods == 4) {
+    columns.insert(columns.end(), {"phi", "t", "phidot", "tdot"});
+  } else {
+    for (int i = 1; i <= k; ++i) columns.push_back("c" + std::to_string(i));
+    for (int i = 1; i <= k; ++i) columns.push_back("v" + std::to_string(i));
+  }
+  columns.push_back("energy");
+  for (int j = 1; j < rods; ++j) {
+    columns.push_back("p" + std::to_string(j) + "x");
+    columns.push_back("p" + std::to_string(j) + "y");
+  }
+  columns.push_back("status");
+  return columns;
+}
+
+std::string trajectoryCsvHeader(int rods) {
+  std::string header;
+  for (const std::string& column : trajectoryCsvColumns(rods)) header += (header.empty() ? "" : ",") + column;
+  return header;
+}
+
+std::string trajectoryCsvRow(const std::string& run, const Sample& s, const std::string& status) {
+  std::string line = run;
+  auto add = [&line](double v) {
+    line += ',';
+    appendNumber(line, v);
+  };
+  add(s.time);
+  for (Eigen::Index i = 0; i < s.coords.size(); ++i) add(s.coords(i));
+  for (Eigen::Index i = 0; i < s.rates.size(); ++i) add(s.rates(i));
+  add(s.energy);
+  for (Eigen::Index j = 0; j < s.hinges.cols(); ++j) add(s.hinges(0, j)), add(s.hinges(1, j));
+  return line + "," + status;
+}
+
+void writeTrajectoryCsv(std::ostream& out, const std::string& run, Trajectory& trajectory,
+                        const std::vector<double>& times, bool withHeader) {
+  bool headerDone = !withHeader;
+  auto emit = [&](const Sample& s, const std::string& status) {
+    if (!headerDone) out << trajectoryCsvHeader(static_cast<int>(s.hinges.cols()) + 1) << '\n', headerDone = true;
+    out << trajectoryCsvRow(run, s, status) << '\n';
+  };
+  for (double t : times) {
+    if (const std::optional<Sample> s = trajectory.sampleAt(t)) {
+      emit(*s, "ok");
+      continue;
+    }
+    const StopInfo& stop = *trajectory.stop();
+    if (const std::optional<Sample> last = trajectory.sampleAt(stop.time)) emit(*last, stop.reason);
+    return;
+  }
+}
+
+int TrajectoryCsv::valueIndex(const std::string& column) const {
+  for (size_t i = 1; i + 1 < columns.size(); ++i)
+    if (columns[i] == column) return static_cast<int>(i) - 1;
+  return -1;
+}
+
+TrajectoryCsv readTrajectoryCsv(std::istream& in, const std::string& sourceName) {
+  TrajectoryCsv csv;
+  std::string line;
+  if (!std::getline(in, line)) throw std::runtime_error(sourceName + ": empty file, expected a trajectory CSV header");
+  csv.columns = splitFields(line);
+  if (csv.columns.size() < 4 || csv.columns.front() != "run" || csv.columns[1] != "time" || csv.columns.back() != "status")
+    throw std::runtime_error(sourceName + ":1: expected a header 'run,time,...,status', got '" + line + "'");
+  long lineNumber = 1;
+  while (std::getline(in, line)) {
+    ++lineNumber;
+    if (line.empty()) continue;
+    const std::vector<std::string> fields = splitFields(line);
+    const std::string where = sourceName + ":" + std::to_string(lineNumber);
+    if (fields.size() != csv.columns.size())
+      throw std::runtime_error(where + ": expected " + std::to_string(csv.columns.size()) + " fields, got " +
+                               std::to_string(fields.size()));
+    TrajectoryCsv::Row row;
+    row.run = fields.front();
+    row.status = fields.back();
+    for (size_t i = 1; i + 1 < fields.size(); ++i) {
+      double value = 0;
+      const std::string& f = fields[i];
+      const auto result = std::from_chars(f.data(), f.data() + f.size(), value);
+      if (result.ec != std::errc() || result.ptr != f.data() + f.size())
+        throw std::runtime_error(where + ": column '" + csv.columns[i] + "': expected a number, got '" + f + "'");
+      row.values.push_back(value);
+    }
+    csv.rows.push_back(std::move(row));
+  }
+  return csv;
+}
+
+}  // namespace sl
