@@ -1,0 +1,138 @@
+// bench_render: renders synthetic frames (two runs, all four panels, anti-aliased) and reports frames
+// per second of wall time and the split between render, readback, encode and write.
+//
+//   bench_render [--frames 600] [--size 1280x720] [--sink none|png|mp4|encode] [--out DIR]
+//                [--encoders 1] [--repeat 3] [--no-aa] [--orbit]
+// llvmpipe's thread count comes from the environment: LP_NUM_THREADS=2 bench_render ...
+// Prints one line per repeat and the median; the machine may be shared, so compare medians and ratios.
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "output/frame_manifest.hpp"
+#include "output/png_encoder.hpp"
+#include "output/png_sequence_sink.hpp"
+#include "output/video_sink.hpp"
+#include "render/renderer.hpp"
+#include "render/synthetic_frame.hpp"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+struct Options {
+  int frames = 600, width = 1280, height = 720, encoders = 1, repeat = 3;
+  std::string sink = "png", out = "/tmp/bench_render";
+  bool antialias = true, orbit = false;
+};
+
+Options parse(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto next = [&]() -> std::string {
+      if (i + 1 >= argc) {
+        std::fprintf(stderr, "%s needs a value\n", a.c_str());
+        std::exit(2);
+      }
+      return argv[++i];
+    };
+    if (a == "--frames") o.frames = std::stoi(next());
+    else if (a == "--size") std::sscanf(next().c_str(), "%dx%d", &o.width, &o.height);
+    else if (a == "--sink") o.sink = next();
+    else if (a == "--out") o.out = next();
+    else if (a == "--encoders") o.encoders = std::stoi(next());
+    else if (a == "--repeat") o.repeat = std::stoi(next());
+    else if (a == "--no-aa") o.antialias = false;
+    else if (a == "--orbit") o.orbit = true;
+    else {
+      std::fprintf(stderr, "unknown option %s (see the comment at the top of bench_render.cpp)\n", a.c_str());
+      std::exit(2);
+    }
+  }
+  return o;
+}
+
+sl::RenderSettings settingsFor(const Options& o) {
+  sl::RenderSettings s;
+  s.width = o.width;
+  s.height = o.height;
+  s.antialias = o.antialias;
+  s.pathFadeSeconds = 6;
+  s.camera.orbitDegreesPerSecond = o.orbit ? 6 : 0;
+  sl::PanelSpec text{sl::PanelKind::Text, std::array<double, 4>{0, 0, 1, 0.12}, 0};
+  sl::PanelSpec sphere{sl::PanelKind::Sphere, std::array<double, 4>{0, 0.12, 0.5, 0.88}, 0};
+  sl::PanelSpec linkage{sl::PanelKind::Linkage, std::array<double, 4>{0.5, 0.12, 0.5, 0.44}, 0};
+  sl::PanelSpec plot{sl::PanelKind::Plot, std::array<double, 4>{0.5, 0.56, 0.5, 0.44}, 0};
+  s.panels = {text, sphere, linkage, plot};
+  s.linkageLayout = sl::LinkageLayout::SideBySide;
+  return s;
+}
+
+struct Split {
+  double wall = 0, render = 0, encode = 0;
+};
+
+Split runOnce(const Options& o, sl::Renderer& renderer, const sl::SyntheticOptions& synthetic, double fps) {
+  std::filesystem::remove_all(o.out);
+  std::filesystem::create_directories(o.out);
+  sl::output::FrameManifest manifest(o.out, {{"bench", "render"}});
+  manifest.addRenderer(renderer.glRenderer(), renderer.glVersion());
+  std::unique_ptr<sl::output::FrameSink> sink;
+  if (o.sink == "png") sink = std::make_unique<sl::output::PngSequenceSink>(o.out, manifest, o.encoders);
+  if (o.sink == "mp4") {
+    sl::output::VideoSettings video{o.out + "/bench.mp4", o.width, o.height, fps};
+    sink = std::make_unique<sl::output::VideoSink>(video, manifest);
+  }
+  sl::output::PngEncoder encoder;
+  Split split;
+  const auto start = Clock::now();
+  for (int k = 0; k < o.frames; ++k) {
+    const sl::FrameState frame = sl::syntheticFrame(k / fps, k, synthetic);
+    const auto t0 = Clock::now();
+    sl::Image image = renderer.render(frame);
+    split.render += seconds(Clock::now() - t0);
+    if (o.sink == "encode") {  // encoding alone, on this thread: its cost per frame
+      const auto t1 = Clock::now();
+      encoder.encode(image);
+      split.encode += seconds(Clock::now() - t1);
+    }
+    if (sink) sink->consume(k, std::move(image));
+  }
+  if (sink) sink->finish();
+  split.wall = seconds(Clock::now() - start);
+  return split;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Options o = parse(argc, argv);
+  sl::Renderer renderer(settingsFor(o));
+  const double fps = 60;
+  sl::SyntheticOptions synthetic;
+  synthetic.duration = o.frames / fps;
+  std::printf("renderer: %s | %s; LP_NUM_THREADS=%s\n", renderer.glRenderer().c_str(), renderer.glVersion().c_str(),
+              std::getenv("LP_NUM_THREADS") ? std::getenv("LP_NUM_THREADS") : "(default)");
+  std::printf("%d frames %dx%d, sink %s, %d encoder thread(s), anti-aliasing %s\n", o.frames, o.width, o.height,
+              o.sink.c_str(), o.encoders, o.antialias ? "analytic" : "off");
+  std::vector<double> rates;
+  for (int r = 0; r < o.repeat; ++r) {
+    const Split s = runOnce(o, renderer, synthetic, fps);
+    rates.push_back(o.frames / s.wall);
+    std::printf("  run %d: %.1f frames/s wall; render+readback %.2f ms/frame", r + 1, o.frames / s.wall,
+                1e3 * s.render / o.frames);
+    if (o.sink == "encode") std::printf(", PNG encode %.2f ms/frame", 1e3 * s.encode / o.frames);
+    std::printf("\n");
+  }
+  std::sort(rates.begin(), rates.end());
+  std::printf("median: %.1f frames/s\n", rates[rates.size() / 2]);
+  return 0;
+}

@@ -1,0 +1,21 @@
+// Flat-coloured shapes with analytic anti-aliasing (see lit.frag): capsules, discs, rings, rectangles.
+in vec2 vLocal;
+flat in int vKind;
+in vec3 vParams;  // size (half width or radius), extra (capsule length, < 0 for ribbons; ring inner radius)
+in vec4 vColor;
+
+out vec4 fragColor;
+
+void main() {
+  float cover = 1.0;
+  if (vKind == 0) {
+    cover = edgeCoverage(vParams.x - capsuleDistance(vLocal, vParams.y));
+  } else if (vKind == 1) {
+    cover = edgeCoverage(vParams.x - length(vLocal));
+  } else if (vKind == 2) {
+    float d = length(vLocal);
+    cover = edgeCoverage(vParams.x - d) * edgeCoverage(d - vParams.y);
+  }
+  float alpha = vColor.a * cover;
+  fragColor = vec4(vColor.rgb * alpha, alpha);
+}

@@ -1,0 +1,51 @@
+// The configuration sphere as a ray-traced impostor on a panel-sized quad: exact silhouette coverage,
+// per-pixel normals, and the (phi, t) chart grid drawn analytically (lines of constant pixel width).
+// Mode 0: the opaque cream sphere with grid and poles. Mode 1: a faint glassy reference sphere.
+uniform vec3 uSphereColor;
+uniform vec3 uGridColor;
+uniform vec3 uPoleColor;
+uniform int uMode;
+out vec4 fragColor;
+
+const float PI = 3.14159265358979;
+const float GRID_STEP = PI / 12.0;  // 15 degrees in phi and in t
+
+// Coverage of a grid line where f = 0, from the screen gradient of f (pixels across = |f| / |grad f|).
+float gridLine(float f, vec2 gradient, float halfWidth) {
+  return edgeCoverage(halfWidth - abs(f) / max(length(gradient), 1e-6));
+}
+
+float gridCoverage(vec3 p) {
+  // Parallels phi = k * 15deg: f = z - sin(phi_k).
+  float k = round(asin(clamp(p.z, -1.0, 1.0)) / GRID_STEP);
+  float parallel = gridLine(p.z - sin(k * GRID_STEP), vec2(dFdx(p.z), dFdy(p.z)), k == 0.0 ? 0.9 : 0.55);
+  // Meridians t = j * 15deg: f = distance from the meridian's plane; faded where they crowd at the poles.
+  float j = round(atan(p.y, p.x) / GRID_STEP);
+  vec2 across = vec2(-sin(j * GRID_STEP), cos(j * GRID_STEP));
+  vec2 gradient = vec2(dot(dFdx(p.xy), across), dot(dFdy(p.xy), across));
+  float meridian = gridLine(dot(p.xy, across), gradient, j == 0.0 ? 0.9 : 0.55);
+  meridian *= 1.0 - smoothstep(0.92, 0.985, abs(p.z));
+  return max(parallel, meridian);
+}
+
+void main() {
+  vec3 ray = pixelRay(gl_FragCoord.xy);
+  float closest = -dot(ray, uEye);
+  float miss2 = dot(uEye, uEye) - closest * closest;
+  float pixel = closest / length(uForward);
+  float cover = edgeCoverage((1.0 - sqrt(max(miss2, 0.0))) / pixel);
+  if (cover <= 0.0) discard;
+  vec3 p = normalize(uEye + ray * (closest - sqrt(max(1.0 - miss2, 0.0))));
+  vec3 n = screenNormal(p);
+  if (uMode == 1) {
+    float glass = 0.07 + 0.25 * pow(1.0 - clamp(n.z, 0.0, 1.0), 2.5);
+    fragColor = vec4(uGridColor * glass * cover, glass * cover);
+    return;
+  }
+  vec3 base = mix(uSphereColor, uGridColor, 0.75 * gridCoverage(p));
+  // The chart's poles phi = +-90deg (x1 = x2 = 0), where t is undefined: small dark caps.
+  float poleDistance = length(p.xy) / max(length(vec2(length(dFdx(p.xy)), length(dFdy(p.xy)))), 1e-6);
+  float poleRadius = 0.035 / max(length(vec2(length(dFdx(p.xy)), length(dFdy(p.xy)))), 1e-6);
+  base = mix(base, uPoleColor, edgeCoverage(min(poleRadius, 7.0) - poleDistance));
+  fragColor = vec4(lit(base, n, 0.18) * cover, cover);
+}

@@ -1,0 +1,75 @@
+#pragma once
+// The manifest of a render folder: which frames are completely written, with checksums.
+//
+// API for the CLI (`linkage render --frames A:B --resume`), safe for several processes rendering
+// disjoint frame ranges into the same folder at once, any of them killed at any moment:
+//
+//   FrameManifest manifest(folder, info);      // info: a JSON object identifying the render (scene
+//                                              // hash, size, ...); throws if the folder's manifest
+//                                              // was written for a different info
+//   manifest.addRenderer(glRenderer, glVersion);
+//   if (resume && manifest.isFrameComplete(k)) skip;   // entry present, file present, file SHA-256 matches
+//   ... write frame_0000k.png atomically, then:
+//   manifest.record({k, "frame_0000k.png", pixelSha, fileSha});  // buffered; thread-safe
+//   manifest.flush();                          // also automatic every 0.5 s and in the destructor
+//
+// On disk: <folder>/manifest.json (or the given name), replaced atomically (temporary + rename) while
+// holding flock(2) on <folder>/manifest.lock, merging the entries already there, so concurrent shards
+// never lose each other's entries. Entries are listed only after their file was renamed into place.
+// Content is deterministic: frames sorted, keys sorted, no timestamps or host names; the union of shards
+// equals a single run byte for byte. After SIGKILL at most the last 0.5 s of entries are missing; their
+// frames are simply rendered again on resume. A video render records pixel hashes only (file empty).
+
+#include <chrono>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace sl::output {
+
+struct FrameEntry {
+  int frame = 0;
+  std::string file;         // name inside the folder; empty for video frames
+  std::string pixelSha256;  // of the raw RGB pixels, rows top-down
+  std::string fileSha256;   // of the file; empty for video frames
+  bool operator==(const FrameEntry&) const = default;
+};
+
+class FrameManifest {
+ public:
+  FrameManifest(std::string folder, nlohmann::json info, std::string fileName = "manifest.json");
+  ~FrameManifest();  // flushes; never throws
+  FrameManifest(const FrameManifest&) = delete;
+  FrameManifest& operator=(const FrameManifest&) = delete;
+
+  void addRenderer(const std::string& glRenderer, const std::string& glVersion);
+  void record(const FrameEntry& entry);
+  void flush();
+  void setFlushInterval(std::chrono::milliseconds interval) { flushInterval_ = interval; }
+
+  // The entry for frame k as last seen on disk or recorded here.
+  std::optional<FrameEntry> entry(int frame) const;
+  bool isFrameComplete(int frame) const;
+  // Re-reads the manifest from disk (to see other processes' entries).
+  void reload();
+
+  std::string path() const { return folder_ + "/" + fileName_; }
+
+ private:
+  nlohmann::json readLocked() const;  // the manifest on disk, or an empty one; throws if malformed
+  void flushLocked();                 // caller holds mutex_
+
+  std::string folder_, fileName_;
+  nlohmann::json info_;
+  mutable std::mutex mutex_;
+  std::map<int, FrameEntry> known_, pending_;
+  std::vector<std::string> renderers_;
+  std::chrono::steady_clock::time_point lastFlush_;
+  std::chrono::milliseconds flushInterval_{500};
+};
+
+}  // namespace sl::output

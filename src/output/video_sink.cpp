@@ -1,0 +1,112 @@
+#include "output/video_sink.hpp"
+
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fcntl.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+#include <vector>
+
+#include "output/sha256.hpp"
+
+extern char** environ;
+
+namespace sl::output {
+namespace {
+
+std::vector<std::string> ffmpegArguments(const VideoSettings& s) {
+  char rate[32];
+  std::snprintf(rate, sizeof rate, "%.6g", s.fps);
+  return {s.ffmpeg, "-hide_banner", "-loglevel", "error", "-nostdin", "-y",
+          "-f", "rawvideo", "-pix_fmt", "rgb24", "-s", std::to_string(s.width) + "x" + std::to_string(s.height),
+          "-framerate", rate, "-i", "pipe:0",
+          "-c:v", "libx264", "-preset", s.preset, "-crf", std::to_string(s.crf), "-pix_fmt", "yuv420p",
+          "-fflags", "+bitexact", "-flags:v", "+bitexact", "-movflags", "+faststart", s.path};
+}
+
+void writeAll(int fd, const std::uint8_t* data, std::size_t size) {
+  while (size > 0) {
+    const ssize_t n = ::write(fd, data, size);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw std::runtime_error(std::string("ffmpeg stopped reading frames: ") + std::strerror(errno));
+    data += n;
+    size -= static_cast<std::size_t>(n);
+  }
+}
+
+}  // namespace
+
+VideoSink::VideoSink(const VideoSettings& settings, FrameManifest& manifest) : settings_(settings), manifest_(manifest) {
+  if (settings.width % 2 || settings.height % 2)
+    throw std::invalid_argument("video size " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
+                                " must be even in both directions (H.264 yuv420p)");
+  if (!(settings.fps > 0)) throw std::invalid_argument("video frame rate must be positive");
+  ::signal(SIGPIPE, SIG_IGN);
+  int fds[2];
+  if (::pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, fds[0], 0);  // dup2 clears close-on-exec on stdin
+  std::vector<std::string> args = ffmpegArguments(settings);
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = -1;
+  const int status = posix_spawnp(&pid, settings.ffmpeg.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  ::close(fds[0]);
+  if (status != 0) {
+    ::close(fds[1]);
+    throw std::runtime_error("cannot start " + settings.ffmpeg + ": " + std::strerror(status));
+  }
+  pid_ = pid;
+  pipe_ = fds[1];
+  writer_ = std::make_unique<WorkerPool>(1, 2);
+}
+
+VideoSink::~VideoSink() {
+  try {
+    writer_.reset();
+    closeAndWait();
+  } catch (...) {
+    // Reported by finish(); a destructor must not throw.
+  }
+}
+
+void VideoSink::consume(int frameIndex, Image image) {
+  if (image.width != settings_.width || image.height != settings_.height)
+    throw std::invalid_argument("frame " + std::to_string(frameIndex) + " is " + std::to_string(image.width) + "x" +
+                                std::to_string(image.height) + ", the video " + std::to_string(settings_.width) + "x" +
+                                std::to_string(settings_.height));
+  auto shared = std::make_shared<Image>(std::move(image));
+  writer_->submit([this, frameIndex, shared] {
+    writeAll(pipe_, shared->rgb.data(), shared->rgb.size());
+    manifest_.record({frameIndex, "", sha256Hex(shared->rgb), ""});
+  });
+}
+
+void VideoSink::closeAndWait() {
+  if (pipe_ >= 0) ::close(pipe_);
+  pipe_ = -1;
+  if (pid_ < 0) return;
+  int status = 0;
+  while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+  }
+  pid_ = -1;
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw std::runtime_error("ffmpeg failed writing " + settings_.path + " (exit status " +
+                             std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")");
+}
+
+void VideoSink::finish() {
+  writer_->wait();
+  closeAndWait();
+  manifest_.flush();
+}
+
+}  // namespace sl::output

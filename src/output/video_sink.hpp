@@ -1,0 +1,45 @@
+#pragma once
+// Frames piped as raw RGB into ffmpeg (H.264, yuv420p, the scene's frame rate), spawned with
+// posix_spawnp (no shell, so no quoting issues with paths). A writer thread feeds the pipe so the
+// caller can render the next frame meanwhile. A video has no per-frame files, so its manifest
+// (<video>.manifest.json next to it) records the pixel hashes only.
+// SIGPIPE is set to ignored while a VideoSink exists, so an ffmpeg that dies turns into an error
+// message (write fails with EPIPE) instead of killing the process.
+
+#include <memory>
+#include <string>
+
+#include "output/frame_manifest.hpp"
+#include "output/frame_sink.hpp"
+#include "output/worker_pool.hpp"
+
+namespace sl::output {
+
+struct VideoSettings {
+  std::string path;  // e.g. "out/animation.mp4"
+  int width = 1280, height = 720;
+  double fps = 60;
+  int crf = 18;                       // x264 quality (lower = better)
+  std::string preset = "veryfast";    // x264 speed/size trade-off
+  std::string ffmpeg = "ffmpeg";      // program name or path
+};
+
+class VideoSink : public FrameSink {
+ public:
+  // Throws if the size is odd (yuv420p) or ffmpeg cannot be started. `manifest` must outlive the sink.
+  VideoSink(const VideoSettings& settings, FrameManifest& manifest);
+  ~VideoSink() override;  // closes the pipe and reaps ffmpeg; call finish() to see errors
+
+  void consume(int frameIndex, Image image) override;
+  void finish() override;
+
+ private:
+  void closeAndWait();
+  VideoSettings settings_;
+  FrameManifest& manifest_;
+  int pipe_ = -1;
+  int pid_ = -1;
+  std::unique_ptr<WorkerPool> writer_;
+};
+
+}  // namespace sl::output

@@ -1,0 +1,129 @@
+#include "render/font_atlas.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+
+#define STB_TRUETYPE_IMPLEMENTATION
+#define STBTT_STATIC
+#include <stb/stb_truetype.h>
+
+namespace sl::render {
+namespace {
+
+// Printable ASCII, Greek (phi, theta, ...), and a few symbols used in labels.
+std::vector<int> charset() {
+  std::vector<int> codepoints;
+  for (int c = 32; c < 127; ++c) codepoints.push_back(c);
+  for (int c = 0x391; c <= 0x3C9; ++c) codepoints.push_back(c);
+  for (int c : {0xB0, 0xB1, 0xB7, 0xD7, 0x2013, 0x2014, 0x2026, 0x2212, 0x2248, 0x2192, 0x221E, 0x2070, 0xB9, 0xB2,
+                0xB3, 0x2074, 0x2075, 0x2076, 0x2077, 0x2078, 0x2079, 0x207B, 0xFFFD})
+    codepoints.push_back(c);
+  return codepoints;
+}
+
+}  // namespace
+
+struct FontAtlas::Packed {
+  stbtt_fontinfo info;
+  std::vector<int> codepoints;
+  std::vector<stbtt_packedchar> chars[3];
+  float heights[3];
+  float ascent[3];
+  float lineHeight[3];
+};
+
+std::vector<std::uint32_t> decodeUtf8(const std::string& text) {
+  std::vector<std::uint32_t> out;
+  for (std::size_t i = 0; i < text.size();) {
+    const auto byte = static_cast<unsigned char>(text[i]);
+    const int extra = byte < 0x80 ? 0 : (byte >> 5) == 6 ? 1 : (byte >> 4) == 14 ? 2 : (byte >> 3) == 30 ? 3 : -1;
+    if (extra < 0 || i + extra >= text.size()) {
+      out.push_back(0xFFFD);
+      ++i;
+      continue;
+    }
+    std::uint32_t cp = extra == 0 ? byte : byte & (0x3F >> extra);
+    bool ok = true;
+    for (int k = 1; k <= extra; ++k) {
+      const auto next = static_cast<unsigned char>(text[i + k]);
+      ok = ok && (next & 0xC0) == 0x80;
+      cp = (cp << 6) | (next & 0x3F);
+    }
+    out.push_back(ok ? cp : 0xFFFD);
+    i += ok ? extra + 1 : 1;
+  }
+  return out;
+}
+
+FontAtlas::FontAtlas(const std::string& ttfPath, const float (&pixelHeights)[3]) : packed_(new Packed) {
+  std::ifstream in(ttfPath, std::ios::binary);
+  if (!in) {
+    delete packed_;
+    throw std::runtime_error("cannot read font " + ttfPath + " (install fonts-dejavu-core)");
+  }
+  fontData_.assign(std::istreambuf_iterator<char>(in), {});
+  if (!stbtt_InitFont(&packed_->info, fontData_.data(), stbtt_GetFontOffsetForIndex(fontData_.data(), 0))) {
+    delete packed_;
+    throw std::runtime_error("not a TrueType font: " + ttfPath);
+  }
+  packed_->codepoints = charset();
+  bitmap_.assign(static_cast<std::size_t>(atlasSize_) * atlasSize_, 0);
+  stbtt_pack_context context{};
+  stbtt_PackBegin(&context, bitmap_.data(), atlasSize_, atlasSize_, 0, 1, nullptr);
+  stbtt_PackSetOversampling(&context, 2, 2);
+  int ascent, descent, gap;
+  stbtt_GetFontVMetrics(&packed_->info, &ascent, &descent, &gap);
+  for (int s = 0; s < 3; ++s) {
+    packed_->heights[s] = pixelHeights[s];
+    packed_->chars[s].resize(packed_->codepoints.size());
+    stbtt_pack_range range{};
+    range.font_size = pixelHeights[s];
+    range.array_of_unicode_codepoints = packed_->codepoints.data();
+    range.num_chars = static_cast<int>(packed_->codepoints.size());
+    range.chardata_for_range = packed_->chars[s].data();
+    if (!stbtt_PackFontRanges(&context, fontData_.data(), 0, &range, 1)) {
+      stbtt_PackEnd(&context);
+      delete packed_;
+      throw std::runtime_error("font atlas too small for text of " + std::to_string(pixelHeights[s]) + " px");
+    }
+    const float scale = stbtt_ScaleForPixelHeight(&packed_->info, pixelHeights[s]);
+    packed_->ascent[s] = scale * ascent;
+    packed_->lineHeight[s] = scale * (ascent - descent + gap);
+  }
+  stbtt_PackEnd(&context);
+}
+
+FontAtlas::~FontAtlas() { delete packed_; }
+
+int FontAtlas::glyphIndex(std::uint32_t codepoint) const {
+  const auto& cps = packed_->codepoints;
+  auto found = std::find(cps.begin(), cps.end(), static_cast<int>(codepoint));
+  if (found == cps.end()) found = std::find(cps.begin(), cps.end(), 0xFFFD);
+  return static_cast<int>(found - cps.begin());
+}
+
+float FontAtlas::width(const std::string& utf8, TextSize size) const {
+  float x = 0, y = 0;
+  for (std::uint32_t cp : decodeUtf8(utf8)) {
+    stbtt_aligned_quad q;
+    stbtt_GetPackedQuad(packed_->chars[int(size)].data(), atlasSize_, atlasSize_, glyphIndex(cp), &x, &y, &q, 0);
+  }
+  return x;
+}
+
+float FontAtlas::ascent(TextSize size) const { return packed_->ascent[int(size)]; }
+float FontAtlas::lineHeight(TextSize size) const { return packed_->lineHeight[int(size)]; }
+
+float FontAtlas::draw(ShapeBatch& batch, const std::string& utf8, TextSize size, float x, float y, Rgba color) const {
+  y = std::round(y);  // baselines on pixel rows keep horizontal stems crisp
+  for (std::uint32_t cp : decodeUtf8(utf8)) {
+    stbtt_aligned_quad q;
+    stbtt_GetPackedQuad(packed_->chars[int(size)].data(), atlasSize_, atlasSize_, glyphIndex(cp), &x, &y, &q, 0);
+    if (q.x1 > q.x0) batch.glyph(q.x0, q.y0, q.x1, q.y1, q.s0, q.t0, q.s1, q.t1, color);
+  }
+  return x;
+}
+
+}  // namespace sl::render

@@ -1,0 +1,45 @@
+#pragma once
+// Anti-aliased text from a TrueType font (DejaVu Sans), rasterised once into a coverage atlas with
+// stb_truetype (2x2 oversampled, so glyphs placed at fractional pixels stay sharp) and drawn as
+// textured quads of a ShapeBatch. CPU only: the renderer uploads bitmap() as a texture.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "render/shape_batch.hpp"
+
+namespace sl::render {
+
+enum class TextSize { Small = 0, Normal = 1, Title = 2 };
+
+class FontAtlas {
+ public:
+  // Pixel heights for Small, Normal, Title. Throws naming the file if the font cannot be read.
+  FontAtlas(const std::string& ttfPath, const float (&pixelHeights)[3]);
+  ~FontAtlas();
+  FontAtlas(const FontAtlas&) = delete;
+  FontAtlas& operator=(const FontAtlas&) = delete;
+
+  float width(const std::string& utf8, TextSize size) const;
+  float ascent(TextSize size) const;     // pixels above the baseline
+  float lineHeight(TextSize size) const;
+  // Draws UTF-8 text with its baseline at y, starting at x; returns the x after the last glyph.
+  float draw(ShapeBatch& batch, const std::string& utf8, TextSize size, float x, float y, Rgba color) const;
+
+  int atlasSize() const { return atlasSize_; }
+  const std::vector<std::uint8_t>& bitmap() const { return bitmap_; }
+
+ private:
+  struct Packed;
+  int glyphIndex(std::uint32_t codepoint) const;
+  int atlasSize_ = 1024;
+  std::vector<std::uint8_t> bitmap_;
+  std::vector<std::uint8_t> fontData_;
+  Packed* packed_;
+};
+
+// UTF-8 to code points; malformed bytes become U+FFFD.
+std::vector<std::uint32_t> decodeUtf8(const std::string& text);
+
+}  // namespace sl::render

@@ -1,0 +1,8 @@
+#pragma once
+// The one place that includes OpenGL: core-profile prototypes straight from OSMesa (no loader).
+#ifndef GL_GLEXT_PROTOTYPES
+#define GL_GLEXT_PROTOTYPES
+#endif
+#include <GL/osmesa.h>
+#include <GL/gl.h>
+#include <GL/glext.h>

@@ -1,0 +1,118 @@
+// The linkage panel: the chain in its plane, drawn as lit 2D shapes (silver rods as cylinders, joints
+// as balls), the two pins as charcoal bolts on a floor line, and fading trails of chosen hinges.
+// The view is fixed per scene (from n and L alone), so the picture never jumps as the chain moves.
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/palette.hpp"
+#include "render/panels.hpp"
+
+namespace sl::render {
+namespace {
+
+struct Bounds {
+  double x0, x1, y0, y1;
+};
+
+// Hinge k lies within k of the left pin and within n-k of the right pin (0, 0) and (L, 0): a box
+// holding every configuration of the chain.
+Bounds chainBounds(int rods, double base) {
+  Bounds b{0, base, -0.5, 0.5};
+  for (int k = 1; k < rods; ++k) {
+    b.x0 = std::min(b.x0, std::max(-double(k), base - (rods - k)));
+    b.x1 = std::max(b.x1, std::min(double(k), base + (rods - k)));
+    const double reach = std::min(double(k), double(rods - k));
+    b.y0 = std::min(b.y0, -reach);
+    b.y1 = std::max(b.y1, reach);
+  }
+  return b;
+}
+
+// World (rod lengths, y up) to pixels, fitted into a rectangle with a margin.
+struct PlaneView {
+  double scale, originX, originY;
+  P2 operator()(double x, double y) const {
+    return {float(originX + scale * x), float(originY - scale * y)};
+  }
+  P2 operator()(const Vec2& p) const { return (*this)(p.x, p.y); }
+};
+
+PlaneView fit(const Bounds& b, const PixelRect& r) {
+  const double margin = 0.08;
+  const double scale = std::min(r.width * (1 - 2 * margin) / (b.x1 - b.x0), r.height * (1 - 2 * margin) / (b.y1 - b.y0));
+  return {scale, r.x + 0.5 * r.width - scale * 0.5 * (b.x0 + b.x1), r.y + 0.5 * r.height + scale * 0.5 * (b.y0 + b.y1)};
+}
+
+void drawFloor(const PlaneView& view, double base, float rod, ShapeBatch& batch) {
+  batch.capsule(view(0, 0), view(base, 0), std::max(1.0f, 0.25f * rod), palette::floorGrey);
+  for (double pin : {0.0, base}) {  // ground hatching under each pin
+    for (int k = -2; k <= 2; ++k) {
+      const P2 top = view(pin + 0.06 * k, -0.02);
+      batch.capsule(top, {top.x - 0.8f * rod, top.y + 1.6f * rod}, std::max(0.6f, 0.12f * rod), palette::floorGrey);
+    }
+  }
+}
+
+void drawTrails(const RunFrame& run, const PlaneView& view, float rod, ShapeBatch& batch) {
+  for (const auto& trail : run.trails) {
+    std::vector<PolylinePoint> points;
+    for (std::size_t i = 0; i < trail.size(); ++i) {
+      const float age = trail.size() > 1 ? float(i) / float(trail.size() - 1) : 1.0f;  // oldest first
+      points.push_back({view(trail[i]), std::max(0.8f, 0.22f * rod), toRgba(run.color, 0.75f * age), {}});
+    }
+    batch.polyline(points);
+  }
+}
+
+void drawChain(const RunFrame& run, const PlaneView& view, double base, float rod, ShapeBatch& batch) {
+  std::vector<P2> joints{view(0, 0)};
+  for (const Vec2& h : run.hinges) joints.push_back(view(h));
+  joints.push_back(view(base, 0));
+  for (std::size_t k = 0; k + 1 < joints.size(); ++k)
+    batch.capsule(joints[k], joints[k + 1], rod, palette::silver, true, 0.6f);
+  for (std::size_t k = 1; k + 1 < joints.size(); ++k) {
+    batch.disc(joints[k], 1.75f * rod, palette::jointSilver, true, 0.5f);
+    batch.disc(joints[k], 0.85f * rod, toRgba(run.color), true, 0.4f);
+  }
+  for (const P2& pin : {joints.front(), joints.back()}) {
+    batch.disc(pin, 2.2f * rod, palette::pinCharcoal, true, 0.3f);
+    batch.disc(pin, 0.7f * rod, palette::silver);
+  }
+}
+
+void drawRun(const PanelContext& context, const RunFrame* run, const PixelRect& area, bool label, ShapeBatch& batch) {
+  const FrameState& frame = context.frame;
+  const PlaneView view = fit(chainBounds(frame.rods, frame.baseLength), area);
+  const float rod = std::max(1.5f, float(0.045 * view.scale));  // rod half width
+  drawFloor(view, frame.baseLength, rod, batch);
+  if (!run) return;
+  drawTrails(*run, view, rod, batch);
+  drawChain(*run, view, frame.baseLength, rod, batch);
+  if (label) {
+    const float width = context.font.width(run->name, TextSize::Small);
+    context.font.draw(batch, run->name, TextSize::Small, area.x + 0.5f * (area.width - width),
+                      area.y + area.height - 0.4f * context.font.lineHeight(TextSize::Small), toRgba(run->color));
+  }
+}
+
+}  // namespace
+
+void drawLinkagePanel(const PanelContext& context, ShapeBatch& batch) {
+  const auto& runs = context.frame.runs;
+  const auto layout = context.settings.linkageLayout;
+  if (runs.empty() || layout == LinkageLayout::SingleRun) {
+    const int chosen = std::clamp(context.settings.linkageRun, 0, std::max(0, int(runs.size()) - 1));
+    drawRun(context, runs.empty() ? nullptr : &runs[chosen], context.rect, false, batch);
+  } else if (layout == LinkageLayout::Overlay) {
+    for (const RunFrame& run : runs) drawRun(context, &run, context.rect, false, batch);
+  } else {
+    const float column = context.rect.width / float(runs.size());
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+      const PixelRect area{context.rect.x + column * float(k), context.rect.y, column, context.rect.height};
+      drawRun(context, &runs[k], area, true, batch);
+    }
+  }
+}
+
+}  // namespace sl::render

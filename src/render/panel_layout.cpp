@@ -1,0 +1,51 @@
+#include "render/panel_layout.hpp"
+
+#include <cmath>
+
+namespace sl::render {
+
+std::vector<PanelSpec> effectivePanels(const RenderSettings& settings) {
+  if (!settings.panels.empty()) return settings.panels;
+  PanelSpec sphere, linkage, text;
+  sphere.kind = PanelKind::Sphere;
+  linkage.kind = PanelKind::Linkage;
+  text.kind = PanelKind::Text;
+  return {sphere, linkage, text};
+}
+
+std::vector<PixelRect> layoutPanels(const std::vector<PanelSpec>& panels, int width, int height) {
+  const float w = static_cast<float>(width), h = static_cast<float>(height);
+  std::vector<PixelRect> rects(panels.size());
+  std::vector<std::size_t> bands, others;
+  for (std::size_t i = 0; i < panels.size(); ++i) {
+    if (panels[i].rect) {
+      const auto& r = *panels[i].rect;
+      // Whole pixels: panel edges then never split a pixel between two scissor rectangles.
+      const float x0 = std::round(float(r[0]) * w), y0 = std::round(float(r[1]) * h);
+      rects[i] = {x0, y0, std::round(float(r[0] + r[2]) * w) - x0, std::round(float(r[1] + r[3]) * h) - y0};
+    } else if (panels[i].kind == PanelKind::Text) {
+      bands.push_back(i);
+    } else {
+      others.push_back(i);
+    }
+  }
+  const float bandHeight = std::round(0.14f * h);
+  float top = 0;
+  for (std::size_t i : bands) {
+    rects[i] = {0, top, w, bandHeight};
+    top += bandHeight;
+  }
+  if (others.empty()) return rects;
+  const float rest = h - top;
+  const float mainWidth = others.size() == 1 ? w : std::round(0.56f * w);
+  rects[others[0]] = {0, top, mainWidth, rest};
+  const float columnCount = static_cast<float>(others.size() - 1);
+  for (std::size_t k = 1; k < others.size(); ++k) {
+    const float y0 = std::round(top + rest * float(k - 1) / columnCount);
+    const float y1 = std::round(top + rest * float(k) / columnCount);
+    rects[others[k]] = {mainWidth, y0, w - mainWidth, y1 - y0};
+  }
+  return rects;
+}
+
+}  // namespace sl::render

@@ -1,0 +1,18 @@
+#pragma once
+// Where each panel goes. Panels with a rect keep it (fractions of the frame from the top-left);
+// the others are laid out automatically: text panels as bands across the top, the first other panel
+// as the large left area, the rest stacked in a column on the right.
+
+#include <vector>
+
+#include "render/renderer.hpp"
+#include "render/sphere_camera.hpp"
+
+namespace sl::render {
+
+// The panels to draw: settings.panels, or sphere + linkage + text when none are given.
+std::vector<PanelSpec> effectivePanels(const RenderSettings& settings);
+
+std::vector<PixelRect> layoutPanels(const std::vector<PanelSpec>& panels, int width, int height);
+
+}  // namespace sl::render

@@ -1,0 +1,37 @@
+#pragma once
+// The four panel kinds. Each turns a FrameState into shapes inside its pixel rectangle; the sphere
+// panel also returns its camera and how the sphere itself is drawn (by the impostor shader).
+
+#include <optional>
+
+#include "frames/frame_state.hpp"
+#include "render/font_atlas.hpp"
+#include "render/renderer.hpp"
+#include "render/shape_batch.hpp"
+#include "render/sphere_camera.hpp"
+
+namespace sl::render {
+
+struct PanelContext {
+  const FrameState& frame;
+  const RenderSettings& settings;
+  const FontAtlas& font;
+  PixelRect rect;
+};
+
+enum class SphereLook { Opaque = 0, Glass = 1 };
+
+struct SphereView {
+  SphereCamera camera;
+  SphereLook look;
+};
+
+void drawLinkagePanel(const PanelContext& context, ShapeBatch& batch);
+SphereView drawSpherePanel(const PanelContext& context, ShapeBatch& batch);
+void drawPlotPanel(const PanelContext& context, int plotIndex, ShapeBatch& batch);
+void drawTextPanel(const PanelContext& context, ShapeBatch& batch);
+
+// Run colour of the frame state as a shape colour.
+inline Rgba toRgba(const ColorRGB& c, float alpha = 1) { return {c.r, c.g, c.b, alpha}; }
+
+}  // namespace sl::render

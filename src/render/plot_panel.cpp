@@ -1,0 +1,160 @@
+// The plot panel: time series on linear or log axes with labelled ticks. On a log axis values that are
+// non-finite or not positive are skipped (the line breaks there); on a linear axis non-finite ones.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "render/palette.hpp"
+#include "render/panels.hpp"
+
+namespace sl::render {
+namespace {
+
+struct Axis {
+  double lo, hi;
+  bool log;
+  std::vector<double> ticks;  // in data units
+};
+
+bool drawable(double v, bool log) { return std::isfinite(v) && (!log || v > 0); }
+
+// 1, 2 or 5 times a power of ten, about `count` steps over the span.
+double niceStep(double span, int count) {
+  const double raw = span / count;
+  const double power = std::pow(10.0, std::floor(std::log10(raw)));
+  for (double m : {1.0, 2.0, 5.0})
+    if (m * power >= raw) return m * power;
+  return 10 * power;
+}
+
+Axis linearAxis(double lo, double hi, int count) {
+  if (!(hi > lo)) {
+    const double pad = std::max(std::abs(lo) * 0.1, 1.0);
+    lo -= pad;
+    hi += pad;
+  }
+  const double step = niceStep(hi - lo, count);
+  Axis axis{std::floor(lo / step) * step, std::ceil(hi / step) * step, false, {}};
+  for (double t = axis.lo; t <= axis.hi + 1e-9 * step; t += step) axis.ticks.push_back(std::abs(t) < 1e-12 * step ? 0 : t);
+  return axis;
+}
+
+Axis logAxis(double lo, double hi) {
+  double a = std::floor(std::log10(lo)), b = std::ceil(std::log10(hi));
+  if (b <= a) b = a + 1;
+  Axis axis{std::pow(10.0, a), std::pow(10.0, b), true, {}};
+  const int stride = std::max(1, int(std::ceil((b - a) / 6)));
+  for (double e = a; e <= b; e += stride) axis.ticks.push_back(std::pow(10.0, e));
+  return axis;
+}
+
+double unit(const Axis& axis, double v) {
+  return axis.log ? (std::log10(v) - std::log10(axis.lo)) / (std::log10(axis.hi) - std::log10(axis.lo))
+                  : (v - axis.lo) / (axis.hi - axis.lo);
+}
+
+std::string superscript(int exponent) {
+  static const char* digits[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+  std::string text = exponent < 0 ? "⁻" : "";
+  for (char c : std::to_string(std::abs(exponent))) text += digits[c - '0'];
+  return text;
+}
+
+std::string tickLabel(const Axis& axis, double v) {
+  if (axis.log) return "10" + superscript(int(std::lround(std::log10(v))));
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
+Axis valueAxis(const PlotFrame& plot) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const auto& series : plot.series)
+    for (double v : series.values)
+      if (drawable(v, plot.logY)) lo = std::min(lo, v), hi = std::max(hi, v);
+  if (!(lo <= hi)) return plot.logY ? logAxis(1e-16, 1) : linearAxis(0, 1, 4);
+  return plot.logY ? logAxis(lo, hi) : linearAxis(lo, hi, 4);
+}
+
+struct PlotArea {
+  float x0, y0, x1, y1;  // pixels
+  P2 at(double u, double v) const {
+    return {float(x0 + u * (x1 - x0)), float(y1 - std::clamp(v, -0.02, 1.02) * (y1 - y0))};
+  }
+};
+
+void drawAxes(const PanelContext& c, const PlotArea& area, const Axis& x, const Axis& y, ShapeBatch& batch) {
+  const float small = c.font.ascent(TextSize::Small);
+  for (double v : y.ticks) {
+    const P2 left = area.at(0, unit(y, v)), right = area.at(1, unit(y, v));
+    batch.capsule(left, right, 0.5f, palette::gridLight);
+    const std::string label = tickLabel(y, v);
+    c.font.draw(batch, label, TextSize::Small, left.x - 6 - c.font.width(label, TextSize::Small),
+                left.y + 0.45f * small, palette::softInk);
+  }
+  for (double t : x.ticks) {
+    const P2 bottom = area.at(unit(x, t), 0), top = area.at(unit(x, t), 1);
+    batch.capsule(bottom, top, 0.5f, palette::gridLight);
+    const std::string label = tickLabel(x, t);
+    c.font.draw(batch, label, TextSize::Small, bottom.x - 0.5f * c.font.width(label, TextSize::Small),
+                bottom.y + 6 + small, palette::softInk);
+  }
+  const P2 corner = area.at(0, 0);
+  batch.capsule(corner, area.at(1, 0), 0.7f, palette::softInk);
+  batch.capsule(corner, area.at(0, 1), 0.7f, palette::softInk);
+}
+
+void drawSeries(const PlotSeries& series, const Axis& x, const Axis& y, const PlotArea& area, ShapeBatch& batch) {
+  std::vector<PolylinePoint> points;
+  const std::size_t count = std::min(series.times.size(), series.values.size());
+  for (std::size_t i = 0; i < count; ++i) {
+    const double t = series.times[i], v = series.values[i];
+    if (!drawable(v, y.log) || !std::isfinite(t) || t < x.lo || t > x.hi) {
+      batch.polyline(points);
+      points.clear();
+      continue;
+    }
+    points.push_back({area.at(unit(x, t), unit(y, v)), 1.1f, toRgba(series.color), {}});
+  }
+  if (points.size() == 1) batch.disc(points[0].at, 1.6f, points[0].color);
+  batch.polyline(points);
+}
+
+void drawLegend(const PanelContext& c, const PlotFrame& plot, const PlotArea& area, ShapeBatch& batch) {
+  float y = area.y0 + c.font.lineHeight(TextSize::Small);
+  for (const auto& series : plot.series) {
+    const float width = c.font.width(series.label, TextSize::Small);
+    const float x = area.x1 - width - 8;
+    batch.capsule({x - 22, y - 0.35f * c.font.ascent(TextSize::Small)}, {x - 6, y - 0.35f * c.font.ascent(TextSize::Small)},
+                  1.3f, toRgba(series.color));
+    c.font.draw(batch, series.label, TextSize::Small, x, y, palette::ink);
+    y += c.font.lineHeight(TextSize::Small);
+  }
+}
+
+}  // namespace
+
+void drawPlotPanel(const PanelContext& c, int plotIndex, ShapeBatch& batch) {
+  const auto& plots = c.frame.plots;
+  PlotFrame empty;
+  empty.title = "(no plot data)";
+  const PlotFrame& plot = plotIndex >= 0 && plotIndex < int(plots.size()) ? plots[plotIndex] : empty;
+  const float line = c.font.lineHeight(TextSize::Small);
+  const Axis y = valueAxis(plot);
+  const Axis x = linearAxis(plot.timeMin, plot.timeMax > plot.timeMin ? plot.timeMax : plot.timeMin + 1, 5);
+  float labelWidth = 0;
+  for (double v : y.ticks) labelWidth = std::max(labelWidth, c.font.width(tickLabel(y, v), TextSize::Small));
+  const PlotArea area{c.rect.x + labelWidth + 14, c.rect.y + 1.9f * line, c.rect.x + c.rect.width - 16,
+                      c.rect.y + c.rect.height - 2.4f * line};
+  if (area.x1 - area.x0 < 10 || area.y1 - area.y0 < 10) return;  // too small to draw anything useful
+  c.font.draw(batch, plot.title, TextSize::Normal, area.x0, c.rect.y + 1.3f * line, palette::ink);
+  c.font.draw(batch, "t", TextSize::Small, area.x1 - c.font.width("t", TextSize::Small),
+              c.rect.y + c.rect.height - 0.35f * line, palette::softInk);
+  drawAxes(c, area, x, y, batch);
+  for (const auto& series : plot.series) drawSeries(series, x, y, area, batch);
+  drawLegend(c, plot, area, batch);
+}
+
+}  // namespace sl::render

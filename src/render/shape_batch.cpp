@@ -1,0 +1,125 @@
+#include "render/shape_batch.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sl::render {
+namespace {
+
+constexpr float kMargin = 1.0f;  // pixels of quad beyond the shape, room for the anti-aliased edge
+
+P2 operator+(P2 a, P2 b) { return {a.x + b.x, a.y + b.y}; }
+P2 operator-(P2 a, P2 b) { return {a.x - b.x, a.y - b.y}; }
+P2 operator*(float s, P2 a) { return {s * a.x, s * a.y}; }
+float length(P2 a) { return std::sqrt(a.x * a.x + a.y * a.y); }
+P2 normal(P2 from, P2 to) {
+  const P2 d = to - from;
+  const float len = length(d);
+  return len > 1e-6f ? P2{-d.y / len, d.x / len} : P2{0, 1};
+}
+
+ShapeVertex vertex(P2 at, P2 local, ShapeKind kind, float size, float extra, Rgba color, bool shaded,
+                   float specular, P2 axis, Occludable world) {
+  return {at.x,    at.y,    local.x, local.y, static_cast<float>(kind), size,    extra,   specular,
+          color.r, color.g, color.b, color.a, axis.x,  axis.y,  world.x, world.y, world.z, world.w,
+          shaded ? 1.0f : 0.0f};
+}
+
+}  // namespace
+
+void ShapeBatch::quad(const ShapeVertex corners[4]) {
+  const ShapeVertex& v = corners[0];
+  const ShapeProgram program = v.kind == float(ShapeKind::Glyph)       ? ShapeProgram::Glyph
+                               : (v.shaded > 0.5f || v.ww > 0.5f) ? ShapeProgram::Lit
+                                                                      : ShapeProgram::Flat;
+  if (segments_.empty() || segments_.back().program != program) segments_.push_back({program, vertices_.size(), 0});
+  segments_.back().count += 6;
+  for (int i : {0, 1, 2, 0, 2, 3}) vertices_.push_back(corners[i]);
+}
+
+void ShapeBatch::capsule(P2 a, P2 b, float halfWidth, Rgba color, bool shaded, float specular, Occludable world) {
+  const float len = length(b - a);
+  const P2 n = normal(a, b);
+  const P2 d{n.y, -n.x};
+  const float e = halfWidth + kMargin;
+  auto make = [&](P2 at, float s, float u) {
+    return vertex(at, {s, u}, ShapeKind::Capsule, halfWidth, len, color, shaded, specular, n, world);
+  };
+  const ShapeVertex corners[4] = {make(a - e * d - e * n, -e, -e), make(b + e * d - e * n, len + e, -e),
+                                  make(b + e * d + e * n, len + e, e), make(a - e * d + e * n, -e, e)};
+  quad(corners);
+}
+
+void ShapeBatch::disc(P2 c, float radius, Rgba color, bool shaded, float specular, Occludable world) {
+  const float e = radius + kMargin;
+  auto make = [&](float dx, float dy) {
+    return vertex(c + P2{dx, dy}, {dx, dy}, ShapeKind::Disc, radius, 0, color, shaded, specular, {0, 1}, world);
+  };
+  const ShapeVertex corners[4] = {make(-e, -e), make(e, -e), make(e, e), make(-e, e)};
+  quad(corners);
+}
+
+void ShapeBatch::ring(P2 c, float outerRadius, float innerRadius, Rgba color) {
+  const float e = outerRadius + kMargin;
+  auto make = [&](float dx, float dy) {
+    return vertex(c + P2{dx, dy}, {dx, dy}, ShapeKind::Ring, outerRadius, innerRadius, color, false, 0, {0, 1}, {});
+  };
+  const ShapeVertex corners[4] = {make(-e, -e), make(e, -e), make(e, e), make(-e, e)};
+  quad(corners);
+}
+
+void ShapeBatch::polyline(const std::vector<PolylinePoint>& input, bool shaded, float specular) {
+  // Points closer than half a pixel add vertices but nothing visible; keep the last one regardless.
+  std::vector<PolylinePoint> points;
+  points.reserve(input.size());
+  for (std::size_t i = 0; i < input.size(); ++i) {
+    const bool last = i + 1 == input.size();
+    if (points.empty() || length(input[i].at - points.back().at) > 0.5f) {
+      points.push_back(input[i]);
+    } else if (last) {
+      points.back() = input[i];
+    }
+  }
+  if (points.size() < 2) return;
+  const std::size_t count = points.size();
+  std::vector<P2> miter(count);
+  std::vector<float> miterScale(count, 1.0f);
+  for (std::size_t i = 0; i < count; ++i) {
+    const P2 before = i > 0 ? normal(points[i - 1].at, points[i].at) : normal(points[i].at, points[i + 1].at);
+    const P2 after = i + 1 < count ? normal(points[i].at, points[i + 1].at) : before;
+    P2 m = before + after;
+    const float len = length(m);
+    m = len > 1e-3f ? (1.0f / len) * m : before;
+    miter[i] = m;
+    miterScale[i] = 1.0f / std::max(m.x * before.x + m.y * before.y, 0.5f);  // sharp turns: bounded mitre
+  }
+  auto make = [&](std::size_t i, float side) {
+    const PolylinePoint& p = points[i];
+    const float e = p.halfWidth + kMargin;
+    return vertex(p.at + (side * e * miterScale[i]) * miter[i], {0, side * e}, ShapeKind::Capsule, p.halfWidth, -1,
+                  p.color, shaded, specular, miter[i], p.world);
+  };
+  for (std::size_t i = 0; i + 1 < count; ++i) {
+    const ShapeVertex corners[4] = {make(i, -1), make(i + 1, -1), make(i + 1, 1), make(i, 1)};
+    quad(corners);
+  }
+}
+
+void ShapeBatch::rect(float x0, float y0, float x1, float y1, Rgba color) {
+  auto make = [&](float x, float y) {
+    return vertex({x, y}, {0, 0}, ShapeKind::Rect, 0, 0, color, false, 0, {0, 1}, {});
+  };
+  const ShapeVertex corners[4] = {make(x0, y0), make(x1, y0), make(x1, y1), make(x0, y1)};
+  quad(corners);
+}
+
+void ShapeBatch::glyph(float x0, float y0, float x1, float y1, float u0, float v0, float u1, float v1, Rgba color) {
+  auto make = [&](float x, float y, float u, float v) {
+    return vertex({x, y}, {u, v}, ShapeKind::Glyph, 0, 0, color, false, 0, {0, 1}, {});
+  };
+  const ShapeVertex corners[4] = {make(x0, y0, u0, v0), make(x1, y0, u1, v0), make(x1, y1, u1, v1),
+                                  make(x0, y1, u0, v1)};
+  quad(corners);
+}
+
+}  // namespace sl::render

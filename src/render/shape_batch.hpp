@@ -1,0 +1,80 @@
+#pragma once
+// Anti-aliased 2D shapes in pixel coordinates (y down), collected on the CPU and drawn in one call.
+// Every shape carries its own analytic coverage (the fragment shader knows the distance to its edge in
+// pixels), so the frame needs no multisampling: see shaders/shapes.frag.
+
+#include <cstddef>
+#include <vector>
+
+namespace sl::render {
+
+struct P2 {
+  float x = 0, y = 0;
+};
+struct Rgba {
+  float r = 0, g = 0, b = 0, a = 1;
+};
+
+// A 3D point that may be hidden by the unit sphere of the sphere panel (w = 1), or none (w = 0).
+struct Occludable {
+  float x = 0, y = 0, z = 0, w = 0;
+};
+
+// Shape kinds, mirrored in shaders/shapes.frag.
+enum class ShapeKind { Capsule = 0, Disc = 1, Ring = 2, Glyph = 3, Rect = 4 };
+
+struct ShapeVertex {
+  float x, y;            // pixel position
+  float localX, localY;  // shape-local coordinates (pixels; texture coordinates for glyphs)
+  float kind, size, extra, specular;  // size: half width / radius; extra: capsule length / inner radius
+  float r, g, b, a;
+  float axisX, axisY;    // screen direction across a tube (for its shading)
+  float wx, wy, wz, ww;  // Occludable
+  float shaded;          // 1 = lit as a tube or ball, 0 = flat colour
+};
+
+struct PolylinePoint {
+  P2 at;
+  float halfWidth = 1;
+  Rgba color;
+  Occludable world;
+};
+
+// Which fragment shader draws a shape: flat colour (cheap), font atlas, or lit and occludable. On
+// llvmpipe a fragment costs the whole shader, so cheap shapes never run the lighting code.
+enum class ShapeProgram { Flat = 0, Glyph = 1, Lit = 2 };
+
+// Consecutive vertices drawn by one program; segments are drawn in order (painter's algorithm).
+struct ShapeSegment {
+  ShapeProgram program;
+  std::size_t first, count;
+};
+
+class ShapeBatch {
+ public:
+  // A segment with round ends; `shaded` lights it as a cylinder.
+  void capsule(P2 a, P2 b, float halfWidth, Rgba color, bool shaded = false, float specular = 0,
+               Occludable world = {});
+  // A disc; `shaded` lights it as a ball.
+  void disc(P2 centre, float radius, Rgba color, bool shaded = false, float specular = 0, Occludable world = {});
+  void ring(P2 centre, float outerRadius, float innerRadius, Rgba color);
+  // Joined strip through the points (mitred), width and colour interpolated; no double blending at
+  // joints, so translucent fading paths stay smooth.
+  void polyline(const std::vector<PolylinePoint>& points, bool shaded = false, float specular = 0);
+  void rect(float x0, float y0, float x1, float y1, Rgba color);
+  void glyph(float x0, float y0, float x1, float y1, float u0, float v0, float u1, float v1, Rgba color);
+
+  const std::vector<ShapeVertex>& vertices() const { return vertices_; }
+  const std::vector<ShapeSegment>& segments() const { return segments_; }
+  void clear() {
+    vertices_.clear();
+    segments_.clear();
+  }
+
+ private:
+  void quad(const ShapeVertex corners[4]);
+  std::vector<ShapeVertex> vertices_;
+  std::vector<ShapeSegment> segments_;
+};
+
+}  // namespace sl::render

@@ -1,0 +1,42 @@
+#pragma once
+// The camera of the sphere panel: a perspective view of the unit sphere from
+// CameraSpec::viewDirection, orbiting about the vertical (z) axis. Projection happens on the CPU (the
+// shapes are drawn in pixels); the shaders get the same basis to cast per-pixel rays, so both agree.
+
+#include "render/renderer.hpp"
+#include "render/shape_batch.hpp"
+
+namespace sl::render {
+
+struct PixelRect {
+  float x = 0, y = 0, width = 0, height = 0;  // pixels, y down
+};
+
+struct V3 {
+  double x = 0, y = 0, z = 0;
+};
+
+class SphereCamera {
+ public:
+  // The camera frames a sphere of radius `fitRadius` about the origin in `panel`.
+  SphereCamera(const CameraSpec& spec, double time, const PixelRect& panel, double fitRadius = 1.0);
+
+  P2 project(const V3& p) const;                    // pixel position
+  double pixelsPerUnitAt(const V3& p) const;        // scale of a small object at p
+  bool inFront(const V3& p) const;                  // in front of the eye plane
+  V3 eye() const { return eye_; }
+
+  // Shader uniforms: eye, forward * focal, right, up (world), panel centre (pixels).
+  const V3& forward() const { return forward_; }
+  const V3& right() const { return right_; }
+  const V3& up() const { return up_; }
+  double focal() const { return focal_; }
+  P2 centre() const { return centre_; }
+
+ private:
+  V3 eye_, forward_, right_, up_;
+  double focal_ = 1;
+  P2 centre_;
+};
+
+}  // namespace sl::render

@@ -1,0 +1,93 @@
+// The sphere panel: configuration-space paths of every run on (or, for 5+ rods, inside) the sphere.
+// The sphere itself is drawn by shaders/sphere.frag; here the paths become shaded tubes that fade with
+// age, lifted just above the surface and hidden per pixel where the sphere is in front of them.
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/palette.hpp"
+#include "render/panels.hpp"
+
+namespace sl::render {
+namespace {
+
+constexpr double kTubeRadius = 0.014;  // world units (sphere radius 1)
+constexpr double kBallRadius = 0.055;
+
+V3 toV3(const Vec3& p) { return {p.x, p.y, p.z}; }
+
+// On the opaque sphere, points ride on a shell just outside it so the tube's front half is never
+// inside the sphere; lines elsewhere are not occluded.
+struct Placement {
+  bool onSphere;
+  double lift;
+  V3 place(const Vec3& p) const {
+    if (!onSphere) return toV3(p);
+    const double r = std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
+    const double s = r > 1e-12 ? (1.0 + lift) / r : 0.0;
+    return {p.x * s, p.y * s, p.z * s};
+  }
+  Occludable world(const V3& p) const {
+    return {float(p.x), float(p.y), float(p.z), onSphere ? 1.0f : 0.0f};
+  }
+};
+
+float pathAlpha(const RenderSettings& settings, double age) {
+  if (settings.pathFadeSeconds <= 0) return 1.0f;
+  return static_cast<float>(std::clamp(1.0 - age / settings.pathFadeSeconds, 0.0, 1.0));
+}
+
+void drawPath(const RunFrame& run, const PanelContext& context, const SphereCamera& camera,
+              const Placement& placement, ShapeBatch& batch) {
+  std::vector<PolylinePoint> points;
+  points.reserve(run.path.size() + 1);
+  for (std::size_t i = 0; i < run.path.size(); ++i) {
+    const double age = i < run.pathTimes.size() ? context.frame.time - run.pathTimes[i] : 0.0;
+    const float alpha = pathAlpha(context.settings, age);
+    const V3 p = placement.place(run.path[i]);
+    if (alpha <= 0.0f || !camera.inFront(p)) {
+      batch.polyline(points, true, 0.35f);  // a gap: draw what came before, start afresh
+      points.clear();
+      continue;
+    }
+    const float halfWidth = std::max(1.0f, float(kTubeRadius * camera.pixelsPerUnitAt(p)));
+    points.push_back({camera.project(p), halfWidth, toRgba(run.color, alpha), placement.world(p)});
+  }
+  batch.polyline(points, true, 0.35f);
+}
+
+void drawBall(const RunFrame& run, const SphereCamera& camera, const Placement& placement, ShapeBatch& batch) {
+  Placement ballPlacement = placement;
+  ballPlacement.lift = kBallRadius;
+  const V3 centre = ballPlacement.place(run.current);
+  if (!camera.inFront(centre)) return;
+  const float radius = std::max(2.5f, float(kBallRadius * camera.pixelsPerUnitAt(centre)));
+  const P2 at = camera.project(centre);
+  batch.disc(at, radius, toRgba(run.color), true, 0.55f, ballPlacement.world(centre));
+  if (run.stopped) batch.ring(at, radius + 2.5f, radius + 1.0f, palette::stopRed);
+}
+
+// 3 rods: the configuration circle, the equator.
+void drawEquator(const SphereCamera& camera, ShapeBatch& batch) {
+  std::vector<PolylinePoint> points;
+  const double pi = std::acos(-1.0);
+  for (int k = 0; k <= 256; ++k) {
+    const V3 p{std::cos(2 * pi * k / 256), std::sin(2 * pi * k / 256), 0};
+    points.push_back({camera.project(p), 1.2f, palette::withAlpha(palette::softInk, 0.8f), {}});
+  }
+  batch.polyline(points);
+}
+
+}  // namespace
+
+SphereView drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
+  const ViewSpace space = context.frame.viewSpace;
+  SphereCamera camera(context.settings.camera, context.frame.time, context.rect);
+  const Placement placement{space == ViewSpace::Sphere, kTubeRadius};
+  if (space == ViewSpace::Circle) drawEquator(camera, batch);
+  for (const RunFrame& run : context.frame.runs) drawPath(run, context, camera, placement, batch);
+  for (const RunFrame& run : context.frame.runs) drawBall(run, camera, placement, batch);
+  return {camera, space == ViewSpace::Sphere ? SphereLook::Opaque : SphereLook::Glass};
+}
+
+}  // namespace sl::render

@@ -1,0 +1,54 @@
+// The text panel: title, simulation time, each run's name and method in its colour, and why a run
+// stopped once it has.
+
+#include <cstdio>
+
+#include "render/palette.hpp"
+#include "render/panels.hpp"
+
+namespace sl::render {
+namespace {
+
+std::string format(const char* pattern, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, pattern, value);
+  return text;
+}
+
+std::string runLine(const RunFrame& run) {
+  std::string line = run.name + "  (" + run.method + ")";
+  return line;
+}
+
+}  // namespace
+
+void drawTextPanel(const PanelContext& c, ShapeBatch& batch) {
+  const float pad = 0.02f * c.rect.width;
+  const float titleLine = c.font.lineHeight(TextSize::Title);
+  const float line = c.font.lineHeight(TextSize::Normal);
+  float y = c.rect.y + 0.35f * line + c.font.ascent(TextSize::Title);
+  c.font.draw(batch, c.frame.title, TextSize::Title, c.rect.x + pad, y, palette::ink);
+  const std::string time = "t = " + format("%.2f", c.frame.time) + " / " + format("%.2f", c.frame.duration);
+  c.font.draw(batch, time, TextSize::Normal, c.rect.x + c.rect.width - pad - c.font.width(time, TextSize::Normal), y,
+              palette::ink);
+
+  // Runs flow left to right, wrapping to the next line.
+  y += 0.15f * titleLine + line;
+  float x = c.rect.x + pad;
+  const float swatch = 0.3f * c.font.ascent(TextSize::Normal);
+  for (const RunFrame& run : c.frame.runs) {
+    std::string text = runLine(run);
+    std::string stop = run.stopped ? "  stopped at t = " + format("%.3g", run.stopTime) + ": " + run.stopReason : "";
+    const float width = 2.5f * swatch + c.font.width(text + stop, TextSize::Normal) + 2 * pad;
+    if (x > c.rect.x + pad && x + width > c.rect.x + c.rect.width) {
+      x = c.rect.x + pad;
+      y += line;
+    }
+    batch.disc({x + swatch, y - 0.35f * c.font.ascent(TextSize::Normal)}, swatch, toRgba(run.color), true, 0.4f);
+    float end = c.font.draw(batch, text, TextSize::Normal, x + 2.5f * swatch, y, palette::ink);
+    if (run.stopped) end = c.font.draw(batch, stop, TextSize::Normal, end, y, palette::stopRed);
+    x = end + 2 * pad;
+  }
+}
+
+}  // namespace sl::render
