@@ -1,0 +1,185 @@
+// `linkage render SCENE.json`: frames (PNG + manifest) and/or a video. The frame range, the folder and
+// the size may be overridden; --frames A:B renders a shard, --resume skips frames already complete.
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/exit_codes.hpp"
+#include "cli/frame_range.hpp"
+#include "cli/interrupt.hpp"
+#include "cli/progress.hpp"
+#include "cli/scene_input.hpp"
+#include "frames/frame_builder.hpp"
+#include "output/png_sequence_sink.hpp"
+#include "output/sha256.hpp"
+#include "output/video_sink.hpp"
+#include "scene/output_folder.hpp"
+
+namespace sl {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RenderArguments {
+  std::string scene, out, frames, video, size;
+  bool png = false, noPng = false, quiet = false, resume = false;
+};
+
+// What a render will do, after the scene's choices and the options are combined and checked.
+struct RenderPlan {
+  Scene scene;
+  FrameRange range;
+  std::string folder;
+  bool png = true;
+  std::string video;
+  bool quiet = false, resume = false;
+};
+
+void applySize(const RenderArguments& args, Scene& scene) {
+  if (args.size.empty()) return;
+  const auto [width, height] = parseImageSize(args.size);
+  scene.output.width = scene.view.render.width = width;
+  scene.output.height = scene.view.render.height = height;
+}
+
+RenderPlan planRender(const RenderArguments& args) {
+  RenderPlan plan{loadSceneForCommand(args.scene)};
+  Scene& scene = plan.scene;
+  applySize(args, scene);
+  plan.folder = args.out.empty() ? scene.output.folder : args.out;
+  plan.png = args.noPng ? false : (args.png || scene.output.png);
+  plan.video = args.video.empty() ? scene.output.video : args.video;
+  plan.quiet = args.quiet;
+  plan.resume = args.resume;
+  if (!plan.png && plan.video.empty()) {
+    throw CommandExit(kExitBadInput, "nothing to write: PNG frames are off (--no-png or output.png) and no video is asked for");
+  }
+  if (plan.resume && !plan.video.empty()) {
+    throw CommandExit(kExitBadInput, "--resume completes PNG frames; a video is always encoded whole (drop --video or --resume)");
+  }
+  std::vector<SceneProblem> problems = checkImageSize(scene.output.width, scene.output.height, !plan.video.empty(),
+                                                      programLimits(), args.size.empty() ? "output" : "--size");
+  for (SceneProblem& problem : checkOutputFolder(plan.folder, args.out.empty() ? "output.folder" : "--out")) {
+    problems.push_back(problem);
+  }
+  if (!plan.video.empty()) {
+    const std::string parent = fs::path(plan.video).parent_path().string();
+    for (SceneProblem& problem : checkOutputFolder(parent.empty() ? "." : parent, args.video.empty() ? "output.video" : "--video")) {
+      problems.push_back(problem);
+    }
+  }
+  failOnProblems(args.scene, problems);
+  plan.range = parseFrameRange(args.frames.empty() ? ":" : args.frames, scene.frameCount());
+  return plan;
+}
+
+// Identifies the render in its manifest, so shards and resumes only ever join the same render.
+nlohmann::json manifestInfo(const RenderPlan& plan) {
+  const Scene& scene = plan.scene;
+  return {{"scene", scene.name},
+          {"sceneSha256", output::sha256OfFile(scene.file)},
+          {"width", scene.output.width},
+          {"height", scene.output.height},
+          {"fps", scene.output.fps},
+          {"frames", scene.frameCount()}};
+}
+
+void reportStops(const Scene& scene, const FrameBuilder& builder) {
+  for (size_t i = 0; i < builder.runs().size(); ++i) {
+    if (const auto& stop = builder.runs()[i].stop()) {
+      std::cerr << "run \"" << scene.runs[i].name << "\" stopped at t = " << stop->time << ": " << stop->reason
+                << (stop->detail.empty() ? "" : " (" + stop->detail + ")") << '\n';
+    }
+  }
+}
+
+// The frames of the plan's range into the sinks; returns false if interrupted.
+bool renderFrames(const RenderPlan& plan, output::FrameManifest* pngManifest,
+                  std::vector<std::unique_ptr<output::FrameSink>>& sinks, Renderer& renderer, FrameBuilder& builder) {
+  Progress progress(plan.range.end - plan.range.first, plan.quiet);
+  for (int k = plan.range.first; k < plan.range.end; ++k) {
+    if (interruptRequested()) return false;
+    const bool complete = plan.resume && pngManifest && pngManifest->isFrameComplete(k);
+    if (!complete) {
+      Image image = renderer.render(builder.frame(k));
+      for (size_t i = 0; i + 1 < sinks.size(); ++i) sinks[i]->consume(k, image);
+      sinks.back()->consume(k, std::move(image));
+    }
+    progress.update(k - plan.range.first + 1);
+  }
+  return true;
+}
+
+void runRender(const RenderArguments& args) {
+  const RenderPlan plan = planRender(args);
+  const Scene& scene = plan.scene;
+  installInterruptHandlers();
+  Renderer renderer(scene.view.render);
+  const nlohmann::json info = manifestInfo(plan);
+
+  std::unique_ptr<output::FrameManifest> pngManifest, videoManifest;
+  std::vector<std::unique_ptr<output::FrameSink>> sinks;
+  if (plan.png) {
+    pngManifest = std::make_unique<output::FrameManifest>(plan.folder, info);
+    pngManifest->addRenderer(renderer.glRenderer(), renderer.glVersion());
+    sinks.push_back(std::make_unique<output::PngSequenceSink>(plan.folder, *pngManifest));
+  }
+  if (!plan.video.empty()) {
+    const fs::path video(plan.video);
+    const std::string parent = video.parent_path().empty() ? "." : video.parent_path().string();
+    videoManifest = std::make_unique<output::FrameManifest>(parent, info, video.filename().string() + ".manifest.json");
+    videoManifest->addRenderer(renderer.glRenderer(), renderer.glVersion());
+    output::VideoSettings settings{plan.video, scene.output.width, scene.output.height, double(scene.output.fps)};
+    sinks.push_back(std::make_unique<output::VideoSink>(settings, *videoManifest));
+  }
+
+  FrameBuilder builder(scene, makeTrajectories(scene));
+  const bool finished = renderFrames(plan, pngManifest.get(), sinks, renderer, builder);
+  for (auto& sink : sinks) sink->finish();  // every frame handed over is written whole
+  reportStops(scene, builder);  // results, not progress: shown even with --quiet
+  if (!finished) {
+    std::string next = "frames written so far are complete; rerun the same command with --resume to finish";
+    if (!plan.video.empty()) {
+      sinks.clear();
+      videoManifest.reset();
+      fs::remove(plan.video);
+      fs::remove(plan.video + ".manifest.json");
+      next = "the unfinished video was removed; rerun to encode it";
+    }
+    stopIfInterrupted(next.c_str());
+  }
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& app) {
+  auto args = std::make_shared<RenderArguments>();
+  CLI::App* command = app.add_subcommand("render", "Render a scene to PNG frames (with a checksum manifest) and/or a video");
+  command->add_option("scene", args->scene, "scene file (JSON, see scenes/README.md)")->required();
+  command->add_option("--out", args->out, "frame folder (default: the scene's output.folder, renders/<name>)");
+  command->add_option("--frames", args->frames, "half-open range A:B of frames to render (A: or :B allowed); shards of one "
+                                                "animation give byte-identical files");
+  command->add_option("--video", args->video, "also encode a video with ffmpeg (H.264, yuv420p), e.g. out.mp4");
+  command->add_flag("--png", args->png, "write PNG frames (the default unless the scene says output.png: false)");
+  command->add_flag("--no-png", args->noPng, "no PNG frames (with --video: the video only)");
+  command->add_option("--size", args->size, "override the frame size, WIDTHxHEIGHT, e.g. 640x360");
+  command->add_flag("--quiet", args->quiet, "no progress display on stderr");
+  command->add_flag("--resume", args->resume, "skip frames whose file and manifest entry are complete (PNG only)");
+  command->footer(
+      "Frames go to DIR/frame_00000.png ... with DIR/manifest.json (SHA-256 of pixels and files).\n"
+      "Examples:\n"
+      "  linkage render scenes/default.json\n"
+      "  linkage render scenes/comparison.json --size 640x360 --video comparison.mp4 --no-png\n"
+      "  parallel linkage render scenes/default.json --quiet --frames {} ::: 0:200 200:400 400:601\n"
+      "  linkage render scenes/default.json --resume      # after an interruption\n"
+      "SIGINT/SIGTERM stop after the frames in flight are written; exit status 130; --resume finishes.");
+  command->callback([args] { runRender(*args); });
+}
+
+}  // namespace sl

@@ -1,0 +1,17 @@
+#pragma once
+// The subcommands of `linkage`, one file each (command_<name>.cpp). Each adds itself to the app with
+// its options and a callback that does the work and throws CommandExit (exit_codes.hpp) to fail.
+
+namespace CLI {
+class App;
+}
+
+namespace sl {
+
+void addValidateCommand(CLI::App& app);
+void addSimulateCommand(CLI::App& app);
+void addRenderCommand(CLI::App& app);
+void addDiffCommand(CLI::App& app);
+void addListMethodsCommand(CLI::App& app);
+
+}  // namespace sl

@@ -1,0 +1,105 @@
+#include "cli/csv_diff.hpp"
+
+#include <cmath>
+#include <map>
+#include <ostream>
+
+namespace sl {
+
+namespace {
+
+using Row = TrajectoryCsv::Row;
+
+std::map<std::string, std::vector<const Row*>> rowsByRun(const TrajectoryCsv& csv) {
+  std::map<std::string, std::vector<const Row*>> runs;
+  for (const Row& row : csv.rows) runs[row.run].push_back(&row);
+  return runs;
+}
+
+// Indices into Row::values of (p1x, p1y), (p2x, p2y), ...
+std::vector<std::pair<int, int>> hingeColumns(const TrajectoryCsv& csv) {
+  std::vector<std::pair<int, int>> columns;
+  for (int k = 1;; ++k) {
+    const int x = csv.valueIndex("p" + std::to_string(k) + "x"), y = csv.valueIndex("p" + std::to_string(k) + "y");
+    if (x < 0 || y < 0) return columns;
+    columns.push_back({x, y});
+  }
+}
+
+double hingeDistance(const Row& a, const Row& b, const std::vector<std::pair<int, int>>& columns) {
+  double worst = 0;
+  for (const auto& [x, y] : columns) {
+    const double d = std::hypot(a.values[size_t(x)] - b.values[size_t(x)], a.values[size_t(y)] - b.values[size_t(y)]);
+    worst = std::isnan(d) ? d : std::max(worst, d);
+    if (std::isnan(worst)) return worst;
+  }
+  return worst;
+}
+
+RunDifference compareRun(const std::string& name, const std::vector<const Row*>& before,
+                         const std::vector<const Row*>& after, const std::vector<std::pair<int, int>>& columns,
+                         double tolerance) {
+  RunDifference result{name};
+  const size_t common = std::min(before.size(), after.size());
+  for (size_t i = 0; i < common; ++i) {
+    const Row& a = *before[i];
+    const Row& b = *after[i];
+    if (a.values[0] != b.values[0]) {
+      result.structure = "sample times differ from row " + std::to_string(i + 1) + " of the run on";
+      return result;
+    }
+    const double distance = hingeDistance(a, b, columns);
+    if (!(distance <= result.worstDistance)) {  // also takes a NaN as the worst
+      result.worstDistance = distance;
+      result.worstTime = a.values[0];
+    }
+    if (!(distance <= tolerance) && !result.firstExceedsAt) result.firstExceedsAt = a.values[0];
+    if (a.status != b.status) {
+      result.structure = "status at t = " + std::to_string(a.values[0]) + ": \"" + a.status + "\" vs \"" + b.status + "\"";
+      return result;
+    }
+  }
+  if (before.size() != after.size()) {
+    result.structure = std::to_string(before.size()) + " rows vs " + std::to_string(after.size());
+  }
+  return result;
+}
+
+}  // namespace
+
+std::vector<RunDifference> compareTrajectories(const TrajectoryCsv& before, const TrajectoryCsv& after, double tolerance) {
+  std::vector<RunDifference> differences;
+  if (before.columns != after.columns) {
+    differences.push_back({"(all)", 0, 0, std::nullopt, "the columns differ (different numbers of rods?)"});
+    return differences;
+  }
+  const auto columns = hingeColumns(before);
+  const auto runsBefore = rowsByRun(before), runsAfter = rowsByRun(after);
+  for (const auto& [name, rows] : runsBefore) {
+    const auto other = runsAfter.find(name);
+    if (other == runsAfter.end()) {
+      differences.push_back({name, 0, 0, std::nullopt, "missing from the second file"});
+      continue;
+    }
+    differences.push_back(compareRun(name, rows, other->second, columns, tolerance));
+  }
+  for (const auto& [name, rows] : runsAfter) {
+    if (!runsBefore.count(name)) differences.push_back({name, 0, 0, std::nullopt, "missing from the first file"});
+  }
+  return differences;
+}
+
+bool printTrajectoryDifferences(std::ostream& out, const std::vector<RunDifference>& differences, double tolerance) {
+  bool allMatch = true;
+  for (const RunDifference& run : differences) {
+    allMatch = allMatch && run.matches();
+    out << "run \"" << run.run << "\": worst hinge difference " << run.worstDistance << " at t = " << run.worstTime;
+    if (run.firstExceedsAt) out << "; first exceeds --tol " << tolerance << " at t = " << *run.firstExceedsAt;
+    else out << "; within --tol " << tolerance;
+    if (!run.structure.empty()) out << "; not comparable row by row: " << run.structure;
+    out << '\n';
+  }
+  return allMatch;
+}
+
+}  // namespace sl

@@ -1,0 +1,45 @@
+#include "cli/frame_range.hpp"
+
+#include <charconv>
+
+#include "cli/exit_codes.hpp"
+
+namespace sl {
+
+namespace {
+
+// A whole decimal number filling the text, or -1.
+long parseCount(const std::string& text) {
+  long value = -1;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || value < 0) return -1;
+  return value;
+}
+
+}  // namespace
+
+FrameRange parseFrameRange(const std::string& text, int frameCount) {
+  const std::string allowed = "expected A:B with 0 <= A < B <= " + std::to_string(frameCount) +
+                              " (the scene has frames 0.." + std::to_string(frameCount - 1) + ")";
+  const size_t colon = text.find(':');
+  if (colon == std::string::npos) throw CommandExit(kExitBadInput, "--frames: found \"" + text + "\"; " + allowed);
+  const std::string left = text.substr(0, colon), right = text.substr(colon + 1);
+  const long first = left.empty() ? 0 : parseCount(left);
+  const long end = right.empty() ? frameCount : parseCount(right);
+  if (first < 0 || end < 0 || first >= end || end > frameCount) {
+    throw CommandExit(kExitBadInput, "--frames: found \"" + text + "\"; " + allowed);
+  }
+  return {static_cast<int>(first), static_cast<int>(end)};
+}
+
+std::pair<int, int> parseImageSize(const std::string& text) {
+  const size_t x = text.find('x');
+  const long width = x == std::string::npos ? -1 : parseCount(text.substr(0, x));
+  const long height = x == std::string::npos ? -1 : parseCount(text.substr(x + 1));
+  if (width < 0 || height < 0 || width > (1 << 30) || height > (1 << 30)) {
+    throw CommandExit(kExitBadInput, "--size: found \"" + text + "\"; expected WIDTHxHEIGHT, e.g. 1280x720");
+  }
+  return {static_cast<int>(width), static_cast<int>(height)};
+}
+
+}  // namespace sl

@@ -1,0 +1,32 @@
+#include "cli/scene_input.hpp"
+
+#include "cli/exit_codes.hpp"
+#include "render/renderer.hpp"
+#include "simulation/trajectory.hpp"
+
+namespace sl {
+
+SceneLimits programLimits() {
+  SceneLimits limits;
+  limits.methods = methodNames();
+  limits.integrators = integratorNames();
+  for (const std::string& name : limits.integrators) {
+    if (integratorIsAdaptive(name)) limits.adaptiveIntegrators.push_back(name);
+  }
+  limits.maxImageSize = Renderer::maxSize();
+  return limits;
+}
+
+void failOnProblems(const std::string& file, const std::vector<SceneProblem>& problems) {
+  if (!problems.empty()) throw CommandExit(kExitBadInput, formatProblems(file, problems));
+}
+
+Scene loadSceneForCommand(const std::string& file) {
+  try {
+    return loadScene(file, programLimits());
+  } catch (const SceneError& error) {
+    throw CommandExit(kExitBadInput, error.what());
+  }
+}
+
+}  // namespace sl

@@ -1,0 +1,163 @@
+#include "frames/frame_builder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "frames/scene_start.hpp"
+
+namespace sl {
+
+namespace {
+
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::vector<Vec2> hingeList(const Eigen::Matrix2Xd& hinges) {
+  std::vector<Vec2> list;
+  for (Eigen::Index k = 0; k < hinges.cols(); ++k) list.push_back({hinges(0, k), hinges(1, k)});
+  return list;
+}
+
+// Drops points older than `window` seconds before `now` (window 0 keeps everything).
+template <class T>
+void fadeOut(std::vector<T>& points, std::vector<double>& times, double now, double window) {
+  if (window <= 0) return;
+  const auto first = std::lower_bound(times.begin(), times.end(), now - window);
+  const auto count = first - times.begin();
+  points.erase(points.begin(), points.begin() + count);
+  times.erase(times.begin(), first);
+}
+
+}  // namespace
+
+ColorRGB runColor(const Scene& scene, size_t run) {
+  // Okabe-Ito: distinguishable with the common colour-vision deficiencies.
+  static const ColorRGB palette[] = {{0.00f, 0.45f, 0.70f}, {0.84f, 0.37f, 0.00f}, {0.00f, 0.62f, 0.45f},
+                                     {0.80f, 0.47f, 0.65f}, {0.90f, 0.62f, 0.00f}, {0.34f, 0.71f, 0.91f}};
+  const std::optional<ColorRGB>& chosen = scene.runs[run].color;
+  return chosen ? *chosen : palette[run % std::size(palette)];
+}
+
+std::vector<Trajectory> makeTrajectories(const Scene& scene) {
+  const InitialState start = sceneStart(scene);
+  std::vector<Trajectory> runs;
+  for (const RunSpec& run : scene.runs) runs.emplace_back(scene.chain, start, run.config);
+  return runs;
+}
+
+FrameBuilder::FrameBuilder(const Scene& scene, std::vector<Trajectory> runs)
+    : scene_(scene),
+      runs_(std::move(runs)),
+      view_(scene.chain.rods, sceneStart(scene).spherePoint),
+      frameCount_(scene.frameCount()),
+      history_(runs_.size()),
+      divergence_(runs_.empty() ? 0 : runs_.size() - 1) {
+  for (size_t i = 0; i < runs_.size(); ++i) {
+    RunFrame& frame = history_[i].frame;
+    frame.name = scene.runs[i].name;
+    frame.method = scene.runs[i].config.method;
+    frame.color = runColor(scene, i);
+    frame.trails.resize(scene.view.trailHinges.size());
+  }
+}
+
+FrameState FrameBuilder::frame(int k) {
+  if (k < sampled_ || k >= frameCount_) throw std::out_of_range("FrameBuilder::frame: frame out of order or range");
+  while (sampled_ < k) sampleFrame(sampled_ + 1);
+  return snapshot(k);
+}
+
+void FrameBuilder::sampleFrame(int k) {
+  const int substeps = k == 0 ? 1 : scene_.view.pathSamplesPerFrame;
+  for (size_t run = 0; run < runs_.size(); ++run) {
+    for (int j = 1; j <= substeps; ++j) {
+      // The last substep is the frame time itself, computed as k / fps so it is the same in every shard.
+      const double t = j == substeps ? scene_.frameTime(k)
+                                     : ((k - 1) * substeps + j) / double(substeps * scene_.output.fps);
+      sampleRunAt(run, t, j == substeps);
+    }
+  }
+  recordPlots(k);
+  sampled_ = k;
+}
+
+void FrameBuilder::sampleRunAt(size_t run, double t, bool isFrameTime) {
+  RunHistory& history = history_[run];
+  RunFrame& frame = history.frame;
+  if (frame.stopped) return;
+  const std::optional<Sample> sample = runs_[run].sampleAt(t);
+  if (!sample) {
+    frame.stopped = true;
+    const std::optional<StopInfo>& stop = runs_[run].stop();
+    frame.stopTime = stop ? stop->time : t;
+    frame.stopReason = stop ? stop->reason : "stopped";
+    history.hingesAtFrame.clear();
+    return;
+  }
+  frame.current = view_.project(sample->spherePoint);
+  frame.path.push_back(frame.current);
+  frame.pathTimes.push_back(t);
+  fadeOut(frame.path, frame.pathTimes, t, scene_.view.render.pathFadeSeconds);
+  if (!isFrameTime) return;
+  frame.hinges = hingeList(sample->hinges);
+  history.hingesAtFrame = frame.hinges;
+  history.energyErrors.push_back(std::abs(sample->relativeEnergyDrift));
+  // Trails keep one point per frame, for as long as they are visible.
+  const size_t kept = static_cast<size_t>(std::ceil(scene_.view.render.trailFadeSeconds * scene_.output.fps)) + 1;
+  for (size_t i = 0; i < scene_.view.trailHinges.size(); ++i) {
+    std::vector<Vec2>& trail = frame.trails[i];
+    trail.push_back(frame.hinges[static_cast<size_t>(scene_.view.trailHinges[i] - 1)]);
+    if (trail.size() > kept) trail.erase(trail.begin());
+  }
+}
+
+// Divergence: the largest distance between corresponding hinges of run 0 and each other run, while
+// both still run. Energy error: |E - E0| / E0 per run, while it runs.
+void FrameBuilder::recordPlots(int k) {
+  plotTimes_.push_back(scene_.frameTime(k));
+  const std::vector<Vec2>& reference = history_[0].hingesAtFrame;
+  for (size_t run = 1; run < runs_.size(); ++run) {
+    const std::vector<Vec2>& other = history_[run].hingesAtFrame;
+    double worst = reference.empty() || other.empty() ? kNaN : 0.0;
+    for (size_t h = 0; h < std::min(reference.size(), other.size()); ++h) {
+      worst = std::max(worst, std::hypot(reference[h].x - other[h].x, reference[h].y - other[h].y));
+    }
+    divergence_[run - 1].push_back(worst);
+  }
+  for (RunHistory& history : history_) {
+    if (history.energyErrors.size() < plotTimes_.size()) history.energyErrors.push_back(kNaN);
+  }
+}
+
+FrameState FrameBuilder::snapshot(int k) const {
+  FrameState state;
+  state.index = k;
+  state.time = scene_.frameTime(k);
+  state.duration = scene_.duration;
+  state.title = scene_.title;
+  state.rods = scene_.chain.rods;
+  state.baseLength = scene_.chain.baseLength;
+  state.viewSpace = view_.space();
+  for (const RunHistory& history : history_) state.runs.push_back(history.frame);
+  for (const PlotSpec& spec : scene_.view.plots) {
+    PlotFrame plot;
+    plot.logY = spec.logY;
+    plot.timeMax = scene_.duration;
+    if (spec.kind == PlotKind::Divergence) {
+      plot.title = "divergence from " + scene_.runs[0].name + " (max hinge distance)";
+      for (size_t run = 1; run < runs_.size(); ++run) {
+        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), plotTimes_, divergence_[run - 1]});
+      }
+    } else {
+      plot.title = "relative energy error |E - E0| / E0";
+      for (size_t run = 0; run < runs_.size(); ++run) {
+        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), plotTimes_, history_[run].energyErrors});
+      }
+    }
+    state.plots.push_back(std::move(plot));
+  }
+  return state;
+}
+
+}  // namespace sl

@@ -1,0 +1,55 @@
+#pragma once
+// The frame builder: a scene's runs sampled at the frame times k / fps, k = 0..frameCount()-1, turned
+// into FrameStates one at a time (memory holds the short path history, never images).
+//
+// Sharding: frame(k) for any k >= the last one asked gives exactly the FrameState a full run gives for
+// frame k, because every frame before k is still sampled (cheaply, without rendering) to build the path,
+// trail and plot history. Nothing beyond frame k's time is integrated.
+
+#include <vector>
+
+#include "frames/frame_state.hpp"
+#include "frames/sphere_view.hpp"
+#include "scene/scene.hpp"
+#include "simulation/trajectory.hpp"
+
+namespace sl {
+
+// One Trajectory per scene run, all from the scene's start.
+std::vector<Trajectory> makeTrajectories(const Scene& scene);
+
+class FrameBuilder {
+ public:
+  FrameBuilder(const Scene& scene, std::vector<Trajectory> runs);
+
+  int frameCount() const { return frameCount_; }
+  // Frame k; k must not be smaller than the previous call's.
+  FrameState frame(int k);
+  const std::vector<Trajectory>& runs() const { return runs_; }
+
+ private:
+  struct RunHistory {
+    RunFrame frame;                      // the latest state and the path, trails so far
+    std::vector<Vec2> hingesAtFrame;     // for the divergence plot; empty once stopped
+    std::vector<double> energyErrors;    // one per frame while running
+  };
+
+  void sampleFrame(int k);               // advance the history to frame k (k = sampled_ + 1)
+  void sampleRunAt(size_t run, double t, bool isFrameTime);
+  void recordPlots(int k);
+  FrameState snapshot(int k) const;
+
+  const Scene& scene_;
+  std::vector<Trajectory> runs_;
+  SphereView view_;
+  int frameCount_;
+  int sampled_ = -1;                     // the last frame sampled into the history
+  std::vector<RunHistory> history_;
+  std::vector<double> plotTimes_;
+  std::vector<std::vector<double>> divergence_;  // [run - 1][frame]: run 0 against run
+};
+
+// The default colour of run i (a colour-blind-safe palette), unless the scene gives one.
+ColorRGB runColor(const Scene& scene, size_t run);
+
+}  // namespace sl

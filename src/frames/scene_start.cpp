@@ -1,0 +1,20 @@
+#include "frames/scene_start.hpp"
+
+#include <cmath>
+
+#include "simulation/initial_state.hpp"
+
+namespace sl {
+
+InitialState sceneStart(const Scene& scene) {
+  const InitialSpec& spec = scene.initial;
+  if (spec.kind == InitialSpec::Kind::Drag) {
+    return initialStateFromDrag(scene.chain, spec.dragPoint, spec.dragDirection, spec.unitSpeed);
+  }
+  InitialState start = initialStateFromChart(scene.chain, spec.coords, spec.velocity);
+  const double speed = std::sqrt(speedSquared(scene.chain, start));
+  if (spec.unitSpeed && speed > 0) start.sphereVelocity /= speed;
+  return start;
+}
+
+}  // namespace sl
