@@ -24,7 +24,7 @@ void chunk(std::vector<std::uint8_t>& out, const char type[4], const std::uint8_
 
 }  // namespace
 
-PngEncoder::PngEncoder(int level) : compressor_(libdeflate_alloc_compressor(level)) {
+PngEncoder::PngEncoder(int level, PngFilter filter) : compressor_(libdeflate_alloc_compressor(level)), filter_(filter) {
   if (!compressor_) throw std::runtime_error("libdeflate: cannot create a level " + std::to_string(level) + " compressor");
 }
 
@@ -39,9 +39,9 @@ std::vector<std::uint8_t> PngEncoder::encode(const Image& image) {
   for (int y = 0; y < image.height; ++y) {
     std::uint8_t* row = filtered_.data() + y * (stride + 1);
     const std::uint8_t* pixels = image.rgb.data() + y * stride;
-    row[0] = 2;  // "up": each byte minus the byte above (row 0: above is zero)
-    if (y == 0) {
-      std::memcpy(row + 1, pixels, stride);
+    row[0] = static_cast<std::uint8_t>(filter_);
+    if (filter_ == PngFilter::None || y == 0) {
+      std::memcpy(row + 1, pixels, stride);  // row 0: "up" subtracts zero
     } else {
       for (std::size_t i = 0; i < stride; ++i) row[1 + i] = static_cast<std::uint8_t>(pixels[i] - pixels[i - stride]);
     }

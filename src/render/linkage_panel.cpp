@@ -7,42 +7,10 @@
 
 #include "render/palette.hpp"
 #include "render/panels.hpp"
+#include "render/plane_view.hpp"
 
 namespace sl::render {
 namespace {
-
-struct Bounds {
-  double x0, x1, y0, y1;
-};
-
-// Hinge k lies within k of the left pin and within n-k of the right pin (0, 0) and (L, 0): a box
-// holding every configuration of the chain.
-Bounds chainBounds(int rods, double base) {
-  Bounds b{0, base, -0.5, 0.5};
-  for (int k = 1; k < rods; ++k) {
-    b.x0 = std::min(b.x0, std::max(-double(k), base - (rods - k)));
-    b.x1 = std::max(b.x1, std::min(double(k), base + (rods - k)));
-    const double reach = std::min(double(k), double(rods - k));
-    b.y0 = std::min(b.y0, -reach);
-    b.y1 = std::max(b.y1, reach);
-  }
-  return b;
-}
-
-// World (rod lengths, y up) to pixels, fitted into a rectangle with a margin.
-struct PlaneView {
-  double scale, originX, originY;
-  P2 operator()(double x, double y) const {
-    return {float(originX + scale * x), float(originY - scale * y)};
-  }
-  P2 operator()(const Vec2& p) const { return (*this)(p.x, p.y); }
-};
-
-PlaneView fit(const Bounds& b, const PixelRect& r) {
-  const double margin = 0.08;
-  const double scale = std::min(r.width * (1 - 2 * margin) / (b.x1 - b.x0), r.height * (1 - 2 * margin) / (b.y1 - b.y0));
-  return {scale, r.x + 0.5 * r.width - scale * 0.5 * (b.x0 + b.x1), r.y + 0.5 * r.height + scale * 0.5 * (b.y0 + b.y1)};
-}
 
 void drawFloor(const PlaneView& view, double base, float rod, ShapeBatch& batch) {
   batch.capsule(view(0, 0), view(base, 0), std::max(1.0f, 0.25f * rod), palette::floorGrey);
@@ -58,6 +26,7 @@ void drawTrails(const RunFrame& run, const PlaneView& view, float rod, ShapeBatc
   for (const auto& trail : run.trails) {
     std::vector<PolylinePoint> points;
     for (std::size_t i = 0; i < trail.size(); ++i) {
+      if (!std::isfinite(trail[i].x) || !std::isfinite(trail[i].y)) continue;
       const float age = trail.size() > 1 ? float(i) / float(trail.size() - 1) : 1.0f;  // oldest first
       points.push_back({view(trail[i]), std::max(0.8f, 0.22f * rod), toRgba(run.color, 0.75f * age), {}});
     }
@@ -67,7 +36,8 @@ void drawTrails(const RunFrame& run, const PlaneView& view, float rod, ShapeBatc
 
 void drawChain(const RunFrame& run, const PlaneView& view, double base, float rod, ShapeBatch& batch) {
   std::vector<P2> joints{view(0, 0)};
-  for (const Vec2& h : run.hinges) joints.push_back(view(h));
+  for (const Vec2& h : run.hinges)
+    if (std::isfinite(h.x) && std::isfinite(h.y)) joints.push_back(view(h));  // a broken state is not drawn
   joints.push_back(view(base, 0));
   for (std::size_t k = 0; k + 1 < joints.size(); ++k)
     batch.capsule(joints[k], joints[k + 1], rod, palette::silver, true, 0.6f);
@@ -83,7 +53,7 @@ void drawChain(const RunFrame& run, const PlaneView& view, double base, float ro
 
 void drawRun(const PanelContext& context, const RunFrame* run, const PixelRect& area, bool label, ShapeBatch& batch) {
   const FrameState& frame = context.frame;
-  const PlaneView view = fit(chainBounds(frame.rods, frame.baseLength), area);
+  const PlaneView view = fitChainView(frame.rods, frame.baseLength, area);
   const float rod = std::max(1.5f, float(0.045 * view.scale));  // rod half width
   drawFloor(view, frame.baseLength, rod, batch);
   if (!run) return;

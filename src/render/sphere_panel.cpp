@@ -15,6 +15,7 @@ constexpr double kTubeRadius = 0.014;  // world units (sphere radius 1)
 constexpr double kBallRadius = 0.055;
 
 V3 toV3(const Vec3& p) { return {p.x, p.y, p.z}; }
+bool finite(const Vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
 // On the opaque sphere, points ride on a shell just outside it so the tube's front half is never
 // inside the sphere; lines elsewhere are not occluded.
@@ -45,7 +46,7 @@ void drawPath(const RunFrame& run, const PanelContext& context, const SphereCame
     const double age = i < run.pathTimes.size() ? context.frame.time - run.pathTimes[i] : 0.0;
     const float alpha = pathAlpha(context.settings, age);
     const V3 p = placement.place(run.path[i]);
-    if (alpha <= 0.0f || !camera.inFront(p)) {
+    if (alpha <= 0.0f || !finite(run.path[i]) || !camera.inFront(p)) {
       batch.polyline(points, true, 0.35f);  // a gap: draw what came before, start afresh
       points.clear();
       continue;
@@ -60,11 +61,12 @@ void drawBall(const RunFrame& run, const SphereCamera& camera, const Placement& 
   Placement ballPlacement = placement;
   ballPlacement.lift = kBallRadius;
   const V3 centre = ballPlacement.place(run.current);
-  if (!camera.inFront(centre)) return;
+  if (!finite(run.current) || !camera.inFront(centre)) return;
   const float radius = std::max(2.5f, float(kBallRadius * camera.pixelsPerUnitAt(centre)));
   const P2 at = camera.project(centre);
+  // A stopped run's ball sits on a red halo (a larger ball behind it, hidden with it by the sphere).
+  if (run.stopped) batch.disc(at, radius + 2.5f, palette::stopRed, true, 0.2f, ballPlacement.world(centre));
   batch.disc(at, radius, toRgba(run.color), true, 0.55f, ballPlacement.world(centre));
-  if (run.stopped) batch.ring(at, radius + 2.5f, radius + 1.0f, palette::stopRed);
 }
 
 // 3 rods: the configuration circle, the equator.

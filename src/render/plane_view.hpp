@@ -1,0 +1,21 @@
+#pragma once
+// The linkage panel's view: plane coordinates (rod lengths, y up) to pixels, fixed per scene (from n
+// and L alone) so the picture never jumps as the chain moves.
+
+#include "frames/frame_state.hpp"
+#include "render/shape_batch.hpp"
+#include "render/sphere_camera.hpp"
+
+namespace sl::render {
+
+struct PlaneView {
+  double scale, originX, originY;
+  P2 operator()(double x, double y) const { return {float(originX + scale * x), float(originY - scale * y)}; }
+  P2 operator()(const Vec2& p) const { return (*this)(p.x, p.y); }
+};
+
+// Fits the box holding every configuration of the chain (hinge k lies within k of the left pin and
+// within n-k of the right one) into `area`, with a margin.
+PlaneView fitChainView(int rods, double baseLength, const PixelRect& area);
+
+}  // namespace sl::render

@@ -1,0 +1,90 @@
+// The PNG sequence sink and the ffmpeg video sink, end to end on small frames.
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include "output/png_sequence_sink.hpp"
+#include "output/sha256.hpp"
+#include "output/video_sink.hpp"
+#include "test_folder.hpp"
+
+namespace sl::output {
+namespace {
+
+Image gradient(int w, int h, int frame) {
+  Image image{w, h, std::vector<std::uint8_t>(std::size_t(w) * h * 3)};
+  for (std::size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] = std::uint8_t(i * 7 + frame * 13);
+  return image;
+}
+
+std::string run(const std::string& command) {
+  std::string output;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  char buffer[256];
+  while (pipe && std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
+  if (pipe) ::pclose(pipe);
+  return output;
+}
+
+TEST(PngSequenceSink, WritesFramesAndRecordsTheirChecksums) {
+  const std::string folder = testing::freshFolder();
+  FrameManifest manifest(folder, {{"test", "png"}});
+  {
+    PngSequenceSink sink(folder, manifest, 2);
+    for (int k = 3; k < 9; ++k) sink.consume(k, gradient(32, 24, k));
+    sink.finish();
+  }
+  EXPECT_EQ(frameFileName(3), "frame_00003.png");
+  for (int k = 3; k < 9; ++k) {
+    const auto entry = manifest.entry(k);
+    ASSERT_TRUE(entry) << k;
+    EXPECT_EQ(entry->file, frameFileName(k));
+    EXPECT_EQ(entry->pixelSha256, sha256Hex(gradient(32, 24, k).rgb));
+    EXPECT_EQ(entry->fileSha256, sha256OfFile(folder + "/" + entry->file));
+    EXPECT_TRUE(manifest.isFrameComplete(k));
+  }
+  EXPECT_FALSE(manifest.entry(2));
+}
+
+TEST(VideoSink, ProducesAPlayableMp4WithEveryFrame) {
+  const std::string folder = testing::freshFolder();
+  const std::string path = folder + "/clip.mp4";
+  FrameManifest manifest(folder, {{"test", "video"}}, "clip.mp4.manifest.json");
+  {
+    VideoSink sink({path, 64, 48, 30}, manifest);
+    for (int k = 0; k < 12; ++k) sink.consume(k, gradient(64, 48, k));
+    sink.finish();
+  }
+  const std::string frames =
+      run("ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames,codec_name,pix_fmt "
+          "-of csv=p=0 '" + path + "'");
+  EXPECT_EQ(frames, "h264,yuv420p,12\n");
+  EXPECT_EQ(manifest.entry(11)->pixelSha256, sha256Hex(gradient(64, 48, 11).rgb));
+  EXPECT_TRUE(manifest.entry(11)->file.empty());
+}
+
+TEST(VideoSink, RejectsOddSizesAndMissingFfmpeg) {
+  const std::string folder = testing::freshFolder();
+  FrameManifest manifest(folder, {{"test", "video"}}, "v.manifest.json");
+  EXPECT_THROW(VideoSink({folder + "/a.mp4", 63, 48, 30}, manifest), std::invalid_argument);
+  VideoSettings missing{folder + "/b.mp4", 64, 48, 30};
+  missing.ffmpeg = "/nonexistent/ffmpeg";
+  EXPECT_THROW(VideoSink(missing, manifest), std::runtime_error);
+}
+
+TEST(VideoSink, FfmpegFailureIsReported) {
+  const std::string folder = testing::freshFolder();
+  FrameManifest manifest(folder, {{"test", "video"}}, "v.manifest.json");
+  VideoSink sink({folder + "/no/such/dir/c.mp4", 64, 48, 30}, manifest);  // ffmpeg cannot open the output
+  EXPECT_THROW(
+      {
+        for (int k = 0; k < 50; ++k) sink.consume(k, gradient(64, 48, k));
+        sink.finish();
+      },
+      std::runtime_error);
+}
+
+}  // namespace
+}  // namespace sl::output

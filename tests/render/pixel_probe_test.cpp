@@ -1,0 +1,115 @@
+// Pixel probes that catch a broken pipeline: background, sphere, pin and path colours where the
+// geometry says they must be, and a path on the far side of the sphere hidden by it.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "reference_frames.hpp"
+#include "render/panel_layout.hpp"
+#include "render/plane_view.hpp"
+#include "render/sphere_camera.hpp"
+#include "render/synthetic_frame.hpp"
+
+namespace sl {
+namespace {
+
+using testing::pixel;
+using testing::Rgb8;
+
+const double kDeg = std::acos(-1.0) / 180;
+
+Vec3 onSphere(double phi, double t) { return {std::cos(phi) * std::cos(t), std::cos(phi) * std::sin(t), std::sin(phi)}; }
+
+// A camera looking at the middle of a grid cell (phi = t = 7.5 deg), so the panel centre shows bare sphere.
+RenderSettings probeSettings() {
+  RenderSettings s = testing::smallSettings();
+  const Vec3 view = onSphere(7.5 * kDeg, 7.5 * kDeg);
+  s.camera.viewDirection = view;
+  return s;
+}
+
+render::PixelRect panelRect(const RenderSettings& s, PanelKind kind) {
+  const auto rects = render::layoutPanels(s.panels, s.width, s.height);
+  for (std::size_t i = 0; i < s.panels.size(); ++i)
+    if (s.panels[i].kind == kind) return rects[i];
+  return {};
+}
+
+// One run whose path runs from the visible side to the far side of the sphere.
+FrameState probeFrame() {
+  FrameState frame = syntheticFrame(3.0, 180);
+  frame.runs.resize(1);
+  RunFrame& run = frame.runs[0];
+  run.path.clear();
+  run.pathTimes.clear();
+  for (int k = 0; k <= 180; ++k) {  // along the equator of the view: t from 7.5 to 187.5 deg at phi = 7.5
+    run.path.push_back(onSphere(7.5 * kDeg, (7.5 + k) * kDeg));
+    run.pathTimes.push_back(3.0);
+  }
+  run.current = run.path.back();
+  return frame;
+}
+
+bool isBackground(Rgb8 c) { return std::abs(c.r - 245) <= 1 && std::abs(c.g - 242) <= 1 && std::abs(c.b - 235) <= 1; }
+bool isCream(Rgb8 c) { return c.r > 150 && c.r >= c.g && c.g > c.b && c.r - c.b > 25 && !isBackground(c); }
+bool isRunRed(Rgb8 c) { return c.r > c.g + 40 && c.r > c.b + 25; }  // the first run's burgundy, lit
+
+class PixelProbe : public ::testing::Test {
+ protected:
+  RenderSettings settings = probeSettings();
+  Renderer renderer{settings};
+  FrameState frame = probeFrame();
+  Image image = renderer.render(frame);
+  render::SphereCamera camera{settings.camera, frame.time, panelRect(settings, PanelKind::Sphere)};
+};
+
+TEST_F(PixelProbe, BackgroundInTheCorner) {
+  ASSERT_EQ(image.rgb.size(), std::size_t(testing::kWidth * testing::kHeight * 3));
+  EXPECT_TRUE(isBackground(pixel(image, testing::kWidth - 1, testing::kHeight - 1)));
+  EXPECT_TRUE(isBackground(pixel(image, 0, testing::kHeight / 2)));
+}
+
+TEST_F(PixelProbe, SphereColourAtItsCentre) {
+  const render::P2 centre = camera.project({0, 0, 0});
+  const Rgb8 c = pixel(image, int(centre.x), int(centre.y) - 6);  // above the path, mid-cell
+  EXPECT_TRUE(isCream(c)) << c.r << " " << c.g << " " << c.b;
+}
+
+TEST_F(PixelProbe, PathColourAtAProjectedPathPoint) {
+  const Vec3 p = onSphere(7.5 * kDeg, 30 * kDeg);  // visible: 22.5 deg from the view direction
+  const render::P2 at = camera.project({p.x * 1.014, p.y * 1.014, p.z * 1.014});
+  const Rgb8 c = pixel(image, int(at.x), int(at.y));
+  EXPECT_TRUE(isRunRed(c)) << c.r << " " << c.g << " " << c.b;
+}
+
+TEST_F(PixelProbe, PathBehindTheSphereIsHidden) {
+  const Vec3 p = onSphere(7.5 * kDeg, 150 * kDeg);  // 142.5 deg from the view direction: far side
+  const render::P2 at = camera.project({p.x * 1.014, p.y * 1.014, p.z * 1.014});
+  const Rgb8 c = pixel(image, int(at.x), int(at.y));
+  EXPECT_FALSE(isRunRed(c)) << c.r << " " << c.g << " " << c.b;
+  EXPECT_TRUE(isCream(c)) << c.r << " " << c.g << " " << c.b;
+}
+
+TEST_F(PixelProbe, PinsAreCharcoal) {
+  const auto view = render::fitChainView(frame.rods, frame.baseLength, panelRect(settings, PanelKind::Linkage));
+  for (double x : {0.0, frame.baseLength}) {
+    const render::P2 pin = view(x, 0);
+    const float rod = std::max(1.5f, float(0.045 * view.scale));
+    const Rgb8 c = pixel(image, int(pin.x), int(pin.y - 1.4f * rod));  // on the bolt, off its silver centre
+    EXPECT_LT(std::max({c.r, c.g, c.b}), 110) << "pin at x = " << x << ": " << c.r << " " << c.g << " " << c.b;
+  }
+}
+
+TEST_F(PixelProbe, NoAntialiasingStillDrawsTheSameScene) {
+  RenderSettings aliased = settings;
+  aliased.antialias = false;
+  Renderer plain(aliased);
+  const Image hard = plain.render(frame);
+  const render::P2 centre = camera.project({0, 0, 0});
+  EXPECT_TRUE(isCream(pixel(hard, int(centre.x), int(centre.y) - 6)));
+  EXPECT_NE(hard.rgb, image.rgb);  // edges differ
+}
+
+}  // namespace
+}  // namespace sl
