@@ -1,0 +1,160 @@
+// The frame builder against fresh trajectories sampled directly, and shards against a full walk.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "frames/frame_builder.hpp"
+#include "frames/scene_start.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace sl {
+namespace {
+
+SceneLimits limits() {
+  SceneLimits result;
+  result.methods = methodNames();
+  result.integrators = integratorNames();
+  return result;
+}
+
+// Two runs from the generic reference start, short so the suite stays fast.
+Scene twoRunScene(const std::string& extraView = "") {
+  return parseScene(R"({"name": "t", "linkage": {"rods": 4, "L": 3},
+    "initial": {"coords": [0.3, 0.2], "velocity": [0.5, 0.7]}, "duration": 1.0,
+    "runs": [{"name": "exact", "method": "ambient", "integrator": "dopri5", "tolerance": 1e-10},
+             {"name": "published", "method": "christoffel-fd", "integrator": "rk4", "step": 0.05}],
+    "output": {"fps": 10},
+    "view": {"panels": ["sphere", "linkage", {"panel": "plot", "plot": "divergence"},
+                        {"panel": "plot", "plot": "energy"}], "trails": [1, 3])" + extraView + "}}",
+                    "t.json", limits());
+}
+
+void expectSameVec(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].x, b[i].x);
+    EXPECT_EQ(a[i].y, b[i].y);
+    EXPECT_EQ(a[i].z, b[i].z);
+  }
+}
+
+void expectSameFrame(const FrameState& a, const FrameState& b) {
+  EXPECT_EQ(a.index, b.index);
+  EXPECT_EQ(a.time, b.time);
+  ASSERT_EQ(a.runs.size(), b.runs.size());
+  for (size_t r = 0; r < a.runs.size(); ++r) {
+    expectSameVec(a.runs[r].path, b.runs[r].path);
+    EXPECT_EQ(a.runs[r].pathTimes, b.runs[r].pathTimes);
+    ASSERT_EQ(a.runs[r].hinges.size(), b.runs[r].hinges.size());
+    for (size_t h = 0; h < a.runs[r].hinges.size(); ++h) EXPECT_EQ(a.runs[r].hinges[h].x, b.runs[r].hinges[h].x);
+    ASSERT_EQ(a.runs[r].trails.size(), b.runs[r].trails.size());
+    for (size_t t = 0; t < a.runs[r].trails.size(); ++t) EXPECT_EQ(a.runs[r].trails[t].size(), b.runs[r].trails[t].size());
+    EXPECT_EQ(a.runs[r].stopped, b.runs[r].stopped);
+  }
+  ASSERT_EQ(a.plots.size(), b.plots.size());
+  for (size_t p = 0; p < a.plots.size(); ++p) {
+    ASSERT_EQ(a.plots[p].series.size(), b.plots[p].series.size());
+    for (size_t s = 0; s < a.plots[p].series.size(); ++s) {
+      const auto& x = a.plots[p].series[s].values;
+      const auto& y = b.plots[p].series[s].values;
+      ASSERT_EQ(x.size(), y.size());
+      for (size_t i = 0; i < x.size(); ++i) EXPECT_TRUE(x[i] == y[i] || (std::isnan(x[i]) && std::isnan(y[i])));
+    }
+  }
+}
+
+TEST(FrameBuilder, FrameTimesAndCount) {
+  const Scene scene = twoRunScene();
+  FrameBuilder builder(scene, makeTrajectories(scene));
+  EXPECT_EQ(builder.frameCount(), 11);
+  const FrameState last = builder.frame(10);
+  EXPECT_DOUBLE_EQ(last.time, 1.0);
+  EXPECT_EQ(last.rods, 4);
+  EXPECT_EQ(last.viewSpace, ViewSpace::Sphere);
+  EXPECT_EQ(last.runs[1].name, "published");
+  EXPECT_EQ(last.runs[1].method, "christoffel-fd");
+  // 4 path samples per frame interval after frame 0; pathTimes increase and end at the frame time.
+  EXPECT_EQ(last.runs[0].path.size(), 1u + 10u * 4u);
+  EXPECT_DOUBLE_EQ(last.runs[0].pathTimes.back(), 1.0);
+  for (size_t i = 1; i < last.runs[0].pathTimes.size(); ++i) EXPECT_LT(last.runs[0].pathTimes[i - 1], last.runs[0].pathTimes[i]);
+}
+
+// Shards: frame k built after skipping straight to it equals frame k of a full walk.
+TEST(FrameBuilder, ShardStartEqualsFullWalk) {
+  const Scene scene = twoRunScene();
+  FrameBuilder full(scene, makeTrajectories(scene));
+  std::vector<FrameState> all;
+  for (int k = 0; k < full.frameCount(); ++k) all.push_back(full.frame(k));
+  for (int start : {3, 7, 10}) {
+    SCOPED_TRACE(start);
+    FrameBuilder shard(scene, makeTrajectories(scene));
+    expectSameFrame(shard.frame(start), all[size_t(start)]);
+  }
+}
+
+// Hinges, sphere points, divergence and energy error against fresh runs sampled at the frame times.
+TEST(FrameBuilder, ValuesMatchDirectSampling) {
+  const Scene scene = twoRunScene();
+  FrameBuilder builder(scene, makeTrajectories(scene));
+  std::vector<Trajectory> direct = makeTrajectories(scene);
+  for (int k = 0; k < builder.frameCount(); ++k) {
+    const FrameState state = builder.frame(k);
+    const Sample a = *direct[0].sampleAt(scene.frameTime(k));
+    const Sample b = *direct[1].sampleAt(scene.frameTime(k));
+    double worst = 0;
+    for (int h = 0; h < 3; ++h) {
+      EXPECT_NEAR(state.runs[0].hinges[size_t(h)].x, a.hinges(0, h), 1e-14);
+      worst = std::max(worst, (a.hinges.col(h) - b.hinges.col(h)).norm());
+    }
+    // The sphere panel shows x = (cos phi cos t, cos phi sin t, sin phi) from the sample's chart coordinates.
+    const double phi = a.coords(0), t = a.coords(1);
+    EXPECT_NEAR(state.runs[0].current.x, std::cos(phi) * std::cos(t), 1e-12);
+    EXPECT_NEAR(state.runs[0].current.z, std::sin(phi), 1e-12);
+    EXPECT_NEAR(state.plots[0].series[0].values.back(), worst, 1e-14);
+    EXPECT_EQ(state.plots[1].series[1].values.back(), std::abs(b.relativeEnergyDrift));
+    EXPECT_EQ(state.plots[0].series[0].times.back(), scene.frameTime(k));
+  }
+}
+
+TEST(FrameBuilder, TrailsFollowTheirHingesAndFade) {
+  const Scene scene = twoRunScene(R"(, "trail_fade_seconds": 0.3)");
+  FrameBuilder builder(scene, makeTrajectories(scene));
+  const FrameState state = builder.frame(10);
+  ASSERT_EQ(state.runs[0].trails.size(), 2u);
+  EXPECT_EQ(state.runs[0].trails[0].size(), 4u);  // ceil(0.3 * 10) + 1 frames kept
+  EXPECT_EQ(state.runs[0].trails[1].back().x, state.runs[0].hinges[2].x);
+}
+
+TEST(FrameBuilder, PathFadeKeepsOnlyRecentPoints) {
+  const Scene scene = twoRunScene(R"(, "path_fade_seconds": 0.25)");
+  FrameBuilder builder(scene, makeTrajectories(scene));
+  const FrameState state = builder.frame(10);
+  EXPECT_GE(state.runs[0].pathTimes.front(), 0.75);
+  EXPECT_LT(state.runs[0].path.size(), 12u);
+}
+
+// A run that fails is shown stopped, frozen at its last good state, with the reason.
+TEST(FrameBuilder, StoppedRunIsFrozenWithItsReason) {
+  Scene scene = twoRunScene();
+  scene.runs[1].config.maxRelativeEnergyDrift = 1e-14;  // rk4 at step 0.05 drifts beyond this at once
+  FrameBuilder builder(scene, makeTrajectories(scene));
+  const FrameState early = builder.frame(2);
+  const FrameState late = builder.frame(10);
+  ASSERT_TRUE(late.runs[1].stopped);
+  EXPECT_FALSE(late.runs[0].stopped);
+  EXPECT_FALSE(late.runs[1].stopReason.empty());
+  EXPECT_LT(late.runs[1].stopTime, 0.2);
+  EXPECT_EQ(late.runs[1].hinges[0].x, early.runs[1].hinges[0].x);
+  EXPECT_TRUE(std::isnan(late.plots[0].series[0].values.back()));  // no divergence once one side stopped
+}
+
+TEST(FrameBuilder, RefusesFramesOutOfOrder) {
+  const Scene scene = twoRunScene();
+  FrameBuilder builder(scene, makeTrajectories(scene));
+  builder.frame(5);
+  EXPECT_THROW(builder.frame(4), std::out_of_range);
+  EXPECT_THROW(builder.frame(11), std::out_of_range);
+}
+
+}  // namespace
+}  // namespace sl
