@@ -110,15 +110,21 @@ bool ChartSystem::adjust(State& y) {
 
 std::optional<MethodFailure> ChartSystem::inspect(const State& y) const {
   if (method_.usesAtlas) return std::nullopt;
-  // Chart 0's latitudes live in [-pi/2, pi/2]; past that the chart folds back over the pole and the run
-  // would silently retrace its path (spec section 4's caveat).
+  // Chart 0's latitudes live in [-pi/2, pi/2]; at the pole the chart folds back over itself and a run
+  // continues on the mirror image, silently retracing its path (spec section 4's caveat). Stop on reaching
+  // |cos phi| < poleMargin (the fields are garbage there anyway) or on crossing pi/2.
+  constexpr double poleMargin = 1e-3;
   const Eigen::Index k = static_cast<Eigen::Index>(y.size() / 2);
-  for (Eigen::Index level = 0; level + 1 < k; ++level)
-    if (std::abs(y[static_cast<size_t>(level)]) >= M_PI / 2)
-      return MethodFailure{"pole-fold-back", "single chart (phi, t) folded back over the pole: |c" +
-                                                 std::to_string(level + 1) + "| = " +
-                                                 std::to_string(std::abs(y[static_cast<size_t>(level)])) +
-                                                 " >= pi/2"};
+  for (Eigen::Index level = 0; level + 1 < k; ++level) {
+    const double latitude = y[static_cast<size_t>(level)];
+    if (std::abs(latitude) >= M_PI / 2 || std::abs(std::cos(latitude)) < poleMargin) {
+      std::ostringstream detail;
+      detail.precision(17);
+      detail << "single chart (phi, t) reached its pole (c" << level + 1 << " = " << latitude
+             << ", |cos| = " << std::abs(std::cos(latitude)) << " < " << poleMargin << "), where it folds back";
+      return MethodFailure{"pole-fold-back", detail.str()};
+    }
+  }
   return std::nullopt;
 }
 

@@ -15,6 +15,10 @@ namespace sl {
 
 namespace {
 
+// Steps shorter than this (relative to max(1, t)) mean the integrator is fighting a singularity or a
+// non-smooth field (the published metric near the seam): stop instead of crawling.
+constexpr double minimumRelativeStep = 1e-9;
+
 // Counts vector-field evaluations of the wrapped system.
 class CountingSystem : public GeodesicSystem {
  public:
@@ -108,7 +112,7 @@ struct Trajectory::Impl {
     const double t1 = stepper->endTime();
     if (!allFinite(end) || !std::isfinite(t1))
       return halt("non-finite", t0, "state became non-finite in the step from t = " + formatTime(t0) + "; last good state " + system->describe(y));
-    if (!(t1 - t0 > 1e-13 * std::max(1.0, std::abs(t0))))
+    if (!(t1 - t0 > minimumRelativeStep * std::max(1.0, std::abs(t0))))
       return halt("step-size-collapse", t0, "step size " + formatTime(t1 - t0) + " at t = " + formatTime(t0));
     if (const auto failure = system->inspect(end)) return halt(failure->reason, t0, failure->detail + " at t = " + formatTime(t1));
     const StepSummary summary = system->summarize(end, chartZeroTAtEnd);
