@@ -170,9 +170,9 @@ std::optional<Sample> Trajectory::sampleAt(double t) {
   Impl& run = *impl_;
   if (!std::isfinite(t) || t < 0) throw std::invalid_argument("sample time must be finite and >= 0");
   if (t < run.lastSampleTime) throw std::invalid_argument("sample times must be non-decreasing");
-  run.lastSampleTime = t;
   while (!run.stop && t > run.stepper->endTime()) run.advance();
-  if (run.stop && t > run.stop->time) return std::nullopt;
+  if (run.stop && t > run.stop->time) return std::nullopt;  // the stop time itself can still be sampled
+  run.lastSampleTime = t;
   State y;
   run.stepper->stateAt(t, y);
   return run.sample(t, y);

@@ -1,1 +1,151 @@
+// Runs as objects: sampling never changes the motion, RK4's order, watchdogs and clean stops, bad input.
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+#include "support.hpp"
+
+namespace sl {
+namespace {
+
+const Chain specChain = Chain::uniform(4, 3.0);
+
+void expectBitwiseEqual(const Sample& a, const Sample& b) {
+  EXPECT_EQ(a.time, b.time);
+  for (Eigen::Index i = 0; i < a.hinges.size(); ++i) EXPECT_EQ(a.hinges.data()[i], b.hinges.data()[i]);
+  for (Eigen::Index i = 0; i < a.coords.size(); ++i) EXPECT_EQ(a.coords(i), b.coords(i));
+  for (Eigen::Index i = 0; i < a.rates.size(); ++i) EXPECT_EQ(a.rates(i), b.rates(i));
+  EXPECT_EQ(a.energy, b.energy);
+}
+
+TEST(Trajectory, SamplingPatternDoesNotChangeTheMotion) {
+  // Every frame at 30 fps against frame 500 alone (t = 500/30, after a pole switch for the atlas methods).
+  for (const std::string method : {"ambient", "christoffel", "embedded-fd"})
+    for (const std::string integrator : {"rk4", "dopri5", "bulirsch-stoer"}) {
+      const RunConfig c = testing::config(method, integrator, 1e-10);
+      Trajectory everyFrame(specChain, testing::genericStart(specChain), c);
+      std::optional<Sample> frame500;
+      for (int frame = 0; frame <= 500; ++frame) frame500 = everyFrame.sampleAt(frame / 30.0);
+      Trajectory once(specChain, testing::genericStart(specChain), c);
+      const std::optional<Sample> alone = once.sampleAt(500 / 30.0);
+      ASSERT_TRUE(frame500 && alone) << method << "/" << integrator;
+      expectBitwiseEqual(*frame500, *alone);
+      EXPECT_EQ(everyFrame.steps(), once.steps());
+    }
+}
+
+TEST(Trajectory, RepeatedSamplingOfOneTimeIsStable) {
+  Trajectory run(specChain, testing::seamStart(specChain), testing::config("christoffel"));
+  const auto a = run.sampleAt(3.0), b = run.sampleAt(3.0);
+  ASSERT_TRUE(a && b);
+  expectBitwiseEqual(*a, *b);
+}
+
+TEST(Trajectory, Rk4IsFourthOrder) {
+  // Errors at T = 4 against the ambient method at 1e-13 (a different method, not a self-check).
+  Trajectory reference(specChain, testing::genericStart(specChain), testing::config("ambient", "bulirsch-stoer", 1e-13));
+  const Eigen::Matrix2Xd target = reference.sampleAt(4.0)->hinges;
+  for (const std::string method : {"christoffel", "embedded"}) {
+    std::vector<double> errors;
+    for (double h : {0.02, 0.01, 0.005}) {
+      RunConfig c = testing::config(method, "rk4");
+      c.step = h;
+      Trajectory run(specChain, testing::genericStart(specChain), c);
+      const std::optional<Sample> s = run.sampleAt(4.0);
+      ASSERT_TRUE(s) << run.stop()->reason;
+      errors.push_back((s->hinges - target).cwiseAbs().maxCoeff());
+    }
+    const double ratio1 = errors[0] / errors[1], ratio2 = errors[1] / errors[2];
+    std::cout << method << " rk4 errors " << errors[0] << " " << errors[1] << " " << errors[2] << ", ratios " << ratio1
+              << " " << ratio2 << "\n";
+    EXPECT_NEAR(ratio1, 16.0, 3.0) << method;
+    EXPECT_NEAR(ratio2, 16.0, 3.0) << method;
+  }
+}
+
+TEST(Trajectory, HermiteSamplingBetweenRk4StepsKeepsTheStepAccuracy) {
+  // Samples between steps come from cubic Hermite: error O(h^4) locally, so well below the step error.
+  RunConfig c = testing::config("christoffel", "rk4");
+  c.step = 0.01;
+  Trajectory run(specChain, testing::genericStart(specChain), c);
+  Trajectory reference(specChain, testing::genericStart(specChain), testing::config("ambient", "bulirsch-stoer", 1e-13));
+  double worst = 0;
+  for (double t = 0.0; t < 2.0; t += 0.0037)
+    worst = std::max(worst, (run.sampleAt(t)->hinges - reference.sampleAt(t)->hinges).cwiseAbs().maxCoeff());
+  EXPECT_LT(worst, 3e-8);  // the RK4 steps themselves are ~1e-8 off here
+}
+
+TEST(Trajectory, StopsCleanlyAndSaysWhy) {
+  RunConfig c = testing::config("ambient");
+  c.maxSteps = 10;
+  Trajectory run(specChain, testing::genericStart(specChain), c);
+  EXPECT_TRUE(run.sampleAt(0.0));
+  EXPECT_FALSE(run.sampleAt(15.0));
+  ASSERT_TRUE(run.stop());
+  EXPECT_EQ(run.stop()->reason, "max-steps");
+  EXPECT_GT(run.stop()->time, 0.0);
+  EXPECT_EQ(run.steps(), 10);
+  EXPECT_FALSE(run.sampleAt(16.0));
+}
+
+TEST(Trajectory, EnergyWatchdogCatchesAnUnstableStepSize) {
+  RunConfig c = testing::config("christoffel", "rk4");
+  c.step = 0.7;
+  Trajectory run(specChain, testing::genericStart(specChain), c);
+  std::optional<Sample> last;
+  for (double t = 0; t <= 20; t += 0.1) {
+    auto s = run.sampleAt(t);
+    if (!s) break;
+    EXPECT_TRUE(s->hinges.allFinite() && s->coords.allFinite() && s->rates.allFinite());
+    last = s;
+  }
+  ASSERT_TRUE(run.stop());
+  EXPECT_EQ(run.stop()->reason, "energy-blow-up");
+  EXPECT_LE(last->relativeEnergyDrift, c.maxRelativeEnergyDrift);
+}
+
+TEST(Trajectory, RejectsBadConfigurationAndStartsWithClearErrors) {
+  auto message = [](auto&& make) {
+    try {
+      make();
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const InitialState start = testing::genericStart(specChain);
+  EXPECT_NE(message([&] { Trajectory(specChain, start, testing::config("verlet")); }).find("unknown method"), std::string::npos);
+  EXPECT_NE(message([&] { Trajectory(specChain, start, testing::config("ambient", "euler")); }).find("unknown integrator"),
+            std::string::npos);
+  EXPECT_NE(message([&] { Trajectory(specChain, start, testing::config("ambient", "dopri5", 0.0)); }).find("tolerance"),
+            std::string::npos);
+  EXPECT_NE(message([&] { Trajectory(Chain::uniform(4, 4.5), start, testing::config("ambient")); }).find("L must lie"),
+            std::string::npos);
+  InitialState wrongSize{Eigen::Vector4d(1, 0, 0, 0), Eigen::Vector4d(0, 1, 0, 0)};
+  EXPECT_NE(message([&] { Trajectory(specChain, wrongSize, testing::config("ambient")); }).find("needs 3 components"),
+            std::string::npos);
+  InitialState notTangent{Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(1, 1, 0)};
+  EXPECT_NE(message([&] { Trajectory(specChain, notTangent, testing::config("ambient")); }).find("tangent"), std::string::npos);
+  InitialState resting{Eigen::Vector3d(1, 0, 0), Eigen::Vector3d::Zero()};
+  EXPECT_NE(message([&] { Trajectory(specChain, resting, testing::config("christoffel")); }).find("zero"), std::string::npos);
+  Trajectory run(specChain, start, testing::config("ambient"));
+  run.sampleAt(1.0);
+  EXPECT_THROW(run.sampleAt(0.5), std::invalid_argument);
+  EXPECT_THROW(run.sampleAt(std::nan("")), std::invalid_argument);
+}
+
+TEST(InitialState, ChartAndDragStartsAgree) {
+  const InitialState chart = testing::genericStart(specChain);
+  const InitialState drag = initialStateFromDrag(specChain, 2.0 * chart.spherePoint, chart.sphereVelocity + 0.3 * chart.spherePoint, false);
+  EXPECT_LT((drag.spherePoint - chart.spherePoint).norm(), 1e-15);
+  EXPECT_LT((drag.sphereVelocity - chart.sphereVelocity).norm(), 1e-15);
+  const InitialState unit = initialStateFromDrag(specChain, chart.spherePoint, chart.sphereVelocity, true);
+  EXPECT_NEAR(speedSquared(specChain, unit), 1.0, 1e-14);
+  // The spec's reference start has g(v, v) = speed2_0 of generic_L3.json.
+  EXPECT_NEAR(speedSquared(specChain, chart), 3.24497480972659, 1e-13);
+  EXPECT_THROW(initialStateFromDrag(specChain, chart.spherePoint, chart.spherePoint, true), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace sl
