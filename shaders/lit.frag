@@ -3,14 +3,24 @@
 // sphere panel (vWorld.w = 1) are hidden per pixel where the unit sphere is in front of them.
 in vec2 vLocal;
 flat in int vKind;
-in vec3 vParams;  // size (half width or radius), extra (capsule length, < 0 for ribbons), specular
+in vec3 vParams;  // size (half width or radius), extra (capsule length, < 0 for ribbons; ball world radius), specular
 in vec4 vColor;
 in vec2 vAxis;
 in vec4 vWorld;
 
 out vec4 fragColor;
 
-// 1 where the unit sphere lies in front of the 3D point vWorld along this pixel's ray.
+// Distance along the ray to this fragment's surface: for a ball (disc with a world radius in
+// vParams.y) where the ray meets the ball, else the distance to the point vWorld itself.
+float fragmentDistance(vec3 ray) {
+  float toPoint = distance(uEye, vWorld.xyz);
+  if (vKind != 1 || vParams.y <= 0.0) return toPoint;
+  float along = dot(vWorld.xyz - uEye, ray);
+  float offAxis2 = max(toPoint * toPoint - along * along, 0.0);
+  return along - sqrt(max(vParams.y * vParams.y - offAxis2, 0.0));
+}
+
+// 1 where the unit sphere lies in front of this fragment along its pixel's ray.
 float hiddenBySphere() {
   vec3 ray = pixelRay(gl_FragCoord.xy);
   float closest = -dot(ray, uEye);
@@ -18,7 +28,7 @@ float hiddenBySphere() {
   float pixel = closest / length(uForward);            // world size of a pixel at the sphere
   float sphereCover = edgeCoverage((1.0 - sqrt(max(miss2, 0.0))) / pixel);
   float nearHit = closest - sqrt(max(1.0 - miss2, 0.0));
-  float behind = smoothstep(-pixel, pixel, distance(uEye, vWorld.xyz) - nearHit);
+  float behind = smoothstep(-pixel, pixel, fragmentDistance(ray) - nearHit);
   return sphereCover * behind;
 }
 

@@ -6,6 +6,8 @@
 // llvmpipe's thread count comes from the environment: LP_NUM_THREADS=2 bench_render ...
 // Prints one line per repeat and the median; the machine may be shared, so compare medians and ratios.
 
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -26,6 +28,17 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+// CPU seconds used by this process (all threads, llvmpipe's and the encoders') and its children (ffmpeg).
+double cpuSeconds() {
+  double total = 0;
+  for (int who : {RUSAGE_SELF, RUSAGE_CHILDREN}) {
+    rusage usage{};
+    getrusage(who, &usage);
+    total += usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+  }
+  return total;
+}
 
 struct Options {
   int frames = 600, width = 1280, height = 720, encoders = 1, repeat = 3;
@@ -77,7 +90,7 @@ sl::RenderSettings settingsFor(const Options& o) {
 }
 
 struct Split {
-  double wall = 0, render = 0, encode = 0;
+  double wall = 0, render = 0, encode = 0, cpu = 0;
 };
 
 Split runOnce(const Options& o, sl::Renderer& renderer, const sl::SyntheticOptions& synthetic, double fps) {
@@ -93,6 +106,7 @@ Split runOnce(const Options& o, sl::Renderer& renderer, const sl::SyntheticOptio
   }
   sl::output::PngEncoder encoder;
   Split split;
+  const double cpuStart = cpuSeconds();
   const auto start = Clock::now();
   for (int k = 0; k < o.frames; ++k) {
     const sl::FrameState frame = sl::syntheticFrame(k / fps, k, synthetic);
@@ -108,6 +122,7 @@ Split runOnce(const Options& o, sl::Renderer& renderer, const sl::SyntheticOptio
   }
   if (sink) sink->finish();
   split.wall = seconds(Clock::now() - start);
+  split.cpu = cpuSeconds() - cpuStart;  // children's time counts once they are reaped (ffmpeg: at finish)
   return split;
 }
 
@@ -130,7 +145,9 @@ int main(int argc, char** argv) {
     std::printf("  run %d: %.1f frames/s wall; render+readback %.2f ms/frame", r + 1, o.frames / s.wall,
                 1e3 * s.render / o.frames);
     if (o.sink == "encode") std::printf(", PNG encode %.2f ms/frame", 1e3 * s.encode / o.frames);
-    std::printf("\n");
+    // On a shared machine wall time varies with the load; CPU time per frame does much less, and two
+    // idle cores can at best deliver 2 / (CPU seconds per frame) frames per second.
+    std::printf("; CPU %.2f ms/frame (2-core bound %.0f frames/s)\n", 1e3 * s.cpu / o.frames, 2 * o.frames / s.cpu);
   }
   std::sort(rates.begin(), rates.end());
   std::printf("median: %.1f frames/s\n", rates[rates.size() / 2]);

@@ -1,17 +1,36 @@
 #include "render/plane_view.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace sl::render {
 
+namespace {
+
+bool inDisc(double x, double y, double cx, double radius) { return (x - cx) * (x - cx) + y * y <= radius * radius * (1 + 1e-12); }
+
+// Highest point of the lens {|p| <= a} and {|p - (L, 0)| <= b}: the top of one disc if it lies in
+// the other, else where the two circles cross.
+double lensHeight(double a, double b, double base) {
+  double height = 0;
+  if (inDisc(0, a, base, b)) height = std::max(height, a);
+  if (inDisc(base, b, 0, a)) height = std::max(height, b);
+  const double x = (a * a - b * b + base * base) / (2 * base);
+  if (a * a - x * x > 0) height = std::max(height, std::sqrt(a * a - x * x));
+  return height;
+}
+
+}  // namespace
+
 PlaneView fitChainView(int rods, double base, const PixelRect& r) {
-  double x0 = 0, x1 = base, y0 = -0.5, y1 = 0.5;
-  for (int k = 1; k < rods; ++k) {
-    x0 = std::min(x0, std::max(-double(k), base - (rods - k)));
-    x1 = std::max(x1, std::min(double(k), base + (rods - k)));
-    const double reach = std::min(double(k), double(rods - k));
-    y0 = std::min(y0, -reach);
-    y1 = std::max(y1, reach);
+  double x0 = 0, x1 = base, y0 = -0.3, y1 = 0.3;
+  for (int k = 1; k < rods; ++k) {  // hinge k: within k of the left pin and n-k of the right one
+    const double a = k, b = rods - k;
+    x0 = std::min(x0, inDisc(-a, 0, base, b) ? -a : base - b);
+    x1 = std::max(x1, inDisc(base + b, 0, 0, a) ? base + b : a);
+    const double height = lensHeight(a, b, base);
+    y0 = std::min(y0, -height);
+    y1 = std::max(y1, height);
   }
   const double margin = 0.08;
   const double scale = std::min(r.width * (1 - 2 * margin) / (x1 - x0), r.height * (1 - 2 * margin) / (y1 - y0));

@@ -50,10 +50,10 @@ void ShapeBatch::capsule(P2 a, P2 b, float halfWidth, Rgba color, bool shaded, f
   quad(corners);
 }
 
-void ShapeBatch::disc(P2 c, float radius, Rgba color, bool shaded, float specular, Occludable world) {
+void ShapeBatch::disc(P2 c, float radius, Rgba color, bool shaded, float specular, Occludable world, float worldRadius) {
   const float e = radius + kMargin;
   auto make = [&](float dx, float dy) {
-    return vertex(c + P2{dx, dy}, {dx, dy}, ShapeKind::Disc, radius, 0, color, shaded, specular, {0, 1}, world);
+    return vertex(c + P2{dx, dy}, {dx, dy}, ShapeKind::Disc, radius, worldRadius, color, shaded, specular, {0, 1}, world);
   };
   const ShapeVertex corners[4] = {make(-e, -e), make(e, -e), make(e, e), make(-e, e)};
   quad(corners);
@@ -80,8 +80,24 @@ void ShapeBatch::polyline(const std::vector<PolylinePoint>& input, bool shaded, 
       points.back() = input[i];
     }
   }
-  if (points.size() < 2) return;
-  const std::size_t count = points.size();
+  // A mitre cannot turn sharper than ~60 degrees without folding its quads over a wide area (as a
+  // path does where it crosses the sphere's outline in projection): the strip restarts there.
+  std::size_t start = 0;
+  for (std::size_t i = 1; i + 1 < points.size(); ++i) {
+    const P2 a = points[i].at - points[i - 1].at, b = points[i + 1].at - points[i].at;
+    if (a.x * b.x + a.y * b.y < 0.5f * length(a) * length(b)) {
+      strip(points, start, i + 1, shaded, specular);
+      start = i;
+    }
+  }
+  strip(points, start, points.size(), shaded, specular);
+}
+
+void ShapeBatch::strip(const std::vector<PolylinePoint>& all, std::size_t begin, std::size_t end, bool shaded,
+                       float specular) {
+  if (end < begin + 2) return;
+  const PolylinePoint* points = all.data() + begin;
+  const std::size_t count = end - begin;
   std::vector<P2> miter(count);
   std::vector<float> miterScale(count, 1.0f);
   for (std::size_t i = 0; i < count; ++i) {
@@ -91,7 +107,7 @@ void ShapeBatch::polyline(const std::vector<PolylinePoint>& input, bool shaded, 
     const float len = length(m);
     m = len > 1e-3f ? (1.0f / len) * m : before;
     miter[i] = m;
-    miterScale[i] = 1.0f / std::max(m.x * before.x + m.y * before.y, 0.5f);  // sharp turns: bounded mitre
+    miterScale[i] = 1.0f / std::max(m.x * before.x + m.y * before.y, 0.5f);
   }
   auto make = [&](std::size_t i, float side) {
     const PolylinePoint& p = points[i];

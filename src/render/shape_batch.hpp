@@ -55,8 +55,10 @@ class ShapeBatch {
   // A segment with round ends; `shaded` lights it as a cylinder.
   void capsule(P2 a, P2 b, float halfWidth, Rgba color, bool shaded = false, float specular = 0,
                Occludable world = {});
-  // A disc; `shaded` lights it as a ball.
-  void disc(P2 centre, float radius, Rgba color, bool shaded = false, float specular = 0, Occludable world = {});
+  // A disc; `shaded` lights it as a ball. With `world`, a ball of `worldRadius` about that point, hidden
+  // per pixel by the sphere of the sphere panel.
+  void disc(P2 centre, float radius, Rgba color, bool shaded = false, float specular = 0, Occludable world = {},
+            float worldRadius = 0);
   void ring(P2 centre, float outerRadius, float innerRadius, Rgba color);
   // Joined strip through the points (mitred), width and colour interpolated; no double blending at
   // joints, so translucent fading paths stay smooth.
@@ -73,6 +75,7 @@ class ShapeBatch {
 
  private:
   void quad(const ShapeVertex corners[4]);
+  void strip(const std::vector<PolylinePoint>& points, std::size_t begin, std::size_t end, bool shaded, float specular);
   std::vector<ShapeVertex> vertices_;
   std::vector<ShapeSegment> segments_;
 };

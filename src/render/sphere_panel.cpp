@@ -62,11 +62,13 @@ void drawBall(const RunFrame& run, const SphereCamera& camera, const Placement& 
   ballPlacement.lift = kBallRadius;
   const V3 centre = ballPlacement.place(run.current);
   if (!finite(run.current) || !camera.inFront(centre)) return;
-  const float radius = std::max(2.5f, float(kBallRadius * camera.pixelsPerUnitAt(centre)));
+  const float pixelsPerUnit = float(camera.pixelsPerUnitAt(centre));
+  const float radius = std::max(2.5f, float(kBallRadius) * pixelsPerUnit);
   const P2 at = camera.project(centre);
+  const Occludable world = ballPlacement.world(centre);
   // A stopped run's ball sits on a red halo (a larger ball behind it, hidden with it by the sphere).
-  if (run.stopped) batch.disc(at, radius + 2.5f, palette::stopRed, true, 0.2f, ballPlacement.world(centre));
-  batch.disc(at, radius, toRgba(run.color), true, 0.55f, ballPlacement.world(centre));
+  if (run.stopped) batch.disc(at, radius + 2.5f, palette::stopRed, true, 0.2f, world, (radius + 2.5f) / pixelsPerUnit);
+  batch.disc(at, radius, toRgba(run.color), true, 0.55f, world, radius / pixelsPerUnit);
 }
 
 // 3 rods: the configuration circle, the equator.
