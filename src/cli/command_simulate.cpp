@@ -12,7 +12,6 @@
 #include "cli/interrupt.hpp"
 #include "cli/scene_input.hpp"
 #include "frames/frame_builder.hpp"
-#include "frames/scene_start.hpp"
 #include "output/atomic_file.hpp"
 #include "simulation/trajectory_csv.hpp"
 
@@ -38,23 +37,15 @@ std::vector<double> sampleTimes(const Scene& scene, double dt) {
   return times;
 }
 
-// One row per time while the run goes; a run that stops ends with one row at its stop time, whose
-// status is the reason. That last state is taken from a replay of the run (the same steps, as steps never
-// depend on the sample times): the run itself has already been asked for a later time, and samples must
-// come in non-decreasing time order. (simulation's writeTrajectoryCsv asks the stopped run itself and
-// throws "sample times must be non-decreasing"; see the report.)
-void writeRun(std::ostream& out, const Scene& scene, size_t run, Trajectory& trajectory, const std::vector<double>& times) {
-  const std::string& name = scene.runs[run].name;
-  for (double t : times) {
+// Written in chunks so that SIGINT/SIGTERM is noticed within one chunk's work. A run that stops ends
+// with one row at its stop time whose status is the reason (trajectory_csv.hpp); nothing follows it.
+void writeRun(std::ostream& out, const std::string& name, Trajectory& trajectory, const std::vector<double>& times) {
+  const size_t chunk = 256;
+  for (size_t first = 0; first < times.size(); first += chunk) {
     stopIfInterrupted("no CSV was written");
-    if (const std::optional<Sample> sample = trajectory.sampleAt(t)) {
-      out << trajectoryCsvRow(name, *sample) << '\n';
-      continue;
-    }
-    const StopInfo& stop = *trajectory.stop();
-    Trajectory replay(scene.chain, sceneStart(scene), scene.runs[run].config);
-    if (const std::optional<Sample> last = replay.sampleAt(stop.time)) out << trajectoryCsvRow(name, *last, stop.reason) << '\n';
-    return;
+    const std::vector<double> part(times.begin() + first, times.begin() + std::min(times.size(), first + chunk));
+    writeTrajectoryCsv(out, name, trajectory, part, false);
+    if (trajectory.stop() && trajectory.stop()->time < part.back()) return;
   }
 }
 
@@ -71,7 +62,7 @@ void runSimulate(const SimulateArguments& args) {
   std::ostream& out = args.csv.empty() ? std::cout : buffer;
   out << trajectoryCsvHeader(scene.chain.rods) << '\n';
   for (size_t i = 0; i < runs.size(); ++i) {
-    writeRun(out, scene, i, runs[i], times);
+    writeRun(out, scene.runs[i].name, runs[i], times);
     if (const auto& stop = runs[i].stop()) {
       std::cerr << "run \"" << scene.runs[i].name << "\" stopped at t = " << stop->time << ": " << stop->reason
                 << (stop->detail.empty() ? "" : " (" + stop->detail + ")") << '\n';
