@@ -1,7 +1,7 @@
-// Flat-coloured shapes with analytic anti-aliasing (see lit.frag): capsules, discs, rings, rectangles.
+// Flat-coloured shapes with analytic anti-aliasing (see lit.frag): capsules, discs, rectangles.
 in vec2 vLocal;
 flat in int vKind;
-in vec3 vParams;  // size (half width or radius), extra (capsule length, < 0 for ribbons; ring inner radius)
+in vec3 vParams;  // size (half width or radius), extra (capsule length, < 0 for ribbons)
 in vec4 vColor;
 
 out vec4 fragColor;
@@ -12,9 +12,6 @@ void main() {
     cover = edgeCoverage(vParams.x - capsuleDistance(vLocal, vParams.y));
   } else if (vKind == 1) {
     cover = edgeCoverage(vParams.x - length(vLocal));
-  } else if (vKind == 2) {
-    float d = length(vLocal);
-    cover = edgeCoverage(vParams.x - d) * edgeCoverage(d - vParams.y);
   }
   float alpha = vColor.a * cover;
   fragColor = vec4(vColor.rgb * alpha, alpha);

@@ -57,7 +57,7 @@ std::vector<std::uint32_t> decodeUtf8(const std::string& text) {
   return out;
 }
 
-FontAtlas::FontAtlas(const std::string& ttfPath, const float (&pixelHeights)[3]) : packed_(new Packed) {
+FontAtlas::FontAtlas(const std::string& ttfPath, const std::array<float, 3>& pixelHeights) : packed_(new Packed) {
   std::ifstream in(ttfPath, std::ios::binary);
   if (!in) {
     delete packed_;

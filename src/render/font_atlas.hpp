@@ -3,6 +3,7 @@
 // stb_truetype (2x2 oversampled, so glyphs placed at fractional pixels stay sharp) and drawn as
 // textured quads of a ShapeBatch. CPU only: the renderer uploads bitmap() as a texture.
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -16,7 +17,7 @@ enum class TextSize { Small = 0, Normal = 1, Title = 2 };
 class FontAtlas {
  public:
   // Pixel heights for Small, Normal, Title. Throws naming the file if the font cannot be read.
-  FontAtlas(const std::string& ttfPath, const float (&pixelHeights)[3]);
+  FontAtlas(const std::string& ttfPath, const std::array<float, 3>& pixelHeights);
   ~FontAtlas();
   FontAtlas(const FontAtlas&) = delete;
   FontAtlas& operator=(const FontAtlas&) = delete;

@@ -6,6 +6,7 @@
 #include "render/renderer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <filesystem>
 #include <stdexcept>
@@ -57,12 +58,9 @@ struct Renderer::Impl {
     for (const char* name : names) paths.push_back(dir(s) + "/shaders/" + name);
     return paths;
   }
-  static const float (&textHeights(int height))[3] {
-    static thread_local float heights[3];
-    heights[0] = std::max(10.0f, 0.021f * height);
-    heights[1] = std::max(10.0f, 0.025f * height);
-    heights[2] = std::max(11.0f, 0.034f * height);
-    return heights;
+  // Small, Normal and Title text scale with the frame height (15, 18 and 24 px at 720p).
+  static std::array<float, 3> textHeights(int height) {
+    return {std::max(10.0f, 0.021f * height), std::max(10.0f, 0.025f * height), std::max(11.0f, 0.034f * height)};
   }
 
   explicit Impl(const RenderSettings& s)

@@ -59,15 +59,6 @@ void ShapeBatch::disc(P2 c, float radius, Rgba color, bool shaded, float specula
   quad(corners);
 }
 
-void ShapeBatch::ring(P2 c, float outerRadius, float innerRadius, Rgba color) {
-  const float e = outerRadius + kMargin;
-  auto make = [&](float dx, float dy) {
-    return vertex(c + P2{dx, dy}, {dx, dy}, ShapeKind::Ring, outerRadius, innerRadius, color, false, 0, {0, 1}, {});
-  };
-  const ShapeVertex corners[4] = {make(-e, -e), make(e, -e), make(e, e), make(-e, e)};
-  quad(corners);
-}
-
 void ShapeBatch::polyline(const std::vector<PolylinePoint>& input, bool shaded, float specular) {
   // Points closer than half a pixel add vertices but nothing visible; keep the last one regardless.
   std::vector<PolylinePoint> points;

@@ -21,12 +21,12 @@ struct Occludable {
 };
 
 // Shape kinds, mirrored in shaders/shapes.frag.
-enum class ShapeKind { Capsule = 0, Disc = 1, Ring = 2, Glyph = 3, Rect = 4 };
+enum class ShapeKind { Capsule = 0, Disc = 1, Glyph = 3, Rect = 4 };
 
 struct ShapeVertex {
   float x, y;            // pixel position
   float localX, localY;  // shape-local coordinates (pixels; texture coordinates for glyphs)
-  float kind, size, extra, specular;  // size: half width / radius; extra: capsule length / inner radius
+  float kind, size, extra, specular;  // size: half width / radius; extra: capsule length / ball radius (world)
   float r, g, b, a;
   float axisX, axisY;    // screen direction across a tube (for its shading)
   float wx, wy, wz, ww;  // Occludable
@@ -59,7 +59,6 @@ class ShapeBatch {
   // per pixel by the sphere of the sphere panel.
   void disc(P2 centre, float radius, Rgba color, bool shaded = false, float specular = 0, Occludable world = {},
             float worldRadius = 0);
-  void ring(P2 centre, float outerRadius, float innerRadius, Rgba color);
   // Joined strip through the points (mitred), width and colour interpolated; no double blending at
   // joints, so translucent fading paths stay smooth.
   void polyline(const std::vector<PolylinePoint>& points, bool shaded = false, float specular = 0);
