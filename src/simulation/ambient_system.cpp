@@ -34,7 +34,7 @@ Eigen::VectorXd sphereVelocityFromHingeVelocities(const Chain& chain, const Eige
 }
 
 AmbientSystem::AmbientSystem(const Chain& chain, const InitialState& start, double projectBeyond)
-    : chain_(chain), projectBeyond_(projectBeyond), solver_(chain) {
+    : chain_(chain), mass_(ambientMassMatrix(chain)), projectBeyond_(projectBeyond), solver_(chain) {
   const Eigen::Index hinges = chain.hingeCount();
   start_.assign(static_cast<size_t>(4 * hinges), 0.0);
   Eigen::Map<Eigen::Matrix2Xd> q(start_.data(), 2, hinges), v(start_.data() + 2 * hinges, 2, hinges);
@@ -120,7 +120,7 @@ StepSummary AmbientSystem::summarize(const State& y, double previousT) const {
   const Eigen::Index hinges = chain_.hingeCount();
   const Eigen::Map<const Eigen::Matrix2Xd> q(y.data(), 2, hinges), v(y.data() + 2 * hinges, 2, hinges);
   StepSummary summary;
-  summary.energy = kineticEnergy(ambientMassMatrix(chain_), v);
+  summary.energy = kineticEnergy(mass_, v);
   summary.rodLengthError = rodLengthError(chain_, q);
   const Eigen::VectorXd x = spherePointFromHinges(chain_, q);
   summary.chartZeroT = coordinatesFromSpherePoint(x, previousT)(x.size() - 2);

@@ -30,6 +30,7 @@ class AmbientSystem : public GeodesicSystem {
   void projectVelocities(const Eigen::Matrix2Xd& q, Eigen::Map<Eigen::Matrix2Xd> v);
 
   Chain chain_;
+  AmbientMassMatrix mass_;
   double projectBeyond_;
   long projections_ = 0;
   State start_;

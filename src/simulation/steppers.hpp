@@ -3,6 +3,8 @@
 // the last step (dense output), so that sampling never influences the step sequence.
 //   rk4            fixed step (the spec's demo); cubic Hermite between steps from the stored derivatives.
 //   dopri5         Boost.Odeint's adaptive Dormand-Prince 5(4) with its 4th-order dense output.
+//   rkf78          Boost.Odeint's adaptive Runge-Kutta-Fehlberg 7(8); in-between states by one extra 7(8)
+//                  step from the step's start.
 //   bulirsch-stoer Boost.Odeint's adaptive extrapolation method with dense output, for tight tolerances.
 
 #include <memory>
@@ -26,7 +28,7 @@ class Stepper {
   virtual void stateAt(double t, State& y) = 0;
 };
 
-// integrator: rk4 | dopri5 | bulirsch-stoer. tolerance: absolute and relative (adaptive); step: rk4's step.
+// integrator: rk4 | dopri5 | rkf78 | bulirsch-stoer. tolerance: absolute and relative (adaptive); step: rk4's step.
 std::unique_ptr<Stepper> makeStepper(const std::string& integrator, double tolerance, double step);
 
 const std::vector<std::string>& stepperNames();

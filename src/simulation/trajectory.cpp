@@ -54,7 +54,7 @@ void validateConfig(const RunConfig& config) {
     throw std::invalid_argument("unknown method '" + config.method +
                                 "' (expected christoffel-fd, embedded-fd, christoffel, embedded or ambient)");
   if (std::find(integrators.begin(), integrators.end(), config.integrator) == integrators.end())
-    throw std::invalid_argument("unknown integrator '" + config.integrator + "' (expected rk4, dopri5 or bulirsch-stoer)");
+    throw std::invalid_argument("unknown integrator '" + config.integrator + "' (expected rk4, dopri5, rkf78 or bulirsch-stoer)");
   if (!(config.tolerance > 0) || !std::isfinite(config.tolerance))
     throw std::invalid_argument("tolerance must be positive and finite");
   if (!(config.step > 0) || !std::isfinite(config.step)) throw std::invalid_argument("step must be positive and finite");

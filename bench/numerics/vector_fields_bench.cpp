@@ -1,0 +1,55 @@
+// ns per geodesic vector-field evaluation, 4 rods (L = 3), at the reference start (phi, t) = (0.3, 0.2).
+#include <benchmark/benchmark.h>
+
+#include "linkage/sphere_coordinates.hpp"
+#include "simulation/ambient_system.hpp"
+#include "simulation/chart_system.hpp"
+#include "simulation/initial_state.hpp"
+#include "simulation/published_fields.hpp"
+
+namespace {
+
+const sl::Chain chain = sl::Chain::uniform(4, 3.0);
+const Eigen::Vector2d coords(0.3, 0.2), rates(0.5, 0.7);
+
+void BM_ChristoffelFd(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(sl::christoffelFdAcceleration(3.0, coords, rates));
+}
+void BM_EmbeddedFd(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(sl::embeddedFdAcceleration(3.0, coords, rates));
+}
+
+// Through the ODE interface the integrators see (state vector in, derivative out).
+void chartSystemField(benchmark::State& state, const std::string& method) {
+  const sl::ChartSystem system(chain, sl::chartMethod(method, chain), sl::initialStateFromChart(chain, coords, rates));
+  const sl::State y = system.initialState();
+  sl::State dydt(y.size());
+  for (auto _ : state) {
+    system.derivative(y, dydt);
+    benchmark::DoNotOptimize(dydt.data());
+  }
+}
+void BM_ChristoffelFdSystem(benchmark::State& state) { chartSystemField(state, "christoffel-fd"); }
+void BM_EmbeddedFdSystem(benchmark::State& state) { chartSystemField(state, "embedded-fd"); }
+void BM_Christoffel(benchmark::State& state) { chartSystemField(state, "christoffel"); }
+void BM_Embedded(benchmark::State& state) { chartSystemField(state, "embedded"); }
+
+void BM_Ambient(benchmark::State& state) {
+  const sl::AmbientSystem system(chain, sl::initialStateFromChart(chain, coords, rates), 1e-14);
+  const sl::State y = system.initialState();
+  sl::State dydt(y.size());
+  for (auto _ : state) {
+    system.derivative(y, dydt);
+    benchmark::DoNotOptimize(dydt.data());
+  }
+}
+
+}  // namespace
+
+BENCHMARK(BM_ChristoffelFd);
+BENCHMARK(BM_EmbeddedFd);
+BENCHMARK(BM_ChristoffelFdSystem);
+BENCHMARK(BM_EmbeddedFdSystem);
+BENCHMARK(BM_Christoffel);
+BENCHMARK(BM_Embedded);
+BENCHMARK(BM_Ambient);
