@@ -104,13 +104,18 @@ bool renderFrames(const RenderPlan& plan, output::FrameManifest* pngManifest,
                   std::vector<std::unique_ptr<output::FrameSink>>& sinks, Renderer& renderer, FrameBuilder& builder) {
   Progress progress(plan.range.end - plan.range.first, plan.quiet);
   for (int k = plan.range.first; k < plan.range.end; ++k) {
-    if (interruptRequested()) return false;
     const bool complete = plan.resume && pngManifest && pngManifest->isFrameComplete(k);
-    if (!complete) {
-      Image image = renderer.render(builder.frame(k));
-      for (size_t i = 0; i + 1 < sinks.size(); ++i) sinks[i]->consume(k, image);
-      sinks.back()->consume(k, std::move(image));
+    if (complete) {
+      progress.update(k - plan.range.first + 1);
+      continue;
     }
+    // Frames before k are sampled (not rendered) for the path and plot history, one at a time so that
+    // a signal is noticed even while a late shard walks up to its first frame.
+    for (int next = builder.lastSampledFrame() + 1; next < k && !interruptRequested(); ++next) builder.advanceTo(next);
+    if (interruptRequested()) return false;
+    Image image = renderer.render(builder.frame(k));
+    for (size_t i = 0; i + 1 < sinks.size(); ++i) sinks[i]->consume(k, image);
+    sinks.back()->consume(k, std::move(image));
     progress.update(k - plan.range.first + 1);
   }
   return true;

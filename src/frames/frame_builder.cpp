@@ -62,9 +62,13 @@ FrameBuilder::FrameBuilder(const Scene& scene, std::vector<Trajectory> runs)
   }
 }
 
-FrameState FrameBuilder::frame(int k) {
-  if (k < sampled_ || k >= frameCount_) throw std::out_of_range("FrameBuilder::frame: frame out of order or range");
+void FrameBuilder::advanceTo(int k) {
+  if (k < sampled_ || k >= frameCount_) throw std::out_of_range("FrameBuilder: frame out of order or range");
   while (sampled_ < k) sampleFrame(sampled_ + 1);
+}
+
+FrameState FrameBuilder::frame(int k) {
+  advanceTo(k);
   return snapshot(k);
 }
 

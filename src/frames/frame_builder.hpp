@@ -25,6 +25,10 @@ class FrameBuilder {
   int frameCount() const { return frameCount_; }
   // Frame k; k must not be smaller than the previous call's.
   FrameState frame(int k);
+  // Samples the history up to frame k without building a FrameState (cheap: shards walk in this way,
+  // and callers can check for interrupts between frames).
+  void advanceTo(int k);
+  int lastSampledFrame() const { return sampled_; }  // -1 before the first
   const std::vector<Trajectory>& runs() const { return runs_; }
 
  private:

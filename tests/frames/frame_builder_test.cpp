@@ -89,6 +89,10 @@ TEST(FrameBuilder, ShardStartEqualsFullWalk) {
     SCOPED_TRACE(start);
     FrameBuilder shard(scene, makeTrajectories(scene));
     expectSameFrame(shard.frame(start), all[size_t(start)]);
+    FrameBuilder walked(scene, makeTrajectories(scene));  // the render command's walk: advanceTo, then frame
+    for (int k = 0; k < start; ++k) walked.advanceTo(k);
+    EXPECT_EQ(walked.lastSampledFrame(), start - 1);
+    expectSameFrame(walked.frame(start), all[size_t(start)]);
   }
 }
 
