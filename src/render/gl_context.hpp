@@ -3,10 +3,31 @@
 // The context is current on the thread that created it; draw and read back on that thread only.
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace sl::render {
+
+struct PixelRect;
+
+// An offscreen RGBA8 framebuffer of the frame's size: the frame, and cached layers.
+class GlLayer {
+ public:
+  GlLayer(int width, int height);
+  ~GlLayer();
+  GlLayer(const GlLayer&) = delete;
+  GlLayer& operator=(const GlLayer&) = delete;
+
+  void bind() const;
+  unsigned framebuffer() const { return framebuffer_; }
+  // Copies a rectangle (pixels, y down = GL rows) into the same place of another framebuffer.
+  void copyTo(unsigned framebuffer, const PixelRect& rect) const;
+
+ private:
+  int width_, height_;
+  unsigned framebuffer_ = 0, colorBuffer_ = 0;
+};
 
 class GlContext {
  public:
@@ -21,7 +42,7 @@ class GlContext {
   // with y pointing down, so row 0 is the top of the image and no flip is needed.
   void readRgb(std::vector<std::uint8_t>& rgb) const;
 
-  unsigned framebuffer() const { return framebuffer_; }
+  unsigned framebuffer() const;
   int width() const { return width_; }
   int height() const { return height_; }
   std::string rendererName() const;
@@ -31,26 +52,7 @@ class GlContext {
   int width_, height_;
   void* context_ = nullptr;             // OSMesaContext
   std::vector<std::uint8_t> clientBuffer_;  // OSMesaMakeCurrent needs one; 1x1 is enough
-  unsigned framebuffer_ = 0, colorBuffer_ = 0;
-};
-
-struct PixelRect;
-
-// A second offscreen framebuffer of the frame's size, for cached layers.
-class GlLayer {
- public:
-  GlLayer(int width, int height);
-  ~GlLayer();
-  GlLayer(const GlLayer&) = delete;
-  GlLayer& operator=(const GlLayer&) = delete;
-
-  void bind() const;
-  // Copies a rectangle (pixels, y down = GL rows) into the same place of another framebuffer.
-  void copyTo(unsigned framebuffer, const PixelRect& rect) const;
-
- private:
-  int width_, height_;
-  unsigned framebuffer_ = 0, colorBuffer_ = 0;
+  std::unique_ptr<GlLayer> frame_;       // the frame itself
 };
 
 }  // namespace sl::render

@@ -15,7 +15,11 @@ constexpr double kTubeRadius = 0.014;  // world units (sphere radius 1)
 constexpr double kBallRadius = 0.055;
 
 V3 toV3(const Vec3& p) { return {p.x, p.y, p.z}; }
-bool finite(const Vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+// Finite and not absurdly far: a stereographic projection runs off to infinity near its pole, and
+// such points would only stretch a segment across the whole panel.
+bool drawable(const Vec3& p) {
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && p.x * p.x + p.y * p.y + p.z * p.z < 400.0;
+}
 
 // On the opaque sphere, points ride on a shell just outside it so the tube's front half is never
 // inside the sphere; lines elsewhere are not occluded.
@@ -46,7 +50,7 @@ void drawPath(const RunFrame& run, const PanelContext& context, const SphereCame
     const double age = i < run.pathTimes.size() ? context.frame.time - run.pathTimes[i] : 0.0;
     const float alpha = pathAlpha(context.settings, age);
     const V3 p = placement.place(run.path[i]);
-    if (alpha <= 0.0f || !finite(run.path[i]) || !camera.inFront(p)) {
+    if (alpha <= 0.0f || !drawable(run.path[i]) || !camera.inFront(p)) {
       batch.polyline(points, true, 0.35f);  // a gap: draw what came before, start afresh
       points.clear();
       continue;
@@ -61,7 +65,7 @@ void drawBall(const RunFrame& run, const SphereCamera& camera, const Placement& 
   Placement ballPlacement = placement;
   ballPlacement.lift = kBallRadius;
   const V3 centre = ballPlacement.place(run.current);
-  if (!finite(run.current) || !camera.inFront(centre)) return;
+  if (!drawable(run.current) || !camera.inFront(centre)) return;
   const float pixelsPerUnit = float(camera.pixelsPerUnitAt(centre));
   const float radius = std::max(2.5f, float(kBallRadius) * pixelsPerUnit);
   const P2 at = camera.project(centre);
