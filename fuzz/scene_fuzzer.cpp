@@ -1,0 +1,55 @@
+// libFuzzer target: any bytes as a scene file. The loader must either accept the scene or throw a
+// SceneError with at least one problem; an accepted scene must turn into a finite start of the motion
+// (or a clear std::invalid_argument). Anything else — a crash, a sanitizer report, a leak, a hang, an
+// escaped exception of another type, a non-finite start — is a finding.
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+
+#include "frames/scene_start.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace {
+
+// The names a full build accepts (the CLI fills these from the simulation; fixed here so that the
+// fuzzer links neither the simulation nor the renderer).
+sl::SceneLimits fuzzLimits() {
+  sl::SceneLimits limits;
+  limits.methods = {"christoffel-fd", "embedded-fd", "christoffel", "embedded", "ambient"};
+  limits.integrators = {"rk4", "dopri5", "rkf78", "bulirsch-stoer"};
+  limits.adaptiveIntegrators = {"dopri5", "rkf78", "bulirsch-stoer"};
+  return limits;
+}
+
+[[noreturn]] void finding(const std::string& what) {
+  std::fprintf(stderr, "scene_fuzzer: %s\n", what.c_str());
+  std::abort();
+}
+
+void checkStart(const sl::Scene& scene) {
+  try {
+    const sl::InitialState start = sl::sceneStart(scene);
+    if (!start.spherePoint.allFinite() || !start.sphereVelocity.allFinite()) {
+      finding("an accepted scene gives a non-finite start");
+    }
+  } catch (const std::invalid_argument& error) {
+    if (std::string(error.what()).empty()) finding("an invalid start without a message");
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  static const sl::SceneLimits limits = fuzzLimits();
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  try {
+    const sl::Scene scene = sl::parseScene(text, "fuzz.json", limits);
+    if (scene.runs.empty()) finding("an accepted scene without runs");
+    checkStart(scene);
+  } catch (const sl::SceneError& error) {
+    if (error.problems().empty()) finding("a SceneError without problems");
+  }
+  return 0;
+}

@@ -1,0 +1,184 @@
+// Process faults on the built `linkage` binary: SIGTERM and SIGKILL at random frames of a render, a full
+// disk and a read-only output folder. Afterwards no partial PNG exists, the manifest lists only complete
+// frames, and --resume finishes with files byte-identical to an uninterrupted render.
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <random>
+#include <thread>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "child_process.hpp"
+#include "fault_scenes.hpp"
+#include "temp_folder.hpp"
+
+namespace sl {
+namespace {
+
+namespace fs = std::filesystem;
+using faults::ChildProcess;
+using faults::ExitStatus;
+using faults::TempFolder;
+
+constexpr int kFrames = 40;
+
+bool isFrameFile(const fs::path& file) {
+  return file.extension() == ".png" && file.filename().string().rfind("frame_", 0) == 0;
+}
+
+// The final files of a render folder (frames and manifest), by name; temporaries and locks excluded.
+std::map<std::string, std::string> renderFiles(const fs::path& folder) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    const std::string name = entry.path().filename().string();
+    if (isFrameFile(entry.path()) || name == "manifest.json") files[name] = faults::readText(entry.path().string());
+  }
+  return files;
+}
+
+// Leftovers of interrupted atomic writes (frame_00012.png.tmp.PID.N).
+std::vector<std::string> temporaries(const fs::path& folder) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    if (entry.path().filename().string().find(".tmp") != std::string::npos) names.push_back(entry.path().filename());
+  }
+  return names;
+}
+
+int frameFileCount(const fs::path& folder) {
+  std::error_code error;
+  int count = 0;
+  for (const auto& entry : fs::directory_iterator(folder, error)) count += isFrameFile(entry.path());
+  return count;
+}
+
+class ProcessFaults : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    faults::writeText(folder_ / "small.json", faults::smallRenderScene(kFrames, "reference"));
+    std::string errors;
+    ASSERT_EQ(render({"--quiet"}, &errors).code, 0) << errors;
+    reference_ = renderFiles(folder_.path() / "reference");
+    ASSERT_EQ(reference_.size(), kFrames + 1u);  // the frames and the manifest
+  }
+
+  ExitStatus render(std::vector<std::string> options, std::string* errors = nullptr) {
+    options.insert(options.begin(), {"render", "small.json"});
+    return faults::runLinkage(options, folder_.path().string(), 300, errors);
+  }
+
+  // Starts a render into `out`, waits until it has written `frame` frames, then sends `signal`.
+  ExitStatus interruptAt(const std::string& out, int frame, int signal) {
+    ChildProcess child(faults::linkageBinary(), {"render", "small.json", "--quiet", "--resume", "--out", out},
+                       folder_.path().string(), out);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (child.running() && frameFileCount(folder_.path() / out) < frame &&
+           std::chrono::steady_clock::now() < deadline) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    child.sendSignal(signal);
+    return child.wait(120);
+  }
+
+  // Every frame file present and every manifest entry equals the uninterrupted render's.
+  void expectOnlyCompleteFrames(const std::string& out) {
+    const fs::path folder = folder_.path() / out;
+    for (const auto& [name, bytes] : renderFiles(folder)) {
+      if (name == "manifest.json") continue;
+      EXPECT_TRUE(bytes == reference_.at(name)) << name << " is not the complete frame";
+    }
+    if (!fs::exists(folder / "manifest.json")) return;
+    const auto manifest = nlohmann::json::parse(faults::readText((folder / "manifest.json").string()));
+    const auto complete = nlohmann::json::parse(reference_.at("manifest.json"));
+    ASSERT_TRUE(manifest.contains("frames")) << manifest.dump();
+    for (const auto& entry : manifest["frames"]) {
+      const std::string file = entry.value("file", "");
+      EXPECT_TRUE(fs::exists(folder / file)) << "the manifest lists " << file << ", which does not exist";
+      bool listed = false;
+      for (const auto& expected : complete["frames"]) listed = listed || expected == entry;
+      EXPECT_TRUE(listed) << "entry differs from the complete render's: " << entry.dump();
+    }
+  }
+
+  TempFolder folder_;
+  std::map<std::string, std::string> reference_;
+};
+
+TEST_F(ProcessFaults, SignalsAtRandomFramesThenResumeGivesIdenticalBytes) {
+  std::mt19937 random(20261121);  // fixed: the same frames every run
+  std::uniform_int_distribution<int> pick(1, kFrames - 4);
+  const std::vector<std::vector<int>> plans = {{SIGTERM}, {SIGKILL}, {SIGKILL, SIGTERM}, {SIGTERM, SIGKILL, SIGKILL}};
+  for (size_t p = 0; p < plans.size(); ++p) {
+    const std::string out = "run" + std::to_string(p);
+    int frame = 0;
+    for (const int signal : plans[p]) {
+      frame = std::max(frame + 1, pick(random));
+      SCOPED_TRACE(out + ": signal " + std::to_string(signal) + " after " + std::to_string(frame) + " frames");
+      const ExitStatus status = interruptAt(out, frame, signal);
+      EXPECT_FALSE(status.timedOut);
+      if (signal == SIGTERM) {
+        EXPECT_TRUE(status.code == 130 || status.code == 0) << "exit " << status.code << ", signal " << status.signal;
+        EXPECT_TRUE(temporaries(folder_.path() / out).empty()) << "SIGTERM left a temporary file";
+      } else {
+        EXPECT_EQ(status.signal, SIGKILL);
+      }
+      expectOnlyCompleteFrames(out);
+    }
+    std::string errors;
+    ASSERT_EQ(render({"--quiet", "--resume", "--out", out}, &errors).code, 0) << errors;
+    EXPECT_TRUE(renderFiles(folder_.path() / out) == reference_) << out << ": resumed render differs";
+  }
+}
+
+// A tmpfs mounted for the test (root only; skipped where mount is not permitted).
+class Mount {
+ public:
+  Mount(const fs::path& where, const std::string& options) : where_(where) {
+    fs::create_directories(where);
+    const std::string command = "mount -t tmpfs -o " + options + " tmpfs '" + where.string() + "' 2>/dev/null";
+    mounted_ = std::system(command.c_str()) == 0;
+  }
+  ~Mount() {
+    if (mounted_) std::system(("umount '" + where_.string() + "'").c_str());
+  }
+  bool mounted() const { return mounted_; }
+  bool remountReadOnly() { return std::system(("mount -o remount,ro '" + where_.string() + "'").c_str()) == 0; }
+
+ private:
+  fs::path where_;
+  bool mounted_ = false;
+};
+
+TEST_F(ProcessFaults, FullDiskGivesAClearErrorAndKeepsCompletedFrames) {
+  Mount disk(folder_.path() / "disk", "size=200k");
+  if (!disk.mounted()) GTEST_SKIP() << "mounting a tmpfs is not permitted here (needs root)";
+  std::string errors;
+  const ExitStatus status = render({"--quiet", "--out", "disk/frames"}, &errors);
+  EXPECT_EQ(status.code, 3) << errors;  // the work failed: cannot write
+  EXPECT_NE(errors.find("No space left"), std::string::npos) << errors;
+  EXPECT_NE(errors.find("disk/frames"), std::string::npos) << "the message should name the folder or file: " << errors;
+  EXPECT_GT(frameFileCount(folder_.path() / "disk/frames"), 0);
+  expectOnlyCompleteFrames("disk/frames");
+}
+
+TEST_F(ProcessFaults, ReadOnlyFolderGivesAClearErrorAndKeepsItsFrames) {
+  Mount disk(folder_.path() / "ro", "size=4m");
+  if (!disk.mounted()) GTEST_SKIP() << "mounting a tmpfs is not permitted here (needs root)";
+  // A first shard completes, then the folder becomes read-only (root ignores permission bits).
+  ASSERT_EQ(render({"--quiet", "--frames", "0:5", "--out", "ro/frames"}).code, 0);
+  const auto before = renderFiles(folder_.path() / "ro/frames");
+  ASSERT_TRUE(disk.remountReadOnly());
+  std::string errors;
+  const ExitStatus status = render({"--quiet", "--resume", "--out", "ro/frames"}, &errors);
+  EXPECT_EQ(status.code, 2) << errors;  // refused up front, nothing attempted
+  EXPECT_NE(errors.find("ro/frames"), std::string::npos) << errors;
+  EXPECT_TRUE(renderFiles(folder_.path() / "ro/frames") == before);
+  expectOnlyCompleteFrames("ro/frames");
+}
+
+}  // namespace
+}  // namespace sl
