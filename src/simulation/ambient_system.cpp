@@ -1,5 +1,7 @@
 #include "simulation/ambient_system.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "linkage/chart.hpp"
@@ -8,6 +10,23 @@ namespace sl {
 
 namespace {
 constexpr int maxNewtonIterations = 8;
+}
+
+double chartZeroAngleForUnwrapping(const Chain& chain, const Eigen::Matrix2Xd& hinges, double previousT) {
+  // Chart 0's angle t is the direction of the innermost pair of the sphere point, which the chart maps to
+  // the 3-rod sub-chain p0 p1 p2 on the base from 0 to p3 (to (L, 0) for n = 3): its scaled point is
+  // (v0, v1) = (side * sqrt(alpha3^2 - theta3^2), theta3), theta3 = that chain's last rod angle and side =
+  // which side of 0->p2 the elbow p1 lies on (linkage/chart.hpp). O(1) for any n, instead of inverting the
+  // whole chart; accurate to ~1e-8 near the seams, plenty to choose the branch of t.
+  const Eigen::Vector2d base = chain.rods == 3 ? Eigen::Vector2d(chain.baseLength, 0.0) : Eigen::Vector2d(hinges.col(2));
+  const double d = base.norm();
+  const Eigen::Vector2d u = base / d, p1 = hinges.col(0), p2 = hinges.col(1);
+  const Eigen::Vector2d inFrame(u.x() * p2.x() + u.y() * p2.y(), -u.y() * p2.x() + u.x() * p2.y());
+  const double theta = std::atan2(-inFrame.y(), d - inFrame.x());
+  const double alpha = chainAmplitude(3, d);
+  const double side = p2.x() * p1.y() - p2.y() * p1.x() >= 0 ? 1.0 : -1.0;
+  const double t = std::atan2(theta, side * std::sqrt(std::max(alpha * alpha - theta * theta, 0.0)));
+  return previousT + std::remainder(t - previousT, 2.0 * M_PI);
 }
 
 Eigen::VectorXd sphereVelocityFromHingeVelocities(const Chain& chain, const Eigen::VectorXd& x,
@@ -122,8 +141,7 @@ StepSummary AmbientSystem::summarize(const State& y, double previousT) const {
   StepSummary summary;
   summary.energy = kineticEnergy(mass_, v);
   summary.rodLengthError = rodLengthError(chain_, q);
-  const Eigen::VectorXd x = spherePointFromHinges(chain_, q);
-  summary.chartZeroT = coordinatesFromSpherePoint(x, previousT)(x.size() - 2);
+  summary.chartZeroT = chartZeroAngleForUnwrapping(chain_, q, previousT);
   return summary;
 }
 

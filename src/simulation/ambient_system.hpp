@@ -39,6 +39,10 @@ class AmbientSystem : public GeodesicSystem {
   mutable Eigen::VectorXd rhs_;
 };
 
+// Chart 0's last coordinate t of a configuration, unwrapped near previousT, in O(1): for tracking the
+// branch of t step by step (accurate to ~1e-8, not for output).
+double chartZeroAngleForUnwrapping(const Chain& chain, const Eigen::Matrix2Xd& hinges, double previousT);
+
 // Hinge velocities to the sphere velocity xdot (tangent at x) by least squares on dPsi.
 Eigen::VectorXd sphereVelocityFromHingeVelocities(const Chain& chain, const Eigen::VectorXd& spherePoint,
                                                   const Eigen::Matrix2Xd& hingeVelocities);

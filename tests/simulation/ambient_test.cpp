@@ -8,6 +8,7 @@
 #include "linkage/chart.hpp"
 #include "linkage/kinetic_metric.hpp"
 #include "linkage/sphere_coordinates.hpp"
+#include "simulation/ambient_system.hpp"
 #include "simulation/constraint_solver.hpp"
 #include "support.hpp"
 
@@ -108,6 +109,26 @@ TEST(Ambient, SamplesExactlyAtThePoleAreFinite) {
   ASSERT_TRUE(s);
   EXPECT_TRUE(s->coords.allFinite() && s->rates.allFinite() && s->hinges.allFinite() && s->sphereVelocity.allFinite());
   EXPECT_NEAR(std::abs(s->coords(0)), M_PI / 2, 1e-15);
+}
+
+}  // namespace
+}  // namespace sl
+
+namespace sl {
+namespace {
+
+TEST(Ambient, CheapChartAngleMatchesTheChartInverse) {
+  std::mt19937 rng(11);
+  std::normal_distribution<double> normal;
+  for (int rods : {3, 4, 5, 8})
+    for (int trial = 0; trial < 50; ++trial) {
+      const Chain chain = Chain::uniform(rods, rods - 0.4 - 0.05 * (trial % 3));
+      Eigen::VectorXd x(rods - 1);
+      for (Eigen::Index i = 0; i < x.size(); ++i) x(i) = normal(rng);
+      x.normalize();
+      const double expected = coordinatesFromSpherePoint(x, 0.0)(rods - 3);
+      EXPECT_NEAR(chartZeroAngleForUnwrapping(chain, hingePositionsAt(chain, x), 0.0), expected, 1e-7) << rods << " rods";
+    }
 }
 
 }  // namespace
