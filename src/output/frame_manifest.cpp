@@ -87,8 +87,12 @@ nlohmann::json FrameManifest::readLocked() const {
 }
 
 void FrameManifest::reload() {
-  FolderLock lock(folder_);
-  const nlohmann::json manifest = readLocked();
+  nlohmann::json manifest;
+  {
+    // The folder lock is released before taking mutex_: flushLocked() takes them in the other order.
+    FolderLock lock(folder_);
+    manifest = readLocked();
+  }
   std::lock_guard guard(mutex_);
   for (const auto& j : manifest.at("frames")) {
     const FrameEntry e = fromJson(j);

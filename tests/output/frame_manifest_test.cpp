@@ -127,6 +127,20 @@ TEST(FrameManifest, ConcurrentShardsEqualASingleRun) {
   EXPECT_EQ(readText(sharded + "/manifest.json"), readText(single + "/manifest.json"));
 }
 
+// reload() (folder lock, then the object's mutex) racing record() (mutex, then folder lock) must not deadlock.
+TEST(FrameManifest, ReloadWhileRecording) {
+  const std::string folder = testing::freshFolder();
+  FrameManifest manifest(folder, kInfo);
+  manifest.setFlushInterval(std::chrono::milliseconds(0));
+  std::thread reader([&] {
+    for (int k = 0; k < 200; ++k) manifest.reload();
+  });
+  for (int k = 0; k < 200; ++k) writeFrame(manifest, folder, k);
+  reader.join();
+  manifest.flush();
+  for (int k = 0; k < 200; ++k) EXPECT_TRUE(manifest.isFrameComplete(k)) << k;
+}
+
 // A writer killed with SIGKILL at an arbitrary moment leaves a valid manifest whose every entry is complete.
 TEST(FrameManifest, SurvivesSigkill) {
   const std::string folder = testing::freshFolder();
