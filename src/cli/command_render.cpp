@@ -13,6 +13,7 @@
 #include "cli/frame_range.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/progress.hpp"
+#include "cli/run_report.hpp"
 #include "cli/scene_input.hpp"
 #include "frames/frame_builder.hpp"
 #include "output/png_sequence_sink.hpp"
@@ -90,15 +91,6 @@ nlohmann::json manifestInfo(const RenderPlan& plan) {
           {"frames", scene.frameCount()}};
 }
 
-void reportStops(const Scene& scene, const FrameBuilder& builder) {
-  for (size_t i = 0; i < builder.runs().size(); ++i) {
-    if (const auto& stop = builder.runs()[i].stop()) {
-      std::cerr << "run \"" << scene.runs[i].name << "\" stopped at t = " << stop->time << ": " << stop->reason
-                << (stop->detail.empty() ? "" : " (" + stop->detail + ")") << '\n';
-    }
-  }
-}
-
 // The frames of the plan's range into the sinks; returns false if interrupted.
 bool renderFrames(const RenderPlan& plan, output::FrameManifest* pngManifest,
                   std::vector<std::unique_ptr<output::FrameSink>>& sinks, Renderer& renderer, FrameBuilder& builder) {
@@ -147,7 +139,7 @@ void runRender(const RenderArguments& args) {
   FrameBuilder builder(scene, makeTrajectories(scene));
   const bool finished = renderFrames(plan, pngManifest.get(), sinks, renderer, builder);
   for (auto& sink : sinks) sink->finish();  // every frame handed over is written whole
-  reportStops(scene, builder);  // results, not progress: shown even with --quiet
+  reportStops(scene, builder.runs());  // results, not progress: shown even with --quiet
   if (!finished) {
     std::string next = "frames written so far are complete; rerun the same command with --resume to finish";
     if (!plan.video.empty()) {

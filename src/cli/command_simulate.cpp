@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/interrupt.hpp"
+#include "cli/run_report.hpp"
 #include "cli/scene_input.hpp"
 #include "frames/frame_builder.hpp"
 #include "output/atomic_file.hpp"
@@ -51,8 +52,9 @@ void writeRun(std::ostream& out, const std::string& name, Trajectory& trajectory
 
 void runSimulate(const SimulateArguments& args) {
   const Scene scene = loadSceneForCommand(args.scene);
-  if (args.dt > 0 && scene.duration / args.dt > 1e8) {
-    throw CommandExit(kExitBadInput, "--dt " + std::to_string(args.dt) + " gives more than 1e8 samples; expected a larger step");
+  // The CSV for --csv is built in memory (then written atomically): keep it below about a gigabyte.
+  if (args.dt > 0 && scene.duration / args.dt > 5e6) {
+    throw CommandExit(kExitBadInput, "--dt " + std::to_string(args.dt) + " gives more than 5e6 samples per run; expected a larger step");
   }
   installInterruptHandlers();
   const std::vector<double> times = sampleTimes(scene, args.dt);
@@ -61,13 +63,8 @@ void runSimulate(const SimulateArguments& args) {
   std::ostringstream buffer;
   std::ostream& out = args.csv.empty() ? std::cout : buffer;
   out << trajectoryCsvHeader(scene.chain.rods) << '\n';
-  for (size_t i = 0; i < runs.size(); ++i) {
-    writeRun(out, scene.runs[i].name, runs[i], times);
-    if (const auto& stop = runs[i].stop()) {
-      std::cerr << "run \"" << scene.runs[i].name << "\" stopped at t = " << stop->time << ": " << stop->reason
-                << (stop->detail.empty() ? "" : " (" + stop->detail + ")") << '\n';
-    }
-  }
+  for (size_t i = 0; i < runs.size(); ++i) writeRun(out, scene.runs[i].name, runs[i], times);
+  reportStops(scene, runs);
   if (!args.csv.empty()) output::writeFileAtomically(args.csv, buffer.str());
 }
 
