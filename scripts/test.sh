@@ -1,6 +1,14 @@
 #!/usr/bin/env bash
-# The second command of the README: build and run the whole test suite (normal build, then the fast
-# tests again under AddressSanitizer + UndefinedBehaviorSanitizer).
+# The second command of the README: build and run the whole test suite (normal build), then the fast
+# tests again under AddressSanitizer + UndefinedBehaviorSanitizer (build-asan, -O1, no benchmarks).
+#
+#   scripts/test.sh              both passes
+#   SL_SKIP_SANITIZE=1 scripts/test.sh   the normal pass only (a quick local check)
+#
+# The sanitizer pass leaves out the tests labelled "slow" (the process-fault tests, which drive the
+# binary through signals and full disks: the normal pass covers them); everything else runs, the
+# `linkage` binary the CLI and fault tests start included. LeakSanitizer suppressions are for
+# third-party frames only (Mesa/llvmpipe): tests/faults/sanitizer/lsan.supp.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -9,3 +17,13 @@ jobs=$(nproc)
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DSL_BUILD_TESTS=ON -DSL_BUILD_BENCH=ON
 cmake --build build -j "$jobs"
 ctest --test-dir build --output-on-failure -j "$jobs" --timeout 600
+
+[[ "${SL_SKIP_SANITIZE:-0}" == 1 ]] && exit 0
+cmake -S . -B build-asan -G Ninja -DSL_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" -DSL_BUILD_TESTS=ON -DSL_BUILD_BENCH=OFF
+cmake --build build-asan -j "$jobs"
+# halt_on_error / abort: any report fails its test. detect_leaks: LeakSanitizer at exit.
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:check_initialization_order=1"
+export LSAN_OPTIONS="suppressions=$PWD/tests/faults/sanitizer/lsan.supp:print_suppressions=0"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+ctest --test-dir build-asan --output-on-failure -j "$jobs" --timeout 900 -LE slow
