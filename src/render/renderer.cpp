@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <filesystem>
 #include <stdexcept>
@@ -152,15 +153,21 @@ struct Renderer::Impl {
     }
   }
 
-  void drawSphere(const SphereView& view, const PixelRect& rect) {
+  void drawSphere(const SphereView& view) {
     setCommonUniforms(sphere, &view.camera);
     const auto color = [&](const char* name, Rgba c) { glUniform3f(sphere.uniform(name), c.r, c.g, c.b); };
     color("uSphereColor", palette::sphereCream);
     color("uGridColor", view.look == SphereLook::Opaque ? palette::sphereGrid : palette::glass);
     color("uPoleColor", palette::poleMark);
     glUniform1i(sphere.uniform("uMode"), int(view.look));
+    // The camera looks at the sphere's centre, so its outline is a circle of radius f / sqrt(D^2 - 1)
+    // about the panel centre: a quad just around it saves the shader a quarter of the panel's pixels.
+    const V3 eye = view.camera.eye();
+    const double outline = view.camera.focal() / std::sqrt(std::max(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z - 1, 1e-6));
+    const float half = float(outline) + 2.0f;
+    const P2 centre = view.camera.centre();
     ShapeBatch quad;
-    quad.rect(rect.x, rect.y, rect.x + rect.width, rect.y + rect.height, {});
+    quad.rect(centre.x - half, centre.y - half, centre.x + half, centre.y + half, {});
     upload(quad);
     glDrawArrays(GL_TRIANGLES, 0, GLsizei(quad.vertices().size()));
   }
@@ -168,12 +175,12 @@ struct Renderer::Impl {
   // The sphere of a fixed camera does not change between frames: draw it once into `sphereLayer`
   // (on the background colour, as in the frame) and copy that rectangle into every frame.
   void drawSphereCached(const SphereView& view, const PixelRect& rect, ViewSpace space) {
-    if (settings.camera.orbitDegreesPerSecond != 0) return drawSphere(view, rect);
+    if (settings.camera.orbitDegreesPerSecond != 0) return drawSphere(view);
     if (!sphereLayer || cachedSpace != space) {
       if (!sphereLayer) sphereLayer = std::make_unique<GlLayer>(settings.width, settings.height);
       sphereLayer->bind();
       clearToBackground();
-      drawSphere(view, rect);
+      drawSphere(view);
       cachedSpace = space;
       context.bindFramebuffer();
     }
