@@ -1,0 +1,38 @@
+#pragma once
+// A small CSV table with named columns, written with shortest round-trip numbers (std::to_chars) so
+// the same results always give the same bytes, and read back for merging shards and charting.
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace sl {
+
+// Shortest decimal that reads back to the same double; "nan", "inf", "-inf" for non-finite values.
+std::string formatNumber(double value);
+
+// Parses formatNumber's output (and any decimal); throws std::invalid_argument naming the text.
+double parseNumber(const std::string& text);
+
+struct CsvTable {
+  std::vector<std::string> columns;
+  std::vector<std::vector<std::string>> rows;  // each row has columns.size() fields
+
+  // Index of a named column; throws std::out_of_range naming it.
+  size_t column(const std::string& name) const;
+  double number(size_t row, const std::string& name) const;
+  const std::string& text(size_t row, const std::string& name) const;
+};
+
+// Fields are written as given; fields containing a comma, quote or newline are quoted.
+void writeCsv(std::ostream& out, const CsvTable& table);
+std::string csvText(const CsvTable& table);
+
+// Reads a table written by writeCsv (quoted fields included). `source` names the file in errors.
+CsvTable readCsv(std::istream& in, const std::string& source);
+CsvTable readCsvFile(const std::string& path);
+
+// Writes text to path through a temporary file and a rename, so readers never see a partial file.
+void writeFileAtomically(const std::string& path, const std::string& text);
+
+}  // namespace sl

@@ -1,0 +1,53 @@
+#include "analysis/gnuplot.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <sys/wait.h>
+
+namespace sl {
+
+bool gnuplotAvailable() {
+  FILE* pipe = popen("gnuplot -e \"set terminal pngcairo\" 2>/dev/null", "r");
+  if (!pipe) return false;
+  const int status = pclose(pipe);
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+std::string gnuplotDatablock(const std::string& name, const std::vector<std::string>& lines) {
+  std::string block = "$" + name + " << EOD\n";
+  for (const auto& line : lines) block += line + "\n";
+  return block + "EOD\n";
+}
+
+std::string gnuplotQuote(const std::string& text) {
+  std::string quoted = "'";
+  for (char c : text) quoted += (c == '\'') ? std::string("''") : std::string(1, c);
+  return quoted + "'";
+}
+
+std::string gnuplotPngPreamble(const std::string& pngPath, int width, int height) {
+  return "set terminal pngcairo size " + std::to_string(width) + "," + std::to_string(height) +
+         " enhanced font 'DejaVu Sans,10'\nset output " + gnuplotQuote(pngPath) + "\n";
+}
+
+void renderGnuplotChart(const std::string& script, const std::string& pngPath) {
+  const std::string scriptPath = std::filesystem::path(pngPath).replace_extension(".gp").string();
+  {
+    std::ofstream out(scriptPath, std::ios::trunc);
+    if (!out) throw std::runtime_error(scriptPath + ": cannot open for writing");
+    out << script;
+  }
+  // gnuplot reads the script from the pipe; its own messages go to our stderr.
+  FILE* pipe = popen("gnuplot", "w");
+  if (!pipe) throw std::runtime_error("cannot start gnuplot (install the Debian package gnuplot-nox)");
+  std::fwrite(script.data(), 1, script.size(), pipe);
+  const int status = pclose(pipe);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw std::runtime_error("gnuplot failed on " + scriptPath + " (exit status " +
+                             std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
+                             "; is gnuplot-nox installed?)");
+}
+
+}  // namespace sl

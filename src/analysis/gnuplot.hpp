@@ -1,0 +1,27 @@
+#pragma once
+// Charts through gnuplot (Debian package gnuplot-nox, pngcairo terminal): a well-kept charting tool,
+// driven through a pipe. Each chart is a script with its data inlined as datablocks ($name << EOD), saved
+// beside the PNG so it can be re-rendered or restyled by hand: `gnuplot chart.gp`.
+
+#include <string>
+#include <vector>
+
+namespace sl {
+
+// True when a `gnuplot` executable with the pngcairo terminal is on the PATH.
+bool gnuplotAvailable();
+
+// A datablock definition: "$name << EOD\n" + lines + "EOD\n". Lines are whitespace-separated columns.
+std::string gnuplotDatablock(const std::string& name, const std::vector<std::string>& lines);
+
+// Quotes text for a gnuplot string literal (single quotes; embedded quotes doubled).
+std::string gnuplotQuote(const std::string& text);
+
+// The preamble every chart starts with: pngcairo at width x height, DejaVu Sans, output to pngPath.
+std::string gnuplotPngPreamble(const std::string& pngPath, int width, int height);
+
+// Writes the script next to the PNG (pngPath with .gp) and pipes it to gnuplot. Throws
+// std::runtime_error with gnuplot's exit status when it fails or is missing.
+void renderGnuplotChart(const std::string& script, const std::string& pngPath);
+
+}  // namespace sl

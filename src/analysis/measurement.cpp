@@ -1,0 +1,95 @@
+#include "analysis/measurement.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+namespace sl {
+
+namespace {
+
+struct RunRecord {
+  std::vector<Sample> samples;
+  std::optional<StopInfo> stop;
+  long evaluations = 0, steps = 0;
+  double wallSeconds = 0;
+};
+
+RunRecord recordRun(const Chain& chain, const InitialState& start, const RunConfig& config,
+                    const std::vector<double>& times) {
+  RunRecord record;
+  record.samples.reserve(times.size());
+  const auto begin = std::chrono::steady_clock::now();
+  Trajectory run(chain, start, config);
+  for (double time : times) {
+    auto sample = run.sampleAt(time);
+    if (!sample) break;
+    record.samples.push_back(std::move(*sample));
+  }
+  record.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  record.stop = run.stop();
+  record.evaluations = run.vectorFieldEvaluations();
+  record.steps = run.steps();
+  return record;
+}
+
+Measurement compare(const RunRecord& record, const ReferencePath& reference) {
+  Measurement m;
+  m.evaluations = record.evaluations;
+  m.steps = record.steps;
+  m.wallSeconds = record.wallSeconds;
+  for (const Sample& sample : record.samples) {
+    m.maxEnergyDrift = std::max(m.maxEnergyDrift, std::abs(sample.relativeEnergyDrift));
+    m.maxRodLengthError = std::max(m.maxRodLengthError, sample.rodLengthError);
+  }
+  const bool checked = !reference.hinges.empty() || reference.stop;
+  const size_t compared = std::min(record.samples.size(), reference.hinges.size());
+  m.maxError = checked ? 0.0 : std::nan("");
+  for (size_t k = 0; k < compared; ++k) {
+    const double error = hingeDistance(record.samples[k].hinges, reference.hinges[k]);
+    if (!(error <= m.maxError)) m.maxError = error;  // std::max would drop a NaN; it must reach the report
+  }
+  const bool finished = record.samples.size() == reference.times.size();
+  m.stopTime = record.samples.empty() ? 0.0 : record.samples.back().time;
+  m.finalError = finished && compared == record.samples.size()
+                     ? hingeDistance(record.samples.back().hinges, reference.hinges.back())
+                     : std::nan("");
+  if (reference.stop) {
+    m.status = "reference-stopped";
+    m.stopDetail = reference.config.method + ": " + reference.stop->reason + " at time " +
+                   std::to_string(reference.stop->time) + ": " + reference.stop->detail;
+  } else if (record.stop && !finished) {
+    m.status = record.stop->reason;
+    m.stopTime = record.stop->time;
+    m.stopDetail = record.stop->detail;
+  } else if (checked && !(m.maxError < kWrongPathError)) {
+    m.status = "wrong-path";
+  }
+  return m;
+}
+
+}  // namespace
+
+long stepBudget(const RunConfig& config, double duration) {
+  if (!integratorIsAdaptive(config.integrator)) return static_cast<long>(std::ceil(duration / config.step)) + 10;
+  return std::max(1000L, static_cast<long>(std::ceil(kAdaptiveStepsPerTimeUnit * duration)));
+}
+
+Measurement measureRun(const Chain& chain, const InitialState& start, const RunConfig& config,
+                       const ReferencePath& reference) {
+  return compare(recordRun(chain, start, config, reference.times), reference);
+}
+
+Measurement measureRunTimed(const Chain& chain, const InitialState& start, const RunConfig& config,
+                            const ReferencePath& reference, int repeats) {
+  RunRecord first = recordRun(chain, start, config, reference.times);
+  std::vector<double> seconds{first.wallSeconds};
+  for (int r = 1; r < repeats; ++r) seconds.push_back(recordRun(chain, start, config, reference.times).wallSeconds);
+  std::nth_element(seconds.begin(), seconds.begin() + seconds.size() / 2, seconds.end());
+  Measurement m = compare(first, reference);
+  m.wallSeconds = seconds[seconds.size() / 2];
+  return m;
+}
+
+}  // namespace sl

@@ -1,0 +1,96 @@
+#include "analysis/stability_charts.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "analysis/gnuplot.hpp"
+#include "analysis/stability_grid.hpp"
+#include "analysis/stability_sweep.hpp"
+
+namespace sl {
+
+namespace {
+
+// One colour per failure mode, in stabilityStatusNames() order.
+const std::vector<std::string>& statusColors() {
+  static const std::vector<std::string> colors = {"#1a9850", "#fdae61", "#d73027", "#f46d43", "#000000", "#7b3294",
+                                                  "#2c7bb6", "#abd9e9", "#bababa", "#ffffbf", "#878787"};
+  return colors;
+}
+
+std::string failurePalette() {
+  const auto names = stabilityStatusNames();
+  // Band k spans palette positions [k, k+1], which cbrange maps onto [k - 1/2, k + 1/2]: one flat colour each.
+  std::string palette = "set palette defined (";
+  std::string tics = "set cbtics (";
+  for (size_t k = 0; k < names.size(); ++k) {
+    const std::string color = " '" + statusColors()[k] + "'";
+    palette += (k ? ", " : "") + std::to_string(k) + color + ", " + std::to_string(k + 1) + color;
+    tics += (k ? ", " : "") + gnuplotQuote(names[k]) + " " + std::to_string(k);
+  }
+  return palette + ")\n" + tics + ")\nset cbrange [-0.5:" + std::to_string(names.size() - 0.5) + "]\n";
+}
+
+std::string mapScript(const CsvTable& rows, const std::string& kind, const std::string& method, const std::string& png) {
+  std::vector<std::string> lines;
+  std::string integrator, setting;
+  long cells = 0, within9 = 0;
+  bool checked = false;  // errors against a reference; without one the left panel shows the energy drift
+  for (size_t r = 0; r < rows.rows.size(); ++r)
+    if (rows.text(r, "method") == method) checked = checked || rows.text(r, "reference_method") != "none";
+  const std::string valueColumn = checked ? "max_error" : "max_energy_drift";
+  for (size_t r = 0; r < rows.rows.size(); ++r) {
+    if (rows.text(r, "method") != method) continue;
+    integrator = rows.text(r, "integrator");
+    setting = rows.text(r, "setting");
+    const std::string status = rows.text(r, "status");
+    const double value = rows.number(r, valueColumn), error = rows.number(r, "max_error");
+    const bool ok = status == "ok";
+    const double logError = ok ? std::clamp(std::log10(std::max(value, 1e-300)), -16.0, 0.0) : NAN;
+    lines.push_back(rows.text(r, "x") + " " + rows.text(r, "y") + " " + formatNumber(logError) + " " +
+                    std::to_string(stabilityStatusCode(status)));
+    cells += 1;
+    within9 += ok && error <= 1e-9;
+  }
+  const auto [xLabel, yLabel] = stabilityAxisLabels(kind);
+  std::string script = gnuplotPngPreamble(png, 1400, 620);
+  script += gnuplotDatablock("cells", lines);
+  script += "set multiplot layout 1,2 title " +
+            gnuplotQuote("stability sweep '" + kind + "': " + method + " " + integrator + " (setting " + setting + ")" +
+                         (checked ? ", " + std::to_string(100.0 * within9 / std::max(cells, 1L)).substr(0, 5) +
+                                        "% of cells within 1e-9 of the reference"
+                                  : ", no reference")) +
+            " noenhanced\n";
+  script += "set xlabel " + gnuplotQuote(xLabel) + "\nset ylabel " + gnuplotQuote(yLabel) + "\n";
+  script += "set autoscale xfix\nset autoscale yfix\nset tics out\nunset key\n";
+  // Failed cells are left out of the error image and show the dark background.
+  script += "set object 1 rectangle from graph 0,0 to graph 1,1 behind fillcolor rgb '#303030' fillstyle solid noborder\n";
+  script += std::string("set title '") + (checked ? "log_{10} max position error" : "log_{10} max relative energy drift") +
+            " (dark: failed)'\n";
+  script += "set palette defined (-16 '#08306b', -12 '#2171b5', -9 '#6baed6', -6 '#c6dbef', -3 '#fee391', 0 '#d7301f')\n";
+  script += "set cbrange [-16:0]\nset cbtics 2\n";
+  script += "plot $cells using 1:2:3 with image\n";
+  script += "unset object 1\nset title 'failure mode'\n" + failurePalette();
+  script += "plot $cells using 1:2:4 with image\nunset multiplot\n";
+  return script;
+}
+
+}  // namespace
+
+std::vector<std::string> writeStabilityCharts(const CsvTable& rows, const std::string& kind, const std::string& outDir) {
+  std::vector<std::string> methods;
+  for (size_t r = 0; r < rows.rows.size(); ++r)
+    if (std::find(methods.begin(), methods.end(), rows.text(r, "method")) == methods.end())
+      methods.push_back(rows.text(r, "method"));
+  std::filesystem::create_directories(outDir);
+  std::vector<std::string> written;
+  for (const auto& method : methods) {
+    const std::string png = (std::filesystem::path(outDir) / ("stability-" + kind + "-" + method + ".png")).string();
+    renderGnuplotChart(mapScript(rows, kind, method, png), png);
+    written.push_back(png);
+  }
+  return written;
+}
+
+}  // namespace sl

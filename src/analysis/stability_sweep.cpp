@@ -1,0 +1,241 @@
+#include "analysis/stability_sweep.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <regex>
+#include <set>
+#include <stdexcept>
+#include <thread>
+
+#include "analysis/measurement.hpp"
+
+namespace sl {
+
+Shard parseShard(const std::string& text) {
+  const std::regex pattern(R"(\s*(\d+)\s*/\s*(\d+)\s*)");
+  std::smatch match;
+  if (std::regex_match(text, match, pattern)) {
+    const Shard shard{std::stoi(match[1]), std::stoi(match[2])};
+    if (shard.count >= 1 && shard.index >= 1 && shard.index <= shard.count) return shard;
+  }
+  throw std::invalid_argument("--shard: expected K/N with 1 <= K <= N (e.g. 2/4), found '" + text + "'");
+}
+
+std::string sweepIntegratorFor(const std::string& method) {
+  return method.size() > 3 && method.ends_with("-fd") ? "rk4" : RunConfig().integrator;
+}
+
+std::vector<std::string> stabilityColumns() {
+  return {"cell",      "i",           "j",         "x",         "y",
+          "method",    "integrator",  "setting",   "status",    "stop_time",
+          "final_error", "max_error", "max_energy_drift", "max_rod_length_error", "evaluations",
+          "reference_method", "stop_detail"};
+}
+
+namespace {
+
+RunConfig sweepConfig(const StabilityOptions& options, const std::string& method) {
+  RunConfig config;
+  config.method = method;
+  config.integrator = options.integrator.empty() ? sweepIntegratorFor(method) : options.integrator;
+  config.tolerance = options.tolerance;
+  config.step = options.step;
+  config.maxSteps = stepBudget(config, options.duration);
+  return config;
+}
+
+double settingOf(const RunConfig& config) {
+  return integratorIsAdaptive(config.integrator) ? config.tolerance : config.step;
+}
+
+// The rows of one cell: each method against its reference (computed once per reference method).
+std::vector<std::vector<std::string>> cellRows(const StabilityOptions& options, const std::vector<std::string>& methods,
+                                               long cellIndex) {
+  const int i = static_cast<int>(cellIndex % options.grid), j = static_cast<int>(cellIndex / options.grid);
+  std::vector<std::vector<std::string>> rows;
+  std::map<std::string, ReferencePath> references;
+  const auto times = gridTimes(options.duration, options.sampleInterval);
+  try {
+    const StabilityCell cell = stabilityCell(options.kind, options.grid, i, j, options.duration);
+    for (const auto& method : methods) {
+      const std::string referenceMethod = options.checkAgainstReference ? referenceMethodFor(method) : "none";
+      if (!references.count(referenceMethod))
+        references[referenceMethod] = options.checkAgainstReference
+                                          ? computeReferencePath(cell.chain, cell.start, times, referenceConfig(method))
+                                          : noReference(times);
+      const RunConfig config = sweepConfig(options, method);
+      const Measurement m = measureRun(cell.chain, cell.start, config, references[referenceMethod]);
+      rows.push_back({std::to_string(cellIndex), std::to_string(i), std::to_string(j), formatNumber(cell.x),
+                      formatNumber(cell.y), method, config.integrator, formatNumber(settingOf(config)), m.status,
+                      formatNumber(m.stopTime), formatNumber(m.finalError), formatNumber(m.maxError),
+                      formatNumber(m.maxEnergyDrift), formatNumber(m.maxRodLengthError), std::to_string(m.evaluations),
+                      referenceMethod, m.stopDetail});
+    }
+  } catch (const std::exception& error) {
+    // A start the reference cannot construct (e.g. the backward run of a pole cell stopped) is a result too.
+    rows.clear();
+    for (const auto& method : methods) {
+      const RunConfig config = sweepConfig(options, method);
+      rows.push_back({std::to_string(cellIndex), std::to_string(i), std::to_string(j), "nan", "nan", method,
+                      config.integrator, formatNumber(settingOf(config)), "reference-stopped", "0", "nan", "nan",
+                      "nan", "nan", "0", referenceMethodFor(method), error.what()});
+    }
+  }
+  return rows;
+}
+
+}  // namespace
+
+CsvTable runStabilitySweep(const StabilityOptions& options, const CellProgress& progress) {
+  if (!isStabilityKind(options.kind)) throw std::invalid_argument("unknown stability sweep kind '" + options.kind + "'");
+  if (options.grid < 1) throw std::invalid_argument("--grid must be at least 1");
+  const auto methods = options.methods.empty() ? methodNames() : options.methods;
+  std::vector<long> cells;
+  for (long c = options.shard.index - 1; c < static_cast<long>(options.grid) * options.grid; c += options.shard.count)
+    cells.push_back(c);
+
+  std::vector<std::vector<std::vector<std::string>>> results(cells.size());
+  std::atomic<size_t> next{0};
+  std::atomic<long> done{0};
+  std::mutex progressMutex;
+  auto worker = [&] {
+    for (size_t k = next++; k < cells.size(); k = next++) {
+      results[k] = cellRows(options, methods, cells[k]);
+      const long finished = ++done;
+      if (progress) {
+        std::lock_guard lock(progressMutex);
+        progress(finished, static_cast<long>(cells.size()));
+      }
+    }
+  };
+  const int threads = options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& thread : pool) thread.join();
+
+  CsvTable table{stabilityColumns(), {}};
+  for (auto& cellRowsOfOne : results)
+    for (auto& row : cellRowsOfOne) table.rows.push_back(std::move(row));
+  return table;
+}
+
+std::string stabilityCsvPath(const std::string& outDir, const std::string& kind) {
+  return (std::filesystem::path(outDir) / ("stability-" + kind + ".csv")).string();
+}
+
+std::string stabilityShardPath(const std::string& outDir, const std::string& kind, const Shard& shard) {
+  return (std::filesystem::path(outDir) /
+          ("stability-" + kind + ".shard-" + std::to_string(shard.index) + "-of-" + std::to_string(shard.count) + ".csv"))
+      .string();
+}
+
+std::vector<int> stabilityShardCounts(const std::string& outDir, const std::string& kind) {
+  std::set<int> counts;
+  const std::regex pattern("stability-" + kind + R"(\.shard-(\d+)-of-(\d+)\.csv)");
+  if (!std::filesystem::is_directory(outDir)) return {};
+  for (const auto& entry : std::filesystem::directory_iterator(outDir)) {
+    std::smatch match;
+    const std::string name = entry.path().filename().string();
+    if (std::regex_match(name, match, pattern)) counts.insert(std::stoi(match[2]));
+  }
+  return {counts.begin(), counts.end()};
+}
+
+bool mergeStabilityShards(const std::string& outDir, const std::string& kind, int shardCount, CsvTable& merged) {
+  std::vector<std::string> paths;
+  for (int k = 1; k <= shardCount; ++k) {
+    paths.push_back(stabilityShardPath(outDir, kind, {k, shardCount}));
+    if (!std::filesystem::exists(paths.back())) return false;
+  }
+  CsvTable table{stabilityColumns(), {}};
+  for (const auto& path : paths) {
+    CsvTable shard = readCsvFile(path);
+    if (shard.columns != table.columns)
+      throw std::runtime_error(path + ": not a stability shard (columns differ from " + stabilityColumns().front() + ",...)");
+    for (auto& row : shard.rows) table.rows.push_back(std::move(row));
+  }
+  const size_t cellColumn = table.column("cell");
+  // Stable: the rows of one cell come from one shard, already in method order.
+  std::stable_sort(table.rows.begin(), table.rows.end(), [cellColumn](const auto& a, const auto& b) {
+    return std::stol(a[cellColumn]) < std::stol(b[cellColumn]);
+  });
+  std::set<long> cells;
+  long gridSize = 0;
+  for (size_t r = 0; r < table.rows.size(); ++r) {
+    cells.insert(std::stol(table.rows[r][cellColumn]));
+    gridSize = std::max(gridSize, std::stol(table.text(r, "i")) + 1);
+  }
+  if (static_cast<long>(cells.size()) != gridSize * gridSize || (!cells.empty() && *cells.rbegin() != gridSize * gridSize - 1))
+    throw std::runtime_error(outDir + ": the " + std::to_string(shardCount) + " shards of the '" + kind + "' sweep hold " +
+                             std::to_string(cells.size()) + " cells, expected " + std::to_string(gridSize * gridSize) +
+                             " (were they run with the same --grid?)");
+  merged = std::move(table);
+  return true;
+}
+
+std::vector<std::string> stabilityStatusNames() {
+  return {"ok",         "wrong-path",    "pole-fold-back",     "pole-singularity", "non-finite", "energy-blow-up",
+          "step-size-collapse", "rod-length", "max-steps", "reference-stopped", "other"};
+}
+
+int stabilityStatusCode(const std::string& status) {
+  const auto names = stabilityStatusNames();
+  const auto found = std::find(names.begin(), names.end(), status);
+  return static_cast<int>(found == names.end() ? names.size() - 1 : found - names.begin());
+}
+
+std::vector<std::string> stabilitySummaryColumns() {
+  std::vector<std::string> columns = {"method", "integrator", "setting", "cells", "within_1e-6", "within_1e-9",
+                                      "median_max_error"};
+  for (const auto& status : stabilityStatusNames()) columns.push_back(status);
+  return columns;
+}
+
+CsvTable stabilitySummary(const CsvTable& rows) {
+  struct Tally {
+    std::string integrator, setting;
+    long cells = 0, within6 = 0, within9 = 0;
+    bool checked = false;  // some row has a reference
+    std::vector<double> errors;
+    std::vector<long> statusCounts = std::vector<long>(stabilityStatusNames().size(), 0);
+  };
+  std::vector<std::string> order;
+  std::map<std::string, Tally> tallies;
+  for (size_t r = 0; r < rows.rows.size(); ++r) {
+    const std::string& method = rows.text(r, "method");
+    if (!tallies.count(method)) order.push_back(method);
+    Tally& t = tallies[method];
+    t.integrator = rows.text(r, "integrator");
+    t.setting = rows.text(r, "setting");
+    const bool ok = rows.text(r, "status") == "ok";
+    const double error = rows.number(r, "max_error");
+    t.cells += 1;
+    t.checked = t.checked || rows.text(r, "reference_method") != "none";
+    t.within6 += ok && error <= 1e-6;
+    t.within9 += ok && error <= 1e-9;
+    t.errors.push_back(ok ? error : INFINITY);
+    t.statusCounts[stabilityStatusCode(rows.text(r, "status"))] += 1;
+  }
+  CsvTable summary{stabilitySummaryColumns(), {}};
+  for (const auto& method : order) {
+    Tally& t = tallies[method];
+    double median = NAN;
+    if (t.checked) {
+      std::nth_element(t.errors.begin(), t.errors.begin() + t.errors.size() / 2, t.errors.end());
+      median = t.errors[t.errors.size() / 2];
+    }
+    auto fraction = [&](long count) { return formatNumber(t.checked ? static_cast<double>(count) / t.cells : NAN); };
+    std::vector<std::string> row = {method, t.integrator, t.setting, std::to_string(t.cells), fraction(t.within6),
+                                    fraction(t.within9), formatNumber(median)};
+    for (long count : t.statusCounts) row.push_back(std::to_string(count));
+    summary.rows.push_back(std::move(row));
+  }
+  return summary;
+}
+
+}  // namespace sl

@@ -1,0 +1,179 @@
+#include "analysis/work_precision.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <set>
+
+namespace sl {
+
+const std::vector<double>& settingsFor(const std::string& integrator, const WorkPrecisionOptions& options) {
+  return integratorIsAdaptive(integrator) ? options.tolerances : options.steps;
+}
+
+std::string settingKind(const std::string& integrator) { return integratorIsAdaptive(integrator) ? "tol" : "h"; }
+
+namespace {
+
+RunConfig configFor(const std::string& method, const std::string& integrator, double setting, double duration) {
+  RunConfig config;
+  config.method = method;
+  config.integrator = integrator;
+  if (integratorIsAdaptive(integrator)) config.tolerance = setting;
+  else config.step = setting;
+  config.maxSteps = stepBudget(config, duration);
+  return config;
+}
+
+}  // namespace
+
+std::vector<WorkPrecisionPoint> runWorkPrecision(const std::vector<NamedStart>& starts,
+                                                 const WorkPrecisionOptions& options,
+                                                 const ProgressCallback& progress) {
+  const auto methods = options.methods.empty() ? methodNames() : options.methods;
+  const auto integrators = options.integrators.empty() ? integratorNames() : options.integrators;
+  std::vector<WorkPrecisionPoint> points;
+  for (const auto& start : starts) {
+    const auto times = gridTimes(start.duration, options.sampleInterval);
+    std::map<std::string, ReferencePath> references;  // by reference method
+    for (const auto& method : methods) {
+      const std::string referenceMethod = referenceMethodFor(method);
+      if (!references.count(referenceMethod))
+        references[referenceMethod] = computeReferencePath(start.chain, start.state, times, referenceConfig(method));
+      const ReferencePath& reference = references[referenceMethod];
+      for (const auto& integrator : integrators) {
+        for (double setting : settingsFor(integrator, options)) {
+          WorkPrecisionPoint point{start.name, method, integrator, setting, referenceMethod, {}};
+          point.measurement = measureRunTimed(start.chain, start.state, configFor(method, integrator, setting, start.duration),
+                                              reference, options.repeats);
+          if (progress) progress(point);
+          points.push_back(std::move(point));
+        }
+      }
+    }
+  }
+  return points;
+}
+
+std::vector<std::string> workPrecisionColumns() {
+  return {"start",         "method",     "integrator",       "setting_kind",         "setting",
+          "status",        "wall_seconds", "evaluations",    "steps",                "final_error",
+          "max_error",     "max_energy_drift", "max_rod_length_error", "stop_time", "reference_method",
+          "stop_detail"};
+}
+
+CsvTable workPrecisionTable(const std::vector<WorkPrecisionPoint>& points) {
+  CsvTable table{workPrecisionColumns(), {}};
+  for (const auto& p : points) {
+    const Measurement& m = p.measurement;
+    table.rows.push_back({p.start, p.method, p.integrator, settingKind(p.integrator), formatNumber(p.setting),
+                          m.status, formatNumber(m.wallSeconds), std::to_string(m.evaluations),
+                          std::to_string(m.steps), formatNumber(m.finalError), formatNumber(m.maxError),
+                          formatNumber(m.maxEnergyDrift), formatNumber(m.maxRodLengthError),
+                          formatNumber(m.stopTime), p.referenceMethod, m.stopDetail});
+  }
+  return table;
+}
+
+std::vector<WorkPrecisionPoint> workPrecisionPointsFromTable(const CsvTable& table) {
+  std::vector<WorkPrecisionPoint> points;
+  for (size_t r = 0; r < table.rows.size(); ++r) {
+    WorkPrecisionPoint p{table.text(r, "start"), table.text(r, "method"), table.text(r, "integrator"),
+                         table.number(r, "setting"), table.text(r, "reference_method"), {}};
+    Measurement& m = p.measurement;
+    m.status = table.text(r, "status");
+    m.wallSeconds = table.number(r, "wall_seconds");
+    m.evaluations = std::stol(table.text(r, "evaluations"));
+    m.steps = std::stol(table.text(r, "steps"));
+    m.finalError = table.number(r, "final_error");
+    m.maxError = table.number(r, "max_error");
+    m.maxEnergyDrift = table.number(r, "max_energy_drift");
+    m.maxRodLengthError = table.number(r, "max_rod_length_error");
+    m.stopTime = table.number(r, "stop_time");
+    m.stopDetail = table.text(r, "stop_detail");
+    points.push_back(std::move(p));
+  }
+  return points;
+}
+
+namespace {
+
+// The worst case over the starts of one setting of one series.
+struct SettingSummary {
+  int starts = 0;
+  bool anyFailed = false;
+  double worstError = 0;
+  long worstEvaluations = 0;
+  double worstWallSeconds = 0;
+};
+
+}  // namespace
+
+std::vector<CheapestSetting> cheapestSettings(const std::vector<WorkPrecisionPoint>& points,
+                                              const std::vector<double>& targets) {
+  using SeriesKey = std::pair<std::string, std::string>;
+  std::vector<SeriesKey> order;
+  std::set<std::string> allStarts;
+  std::map<SeriesKey, std::map<double, SettingSummary>> summaries;
+  for (const auto& p : points) {
+    const SeriesKey key{p.method, p.integrator};
+    if (!summaries.count(key)) order.push_back(key);
+    allStarts.insert(p.start);
+    SettingSummary& s = summaries[key][p.setting];
+    const Measurement& m = p.measurement;
+    s.starts += 1;
+    s.anyFailed = s.anyFailed || m.failed() || !std::isfinite(m.maxError);
+    if (!(m.maxError <= s.worstError)) s.worstError = m.maxError;
+    s.worstEvaluations = std::max(s.worstEvaluations, m.evaluations);
+    s.worstWallSeconds = std::max(s.worstWallSeconds, m.wallSeconds);
+  }
+  std::vector<CheapestSetting> result;
+  for (const auto& key : order) {
+    for (double target : targets) {
+      CheapestSetting best{key.first, key.second, target, false, 0, 0, 0, 0};
+      for (const auto& [setting, s] : summaries[key]) {
+        const bool qualifies = s.starts == static_cast<int>(allStarts.size()) && !s.anyFailed && s.worstError <= target;
+        if (!qualifies) continue;
+        // Fewest evaluations; on a tie the looser (larger) setting, which is the cheaper to choose.
+        if (!best.reached || s.worstEvaluations < best.worstEvaluations ||
+            (s.worstEvaluations == best.worstEvaluations && setting > best.setting))
+          best = {key.first, key.second, target, true, setting, s.worstError, s.worstEvaluations, s.worstWallSeconds};
+      }
+      result.push_back(best);
+    }
+  }
+  return result;
+}
+
+std::string cheapestSettingsText(const std::vector<CheapestSetting>& cheapest, const std::vector<double>& targets) {
+  auto cell = [](const CheapestSetting& c) -> std::string {
+    if (!c.reached) return "never";
+    char text[96];
+    std::snprintf(text, sizeof text, "%s=%-7g %8.3f ms", integratorIsAdaptive(c.integrator) ? "tol" : "h",
+                  c.setting, c.worstWallSeconds * 1e3);
+    return text;
+  };
+  std::string out;
+  char line[160];
+  std::snprintf(line, sizeof line, "%-16s %-10s", "method", "integrator");
+  out += line;
+  for (double target : targets) {
+    std::snprintf(line, sizeof line, " | error <= %-14g", target);
+    out += line;
+  }
+  out += "\n";
+  for (size_t i = 0; i < cheapest.size(); i += targets.size()) {
+    std::snprintf(line, sizeof line, "%-16s %-10s", cheapest[i].method.c_str(), cheapest[i].integrator.c_str());
+    out += line;
+    for (size_t t = 0; t < targets.size(); ++t) {
+      std::snprintf(line, sizeof line, " | %-23s", cell(cheapest[i + t]).c_str());
+      out += line;
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+}  // namespace sl

@@ -1,0 +1,115 @@
+// `linkage bench`: work-precision sweeps (src/analysis/work_precision.hpp) over the shipped starts,
+// written as CSV, gnuplot charts and a table of the cheapest setting reaching each target error.
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+
+#include "analysis/commands.hpp"
+#include "analysis/csv_table.hpp"
+#include "analysis/gnuplot.hpp"
+#include "analysis/option_checks.hpp"
+#include "analysis/work_precision.hpp"
+#include "analysis/work_precision_charts.hpp"
+
+namespace sl {
+
+namespace {
+
+struct BenchArguments {
+  std::vector<std::string> starts;
+  WorkPrecisionOptions options;
+  std::vector<double> targets = {1e-6, 1e-9, 1e-10, 1e-12};
+  std::string out = "renders/bench";
+  bool quick = false;
+  bool charts = true;
+};
+
+std::vector<NamedStart> chosenStarts(const std::vector<std::string>& names) {
+  const auto shipped = shippedStarts();
+  if (names.empty()) return shipped;
+  std::vector<NamedStart> chosen;
+  for (const auto& name : names) {
+    bool found = false;
+    for (const auto& start : shipped)
+      if (start.name == name) {
+        chosen.push_back(start);
+        found = true;
+      }
+    if (!found) {
+      std::string known;
+      for (const auto& start : shipped) known += (known.empty() ? "" : ", ") + start.name;
+      throw CLI::ValidationError("--start", "unknown start '" + name + "' (shipped starts: " + known + ")");
+    }
+  }
+  return chosen;
+}
+
+void runBench(BenchArguments& args) {
+  if (args.quick) {
+    args.options.steps = {0.1, 0.01, 0.001};
+    args.options.tolerances = {1e-4, 1e-7, 1e-10, 1e-13};
+    args.options.repeats = 3;
+  }
+  requireKnownNames("--methods", "method", args.options.methods, methodNames());
+  requireKnownNames("--integrators", "integrator", args.options.integrators, integratorNames());
+  requirePositive("--steps", args.options.steps);
+  requirePositive("--tolerances", args.options.tolerances);
+  requirePositive("--targets", args.targets);
+  const auto starts = chosenStarts(args.starts);
+  if (args.charts && !gnuplotAvailable())
+    throw std::runtime_error("charts need gnuplot with pngcairo: apt-get install gnuplot-nox (or pass --no-charts)");
+  std::filesystem::create_directories(args.out);
+  const bool showProgress = isatty(STDERR_FILENO);
+  long done = 0;
+  const auto points = runWorkPrecision(starts, args.options, [&](const WorkPrecisionPoint& p) {
+    if (showProgress)
+      std::fprintf(stderr, "\r%-14s %-15s %-15s %-8g %-16s   [%ld]   ", p.start.c_str(), p.method.c_str(),
+                   p.integrator.c_str(), p.setting, p.measurement.status.c_str(), ++done);
+  });
+  if (showProgress) std::fprintf(stderr, "\n");
+
+  const std::string csvPath = (std::filesystem::path(args.out) / "work-precision.csv").string();
+  writeFileAtomically(csvPath, csvText(workPrecisionTable(points)));
+  const std::string table = cheapestSettingsText(cheapestSettings(points, args.targets), args.targets);
+  writeFileAtomically((std::filesystem::path(args.out) / "cheapest-settings.txt").string(), table);
+  std::cout << "Cheapest setting reaching each max position error on every start (worst-start median wall time):\n"
+            << table << "wrote " << csvPath << "\n";
+  if (args.charts)
+    for (const auto& png : writeWorkPrecisionCharts(points, args.out)) std::cout << "wrote " << png << "\n";
+}
+
+}  // namespace
+
+void addBenchCommand(CLI::App& app) {
+  auto args = std::make_shared<BenchArguments>();
+  CLI::App* bench = app.add_subcommand("bench", "Work-precision charts: every method x integrator against a reference");
+  bench->footer(
+      "Each point runs one method x integrator at one step (rk4) or tolerance (adaptive) from a start and compares\n"
+      "its hinge positions every --interval time units with a reference from a different method at tolerance 1e-13\n"
+      "(ambient checks the intrinsic methods; embedded checks ambient).\n"
+      "Writes DIR/work-precision.csv, DIR/cheapest-settings.txt and DIR/wp-<start>-<chart>.png.\n"
+      "Example: linkage bench --quick --start generic --start through-pole --out renders/bench");
+  bench->add_option("--start", args->starts,
+                    "shipped start to run (repeatable; default all: generic, seam-crossing, near-pole, through-pole, "
+                    "L-near-2, L-near-4)");
+  bench->add_option("--methods", args->options.methods, "methods (default all)")->delimiter(',');
+  bench->add_option("--integrators", args->options.integrators, "integrators (default all)")->delimiter(',');
+  bench->add_option("--steps", args->options.steps, "rk4 steps to sweep")->delimiter(',');
+  bench->add_option("--tolerances", args->options.tolerances, "adaptive tolerances to sweep")->delimiter(',');
+  bench->add_option("--targets", args->targets, "errors for the cheapest-setting table")->delimiter(',');
+  bench->add_option("--repeats", args->options.repeats, "runs per point; wall time is their median")
+      ->check(CLI::Range(1, 1000));
+  bench->add_option("--interval", args->options.sampleInterval, "error grid spacing in time units")
+      ->check(CLI::PositiveNumber);
+  bench->add_flag("--quick", args->quick, "3 steps, 4 tolerances, 3 repeats");
+  bench->add_flag("!--no-charts", args->charts, "skip the gnuplot charts");
+  bench->add_option("--out", args->out, "output folder")->capture_default_str();
+  bench->callback([args] { runBench(*args); });
+}
+
+}  // namespace sl

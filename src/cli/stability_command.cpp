@@ -1,0 +1,144 @@
+// `linkage stability`: where each method fails. Runs a sweep kind over a grid of starts on all cores,
+// writes its CSV, summary and heat maps; splits into shards that merge into the same bytes.
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+
+#include "analysis/commands.hpp"
+#include "analysis/gnuplot.hpp"
+#include "analysis/option_checks.hpp"
+#include "analysis/stability_charts.hpp"
+#include "analysis/stability_sweep.hpp"
+
+namespace sl {
+
+namespace {
+
+struct StabilityArguments {
+  StabilityOptions options;
+  std::string shard;
+  double duration = 0;  // 0: the kind's default
+  bool merge = false;
+  bool charts = true;
+  bool quiet = false;
+  std::string out = "renders/stability";
+};
+
+// The full sweep's files: CSV, summary (also printed) and charts.
+void writeSweepOutputs(const CsvTable& rows, const StabilityArguments& args) {
+  const std::string& kind = args.options.kind;
+  const std::string csvPath = stabilityCsvPath(args.out, kind);
+  writeFileAtomically(csvPath, csvText(rows));
+  const CsvTable summary = stabilitySummary(rows);
+  const std::string summaryText = csvText(summary);
+  writeFileAtomically((std::filesystem::path(args.out) / ("stability-" + kind + "-summary.csv")).string(), summaryText);
+  std::cout << summaryText << "wrote " << csvPath << "\n";
+  if (args.charts)
+    for (const auto& png : writeStabilityCharts(rows, kind, args.out)) std::cout << "wrote " << png << "\n";
+}
+
+int detectShardCount(const StabilityArguments& args) {
+  const auto counts = stabilityShardCounts(args.out, args.options.kind);
+  if (counts.size() != 1)
+    throw std::runtime_error(args.out + ": expected shard files stability-" + args.options.kind +
+                             ".shard-K-of-N.csv for exactly one N, found " + std::to_string(counts.size()) + " values of N");
+  return counts.front();
+}
+
+void runStability(StabilityArguments& args) {
+  StabilityOptions& options = args.options;
+  if (!isStabilityKind(options.kind)) {
+    std::string kinds;
+    for (const auto& k : stabilityKindNames()) kinds += (kinds.empty() ? "" : ", ") + k;
+    throw CLI::ValidationError("--kind", "unknown sweep kind '" + options.kind + "' (expected one of " + kinds + ")");
+  }
+  requireKnownNames("--methods", "method", options.methods, methodNames());
+  if (!options.integrator.empty())
+    requireKnownNames("--integrator", "integrator", {options.integrator}, integratorNames());
+  options.duration = args.duration > 0 ? args.duration : defaultStabilityDuration(options.kind);
+  if (args.charts && !gnuplotAvailable())
+    throw std::runtime_error("charts need gnuplot with pngcairo: apt-get install gnuplot-nox (or pass --no-charts)");
+  std::filesystem::create_directories(args.out);
+
+  if (args.merge) {
+    CsvTable merged;
+    const int count = detectShardCount(args);
+    if (!mergeStabilityShards(args.out, options.kind, count, merged))
+      throw std::runtime_error(args.out + ": not all " + std::to_string(count) + " shards of the '" + options.kind +
+                               "' sweep are present yet");
+    writeSweepOutputs(merged, args);
+    return;
+  }
+  if (!args.shard.empty()) options.shard = parseShard(args.shard);
+
+  const bool showProgress = !args.quiet && isatty(STDERR_FILENO);
+  const CsvTable rows = runStabilitySweep(options, [&](long done, long total) {
+    if (showProgress && (done % 16 == 0 || done == total))
+      std::fprintf(stderr, "\r%s: %ld / %ld cells", options.kind.c_str(), done, total);
+  });
+  if (showProgress) std::fprintf(stderr, "\n");
+
+  if (options.shard.count == 1) {
+    writeSweepOutputs(rows, args);
+    return;
+  }
+  const std::string shardPath = stabilityShardPath(args.out, options.kind, options.shard);
+  writeFileAtomically(shardPath, csvText(rows));
+  std::cout << "wrote " << shardPath << "\n";
+  CsvTable merged;  // the last shard to finish merges them all
+  if (mergeStabilityShards(args.out, options.kind, options.shard.count, merged)) writeSweepOutputs(merged, args);
+}
+
+}  // namespace
+
+void addStabilityCommand(CLI::App& app) {
+  auto args = std::make_shared<StabilityArguments>();
+  CLI::App* stability = app.add_subcommand("stability", "Stability maps: where each method fails over a grid of starts");
+  stability->footer(
+      "Sweep kinds (x by y, 4 rods):\n"
+      "  launch     launch point over the sphere (t0 by phi0), fixed heading\n"
+      "  direction  heading by phi0\n"
+      "  pole       closest approach to the pole phi = pi/2, 1e-10 down to exactly through it, by azimuth\n"
+      "  seam       offset of t0 from the seam t = pi/2 (down to 0) by heading\n"
+      "  length     L from 2 + 1e-6 to 4 - 1e-6 by heading\n"
+      "  drift      launch grid over a long span (default --duration 1000)\n"
+      "Each cell's run is compared with a different method at tolerance 1e-13 every --interval time units\n"
+      "(ambient checks the others; embedded checks ambient), unless --no-reference.\n"
+      "Writes DIR/stability-<kind>.csv, -summary.csv and stability-<kind>-<method>.png.\n"
+      "Sharding: run `--shard K/N` for K = 1..N (any machines, same options, same --out); the last to finish\n"
+      "merges, or run `--merge` afterwards. The merged files equal a single run's byte for byte.\n"
+      "Example: linkage stability --kind pole --grid 32 --methods christoffel-fd,embedded,ambient");
+  stability->add_option("--kind", args->options.kind, "sweep kind")->capture_default_str();
+  stability->add_option("--grid", args->options.grid, "cells per axis (grid x grid)")
+      ->check(CLI::Range(1, 4096))
+      ->capture_default_str();
+  stability->add_option("--duration", args->duration, "time span of each run (default 20; drift 1000)")
+      ->check(CLI::PositiveNumber);
+  stability->add_option("--interval", args->options.sampleInterval, "error grid spacing in time units")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  stability->add_option("--methods", args->options.methods, "methods (default all)")->delimiter(',');
+  stability->add_option("--integrator", args->options.integrator,
+                        "integrator for every method (default: rk4 for the published -fd methods, the default run's otherwise)");
+  stability->add_option("--tolerance", args->options.tolerance, "adaptive tolerance (default: the default run's)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  stability->add_option("--step", args->options.step, "rk4 step")->check(CLI::PositiveNumber)->capture_default_str();
+  stability->add_option("--threads", args->options.threads, "worker threads (default: all cores)")
+      ->check(CLI::Range(1, 1024));
+  stability->add_option("--shard", args->shard, "run only shard K of N (cells c with c mod N = K-1)");
+  stability->add_flag("!--no-reference", args->options.checkAgainstReference,
+                      "skip the reference runs: failure modes and invariants only (much faster)");
+  stability->add_flag("--merge", args->merge, "merge the shard files in --out instead of running");
+  stability->add_flag("!--no-charts", args->charts, "skip the gnuplot heat maps");
+  stability->add_flag("--quiet", args->quiet, "no progress on stderr");
+  stability->add_option("--out", args->out, "output folder")->capture_default_str();
+  stability->callback([args] { runStability(*args); });
+}
+
+}  // namespace sl

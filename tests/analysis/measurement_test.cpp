@@ -1,0 +1,135 @@
+// The yardstick and the measurement of runs: references agree with the shipped reference trajectories,
+// the constructed pole starts reach the pole, and failures are reported as such.
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "analysis/csv_table.hpp"
+#include "analysis/measurement.hpp"
+#include "analysis/starts.hpp"
+
+namespace sl {
+namespace {
+
+NamedStart shippedStart(const std::string& name) {
+  for (const auto& start : shippedStarts())
+    if (start.name == name) return start;
+  throw std::runtime_error("no start " + name);
+}
+
+TEST(GridTimes, CoverTheSpanAndEndExactlyOnIt) {
+  const auto times = gridTimes(20.0, 0.1);
+  ASSERT_EQ(times.size(), 201u);
+  EXPECT_EQ(times.front(), 0.0);
+  EXPECT_EQ(times.back(), 20.0);
+  const auto ragged = gridTimes(1.05, 0.1);
+  EXPECT_EQ(ragged.size(), 12u);
+  EXPECT_EQ(ragged.back(), 1.05);
+}
+
+TEST(ReferencePath, NeverChecksAMethodWithItself) {
+  for (const auto& method : methodNames()) EXPECT_NE(referenceConfig(method).method, method);
+  EXPECT_EQ(referenceConfig("christoffel").tolerance, kReferenceTolerance);
+  EXPECT_TRUE(integratorIsAdaptive(tightestIntegrator()));
+}
+
+// Both references (ambient, and embedded for checking ambient) against /work/shared/reference/generic_L3.csv,
+// computed independently in R^6 by an 8th-order method (trusted to about 2e-9 in hinge positions).
+TEST(ReferencePath, MatchesTheShippedGenericReference) {
+  const CsvTable shipped = readCsvFile(std::string(SL_SHARED_DIR) + "/reference/generic_L3.csv");
+  const NamedStart start = shippedStart("generic");
+  std::vector<double> times;
+  std::vector<size_t> rows;
+  for (size_t r = 0; r < shipped.rows.size(); r += 100) {
+    times.push_back(shipped.number(r, "time"));
+    rows.push_back(r);
+  }
+  for (const std::string methodUnderTest : {"embedded", "ambient"}) {
+    const ReferencePath path = computeReferencePath(start.chain, start.state, times, referenceConfig(methodUnderTest));
+    ASSERT_FALSE(path.stop) << path.stop->reason;
+    ASSERT_EQ(path.hinges.size(), times.size());
+    for (size_t k = 0; k < times.size(); ++k) {
+      Eigen::Matrix2Xd expected(2, 3);
+      for (int h = 0; h < 3; ++h) {
+        expected(0, h) = shipped.number(rows[k], "p" + std::to_string(h + 1) + "x");
+        expected(1, h) = shipped.number(rows[k], "p" + std::to_string(h + 1) + "y");
+      }
+      EXPECT_LT(hingeDistance(path.hinges[k], expected), 5e-9)
+          << path.config.method << " at time " << times[k];
+    }
+  }
+}
+
+TEST(StartsAtThePole, TheThroughPoleStartReachesThePoleAtTimeFive) {
+  const NamedStart start = shippedStart("through-pole");
+  RunConfig check;  // a method other than the ambient one that built the start
+  check.method = "embedded";
+  check.tolerance = 1e-12;
+  Trajectory run(start.chain, start.state, check);
+  const auto atPole = run.sampleAt(5.0);
+  ASSERT_TRUE(atPole);
+  EXPECT_NEAR(atPole->spherePoint(2), 1.0, 1e-12);
+  EXPECT_LT(atPole->spherePoint.head(2).norm(), 1e-8);
+}
+
+TEST(StartsAtThePole, TheNearPoleStartIsClosestToThePoleAtTimeFive) {
+  const NamedStart start = shippedStart("near-pole");
+  RunConfig check;
+  check.method = "embedded";
+  check.tolerance = 1e-12;
+  Trajectory run(start.chain, start.state, check);
+  std::vector<double> heights;
+  for (double t : {4.9, 4.99, 5.0, 5.01, 5.1}) heights.push_back(run.sampleAt(t)->spherePoint(2));
+  EXPECT_NEAR(std::acos(heights[2]), 1e-3, 1e-8);
+  for (size_t k : {0u, 1u, 3u, 4u}) EXPECT_LT(heights[k], heights[2]);
+}
+
+TEST(MeasureRun, TheDefaultMethodIsAccurateOnTheGenericStart) {
+  const NamedStart start = shippedStart("generic");
+  const RunConfig config;  // the default method, integrator and tolerance
+  const ReferencePath reference =
+      computeReferencePath(start.chain, start.state, gridTimes(20, 0.1), referenceConfig(config.method));
+  const Measurement m = measureRun(start.chain, start.state, config, reference);
+  EXPECT_EQ(m.status, "ok");
+  EXPECT_LT(m.maxError, 1e-7);
+  EXPECT_LE(m.finalError, m.maxError);
+  EXPECT_LT(m.maxEnergyDrift, 1e-7);
+  EXPECT_LT(m.maxRodLengthError, 1e-9);
+  EXPECT_GT(m.evaluations, 0);
+  EXPECT_EQ(m.stopTime, 20.0);
+}
+
+// Spec section 4's caveat: the single chart (phi, t) folds back at its poles. Passing 1e-3 from the
+// pole, the published method is stopped there; exactly through the pole its fields are singular.
+TEST(MeasureRun, ThePublishedMethodFailsAtThePole) {
+  RunConfig config;
+  config.method = "christoffel-fd";
+  config.integrator = "rk4";
+  config.step = 0.01;
+  for (const std::string name : {"near-pole", "through-pole"}) {
+    const NamedStart start = shippedStart(name);
+    const ReferencePath reference =
+        computeReferencePath(start.chain, start.state, gridTimes(20, 0.1), referenceConfig(config.method));
+    const Measurement m = measureRun(start.chain, start.state, config, reference);
+    if (name == "near-pole") EXPECT_EQ(m.status, "pole-fold-back") << m.stopDetail;
+    EXPECT_TRUE(m.failed()) << name;
+    EXPECT_GT(m.stopTime, 4.0) << name;
+    EXPECT_LE(m.stopTime, 5.0) << name;
+    EXPECT_TRUE(std::isnan(m.finalError)) << name;
+  }
+}
+
+TEST(MeasureRun, AFarOffReferenceMakesAWrongPath) {
+  const NamedStart start = shippedStart("generic");
+  const NamedStart other = shippedStart("seam-crossing");
+  const RunConfig config;
+  const ReferencePath elsewhere =
+      computeReferencePath(other.chain, other.state, gridTimes(2, 0.1), referenceConfig(config.method));
+  const Measurement m = measureRun(start.chain, start.state, config, elsewhere);
+  EXPECT_EQ(m.status, "wrong-path");
+  EXPECT_GT(m.maxError, kWrongPathError);
+}
+
+}  // namespace
+}  // namespace sl

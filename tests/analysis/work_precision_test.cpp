@@ -1,0 +1,78 @@
+// The cheapest-setting logic and the CSV of a work-precision sweep, on synthetic rows.
+
+#include <gtest/gtest.h>
+
+#include "analysis/work_precision.hpp"
+
+namespace sl {
+namespace {
+
+WorkPrecisionPoint point(const std::string& start, const std::string& integrator, double setting, double error,
+                         long evaluations, const std::string& status = "ok") {
+  WorkPrecisionPoint p{start, "embedded", integrator, setting, "ambient", {}};
+  p.measurement.status = status;
+  p.measurement.maxError = error;
+  p.measurement.finalError = error / 2;
+  p.measurement.evaluations = evaluations;
+  p.measurement.wallSeconds = evaluations * 1e-6;
+  return p;
+}
+
+TEST(CheapestSettings, PicksTheFewestEvaluationsReachingTheTargetOnEveryStart) {
+  const std::vector<WorkPrecisionPoint> points = {
+      point("a", "dopri5", 1e-6, 1e-7, 100),  point("b", "dopri5", 1e-6, 3e-6, 120),
+      point("a", "dopri5", 1e-9, 1e-10, 300), point("b", "dopri5", 1e-9, 5e-10, 350),
+      point("a", "dopri5", 1e-12, 1e-13, 900), point("b", "dopri5", 1e-12, 2e-13, 800)};
+  const auto cheapest = cheapestSettings(points, {1e-6, 1e-9, 1e-12, 1e-14});
+  ASSERT_EQ(cheapest.size(), 4u);
+  // 1e-6: tol 1e-6 fails on start b (3e-6), so tol 1e-9 is the cheapest that holds everywhere.
+  EXPECT_TRUE(cheapest[0].reached);
+  EXPECT_EQ(cheapest[0].setting, 1e-9);
+  EXPECT_EQ(cheapest[0].worstEvaluations, 350);
+  EXPECT_DOUBLE_EQ(cheapest[0].worstError, 5e-10);
+  EXPECT_EQ(cheapest[1].setting, 1e-9);
+  EXPECT_EQ(cheapest[2].setting, 1e-12);
+  EXPECT_EQ(cheapest[2].worstEvaluations, 900);
+  EXPECT_FALSE(cheapest[3].reached);
+  EXPECT_NE(cheapestSettingsText(cheapest, {1e-6, 1e-9, 1e-12, 1e-14}).find("never"), std::string::npos);
+}
+
+TEST(CheapestSettings, AFailedOrMissingStartDisqualifiesASetting) {
+  const std::vector<WorkPrecisionPoint> points = {
+      point("a", "rk4", 0.01, 1e-11, 8000),  point("b", "rk4", 0.01, 1e-12, 8000, "pole-fold-back"),
+      point("a", "rk4", 0.001, 1e-12, 80000), point("b", "rk4", 0.001, 1e-13, 80000),
+      point("a", "rk4", 0.1, 1e-13, 800)};  // start b never ran at 0.1
+  const auto cheapest = cheapestSettings(points, {1e-9});
+  ASSERT_EQ(cheapest.size(), 1u);
+  EXPECT_TRUE(cheapest[0].reached);
+  EXPECT_EQ(cheapest[0].setting, 0.001);
+}
+
+TEST(CheapestSettings, ANonFiniteErrorNeverQualifies) {
+  const std::vector<WorkPrecisionPoint> points = {point("a", "dopri5", 1e-8, std::nan(""), 10)};
+  EXPECT_FALSE(cheapestSettings(points, {1e-3})[0].reached);
+}
+
+TEST(WorkPrecisionCsv, HasNamedColumnsAndRoundTrips) {
+  const std::vector<WorkPrecisionPoint> points = {point("generic", "rk4", 0.01, 1.25e-7, 8004),
+                                                  point("through-pole", "dopri5", 1e-10, 3e-11, 1234, "non-finite")};
+  const CsvTable table = workPrecisionTable(points);
+  const std::vector<std::string> expected = {"start", "method", "integrator", "setting_kind", "setting", "status",
+                                             "wall_seconds", "evaluations", "steps", "final_error", "max_error",
+                                             "max_energy_drift", "max_rod_length_error", "stop_time",
+                                             "reference_method", "stop_detail"};
+  EXPECT_EQ(table.columns, expected);
+  ASSERT_EQ(table.rows.size(), 2u);
+  EXPECT_EQ(table.text(0, "setting_kind"), "h");
+  EXPECT_EQ(table.text(1, "setting_kind"), "tol");
+  EXPECT_EQ(table.text(0, "max_error"), "1.25e-07");
+  const auto back = workPrecisionPointsFromTable(table);
+  ASSERT_EQ(back.size(), 2u);
+  EXPECT_EQ(back[1].measurement.status, "non-finite");
+  EXPECT_EQ(back[0].measurement.maxError, 1.25e-7);
+  EXPECT_EQ(back[0].measurement.evaluations, 8004);
+  EXPECT_EQ(back[1].setting, 1e-10);
+}
+
+}  // namespace
+}  // namespace sl
