@@ -185,6 +185,16 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
     }
     spec.config.step = *step;
   }
+  // A step means nothing to an adaptive integrator, a tolerance nothing to a fixed-step one: refuse
+  // rather than silently ignore what the user believes is being computed.
+  const bool adaptive = contains(limits.adaptiveIntegrators, spec.config.integrator);
+  const bool knownIntegrator = contains(limits.integrators, spec.config.integrator);
+  if (knownIntegrator && adaptive && run.has("step")) {
+    run.report("step", "is not used by the adaptive integrator \"" + spec.config.integrator + "\"; expected \"tolerance\" instead");
+  }
+  if (knownIntegrator && !adaptive && run.has("tolerance")) {
+    run.report("tolerance", "is not used by the fixed-step integrator \"" + spec.config.integrator + "\"; expected \"step\" instead");
+  }
   spec.color = readColor(run, "color");
   if (run.has("watchdog")) readWatchdog(run, spec.config, problems);
   return spec;
