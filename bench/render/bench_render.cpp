@@ -2,7 +2,7 @@
 // per second of wall time and the split between render, readback, encode and write.
 //
 //   bench_render [--frames 600] [--size 1280x720] [--sink none|png|mp4|encode] [--out DIR]
-//                [--encoders 1] [--repeat 3] [--no-aa] [--orbit]
+//                [--encoders 2] [--repeat 3] [--no-aa] [--orbit]
 // llvmpipe's thread count comes from the environment: LP_NUM_THREADS=2 bench_render ...
 // Prints one line per repeat and the median; the machine may be shared, so compare medians and ratios.
 
@@ -41,7 +41,7 @@ double cpuSeconds() {
 }
 
 struct Options {
-  int frames = 600, width = 1280, height = 720, encoders = 1, repeat = 3;
+  int frames = 600, width = 1280, height = 720, encoders = 2, repeat = 3;
   std::string sink = "png", out = "/tmp/bench_render";
   bool antialias = true, orbit = false;
 };
