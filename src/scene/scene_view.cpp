@@ -1,6 +1,7 @@
 // The "view" section: panels, camera, linkage layout, trails and fades, mapped onto RenderSettings.
 
 #include <algorithm>
+#include <cmath>
 
 #include "scene/did_you_mean.hpp"
 #include "scene/json_fields.hpp"
@@ -126,7 +127,8 @@ void readTrails(const JsonObject& view, Scene& scene) {
   const int count = scene.chain.hingeCount();
   for (Eigen::Index i = 0; i < hinges->size(); ++i) {
     const double hinge = (*hinges)(i);
-    if (hinge != static_cast<int>(hinge) || hinge < 1 || hinge > count) {
+    // Range first: converting a double beyond int's range to int is undefined behaviour.
+    if (!(hinge >= 1 && hinge <= count) || hinge != std::floor(hinge)) {
       view.report("trails", "found " + describeJson(json(hinge)) + "; expected hinge numbers from 1 to n-1 = " +
                                 std::to_string(count));
       return;
