@@ -68,7 +68,6 @@ void scaledChainHinges(int m, const S& d, const VectorX<S>& v, const S& alpha, H
   }
   const S sincProduct = sinc<S>(sum / 2.0) * sinc<S>(difference / 2.0);
   const double outer = m - 1.0;
-  const S deficit = d * rho2 * sincProduct;  // (m-1)^2 - d'^2
   // d'^2 = (d-1)^2 + 4d sin^2(theta/2): a sum of non-negative terms (d > m-2 >= 1), never a difference.
   const S halfSine = sin(theta / 2.0);
   const S subBase = sqrt((d - 1.0) * (d - 1.0) + 4.0 * d * halfSine * halfSine);
