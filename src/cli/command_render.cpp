@@ -137,13 +137,20 @@ void runRender(const RenderArguments& args) {
   }
 
   FrameBuilder builder(scene, makeTrajectories(scene));
-  const bool finished = renderFrames(plan, pngManifest.get(), sinks, renderer, builder);
-  for (auto& sink : sinks) sink->finish();  // every frame handed over is written whole
+  bool finished = false;
+  try {
+    finished = renderFrames(plan, pngManifest.get(), sinks, renderer, builder);
+    for (auto& sink : sinks) sink->finish();  // every frame handed over is written whole
+  } catch (const std::exception&) {
+    // Ctrl-C in a terminal reaches ffmpeg too (same process group), which then fails the video sink:
+    // that is the interruption, not an error of its own.
+    if (!interruptRequested()) throw;
+  }
   reportStops(scene, builder.runs());  // results, not progress: shown even with --quiet
   if (!finished) {
     std::string next = "frames written so far are complete; rerun the same command with --resume to finish";
     if (!plan.video.empty()) {
-      sinks.clear();
+      sinks.clear();  // closes the pipe and reaps ffmpeg before the file goes
       videoManifest.reset();
       fs::remove(plan.video);
       fs::remove(plan.video + ".manifest.json");
