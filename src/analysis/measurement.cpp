@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <vector>
 
 namespace sl {
@@ -13,14 +14,26 @@ struct RunRecord {
   std::vector<Sample> samples;
   std::optional<StopInfo> stop;
   long evaluations = 0, steps = 0;
-  double wallSeconds = 0;
+  double wallSeconds = 0, cpuSeconds = 0;
 };
+
+double threadCpuSeconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
+double median(std::vector<double> values) {
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
 
 RunRecord recordRun(const Chain& chain, const InitialState& start, const RunConfig& config,
                     const std::vector<double>& times) {
   RunRecord record;
   record.samples.reserve(times.size());
   const auto begin = std::chrono::steady_clock::now();
+  const double cpuBegin = threadCpuSeconds();
   Trajectory run(chain, start, config);
   for (double time : times) {
     auto sample = run.sampleAt(time);
@@ -28,6 +41,7 @@ RunRecord recordRun(const Chain& chain, const InitialState& start, const RunConf
     record.samples.push_back(std::move(*sample));
   }
   record.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  record.cpuSeconds = threadCpuSeconds() - cpuBegin;
   record.stop = run.stop();
   record.evaluations = run.vectorFieldEvaluations();
   record.steps = run.steps();
@@ -39,6 +53,7 @@ Measurement compare(const RunRecord& record, const ReferencePath& reference) {
   m.evaluations = record.evaluations;
   m.steps = record.steps;
   m.wallSeconds = record.wallSeconds;
+  m.cpuSeconds = record.cpuSeconds;
   for (const Sample& sample : record.samples) {
     m.maxEnergyDrift = std::max(m.maxEnergyDrift, std::abs(sample.relativeEnergyDrift));
     m.maxRodLengthError = std::max(m.maxRodLengthError, sample.rodLengthError);
@@ -84,11 +99,15 @@ Measurement measureRun(const Chain& chain, const InitialState& start, const RunC
 Measurement measureRunTimed(const Chain& chain, const InitialState& start, const RunConfig& config,
                             const ReferencePath& reference, int repeats) {
   RunRecord first = recordRun(chain, start, config, reference.times);
-  std::vector<double> seconds{first.wallSeconds};
-  for (int r = 1; r < repeats; ++r) seconds.push_back(recordRun(chain, start, config, reference.times).wallSeconds);
-  std::nth_element(seconds.begin(), seconds.begin() + seconds.size() / 2, seconds.end());
+  std::vector<double> wall{first.wallSeconds}, cpu{first.cpuSeconds};
+  for (int r = 1; r < repeats; ++r) {
+    const RunRecord again = recordRun(chain, start, config, reference.times);
+    wall.push_back(again.wallSeconds);
+    cpu.push_back(again.cpuSeconds);
+  }
   Measurement m = compare(first, reference);
-  m.wallSeconds = seconds[seconds.size() / 2];
+  m.wallSeconds = median(wall);
+  m.cpuSeconds = median(cpu);
   return m;
 }
 

@@ -30,6 +30,7 @@ struct Measurement {
   long evaluations = 0;       // vector-field evaluations
   long steps = 0;
   double wallSeconds = 0;     // one run: construction and sampling at the grid times
+  double cpuSeconds = 0;      // the same span in this thread's CPU time (robust on a shared machine)
 
   bool failed() const { return status != "ok"; }
 };
@@ -39,7 +40,7 @@ struct Measurement {
 Measurement measureRun(const Chain& chain, const InitialState& start, const RunConfig& config,
                        const ReferencePath& reference);
 
-// The median wall time of `repeats` runs (the measurement of the first; runs are deterministic).
+// The median wall and CPU times of `repeats` runs (the measurement of the first; runs are deterministic).
 Measurement measureRunTimed(const Chain& chain, const InitialState& start, const RunConfig& config,
                             const ReferencePath& reference, int repeats);
 

@@ -71,7 +71,7 @@ std::string mapScript(const CsvTable& rows, const std::string& kind, const std::
   script += "set palette defined (-16 '#08306b', -12 '#2171b5', -9 '#6baed6', -6 '#c6dbef', -3 '#fee391', 0 '#d7301f')\n";
   script += "set cbrange [-16:0]\nset cbtics 2\n";
   script += "plot $cells using 1:2:3 with image\n";
-  script += "unset object 1\nset title 'failure mode'\n" + failurePalette();
+  script += "unset object 1\nset title 'failure mode'\nset rmargin 20\n" + failurePalette();
   script += "plot $cells using 1:2:4 with image\nunset multiplot\n";
   return script;
 }

@@ -59,7 +59,7 @@ std::vector<WorkPrecisionPoint> runWorkPrecision(const std::vector<NamedStart>& 
 
 std::vector<std::string> workPrecisionColumns() {
   return {"start",         "method",     "integrator",       "setting_kind",         "setting",
-          "status",        "wall_seconds", "evaluations",    "steps",                "final_error",
+          "status",        "wall_seconds", "cpu_seconds", "evaluations",    "steps",                "final_error",
           "max_error",     "max_energy_drift", "max_rod_length_error", "stop_time", "reference_method",
           "stop_detail"};
 }
@@ -69,7 +69,7 @@ CsvTable workPrecisionTable(const std::vector<WorkPrecisionPoint>& points) {
   for (const auto& p : points) {
     const Measurement& m = p.measurement;
     table.rows.push_back({p.start, p.method, p.integrator, settingKind(p.integrator), formatNumber(p.setting),
-                          m.status, formatNumber(m.wallSeconds), std::to_string(m.evaluations),
+                          m.status, formatNumber(m.wallSeconds), formatNumber(m.cpuSeconds), std::to_string(m.evaluations),
                           std::to_string(m.steps), formatNumber(m.finalError), formatNumber(m.maxError),
                           formatNumber(m.maxEnergyDrift), formatNumber(m.maxRodLengthError),
                           formatNumber(m.stopTime), p.referenceMethod, m.stopDetail});
@@ -85,6 +85,7 @@ std::vector<WorkPrecisionPoint> workPrecisionPointsFromTable(const CsvTable& tab
     Measurement& m = p.measurement;
     m.status = table.text(r, "status");
     m.wallSeconds = table.number(r, "wall_seconds");
+    m.cpuSeconds = table.number(r, "cpu_seconds");
     m.evaluations = std::stol(table.text(r, "evaluations"));
     m.steps = std::stol(table.text(r, "steps"));
     m.finalError = table.number(r, "final_error");
@@ -107,6 +108,7 @@ struct SettingSummary {
   double worstError = 0;
   long worstEvaluations = 0;
   double worstWallSeconds = 0;
+  double worstCpuSeconds = 0;
 };
 
 }  // namespace
@@ -128,18 +130,20 @@ std::vector<CheapestSetting> cheapestSettings(const std::vector<WorkPrecisionPoi
     if (!(m.maxError <= s.worstError)) s.worstError = m.maxError;
     s.worstEvaluations = std::max(s.worstEvaluations, m.evaluations);
     s.worstWallSeconds = std::max(s.worstWallSeconds, m.wallSeconds);
+    s.worstCpuSeconds = std::max(s.worstCpuSeconds, m.cpuSeconds);
   }
   std::vector<CheapestSetting> result;
   for (const auto& key : order) {
     for (double target : targets) {
-      CheapestSetting best{key.first, key.second, target, false, 0, 0, 0, 0};
+      CheapestSetting best{key.first, key.second, target, false, 0, 0, 0, 0, 0};
       for (const auto& [setting, s] : summaries[key]) {
         const bool qualifies = s.starts == static_cast<int>(allStarts.size()) && !s.anyFailed && s.worstError <= target;
         if (!qualifies) continue;
         // Fewest evaluations; on a tie the looser (larger) setting, which is the cheaper to choose.
         if (!best.reached || s.worstEvaluations < best.worstEvaluations ||
             (s.worstEvaluations == best.worstEvaluations && setting > best.setting))
-          best = {key.first, key.second, target, true, setting, s.worstError, s.worstEvaluations, s.worstWallSeconds};
+          best = {key.first, key.second, target, true, setting, s.worstError, s.worstEvaluations, s.worstWallSeconds,
+                  s.worstCpuSeconds};
       }
       result.push_back(best);
     }
@@ -151,8 +155,8 @@ std::string cheapestSettingsText(const std::vector<CheapestSetting>& cheapest, c
   auto cell = [](const CheapestSetting& c) -> std::string {
     if (!c.reached) return "never";
     char text[96];
-    std::snprintf(text, sizeof text, "%s=%-7g %8.3f ms", integratorIsAdaptive(c.integrator) ? "tol" : "h",
-                  c.setting, c.worstWallSeconds * 1e3);
+    std::snprintf(text, sizeof text, "%s=%-6g %7.2f ms (cpu %.2f)", integratorIsAdaptive(c.integrator) ? "tol" : "h",
+                  c.setting, c.worstWallSeconds * 1e3, c.worstCpuSeconds * 1e3);
     return text;
   };
   std::string out;
@@ -160,7 +164,7 @@ std::string cheapestSettingsText(const std::vector<CheapestSetting>& cheapest, c
   std::snprintf(line, sizeof line, "%-16s %-10s", "method", "integrator");
   out += line;
   for (double target : targets) {
-    std::snprintf(line, sizeof line, " | error <= %-14g", target);
+    std::snprintf(line, sizeof line, " | error <= %-22g", target);
     out += line;
   }
   out += "\n";
@@ -168,7 +172,7 @@ std::string cheapestSettingsText(const std::vector<CheapestSetting>& cheapest, c
     std::snprintf(line, sizeof line, "%-16s %-10s", cheapest[i].method.c_str(), cheapest[i].integrator.c_str());
     out += line;
     for (size_t t = 0; t < targets.size(); ++t) {
-      std::snprintf(line, sizeof line, " | %-23s", cell(cheapest[i + t]).c_str());
+      std::snprintf(line, sizeof line, " | %-31s", cell(cheapest[i + t]).c_str());
       out += line;
     }
     out += "\n";

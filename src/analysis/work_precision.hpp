@@ -57,6 +57,7 @@ struct CheapestSetting {
   double worstError = 0;         // max over the starts of the max position error at that setting
   long worstEvaluations = 0;     // max over the starts
   double worstWallSeconds = 0;   // max over the starts of the median wall time
+  double worstCpuSeconds = 0;    // max over the starts of the median CPU time
 };
 
 // For each method x integrator (in first-appearance order) and each target: among the settings at which

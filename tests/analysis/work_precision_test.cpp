@@ -58,7 +58,7 @@ TEST(WorkPrecisionCsv, HasNamedColumnsAndRoundTrips) {
                                                   point("through-pole", "dopri5", 1e-10, 3e-11, 1234, "non-finite")};
   const CsvTable table = workPrecisionTable(points);
   const std::vector<std::string> expected = {"start", "method", "integrator", "setting_kind", "setting", "status",
-                                             "wall_seconds", "evaluations", "steps", "final_error", "max_error",
+                                             "wall_seconds", "cpu_seconds", "evaluations", "steps", "final_error", "max_error",
                                              "max_energy_drift", "max_rod_length_error", "stop_time",
                                              "reference_method", "stop_detail"};
   EXPECT_EQ(table.columns, expected);
