@@ -9,6 +9,7 @@
 #include <string>
 
 #include "frames/scene_start.hpp"
+#include "simulation/initial_state.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace {
@@ -33,6 +34,13 @@ void checkStart(const sl::Scene& scene) {
     const sl::InitialState start = sl::sceneStart(scene);
     if (!start.spherePoint.allFinite() || !start.sphereVelocity.allFinite()) {
       finding("an accepted scene gives a non-finite start");
+    }
+    // What the simulation will refuse (sizes, |x| = 1, x . xdot = 0), the validator must refuse first,
+    // naming the JSON path; a bare message from deep inside a run is not enough.
+    try {
+      sl::validateInitialState(scene.chain, start);
+    } catch (const std::invalid_argument& error) {
+      finding(std::string("an accepted scene whose start the simulation refuses: ") + error.what());
     }
   } catch (const std::invalid_argument& error) {
     if (std::string(error.what()).empty()) finding("an invalid start without a message");
