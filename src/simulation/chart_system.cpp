@@ -120,8 +120,12 @@ std::optional<MethodFailure> ChartSystem::inspect(const State& y) const {
     if (std::abs(latitude) >= M_PI / 2 || std::abs(std::cos(latitude)) < poleMargin) {
       std::ostringstream detail;
       detail.precision(17);
-      detail << "single chart (phi, t) reached its pole (c" << level + 1 << " = " << latitude
-             << ", |cos| = " << std::abs(std::cos(latitude)) << " < " << poleMargin << "), where it folds back";
+      detail << "single chart (phi, t): c" << level + 1 << " = " << latitude;
+      if (std::abs(latitude) >= M_PI / 2)
+        detail << " is past +-pi/2, where the chart folds back over itself";
+      else
+        detail << " is within |cos| = " << std::abs(std::cos(latitude)) << " < " << poleMargin
+               << " of the pole, where the chart folds back";
       return MethodFailure{"pole-fold-back", detail.str()};
     }
   }
