@@ -1,5 +1,6 @@
 // Every input in fuzz/regressions/ (each found a bug with scripts/fuzz.sh) goes through the scene loader
 // again: it must give a clean SceneError naming at least one problem, or a scene whose start is finite.
+#include <algorithm>
 #include <filesystem>
 
 #include <gtest/gtest.h>
