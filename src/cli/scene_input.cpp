@@ -2,17 +2,12 @@
 
 #include "cli/exit_codes.hpp"
 #include "render/renderer.hpp"
-#include "simulation/trajectory.hpp"
+#include "frames/scene_start.hpp"
 
 namespace sl {
 
 SceneLimits programLimits() {
-  SceneLimits limits;
-  limits.methods = methodNames();
-  limits.integrators = integratorNames();
-  for (const std::string& name : limits.integrators) {
-    if (integratorIsAdaptive(name)) limits.adaptiveIntegrators.push_back(name);
-  }
+  SceneLimits limits = simulationSceneLimits();
   limits.maxImageSize = Renderer::maxSize();
   return limits;
 }

@@ -17,4 +17,13 @@ InitialState sceneStart(const Scene& scene) {
   return start;
 }
 
+SceneLimits simulationSceneLimits() {
+  SceneLimits limits;
+  limits.methods = methodNames();
+  limits.integrators = integratorNames();
+  for (const std::string& name : limits.integrators)
+    if (integratorIsAdaptive(name)) limits.adaptiveIntegrators.push_back(name);
+  return limits;
+}
+
 }  // namespace sl

@@ -10,12 +10,7 @@
 namespace sl {
 namespace {
 
-SceneLimits limits() {
-  SceneLimits result;
-  result.methods = methodNames();
-  result.integrators = integratorNames();
-  return result;
-}
+SceneLimits limits() { return simulationSceneLimits(); }
 
 // Two runs from the generic reference start, short so the suite stays fast.
 Scene twoRunScene(const std::string& extraView = "") {
