@@ -70,7 +70,10 @@ void scaledChainHinges(int m, const S& d, const VectorX<S>& v, const S& alpha, H
   const double outer = m - 1.0;
   // d'^2 = (d-1)^2 + 4d sin^2(theta/2): a sum of non-negative terms (d > m-2 >= 1), never a difference.
   const S halfSine = sin(theta / 2.0);
-  const S subBase = sqrt((d - 1.0) * (d - 1.0) + 4.0 * d * halfSine * halfSine);
+  // AutoDiff: a constant base (the top level's L) has empty derivatives, which Eigen pads with zeros only
+  // in some operations (not in the sum below): give it theta's derivative size first.
+  const S base = d + 0.0 * theta;
+  const S subBase = sqrt((base - 1.0) * (base - 1.0) + 4.0 * base * halfSine * halfSine);
   const S q2 = d * sincProduct * (m - 3.0 + subBase) / (4.0 * subBase * (outer + subBase));
   const S ratio = 2.0 * sqrt(q2) * asincOfSquare<S>(rho2 * q2);  // alpha' / |v_rest|
   const VectorX<S> innerV = rest * ratio;
