@@ -22,11 +22,12 @@ std::string methodColor(const std::string& method) {
   return found == colors.end() ? "#444444" : found->second;
 }
 
-// Dash, point type and width by integrator: fixed step dashed, adaptive solid.
+// Dash, point type and width by integrator: fixed step dashed, adaptive solid (rkf78 thick), others dash-dot.
 std::string integratorStyle(const std::string& integrator) {
   if (!integratorIsAdaptive(integrator)) return "dt 2 pt 6 lw 1.5";
   if (integrator == "dopri5") return "dt 1 pt 8 lw 1.5";
-  return "dt 1 pt 4 lw 2.5";
+  if (integrator == "rkf78") return "dt 1 pt 4 lw 2.5";
+  return "dt 4 pt 12 lw 2";  // bulirsch-stoer and any other: dash-dot, diamonds
 }
 
 struct Axis {
