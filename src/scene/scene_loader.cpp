@@ -80,8 +80,13 @@ void readDrag(const JsonObject& initial, Scene& scene, std::vector<SceneProblem>
   const std::string what = "a vector of R^(n-1), n-1 = " + std::to_string(size);
   InitialSpec& spec = scene.initial;
   if (const auto point = drag.numbers("point", true); point && drag.checkSize("point", *point, size, what)) {
-    if (point->norm() == 0) drag.report("point", "found the zero vector; expected a non-zero vector (normalised onto the sphere)");
-    spec.dragPoint = *point;
+    // Only the point's direction matters: normalise here, overflow-free (a plain norm of [1e200, ...] is
+    // inf and the "unit" point would be zero; of [1e-320, 0, 0] it is 0 and a valid point looks zero).
+    if ((point->array() == 0).all()) {
+      drag.report("point", "found the zero vector; expected a non-zero vector (normalised onto the sphere)");
+    } else {
+      spec.dragPoint = point->stableNormalized();
+    }
   }
   if (const auto direction = drag.numbers("direction", true);
       direction && drag.checkSize("direction", *direction, size, what)) {
