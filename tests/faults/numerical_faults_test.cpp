@@ -97,6 +97,7 @@ Outcome runAndCheck(const FaultCase& fault, const RunConfig& runConfig, int coun
 // Every method with a fixed-step and an adaptive integrator: each either keeps its invariants or stops.
 void runEveryMethod(const FaultCase& fault, long maxSteps) {
   for (const std::string& method : methodNames()) {
+    if (fault.chain.rods != 4 && method.ends_with("-fd")) continue;  // the published methods are 4-rod only
     for (const char* integrator : {"rk4", "dopri5"}) runAndCheck(fault, config(method, integrator, maxSteps));
   }
 }
