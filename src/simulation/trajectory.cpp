@@ -102,25 +102,31 @@ struct Trajectory::Impl {
       return halt("max-steps", t0, "reached maxSteps = " + std::to_string(config.maxSteps));
     State y = stepper->endState();
     if (system->adjust(y)) stepper->initialize(*system, y, t0);
+    // A failed step is rolled back: the run ends on its last good state, which stays sampleable at the
+    // stop time (never the failed step's non-finite data).
+    auto haltAtLastGoodState = [&](const std::string& reason, const std::string& detail) {
+      stepper->initialize(*system, y, t0);
+      halt(reason, t0, detail);
+    };
     try {
       stepper->doStep(*system);
     } catch (const std::exception& e) {
-      return halt("step-size-collapse", t0, std::string("integrator gave up: ") + e.what());
+      return haltAtLastGoodState("step-size-collapse", std::string("integrator gave up: ") + e.what());
     }
     ++steps;
     const State& end = stepper->endState();
     const double t1 = stepper->endTime();
     if (!allFinite(end) || !std::isfinite(t1))
-      return halt("non-finite", t0, "state became non-finite in the step from t = " + formatTime(t0) + "; last good state " + system->describe(y));
+      return haltAtLastGoodState("non-finite", "state became non-finite in the step from t = " + formatTime(t0) + "; last good state " + system->describe(y));
     if (!(t1 - t0 > minimumRelativeStep * std::max(1.0, std::abs(t0))))
-      return halt("step-size-collapse", t0, "step size " + formatTime(t1 - t0) + " at t = " + formatTime(t0));
-    if (const auto failure = system->inspect(end)) return halt(failure->reason, t0, failure->detail + " at t = " + formatTime(t1));
+      return haltAtLastGoodState("step-size-collapse", "step size " + formatTime(t1 - t0) + " at t = " + formatTime(t0));
+    if (const auto failure = system->inspect(end)) return haltAtLastGoodState(failure->reason, failure->detail + " at t = " + formatTime(t1));
     const StepSummary summary = system->summarize(end, chartZeroTAtEnd);
     const double drift = std::abs(summary.energy - initialEnergy) / initialEnergy;
     if (!(drift <= config.maxRelativeEnergyDrift))
-      return halt("energy-blow-up", t0, "relative energy drift " + formatTime(drift) + " at t = " + formatTime(t1));
+      return haltAtLastGoodState("energy-blow-up", "relative energy drift " + formatTime(drift) + " at t = " + formatTime(t1));
     if (!(summary.rodLengthError <= config.maxRodLengthError))
-      return halt("rod-length", t0, "rod-length error " + formatTime(summary.rodLengthError) + " at t = " + formatTime(t1));
+      return haltAtLastGoodState("rod-length", "rod-length error " + formatTime(summary.rodLengthError) + " at t = " + formatTime(t1));
     chartZeroTAtStart = chartZeroTAtEnd;
     chartZeroTAtEnd = summary.chartZeroT;
   }
