@@ -125,8 +125,8 @@ void readInitial(const json& value, Scene& scene, std::vector<SceneProblem>& pro
   if (const auto velocity = initial.numbers("velocity", true);
       velocity && initial.checkSize("velocity", *velocity, size, what)) {
     spec.velocity = *velocity;
-    if (spec.unitSpeed && velocity->norm() == 0) {
-      initial.report("velocity", "is zero; unit_speed needs a non-zero velocity to normalise");
+    if (velocity->norm() == 0) {
+      initial.report("velocity", "is zero; expected a non-zero velocity (a linkage at rest has no motion to show)");
     }
   }
 }
@@ -169,6 +169,15 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
                                joined(limits.methods));
     }
     spec.config.method = *method;
+    // The published methods are the spec's 4-rod, unit-mass ones; the simulation refuses them otherwise,
+    // so say so here, with the JSON path, before any work.
+    const Chain& chain = scene.chain;
+    const bool specsChain = chain.rods == 4 && (chain.hingeMasses.array() == 1.0).all() &&
+                            (chain.rodMasses.array() == 0.0).all();
+    if (method->ends_with("-fd") && !specsChain) {
+      run.report("method", "found \"" + *method + "\", the spec's published method for 4 rods with unit hinge masses and "
+                           "massless rods; this chain differs: expected christoffel, embedded or ambient");
+    }
   }
   if (const auto integrator = run.string("integrator")) {
     if (!contains(limits.integrators, *integrator)) {

@@ -17,7 +17,7 @@ const char* kFullScene = R"({
   "duration": 2.5,
   "runs": [ { "name": "x", "method": "embedded", "integrator": "dopri5", "tolerance": 1e-9, "color": [1, 0, 0.5],
               "watchdog": { "max_energy_drift": 0.1, "max_rod_length_error": 1e-4, "max_steps": 1000 } },
-            { "name": "y", "method": "christoffel-fd", "integrator": "rk4", "step": 0.05 } ],
+            { "name": "y", "method": "ambient", "integrator": "rk4", "step": 0.05 } ],
   "output": { "fps": 24, "width": 640, "height": 360, "folder": "somewhere", "png": false, "video": "v.mp4" },
   "view": { "panels": ["linkage", { "panel": "plot", "plot": "energy", "scale": "linear", "rect": [0, 0.5, 1, 0.5] },
                        { "panel": "plot" }],
