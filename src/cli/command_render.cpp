@@ -114,9 +114,9 @@ bool renderFrames(const RenderPlan& plan, output::FrameManifest* pngManifest,
 }
 
 void runRender(const RenderArguments& args) {
+  installInterruptHandlers();  // first: a signal during planning still ends the render cleanly
   const RenderPlan plan = planRender(args);
   const Scene& scene = plan.scene;
-  installInterruptHandlers();
   Renderer renderer(scene.view.render);
   const nlohmann::json info = manifestInfo(plan);
 

@@ -25,6 +25,7 @@ class ChildProcess {
   ChildProcess& operator=(const ChildProcess&) = delete;
 
   bool running();
+  pid_t pid() const { return pid_; }
   void sendSignal(int signal);
   // Waits at most timeoutSeconds; on timeout the child is killed and timedOut is set.
   ExitStatus wait(double timeoutSeconds);
