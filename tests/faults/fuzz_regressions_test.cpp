@@ -14,15 +14,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-SceneLimits programLikeLimits() {
-  SceneLimits limits;
-  limits.methods = methodNames();
-  limits.integrators = integratorNames();
-  for (const std::string& name : limits.integrators) {
-    if (integratorIsAdaptive(name)) limits.adaptiveIntegrators.push_back(name);
-  }
-  return limits;
-}
+SceneLimits programLikeLimits() { return simulationSceneLimits(); }
 
 std::vector<fs::path> regressionInputs() {
   std::vector<fs::path> files;

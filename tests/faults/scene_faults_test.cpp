@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "frames/scene_start.hpp"
 #include "child_process.hpp"
 #include "fault_scenes.hpp"
 #include "frames/frame_builder.hpp"
@@ -17,15 +18,7 @@ namespace {
 
 using faults::numericalFaultScenes;
 
-SceneLimits simulationLimits() {
-  SceneLimits limits;
-  limits.methods = methodNames();
-  limits.integrators = integratorNames();
-  for (const std::string& name : limits.integrators) {
-    if (integratorIsAdaptive(name)) limits.adaptiveIntegrators.push_back(name);
-  }
-  return limits;
-}
+SceneLimits simulationLimits() { return simulationSceneLimits(); }
 
 bool finite(const Vec2& p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 bool finite(const Vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
