@@ -20,23 +20,24 @@ namespace {
 
 constexpr const char* kFormat = "sphere-linkages frame manifest 1";
 
-// flock(2) on <folder>/manifest.lock for the lifetime of the object: serialises merges between processes.
-class FolderLock {
+// flock(2) on <folder>/.<manifest name>.lock for the lifetime of the object: serialises merges between
+// processes. The manifest itself cannot carry the lock: each write replaces it with a new file.
+class ManifestLock {
  public:
-  explicit FolderLock(const std::string& folder) {
-    const std::string path = folder + "/manifest.lock";
+  ManifestLock(const std::string& folder, const std::string& manifestName) {
+    const std::string path = folder + "/." + manifestName + ".lock";
     fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
     if (fd_ < 0) throw std::runtime_error("cannot open lock file " + path + ": " + std::strerror(errno));
     while (::flock(fd_, LOCK_EX) != 0) {
       if (errno != EINTR) throw std::runtime_error("cannot lock " + path + ": " + std::strerror(errno));
     }
   }
-  ~FolderLock() {
+  ~ManifestLock() {
     ::flock(fd_, LOCK_UN);
     ::close(fd_);
   }
-  FolderLock(const FolderLock&) = delete;
-  FolderLock& operator=(const FolderLock&) = delete;
+  ManifestLock(const ManifestLock&) = delete;
+  ManifestLock& operator=(const ManifestLock&) = delete;
 
  private:
   int fd_ = -1;
@@ -54,11 +55,11 @@ FrameEntry fromJson(const nlohmann::json& j) {
 
 }  // namespace
 
-FrameManifest::FrameManifest(std::string folder, nlohmann::json info, std::string fileName)
-    : folder_(std::move(folder)), fileName_(std::move(fileName)), info_(std::move(info)),
+FrameManifest::FrameManifest(std::string folder, nlohmann::json info, std::string fileName, Existing existing)
+    : folder_(std::move(folder)), fileName_(std::move(fileName)), info_(std::move(info)), existing_(existing),
       lastFlush_(std::chrono::steady_clock::now()) {
   std::filesystem::create_directories(folder_);
-  reload();
+  if (existing_ == Existing::merge) reload();
 }
 
 FrameManifest::~FrameManifest() {
@@ -69,9 +70,13 @@ FrameManifest::~FrameManifest() {
   }
 }
 
+nlohmann::json FrameManifest::emptyManifest() const {
+  return {{"format", kFormat}, {"info", info_}, {"renderers", nlohmann::json::array()}, {"frames", nlohmann::json::array()}};
+}
+
 nlohmann::json FrameManifest::readLocked() const {
   std::ifstream in(path());
-  if (!in) return {{"format", kFormat}, {"info", info_}, {"renderers", nlohmann::json::array()}, {"frames", nlohmann::json::array()}};
+  if (!in) return emptyManifest();
   nlohmann::json manifest;
   try {
     manifest = nlohmann::json::parse(in);
@@ -89,8 +94,8 @@ nlohmann::json FrameManifest::readLocked() const {
 void FrameManifest::reload() {
   nlohmann::json manifest;
   {
-    // The folder lock is released before taking mutex_: flushLocked() takes them in the other order.
-    FolderLock lock(folder_);
+    // The manifest lock is released before taking mutex_: flushLocked() takes them in the other order.
+    ManifestLock lock(folder_, fileName_);
     manifest = readLocked();
   }
   std::lock_guard guard(mutex_);
@@ -102,7 +107,7 @@ void FrameManifest::reload() {
 
 void FrameManifest::addRenderer(const std::string& glRenderer, const std::string& glVersion) {
   std::lock_guard guard(mutex_);
-  renderers_.push_back(glRenderer + " | " + glVersion);
+  renderers_.insert(glRenderer + " | " + glVersion);
 }
 
 void FrameManifest::record(const FrameEntry& entry) {
@@ -118,21 +123,21 @@ void FrameManifest::flush() {
 
 void FrameManifest::flushLocked() {
   lastFlush_ = std::chrono::steady_clock::now();
-  if (pending_.empty() && renderers_.empty()) return;
-  FolderLock lock(folder_);
-  nlohmann::json manifest = readLocked();
-  std::map<int, FrameEntry> merged;
+  if (pending_.empty()) return;
+  ManifestLock lock(folder_, fileName_);
+  // merge: what other processes wrote since, plus ours; replace: ours alone (known_ holds earlier flushes).
+  nlohmann::json manifest = existing_ == Existing::merge ? readLocked() : emptyManifest();
+  std::map<int, FrameEntry> merged = existing_ == Existing::merge ? std::map<int, FrameEntry>{} : known_;
   for (const auto& j : manifest.at("frames")) merged[j.at("frame").get<int>()] = fromJson(j);
   for (const auto& [frame, e] : pending_) merged[frame] = e;
-  std::set<std::string> renderers(renderers_.begin(), renderers_.end());
+  std::set<std::string> renderers = renderers_;
   for (const auto& r : manifest.at("renderers")) renderers.insert(r.get<std::string>());
   manifest["renderers"] = renderers;
   manifest["frames"] = nlohmann::json::array();
   for (const auto& [frame, e] : merged) manifest["frames"].push_back(toJson(e));
-  writeFileAtomically(path(), manifest.dump(1) + "\n");
+  writeFileAtomically(path(), manifest.dump(1) + "\n", Sync::data);
   known_ = std::move(merged);
   pending_.clear();
-  renderers_.clear();
 }
 
 std::optional<FrameEntry> FrameManifest::entry(int frame) const {

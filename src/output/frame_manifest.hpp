@@ -14,16 +14,21 @@
 //   manifest.flush();                          // also automatic every 0.5 s and in the destructor
 //
 // On disk: <folder>/manifest.json (or the given name), replaced atomically (temporary + rename) while
-// holding flock(2) on <folder>/manifest.lock, merging the entries already there, so concurrent shards
+// holding flock(2) on <folder>/.manifest.json.lock (a hidden lock file per manifest), merging the entries already there, so concurrent shards
 // never lose each other's entries. Entries are listed only after their file was renamed into place.
 // Content is deterministic: frames sorted, keys sorted, no timestamps or host names; the union of shards
 // equals a single run byte for byte. After SIGKILL at most the last 0.5 s of entries are missing; their
 // frames are simply rendered again on resume. A video render records pixel hashes only (file empty).
+//
+// Existing::replace is for a file that is always written whole (a video): the manifest on disk, of any
+// earlier render, is neither read nor merged but replaced by this render's entries. A manifest with no
+// entries recorded is never written.
 
 #include <chrono>
 #include <map>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -41,7 +46,9 @@ struct FrameEntry {
 
 class FrameManifest {
  public:
-  FrameManifest(std::string folder, nlohmann::json info, std::string fileName = "manifest.json");
+  enum class Existing { merge, replace };
+  FrameManifest(std::string folder, nlohmann::json info, std::string fileName = "manifest.json",
+                Existing existing = Existing::merge);
   ~FrameManifest();  // flushes; never throws
   FrameManifest(const FrameManifest&) = delete;
   FrameManifest& operator=(const FrameManifest&) = delete;
@@ -60,14 +67,16 @@ class FrameManifest {
   std::string path() const { return folder_ + "/" + fileName_; }
 
  private:
+  nlohmann::json emptyManifest() const;
   nlohmann::json readLocked() const;  // the manifest on disk, or an empty one; throws if malformed
   void flushLocked();                 // caller holds mutex_
 
   std::string folder_, fileName_;
   nlohmann::json info_;
+  Existing existing_;
   mutable std::mutex mutex_;
   std::map<int, FrameEntry> known_, pending_;
-  std::vector<std::string> renderers_;
+  std::set<std::string> renderers_;
   std::chrono::steady_clock::time_point lastFlush_;
   std::chrono::milliseconds flushInterval_{500};
 };

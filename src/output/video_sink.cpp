@@ -8,25 +8,29 @@
 #include <fcntl.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
 #include <vector>
 
 #include "output/sha256.hpp"
+#include "output/temporary_file.hpp"
 
 extern char** environ;
 
 namespace sl::output {
 namespace {
 
-std::vector<std::string> ffmpegArguments(const VideoSettings& s) {
+// ffmpeg writes to `temporary`; "file:" keeps a name like "take:2.mp4" from being read as a protocol.
+std::vector<std::string> ffmpegArguments(const VideoSettings& s, const std::string& temporary) {
   char rate[32];
   std::snprintf(rate, sizeof rate, "%.6g", s.fps);
   return {s.ffmpeg, "-hide_banner", "-loglevel", "error", "-nostdin", "-y",
           "-f", "rawvideo", "-pix_fmt", "rgb24", "-s", std::to_string(s.width) + "x" + std::to_string(s.height),
           "-framerate", rate, "-i", "pipe:0",
           "-c:v", "libx264", "-preset", s.preset, "-crf", std::to_string(s.crf), "-pix_fmt", "yuv420p",
-          "-fflags", "+bitexact", "-flags:v", "+bitexact", "-movflags", "+faststart", s.path};
+          "-fflags", "+bitexact", "-flags:v", "+bitexact", "-movflags", "+faststart", "file:" + temporary};
 }
 
 void writeAll(int fd, const std::uint8_t* data, std::size_t size) {
@@ -52,12 +56,19 @@ VideoSink::VideoSink(const VideoSettings& settings, FrameManifest& manifest) : s
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, fds[0], 0);  // dup2 clears close-on-exec on stdin
-  std::vector<std::string> args = ffmpegArguments(settings);
+  // A process group of its own: Ctrl-C in a terminal reaches linkage only, which then ends the video itself.
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+  posix_spawnattr_setpgroup(&attributes, 0);
+  temporary_ = temporaryPathFor(settings.path) + std::filesystem::path(settings.path).extension().string();
+  std::vector<std::string> args = ffmpegArguments(settings, temporary_);
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
   pid_t pid = -1;
-  const int status = posix_spawnp(&pid, settings.ffmpeg.c_str(), &actions, nullptr, argv.data(), environ);
+  const int status = posix_spawnp(&pid, settings.ffmpeg.c_str(), &actions, &attributes, argv.data(), environ);
+  posix_spawnattr_destroy(&attributes);
   posix_spawn_file_actions_destroy(&actions);
   ::close(fds[0]);
   if (status != 0) {
@@ -76,6 +87,7 @@ VideoSink::~VideoSink() {
   } catch (...) {
     // Reported by finish(); a destructor must not throw.
   }
+  if (!finished_) ::unlink(temporary_.c_str());  // an unfinished video never reaches its final name
 }
 
 void VideoSink::consume(int frameIndex, Image image) {
@@ -86,7 +98,7 @@ void VideoSink::consume(int frameIndex, Image image) {
   auto shared = std::make_shared<Image>(std::move(image));
   writer_->submit([this, frameIndex, shared] {
     writeAll(pipe_, shared->rgb.data(), shared->rgb.size());
-    manifest_.record({frameIndex, "", sha256Hex(shared->rgb), ""});
+    frames_.push_back({frameIndex, "", sha256Hex(shared->rgb), ""});
   });
 }
 
@@ -106,6 +118,11 @@ void VideoSink::closeAndWait() {
 void VideoSink::finish() {
   writer_->wait();
   closeAndWait();
+  if (std::rename(temporary_.c_str(), settings_.path.c_str()) != 0)
+    throw std::runtime_error("cannot rename the finished video into " + settings_.path + ": " + std::strerror(errno));
+  finished_ = true;
+  // Listed only now: a manifest never describes a video that is not in place.
+  for (const FrameEntry& frame : frames_) manifest_.record(frame);
   manifest_.flush();
 }
 

@@ -1,13 +1,16 @@
 #pragma once
 // Frames piped as raw RGB into ffmpeg (H.264, yuv420p, the scene's frame rate), spawned with
-// posix_spawnp (no shell, so no quoting issues with paths). A writer thread feeds the pipe so the
-// caller can render the next frame meanwhile. A video has no per-frame files, so its manifest
-// (<video>.manifest.json next to it) records the pixel hashes only.
+// posix_spawnp (no shell, so no quoting issues with paths) in a process group of its own. A writer thread
+// feeds the pipe so the caller can render the next frame meanwhile. ffmpeg writes a temporary next to the
+// video (output/temporary_file.hpp); finish() renames it into place, and a sink destroyed unfinished
+// removes it, so the video's name only ever holds a complete video. A video has no per-frame files, so its
+// manifest (<video>.manifest.json next to it) records the pixel hashes only, after the rename.
 // SIGPIPE is set to ignored while a VideoSink exists, so an ffmpeg that dies turns into an error
 // message (write fails with EPIPE) instead of killing the process.
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "output/frame_manifest.hpp"
 #include "output/frame_sink.hpp"
@@ -39,6 +42,9 @@ class VideoSink : public FrameSink {
   FrameManifest& manifest_;
   int pipe_ = -1;
   int pid_ = -1;
+  std::string temporary_;
+  std::vector<FrameEntry> frames_;  // written by the one writer thread, read after it is drained
+  bool finished_ = false;
   std::unique_ptr<WorkerPool> writer_;
 };
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <algorithm>
 #include <filesystem>
 
 #include "output/png_sequence_sink.hpp"
@@ -63,6 +64,53 @@ TEST(VideoSink, ProducesAPlayableMp4WithEveryFrame) {
   EXPECT_EQ(frames, "h264,yuv420p,12\n");
   EXPECT_EQ(manifest.entry(11)->pixelSha256, sha256Hex(gradient(64, 48, 11).rgb));
   EXPECT_TRUE(manifest.entry(11)->file.empty());
+}
+
+std::vector<std::string> folderNames(const std::string& folder) {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) names.push_back(entry.path().filename());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// An unfinished video (interrupted, failed) never takes the final name, leaves no temporary, and is not listed.
+TEST(VideoSink, AnUnfinishedVideoLeavesTheEarlierOneUntouched) {
+  const std::string folder = testing::freshFolder();
+  const std::string path = folder + "/clip.mp4";
+  {
+    FrameManifest manifest(folder, {{"test", "first"}}, "clip.mp4.manifest.json", FrameManifest::Existing::replace);
+    VideoSink sink({path, 64, 48, 30}, manifest);
+    for (int k = 0; k < 3; ++k) sink.consume(k, gradient(64, 48, k));
+    sink.finish();
+  }
+  const std::string firstVideo = sha256OfFile(path), firstManifest = sha256OfFile(path + ".manifest.json");
+  {
+    FrameManifest manifest(folder, {{"test", "second"}}, "clip.mp4.manifest.json", FrameManifest::Existing::replace);
+    VideoSink sink({path, 64, 48, 30}, manifest);
+    for (int k = 0; k < 5; ++k) sink.consume(k, gradient(64, 48, k + 1));
+  }  // destroyed without finish()
+  EXPECT_EQ(sha256OfFile(path), firstVideo);
+  EXPECT_EQ(sha256OfFile(path + ".manifest.json"), firstManifest);
+  const std::vector<std::string> expected = {".clip.mp4.manifest.json.lock", "clip.mp4", "clip.mp4.manifest.json"};
+  EXPECT_EQ(folderNames(folder), expected);
+}
+
+// A finished video replaces an earlier one and its manifest, even one written for another render.
+TEST(VideoSink, AFinishedVideoReplacesTheEarlierOneAndItsManifest) {
+  const std::string folder = testing::freshFolder();
+  const std::string path = folder + "/take:2.mp4";  // a colon: ffmpeg must not read "take" as a protocol
+  for (const int frames : {4, 2}) {
+    FrameManifest manifest(folder, {{"frames", frames}}, "take:2.mp4.manifest.json", FrameManifest::Existing::replace);
+    VideoSink sink({path, 64, 48, 30}, manifest);
+    for (int k = 0; k < frames; ++k) sink.consume(k, gradient(64, 48, k));
+    sink.finish();
+  }
+  EXPECT_EQ(run("ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 'file:" +
+                path + "'"),
+            "2\n");
+  FrameManifest reread(folder, {{"frames", 2}}, "take:2.mp4.manifest.json");  // merge mode: throws for another render
+  EXPECT_TRUE(reread.entry(1));
+  EXPECT_FALSE(reread.entry(2)) << "the earlier render's frames must not survive in the manifest";
 }
 
 TEST(VideoSink, RejectsOddSizesAndMissingFfmpeg) {

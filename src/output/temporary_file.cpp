@@ -1,0 +1,66 @@
+#include "output/temporary_file.hpp"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cctype>
+#include <cerrno>
+#include <filesystem>
+#include <sstream>
+
+namespace sl::output {
+namespace {
+
+constexpr const char* kMarker = ".tmp.";
+
+// This host's name reduced to [A-Za-z0-9-], so it never adds a '.' to the name's fields.
+const std::string& hostTag() {
+  static const std::string tag = [] {
+    char name[256] = {};
+    if (::gethostname(name, sizeof name - 1) != 0 || name[0] == '\0') return std::string("host");
+    std::string tag;
+    for (const char* c = name; *c && *c != '.'; ++c) tag += std::isalnum(static_cast<unsigned char>(*c)) ? *c : '-';
+    return tag.empty() ? std::string("host") : tag;
+  }();
+  return tag;
+}
+
+bool isNumber(const std::string& text) {
+  return !text.empty() && text.size() < 12 &&
+         text.find_first_not_of("0123456789") == std::string::npos;
+}
+
+bool processExists(pid_t pid) { return ::kill(pid, 0) == 0 || errno == EPERM; }
+
+// The writer's pid if `name` is a temporary written on this host, else 0.
+pid_t localWriter(const std::string& name) {
+  const auto marker = name.rfind(kMarker);
+  if (marker == std::string::npos || marker == 0) return 0;
+  std::istringstream fields(name.substr(marker + std::char_traits<char>::length(kMarker)));
+  std::string host, pid, serial;
+  if (!std::getline(fields, host, '.') || !std::getline(fields, pid, '.') || !std::getline(fields, serial, '.')) return 0;
+  if (host != hostTag() || !isNumber(pid) || !isNumber(serial)) return 0;
+  return static_cast<pid_t>(std::stol(pid));
+}
+
+}  // namespace
+
+std::string temporaryPathFor(const std::string& finalPath) {
+  static std::atomic<unsigned long> serial{0};
+  return finalPath + kMarker + hostTag() + "." + std::to_string(::getpid()) + "." + std::to_string(serial++);
+}
+
+std::vector<std::string> removeStaleTemporaries(const std::string& folder) {
+  std::vector<std::string> removed;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+    const std::string name = entry.path().filename().string();
+    const pid_t writer = localWriter(name);
+    if (writer <= 0 || processExists(writer)) continue;
+    if (std::filesystem::remove(entry.path(), error)) removed.push_back(name);
+  }
+  return removed;
+}
+
+}  // namespace sl::output
