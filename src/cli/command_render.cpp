@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/disk_space.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/frame_range.hpp"
 #include "cli/interrupt.hpp"
@@ -16,8 +17,10 @@
 #include "cli/run_report.hpp"
 #include "cli/scene_input.hpp"
 #include "frames/frame_builder.hpp"
+#include "output/png_encoder.hpp"
 #include "output/png_sequence_sink.hpp"
 #include "output/sha256.hpp"
+#include "output/temporary_file.hpp"
 #include "output/video_sink.hpp"
 #include "scene/output_folder.hpp"
 
@@ -91,10 +94,20 @@ nlohmann::json manifestInfo(const RenderPlan& plan) {
           {"frames", scene.frameCount()}};
 }
 
+// Before the first PNG is written: do the frames still to write fit? `image` is frame k, the first drawn.
+void checkSpaceForFrames(const RenderPlan& plan, int k, const Image& image) {
+  if (!plan.png) return;  // x264's output size depends on the motion; a full disk shows up as ffmpeg's error
+  FrameSpaceNeed need{plan.folder, 0, k, output::PngEncoder().encode(image).size(), image.width, image.height};
+  for (int frame = k; frame < plan.range.end; ++frame)
+    need.framesToWrite += !fs::exists(fs::path(plan.folder) / output::frameFileName(frame));
+  refuseIfFramesCannotFit(need);
+}
+
 // The frames of the plan's range into the sinks; returns false if interrupted.
-bool renderFrames(const RenderPlan& plan, output::FrameManifest* pngManifest,
-                  std::vector<std::unique_ptr<output::FrameSink>>& sinks, Renderer& renderer, FrameBuilder& builder) {
+bool renderFrames(const RenderPlan& plan, output::FrameManifest* pngManifest, const std::vector<output::FrameSink*>& sinks,
+                  Renderer& renderer, FrameBuilder& builder) {
   Progress progress(plan.range.end - plan.range.first, plan.quiet);
+  bool spaceChecked = false;
   for (int k = plan.range.first; k < plan.range.end; ++k) {
     const bool complete = plan.resume && pngManifest && pngManifest->isFrameComplete(k);
     if (complete) {
@@ -106,11 +119,34 @@ bool renderFrames(const RenderPlan& plan, output::FrameManifest* pngManifest,
     for (int next = builder.lastSampledFrame() + 1; next < k && !interruptRequested(); ++next) builder.advanceTo(next);
     if (interruptRequested()) return false;
     Image image = renderer.render(builder.frame(k));
+    if (!spaceChecked) checkSpaceForFrames(plan, k, image), spaceChecked = true;
     for (size_t i = 0; i + 1 < sinks.size(); ++i) sinks[i]->consume(k, image);
     sinks.back()->consume(k, std::move(image));
     progress.update(k - plan.range.first + 1);
   }
   return true;
+}
+
+// A folder this render created and wrote nothing into but its manifest lock.
+void removeIfUnused(const std::string& folder) {
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(folder, error)) {
+    if (entry.path().filename() != ".manifest.json.lock") return;
+  }
+  fs::remove(fs::path(folder) / ".manifest.json.lock", error);
+  fs::remove(folder, error);
+}
+
+// Temporaries a killed render left in the output folders (its frames in flight, its video) go first.
+void removeStaleTemporaries(const RenderPlan& plan) {
+  std::vector<std::string> folders;
+  if (plan.png) folders.push_back(plan.folder);
+  if (!plan.video.empty()) folders.push_back(fs::path(plan.video).parent_path().empty() ? "." : fs::path(plan.video).parent_path().string());
+  for (const std::string& folder : folders) {
+    const std::vector<std::string> removed = output::removeStaleTemporaries(folder);
+    if (!removed.empty() && !plan.quiet)
+      std::cerr << "removed " << removed.size() << " temporary file(s) an interrupted render left in " << folder << "\n";
+  }
 }
 
 void runRender(const RenderArguments& args) {
@@ -119,44 +155,48 @@ void runRender(const RenderArguments& args) {
   const Scene& scene = plan.scene;
   Renderer renderer(scene.view.render);
   const nlohmann::json info = manifestInfo(plan);
+  removeStaleTemporaries(plan);
+  const bool folderExisted = fs::exists(plan.folder);
 
   std::unique_ptr<output::FrameManifest> pngManifest, videoManifest;
-  std::vector<std::unique_ptr<output::FrameSink>> sinks;
+  std::unique_ptr<output::PngSequenceSink> pngSink;
+  std::unique_ptr<output::VideoSink> videoSink;
+  std::vector<output::FrameSink*> sinks;
   if (plan.png) {
     pngManifest = std::make_unique<output::FrameManifest>(plan.folder, info);
     pngManifest->addRenderer(renderer.glRenderer(), renderer.glVersion());
-    sinks.push_back(std::make_unique<output::PngSequenceSink>(plan.folder, *pngManifest));
+    pngSink = std::make_unique<output::PngSequenceSink>(plan.folder, *pngManifest);
+    sinks.push_back(pngSink.get());
   }
   if (!plan.video.empty()) {
     const fs::path video(plan.video);
     const std::string parent = video.parent_path().empty() ? "." : video.parent_path().string();
-    videoManifest = std::make_unique<output::FrameManifest>(parent, info, video.filename().string() + ".manifest.json");
+    videoManifest = std::make_unique<output::FrameManifest>(parent, info, video.filename().string() + ".manifest.json",
+                                                            output::FrameManifest::Existing::replace);
     videoManifest->addRenderer(renderer.glRenderer(), renderer.glVersion());
     output::VideoSettings settings{plan.video, scene.output.width, scene.output.height, double(scene.output.fps)};
-    sinks.push_back(std::make_unique<output::VideoSink>(settings, *videoManifest));
+    videoSink = std::make_unique<output::VideoSink>(settings, *videoManifest);
+    sinks.push_back(videoSink.get());
   }
 
   FrameBuilder builder(scene, makeTrajectories(scene));
   bool finished = false;
   try {
     finished = renderFrames(plan, pngManifest.get(), sinks, renderer, builder);
-    for (auto& sink : sinks) sink->finish();  // every frame handed over is written whole
-  } catch (const std::exception&) {
-    // Ctrl-C in a terminal reaches ffmpeg too (same process group), which then fails the video sink:
-    // that is the interruption, not an error of its own.
-    if (!interruptRequested()) throw;
+  } catch (const CommandExit&) {
+    pngSink.reset(), videoSink.reset();
+    if (!folderExisted) removeIfUnused(plan.folder);  // refused before any frame: leave no empty folder behind
+    throw;
   }
+  if (pngSink) pngSink->finish();  // every frame handed over is written whole, interrupted or not
+  if (videoSink && finished) videoSink->finish();
+  videoSink.reset();  // unfinished: reaps ffmpeg and removes its temporary, so the video never gets its name
   reportStops(scene, builder.runs());  // results, not progress: shown even with --quiet
   if (!finished) {
-    std::string next = "frames written so far are complete; rerun the same command with --resume to finish";
-    if (!plan.video.empty()) {
-      sinks.clear();  // closes the pipe and reaps ffmpeg before the file goes
-      videoManifest.reset();
-      fs::remove(plan.video);
-      fs::remove(plan.video + ".manifest.json");
-      next = "the unfinished video was removed; rerun to encode it";
-    }
-    stopIfInterrupted(next.c_str());
+    stopIfInterrupted(plan.video.empty()
+                          ? "frames written so far are complete; rerun the same command with --resume to finish"
+                          : "the unfinished video was discarded (an earlier video of that name is untouched); rerun to "
+                            "encode it");
   }
 }
 

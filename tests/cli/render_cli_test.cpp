@@ -2,6 +2,7 @@
 // parallel recipe, an interrupted render finished by --resume.
 #include <csignal>
 #include <fstream>
+#include <functional>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <thread>
@@ -66,12 +67,12 @@ TEST(RenderCli, ShardsByTheReadmeRecipeEqualAWholeRenderByteForByte) {
   const CommandResult whole = runLinkage("render " + quoted(shippedScene("default.json")) + " --size 160x90 --out whole --quiet", folder.path());
   ASSERT_EQ(whole.status, 0) << whole.err;
   const auto a = folderContents(folder.path() / "shards"), b = folderContents(folder.path() / "whole");
-  EXPECT_EQ(a.size(), 601u + 2u);  // frames, manifest.json, manifest.lock
+  EXPECT_EQ(a.size(), 601u + 2u);  // frames, manifest.json, .manifest.json.lock
   EXPECT_TRUE(a == b) << "shard union differs from the whole render";
 }
 
-// Starts a render, sends SIGTERM once some frames exist; returns the exit status.
-int renderUntilTerminated(const std::vector<std::string>& arguments, const fs::path& watchFile) {
+// Starts a render, sends SIGTERM once `started` says so (polled for at most 15 s); returns the exit status.
+int renderUntilTerminated(const std::vector<std::string>& arguments, const std::function<bool()>& started) {
   std::vector<char*> argv;
   const std::string program = linkageBinary();
   argv.push_back(const_cast<char*>(program.c_str()));
@@ -79,7 +80,7 @@ int renderUntilTerminated(const std::vector<std::string>& arguments, const fs::p
   argv.push_back(nullptr);
   pid_t pid = 0;
   if (posix_spawn(&pid, program.c_str(), nullptr, nullptr, argv.data(), environ) != 0) return -1;
-  for (int i = 0; i < 3000 && !fs::exists(watchFile); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  for (int i = 0; i < 3000 && !started(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(5));
   kill(pid, SIGTERM);
   int status = 0;
   waitpid(pid, &status, 0);
@@ -91,7 +92,7 @@ TEST(RenderCli, ResumeAfterSigtermEqualsAnUninterruptedRender) {
   const std::string scene = shippedScene("default.json");
   const std::string out = folder / "resumed";
   const int status = renderUntilTerminated({"render", scene, "--size", "160x90", "--quiet", "--out", out},
-                                           fs::path(out) / "frame_00020.png");
+                                           [&] { return fs::exists(fs::path(out) / "frame_00020.png"); });
   EXPECT_EQ(status, 130);
   std::size_t partial = 0, frames = 0;
   for (const auto& entry : fs::directory_iterator(out)) {
@@ -106,6 +107,30 @@ TEST(RenderCli, ResumeAfterSigtermEqualsAnUninterruptedRender) {
   const CommandResult whole = runLinkage("render " + quoted(scene) + " --size 160x90 --quiet --out whole", folder.path());
   ASSERT_EQ(whole.status, 0) << whole.err;
   EXPECT_TRUE(folderContents(out) == folderContents(folder.path() / "whole"));
+}
+
+// A video interrupted while ffmpeg encodes it: the earlier video of that name and its manifest stay as they
+// were, and nothing else is left (ffmpeg writes a temporary that only a finished render renames).
+TEST(RenderCli, InterruptedVideoLeavesTheEarlierVideoUntouched) {
+  TempFolder folder;
+  const std::string scene = shippedScene("default.json");
+  const CommandResult first = runLinkage("render " + quoted(scene) + " --size 160x90 --frames 0:30 --no-png --video v.mp4 --quiet",
+                                         folder.path());
+  ASSERT_EQ(first.status, 0) << first.err;
+  const auto before = folderContents(folder.path());
+  ASSERT_EQ(before.size(), 3u);  // v.mp4, v.mp4.manifest.json, .v.mp4.manifest.json.lock
+  const auto encoding = [&] {
+    for (const auto& entry : fs::directory_iterator(folder.path()))
+      if (entry.path().filename().string().find(".tmp.") != std::string::npos && fs::file_size(entry.path()) > 0) return true;
+    return false;
+  };
+  const std::string video = folder / "v.mp4";
+  const int status = renderUntilTerminated({"render", scene, "--size", "160x90", "--no-png", "--video", video, "--quiet"}, encoding);
+  EXPECT_EQ(status, 130);
+  const auto after = folderContents(folder.path());
+  std::string names;
+  for (const auto& [name, bytes] : after) names += " " + name + (before.count(name) && before.at(name) == bytes ? "" : " (new or changed)");
+  EXPECT_TRUE(after == before) << "the interrupted video changed or left files in the folder:" << names;
 }
 
 TEST(SimulateCli, WritesOneRowPerFrameTimeAndRunToStdoutOrAFile) {

@@ -40,10 +40,10 @@ std::map<std::string, std::string> renderFiles(const fs::path& folder) {
   return files;
 }
 
-// Leftovers of interrupted atomic writes (frame_00012.png.tmp.PID.N).
-// Temporary files in the folder; with a pid, only those that process wrote (".tmp.<pid>.").
+// Leftovers of interrupted atomic writes (frame_00012.png.tmp.HOST.PID.N, output/temporary_file.hpp):
+// all of them, or with a pid only those that process wrote.
 std::vector<std::string> temporaries(const fs::path& folder, pid_t writer = 0) {
-  const std::string marker = writer > 0 ? ".tmp." + std::to_string(writer) + "." : std::string(".tmp");
+  const std::string marker = writer > 0 ? "." + std::to_string(writer) + "." : std::string(".tmp.");
   std::vector<std::string> names;
   for (const auto& entry : fs::directory_iterator(folder)) {
     if (entry.path().filename().string().find(marker) != std::string::npos) names.push_back(entry.path().filename());
@@ -140,6 +140,7 @@ TEST_F(ProcessFaults, SignalsAtRandomFramesThenResumeGivesIdenticalBytes) {
     std::string errors;
     ASSERT_EQ(render({"--quiet", "--resume", "--out", out}, &errors).code, 0) << errors;
     EXPECT_TRUE(renderFiles(folder_.path() / out) == reference_) << out << ": resumed render differs";
+    EXPECT_TRUE(temporaries(folder_.path() / out).empty()) << out << ": the resume left a killed render's temporaries";
   }
 }
 
@@ -162,16 +163,51 @@ class Mount {
   bool mounted_ = false;
 };
 
+// Writes zeros into `path` until the file system is full.
+void fillDisk(const fs::path& path) {
+  std::FILE* filler = std::fopen(path.c_str(), "wb");
+  ASSERT_NE(filler, nullptr);
+  const std::vector<char> block(64 * 1024, 0);
+  while (std::fwrite(block.data(), 1, block.size(), filler) == block.size()) {
+  }
+  std::fclose(filler);
+}
+
+// The disk fills up while the render runs (it is stopped, the disk filled, then it continues).
 TEST_F(ProcessFaults, FullDiskGivesAClearErrorAndKeepsCompletedFrames) {
-  Mount disk(folder_.path() / "disk", "size=200k");
+  Mount disk(folder_.path() / "disk", "size=8m");
   if (!disk.mounted()) GTEST_SKIP() << "mounting a tmpfs is not permitted here (needs root)";
-  std::string errors;
-  const ExitStatus status = render({"--quiet", "--out", "disk/frames"}, &errors);
+  ChildProcess child(faults::linkageBinary(), {"render", "small.json", "--quiet", "--out", "disk/frames"},
+                     folder_.path().string(), "full-disk");
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (child.running() && frameFileCount(folder_.path() / "disk/frames") < 5 && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  child.sendSignal(SIGSTOP);
+  fillDisk(folder_.path() / "disk/filler");
+  child.sendSignal(SIGCONT);
+  const ExitStatus status = child.wait(120);
+  const std::string errors = child.standardError();
+  ASSERT_FALSE(status.timedOut);
   EXPECT_EQ(status.code, 3) << errors;  // the work failed: cannot write
   EXPECT_NE(errors.find("No space left"), std::string::npos) << errors;
   EXPECT_NE(errors.find("disk/frames"), std::string::npos) << "the message should name the folder or file: " << errors;
-  EXPECT_GT(frameFileCount(folder_.path() / "disk/frames"), 0);
+  EXPECT_GE(frameFileCount(folder_.path() / "disk/frames"), 5);
+  EXPECT_TRUE(temporaries(folder_.path() / "disk/frames").empty()) << "a failed write left its temporary";
   expectOnlyCompleteFrames("disk/frames");
+}
+
+// Frames that cannot fit are refused before the first is written, with the numbers in the message.
+TEST_F(ProcessFaults, RenderThatCannotFitIsRefusedUpFront) {
+  Mount disk(folder_.path() / "small-disk", "size=64k");
+  if (!disk.mounted()) GTEST_SKIP() << "mounting a tmpfs is not permitted here (needs root)";
+  ASSERT_GT(kFrames * reference_.at("frame_00000.png").size(), 64u * 1024u) << "the test needs frames that do not fit into 64 kB";
+  std::string errors;
+  const ExitStatus status = render({"--quiet", "--out", "small-disk/frames"}, &errors);
+  EXPECT_EQ(status.code, 2) << errors;
+  EXPECT_NE(errors.find("small-disk/frames: " + std::to_string(kFrames) + " frames of 160x90 need about"), std::string::npos) << errors;
+  EXPECT_NE(errors.find("kB are free there"), std::string::npos) << errors;
+  EXPECT_FALSE(fs::exists(folder_.path() / "small-disk/frames")) << "a refused render must write nothing";
 }
 
 TEST_F(ProcessFaults, ReadOnlyFolderGivesAClearErrorAndKeepsItsFrames) {
