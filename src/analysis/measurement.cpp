@@ -13,6 +13,7 @@ namespace {
 struct RunRecord {
   std::vector<Sample> samples;
   std::optional<StopInfo> stop;
+  InvariantExtremes atSteps;
   long evaluations = 0, steps = 0;
   double wallSeconds = 0, cpuSeconds = 0;
 };
@@ -43,6 +44,7 @@ RunRecord recordRun(const Chain& chain, const InitialState& start, const RunConf
   record.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   record.cpuSeconds = threadCpuSeconds() - cpuBegin;
   record.stop = run.stop();
+  record.atSteps = run.invariantExtremes();
   record.evaluations = run.vectorFieldEvaluations();
   record.steps = run.steps();
   return record;
@@ -54,6 +56,8 @@ Measurement compare(const RunRecord& record, const ReferencePath& reference) {
   m.steps = record.steps;
   m.wallSeconds = record.wallSeconds;
   m.cpuSeconds = record.cpuSeconds;
+  m.maxEnergyDrift = record.atSteps.maxRelativeEnergyDrift;
+  m.maxRodLengthError = record.atSteps.maxRodLengthError;
   for (const Sample& sample : record.samples) {
     m.maxEnergyDrift = std::max(m.maxEnergyDrift, std::abs(sample.relativeEnergyDrift));
     m.maxRodLengthError = std::max(m.maxRodLengthError, sample.rodLengthError);

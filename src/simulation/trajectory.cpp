@@ -92,6 +92,7 @@ struct Trajectory::Impl {
   long steps = 0;
   double lastSampleTime = 0;
   std::optional<StopInfo> stop;
+  InvariantExtremes extremes;
 
   void halt(const std::string& reason, double time, const std::string& detail) { stop = StopInfo{reason, time, detail}; }
 
@@ -127,6 +128,8 @@ struct Trajectory::Impl {
       return haltAtLastGoodState("energy-blow-up", "relative energy drift " + formatTime(drift) + " at t = " + formatTime(t1));
     if (!(summary.rodLengthError <= config.maxRodLengthError))
       return haltAtLastGoodState("rod-length", "rod-length error " + formatTime(summary.rodLengthError) + " at t = " + formatTime(t1));
+    extremes.maxRelativeEnergyDrift = std::max(extremes.maxRelativeEnergyDrift, drift);
+    extremes.maxRodLengthError = std::max(extremes.maxRodLengthError, summary.rodLengthError);
     chartZeroTAtStart = chartZeroTAtEnd;
     chartZeroTAtEnd = summary.chartZeroT;
   }
@@ -185,6 +188,7 @@ std::optional<Sample> Trajectory::sampleAt(double t) {
 }
 
 const std::optional<StopInfo>& Trajectory::stop() const { return impl_->stop; }
+const InvariantExtremes& Trajectory::invariantExtremes() const { return impl_->extremes; }
 long Trajectory::vectorFieldEvaluations() const { return impl_->system->evaluations; }
 long Trajectory::steps() const { return impl_->steps; }
 

@@ -52,6 +52,13 @@ struct StopInfo {
   std::string detail;  // human-readable: where and what
 };
 
+// The invariants' worst values over every accepted step so far (the watchdogs evaluate them at each step's
+// end anyway): a run's drift is known without sampling it densely.
+struct InvariantExtremes {
+  double maxRelativeEnergyDrift = 0;  // max |E - E0| / E0
+  double maxRodLengthError = 0;       // max_k | |p_k - p_(k-1)| - 1 |
+};
+
 class Trajectory {
  public:
   Trajectory(const Chain& chain, const InitialState& start, const RunConfig& config);
@@ -65,6 +72,7 @@ class Trajectory {
   std::optional<Sample> sampleAt(double t);
 
   const std::optional<StopInfo>& stop() const;
+  const InvariantExtremes& invariantExtremes() const;  // over the steps integrated so far
   long vectorFieldEvaluations() const;
   long steps() const;
 

@@ -100,6 +100,22 @@ TEST(MeasureRun, TheDefaultMethodIsAccurateOnTheGenericStart) {
   EXPECT_EQ(m.stopTime, 20.0);
 }
 
+// Without a reference, the invariants still cover the whole run: the steps' extremes, not only the two
+// sample times (the stability sweep samples only the start and the end then).
+TEST(MeasureRun, WithoutAReferenceTheInvariantsCoverEveryStep) {
+  const NamedStart start = shippedStart("generic");
+  RunConfig config;
+  config.integrator = "rk4";
+  config.step = 0.02;
+  const Measurement ends = measureRun(start.chain, start.state, config, noReference(gridTimes(20, 20)));
+  const Measurement dense = measureRun(start.chain, start.state, config, noReference(gridTimes(20, 0.02)));
+  EXPECT_EQ(ends.status, "ok");
+  EXPECT_GT(dense.maxEnergyDrift, 1e-10);
+  EXPECT_EQ(ends.maxEnergyDrift, dense.maxEnergyDrift);  // every sample of `dense` is a step end
+  EXPECT_EQ(ends.maxRodLengthError, dense.maxRodLengthError);
+  EXPECT_TRUE(std::isnan(ends.maxError));
+}
+
 // Spec section 4's caveat: the single chart (phi, t) folds back at its poles. Passing 1e-3 from the
 // pole, the published method is stopped there; exactly through the pole its fields are singular.
 TEST(MeasureRun, ThePublishedMethodFailsAtThePole) {
