@@ -18,7 +18,7 @@ struct ColorRGB { float r = 0, g = 0, b = 0; };
 // How configuration-space points are shown in the sphere panel.
 enum class ViewSpace {
   Sphere,         // 4 rods: the point (cos phi cos t, cos phi sin t, sin phi) on S^2
-  Stereographic,  // 5+ rods: stereographic projection of S^(n-2) (first three coordinates of the projection)
+  Ball,           // 5+ rods: S^(n-2) mapped into the unit ball, the start at the centre (frames/sphere_view.hpp)
   Circle          // 3 rods: (cos t, sin t, 0) on the equator
 };
 

@@ -1,6 +1,7 @@
 #include "frames/sphere_view.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace sl {
 
@@ -24,17 +25,19 @@ SphereView::SphereView(int rods, const Eigen::VectorXd& startPoint) : rods_(rods
 
 ViewSpace SphereView::space() const {
   if (rods_ == 3) return ViewSpace::Circle;
-  return rods_ == 4 ? ViewSpace::Sphere : ViewSpace::Stereographic;
+  return rods_ == 4 ? ViewSpace::Sphere : ViewSpace::Ball;
 }
 
 Vec3 SphereView::project(const Eigen::VectorXd& x) const {
   if (rods_ == 3) return {x(0), x(1), 0.0};
   if (rods_ == 4) return {x(0), x(1), x(2)};
-  const Eigen::VectorXd y = toNorthPole_ * x;
-  // Projection from the south pole -e_last; the start point (y = e_last) goes to 0. Points within
-  // 1e-9 of the pole would go to infinity: they are drawn at a large finite distance instead.
-  const double denominator = std::max(1.0 + y(y.size() - 1), 1e-9);
-  return {y(0) / denominator, y(1) / denominator, y(2) / denominator};
+  const Eigen::VectorXd y = toNorthPole_ * x;  // the start is e_last
+  const Eigen::Index last = y.size() - 1;
+  const double across = y.head(last).norm();         // sin(theta)
+  const double theta = std::atan2(across, y(last));  // the angle from the start, in [0, pi]
+  if (!(across > 0)) return y(last) > 0 ? Vec3{} : Vec3{0.0, 0.0, 1.0};  // the start; the antipode (any direction)
+  const double scale = theta / (std::acos(-1.0) * across);
+  return {y(0) * scale, y(1) * scale, y(2) * scale};
 }
 
 }  // namespace sl

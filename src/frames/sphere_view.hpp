@@ -2,10 +2,14 @@
 // Where a configuration (a point x of S^(n-2)) is drawn in the sphere panel (frame_state.hpp, ViewSpace).
 //   3 rods: x in R^2 is drawn on the equator circle (x0, x1, 0).
 //   4 rods: x itself, the point (cos phi cos t, cos phi sin t, sin phi) of S^2.
-//   5+ rods: stereographic projection of S^(n-2) from the antipode of the start point, so the start sits
-//            at the origin and the hemisphere around it fills the unit ball; for n = 5 this is a
-//            faithful (conformal, one-to-one) picture of S^3 minus one point in R^3. For n > 5 the first
-//            three of the n-2 projected coordinates are shown.
+//   5+ rods: S^(n-2) mapped into the unit ball by the azimuthal equidistant projection about the start point
+//            (the inverse of the exponential map there): the start sits at the centre, a point at angle theta
+//            from it lands at distance theta / pi in its direction, so the great sphere orthogonal to the
+//            start is the sphere of radius 1/2 and the antipode is the boundary. For n = 5 this is one-to-one
+//            on S^3 minus the antipode, and every path stays inside the ball. (A stereographic projection,
+//            used before, sends the neighbourhood of the antipode to infinity: paths left the panel.)
+//            A path through the antipode reappears on the opposite side of the boundary; the renderer
+//            leaves a gap there. For n > 5 the first three of the n-2 directions are shown.
 
 #include <Eigen/Dense>
 

@@ -15,11 +15,15 @@ constexpr double kTubeRadius = 0.014;  // world units (sphere radius 1)
 constexpr double kBallRadius = 0.055;
 
 V3 toV3(const Vec3& p) { return {p.x, p.y, p.z}; }
-// Finite and not absurdly far: a stereographic projection runs off to infinity near its pole, and
-// such points would only stretch a segment across the whole panel.
+// Finite and not absurdly far (the frame state promises the unit ball or sphere; this guards the drawing).
 bool drawable(const Vec3& p) {
   return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && p.x * p.x + p.y * p.y + p.z * p.z < 400.0;
 }
+
+// Consecutive path samples lie a few thousandths apart; a chord this long is the ball view's jump
+// through the antipode (from one side of the boundary to the other), drawn as a gap, never a line.
+constexpr double kMaxPathChord = 0.5;
+double distance(const Vec3& a, const Vec3& b) { return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z)); }
 
 // On the opaque sphere, points ride on a shell just outside it so the tube's front half is never
 // inside the sphere; lines elsewhere are not occluded.
@@ -50,6 +54,10 @@ void drawPath(const RunFrame& run, const PanelContext& context, const SphereCame
     const double age = i < run.pathTimes.size() ? context.frame.time - run.pathTimes[i] : 0.0;
     const float alpha = pathAlpha(context.settings, age);
     const V3 p = placement.place(run.path[i]);
+    if (i > 0 && distance(run.path[i - 1], run.path[i]) > kMaxPathChord) {  // a gap, then this point
+      batch.polyline(points, true, 0.35f);
+      points.clear();
+    }
     if (alpha <= 0.0f || !drawable(run.path[i]) || !camera.inFront(p)) {
       batch.polyline(points, true, 0.35f);  // a gap: draw what came before, start afresh
       points.clear();

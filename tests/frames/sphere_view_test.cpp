@@ -1,5 +1,6 @@
 // The sphere panel's view of S^(n-2), checked against its geometric meaning.
 #include <cmath>
+#include <random>
 
 #include <gtest/gtest.h>
 
@@ -27,30 +28,48 @@ TEST(SphereView, ThreeRodsUseTheEquator) {
   EXPECT_DOUBLE_EQ(p.z, 0.0);
 }
 
-// Stereographic projection from the start's antipode: a point at angle theta from the start lands at
-// distance tan(theta / 2) from the origin; the start itself at the origin.
-TEST(SphereView, FiveRodsStereographicDistanceIsTanHalfAngle) {
+// The azimuthal equidistant view about the start: a point at angle theta from the start lands at distance
+// theta / pi from the centre, in the direction of its component orthogonal to the start; the start itself at
+// the centre.
+TEST(SphereView, FiveRodsDistanceFromTheCentreIsTheAngleOverPi) {
   const Eigen::Vector4d start = Eigen::Vector4d(0.2, -0.4, 0.5, 0.7).normalized();
   const SphereView view(5, start);
-  EXPECT_EQ(view.space(), ViewSpace::Stereographic);
+  EXPECT_EQ(view.space(), ViewSpace::Ball);
   EXPECT_NEAR(norm(view.project(start)), 0.0, 1e-15);
   for (const Eigen::Vector4d& raw : {Eigen::Vector4d(1, 0, 0, 0), Eigen::Vector4d(0.1, 0.9, -0.3, 0.2),
-                                     Eigen::Vector4d(-0.5, 0.4, -0.5, -0.6)}) {
+                                     Eigen::Vector4d(-0.5, 0.4, -0.5, -0.6), Eigen::Vector4d(-0.2, 0.4, -0.5, -0.69)}) {
     const Eigen::Vector4d x = raw.normalized();
     const double theta = std::acos(std::clamp(x.dot(start), -1.0, 1.0));
-    EXPECT_NEAR(norm(view.project(x)), std::tan(theta / 2), 1e-12);
+    EXPECT_NEAR(norm(view.project(x)), theta / std::acos(-1.0), 1e-12);
   }
 }
 
-// One-to-one: distinct points stay distinct (conformal maps preserve angles; here, that two points at
-// the same angle from the start but in different directions project apart).
-TEST(SphereView, FiveRodsSeparatesDirections) {
+// Every point of S^3 lands inside the unit ball (the panel's glass sphere), the antipode included, and the
+// view is one-to-one away from the antipode: two points at the same angle from the start in different
+// directions land apart, at the same distance.
+TEST(SphereView, FiveRodsStayInsideTheBallAndSeparateDirections) {
   const Eigen::Vector4d start(0, 0, 0, 1);
   const SphereView view(5, start);
   const Vec3 a = view.project(Eigen::Vector4d(0.6, 0, 0, 0.8));
   const Vec3 b = view.project(Eigen::Vector4d(0, 0.6, 0, 0.8));
-  EXPECT_GT(std::hypot(a.x - b.x, a.y - b.y, a.z - b.z), 0.4);
-  EXPECT_TRUE(std::isfinite(norm(view.project(-start))));  // the pole itself: far, but finite
+  EXPECT_GT(std::hypot(a.x - b.x, a.y - b.y, a.z - b.z), 0.2);
+  EXPECT_NEAR(norm(a), norm(b), 1e-15);
+  EXPECT_NEAR(norm(view.project(-start)), 1.0, 1e-15);
+  EXPECT_NEAR(norm(view.project(Eigen::Vector4d(1e-9, 0, 0, -1).normalized())), 1.0, 1e-9);
+  std::mt19937 random(7);
+  std::normal_distribution<double> normal;
+  for (int k = 0; k < 1000; ++k) {
+    const Eigen::Vector4d x = Eigen::Vector4d(normal(random), normal(random), normal(random), normal(random)).normalized();
+    EXPECT_LE(norm(view.project(x)), 1.0 + 1e-15);
+  }
+}
+
+// Near the start the view is the tangent picture, scaled by 1/pi: smooth, no 0/0.
+TEST(SphereView, FiveRodsIsSmoothAtTheStart) {
+  const SphereView view(5, Eigen::Vector4d(0, 0, 0, 1));
+  const Vec3 p = view.project(Eigen::Vector4d(1e-12, 0, 0, 1).normalized());
+  EXPECT_NEAR(p.x, 1e-12 / std::acos(-1.0), 1e-27);
+  EXPECT_TRUE(std::isfinite(p.y) && p.y == 0.0);
 }
 
 }  // namespace

@@ -24,9 +24,9 @@ TEST(Determinism, FrameAloneEqualsFrameInSequence) {
     const FrameState target = syntheticFrame(5.0, 300);
     Renderer sequence(settings);
     for (double t : {0.5, 1.5, 3.0}) sequence.render(syntheticFrame(t, int(t * 60)));
-    SyntheticOptions stereographic;
-    stereographic.viewSpace = ViewSpace::Stereographic;  // a different sphere look in between
-    sequence.render(syntheticFrame(4.0, 240, stereographic));
+    SyntheticOptions ball;
+    ball.viewSpace = ViewSpace::Ball;  // a different sphere look in between
+    sequence.render(syntheticFrame(4.0, 240, ball));
     const Image inSequence = sequence.render(target);
     Renderer alone(settings);
     EXPECT_EQ(alone.render(target).rgb, inSequence.rgb) << "orbit " << orbit;

@@ -22,14 +22,14 @@ RenderSettings smallSettings() {
 std::vector<NamedFrame> referenceFrames() {
   SyntheticOptions stopping;
   stopping.stopSecondRun = true;
-  SyntheticOptions stereographic;
-  stereographic.viewSpace = ViewSpace::Stereographic;
+  SyntheticOptions ball;
+  ball.viewSpace = ViewSpace::Ball;
   SyntheticOptions circle;
   circle.viewSpace = ViewSpace::Circle;
   circle.runs = 1;
   return {{"sphere_t2", syntheticFrame(2.0, 120)},
           {"stopped_t7", syntheticFrame(7.0, 420, stopping)},
-          {"stereographic_t4", syntheticFrame(4.0, 240, stereographic)},
+          {"ball_t4", syntheticFrame(4.0, 240, ball)},
           {"circle_t4", syntheticFrame(4.0, 240, circle)}};
 }
 
