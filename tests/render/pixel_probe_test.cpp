@@ -111,5 +111,29 @@ TEST_F(PixelProbe, NoAntialiasingStillDrawsTheSameScene) {
   EXPECT_NE(hard.rgb, image.rgb);  // edges differ
 }
 
+// The ball view (5+ rods): a path through the antipode jumps from one side of the boundary to the other; the
+// jump is a gap, not a line across the ball. The same line sampled densely is drawn (so the probe can see it).
+TEST_F(PixelProbe, BallViewLeavesAGapWhereThePathJumpsThroughTheAntipode) {
+  auto ballFrame = [&](bool jump) {
+    FrameState ball = probeFrame();
+    ball.viewSpace = ViewSpace::Ball;
+    RunFrame& run = ball.runs[0];
+    run.path.clear();
+    run.pathTimes.clear();
+    for (int k = 0; k <= 200; ++k) {
+      const double x = jump ? (k <= 100 ? 0.8 + 0.0019 * k : -0.99 + 0.0019 * (k - 101)) : -0.9 + 0.009 * k;
+      run.path.push_back({x, 0.0, 0.0});
+      run.pathTimes.push_back(ball.time);
+    }
+    run.current = run.path.back();
+    return ball;
+  };
+  const render::P2 centre = camera.project({0, 0, 0});
+  const Rgb8 drawn = pixel(renderer.render(ballFrame(false)), int(centre.x), int(centre.y));
+  EXPECT_TRUE(isRunRed(drawn)) << drawn.r << " " << drawn.g << " " << drawn.b;
+  const Rgb8 gap = pixel(renderer.render(ballFrame(true)), int(centre.x), int(centre.y));
+  EXPECT_FALSE(isRunRed(gap)) << "a line crosses the ball: " << gap.r << " " << gap.g << " " << gap.b;
+}
+
 }  // namespace
 }  // namespace sl
