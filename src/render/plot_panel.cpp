@@ -122,15 +122,23 @@ void drawSeries(const PlotSeries& series, const Axis& x, const Axis& y, const Pl
   batch.polyline(points);
 }
 
+// Top right inside the plot, on a veil of the background colour: lines that run under it stay faintly
+// visible, and the labels stay readable.
 void drawLegend(const PanelContext& c, const PlotFrame& plot, const PlotArea& area, ShapeBatch& batch) {
-  float y = area.y0 + c.font.lineHeight(TextSize::Small);
+  if (plot.series.empty()) return;
+  const float line = c.font.lineHeight(TextSize::Small), ascent = c.font.ascent(TextSize::Small);
+  float widest = 0;
+  for (const auto& series : plot.series) widest = std::max(widest, c.font.width(series.label, TextSize::Small));
+  const float right = area.x1 - 8, left = right - widest - 22, top = area.y0 + 2;
+  const ColorRGB veil = c.settings.background;
+  batch.rect(left - 6, top, area.x1 - 2, top + line * float(plot.series.size()) + 0.35f * ascent,
+             {veil.r, veil.g, veil.b, 0.85f});
+  float y = area.y0 + line;
   for (const auto& series : plot.series) {
-    const float width = c.font.width(series.label, TextSize::Small);
-    const float x = area.x1 - width - 8;
-    batch.capsule({x - 22, y - 0.35f * c.font.ascent(TextSize::Small)}, {x - 6, y - 0.35f * c.font.ascent(TextSize::Small)},
-                  1.3f, toRgba(series.color));
+    const float x = right - c.font.width(series.label, TextSize::Small);
+    batch.capsule({x - 22, y - 0.35f * ascent}, {x - 6, y - 0.35f * ascent}, 1.3f, toRgba(series.color));
     c.font.draw(batch, series.label, TextSize::Small, x, y, palette::ink);
-    y += c.font.lineHeight(TextSize::Small);
+    y += line;
   }
 }
 
