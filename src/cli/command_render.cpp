@@ -119,7 +119,10 @@ bool renderFrames(const RenderPlan& plan, output::FrameManifest* pngManifest, co
     for (int next = builder.lastSampledFrame() + 1; next < k && !interruptRequested(); ++next) builder.advanceTo(next);
     if (interruptRequested()) return false;
     Image image = renderer.render(builder.frame(k));
-    if (!spaceChecked) checkSpaceForFrames(plan, k, image), spaceChecked = true;
+    if (!spaceChecked) {
+      checkSpaceForFrames(plan, k, image);
+      spaceChecked = true;
+    }
     for (size_t i = 0; i + 1 < sinks.size(); ++i) sinks[i]->consume(k, image);
     sinks.back()->consume(k, std::move(image));
     progress.update(k - plan.range.first + 1);
