@@ -105,24 +105,39 @@ Eigen::Matrix2d kineticMetricPublished(double L, double phi, double t) {
   const double cphi = std::cos(phi), sphi = std::sin(phi);
   const double theta = alpha * sphi;
   const double ctheta = std::cos(theta), stheta = std::sin(theta);
-  const double d = std::sqrt(L * L - 2 * L * ctheta + 1);
+  const PublishedOuterLevel outer = publishedOuterLevel(L, alpha, cphi, ctheta, stheta);
   const double R = std::atan2(-stheta, L - ctheta);
-  const double dthetaP = alpha * cphi;
-  const double ddP = (L * stheta / d) * dthetaP;
-  const double dRP = ((1 - L * ctheta) / (d * d)) * dthetaP;
-
-  const double alpha_in = std::acos((d * d - 3) / (2 * d));
-  const double sin_ai = std::sqrt((d * d - 1) * (9 - d * d)) / (2 * d);
   const double ct = std::cos(t), st = std::sin(t);
-  const double theta_in = alpha_in * st;
+  const double theta_in = outer.alpha_in * st;
+  const double u3_arg = R + theta_in;
+  return publishedInnerLevel(outer, ct, st, Eigen::Vector2d(std::cos(u3_arg), std::sin(u3_arg)));
+}
+
+PublishedOuterLevel publishedOuterLevel(double L, double alpha, double cphi, double ctheta, double stheta) {
+  PublishedOuterLevel o{};
+  o.L = L;
+  o.ctheta = ctheta;
+  o.stheta = stheta;
+  const double d = std::sqrt(L * L - 2 * L * ctheta + 1);
+  o.d = d;
+  o.dthetaP = alpha * cphi;
+  o.ddP = (L * stheta / d) * o.dthetaP;
+  o.dRP = ((1 - L * ctheta) / (d * d)) * o.dthetaP;
+  o.alpha_in = std::acos((d * d - 3) / (2 * d));
+  o.sin_ai = std::sqrt((d * d - 1) * (9 - d * d)) / (2 * d);
+  o.dalphainP = -((d * d + 3) / (2 * d * d * o.sin_ai)) * o.ddP;
+  return o;
+}
+
+Eigen::Matrix2d publishedInnerLevel(const PublishedOuterLevel& o, double ct, double st, const Eigen::Vector2d& u3v) {
+  const double L = o.L, ctheta = o.ctheta, stheta = o.stheta, d = o.d;
+  const double dthetaP = o.dthetaP, dRP = o.dRP, alpha_in = o.alpha_in, sin_ai = o.sin_ai;
   const double dthetainT = alpha_in * ct;
-  const double dalphainP = -((d * d + 3) / (2 * d * d * sin_ai)) * ddP;
-  const double dthetainP = dalphainP * st;
+  const double dthetainP = o.dalphainP * st;
 
   const double p3[2] = {L - ctheta, -stheta};
   const double u4[2] = {ctheta, stheta};
-  const double u3_arg = R + theta_in;
-  const double u3[2] = {std::cos(u3_arg), std::sin(u3_arg)};
+  const double u3[2] = {u3v.x(), u3v.y()};
   const double p2[2] = {p3[0] - u3[0], p3[1] - u3[1]};
   const double p2_abs = std::hypot(p2[0], p2[1]);
   const double nu_in = std::abs(ct) < 1e-6 ? ct * std::sqrt(d * alpha_in * sin_ai)
