@@ -23,16 +23,7 @@ Eigen::Matrix2d kineticMetricClosedForm(double baseLength, double phi, double t)
 // Omega_a with d_a|p2| / nu_in). Loses digits near the seam and fails on it.
 Eigen::Matrix2d kineticMetricPublished(double baseLength, double phi, double t);
 
-// metric4 (spec section 3) split at its two levels, so that a stencil can share what depends on phi alone (the published
-// christoffel-fd, simulation/published_fields.cpp) while the formula is written once. The caller supplies
-// the trigonometric values; kineticMetricPublished takes them straight from std::cos / std::sin / atan2.
-struct PublishedOuterLevel {  // everything of metric4 that depends on phi only
-  double L, ctheta, stheta, d, dthetaP, ddP, dRP, alpha_in, sin_ai, dalphainP;
-};
-// alpha = acos((L^2 - 8) / 2L); cos, sin of theta = alpha sin phi.
-PublishedOuterLevel publishedOuterLevel(double baseLength, double alpha, double cphi, double ctheta, double stheta);
-// The rest of metric4 at (phi, t): cos, sin of t and u3 = e^(i (R + alpha_in sin t)).
-Eigen::Matrix2d publishedInnerLevel(const PublishedOuterLevel& outer, double ct, double st, const Eigen::Vector2d& u3);
+// Its two levels, for stencils that share work: linkage/published_metric_levels.hpp.
 
 // h = J^T M J with J = d q / d coords by forward-mode AD, in the chart with the given axes
 // (sphereChartAxes; chart 0 is the spec's).
