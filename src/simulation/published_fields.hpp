@@ -5,6 +5,10 @@
 //                               eps = 1e-5, then the six Christoffel symbols of the 2D cheatsheet.
 //   embedded-fd    (section 5): first and second partials of q = Psi(phi, t) in R^6 by central differences,
 //                               eps = 1e-4, then the 2x2 normal-acceleration system.
+// The fields share work across the stencil (what depends on phi alone is computed for 3 phi values, not
+// 5 or 9; sines and cosines of neighbouring stencil angles come from one sincos by angle addition). The
+// ...StencilByStencil versions evaluate every stencil point from scratch, as the spec's code does: the
+// reference the shared versions are tested against (they agree to roundoff) and benchmarked with.
 
 #include <Eigen/Dense>
 
@@ -13,6 +17,11 @@ namespace sl {
 // (phiddot, tddot) from (phi, t) and (phidot, tdot).
 Eigen::Vector2d christoffelFdAcceleration(double baseLength, const Eigen::Vector2d& coords, const Eigen::Vector2d& rates);
 Eigen::Vector2d embeddedFdAcceleration(double baseLength, const Eigen::Vector2d& coords, const Eigen::Vector2d& rates);
+
+Eigen::Vector2d christoffelFdAccelerationStencilByStencil(double baseLength, const Eigen::Vector2d& coords,
+                                                          const Eigen::Vector2d& rates);
+Eigen::Vector2d embeddedFdAccelerationStencilByStencil(double baseLength, const Eigen::Vector2d& coords,
+                                                       const Eigen::Vector2d& rates);
 
 // Psi^4_L(phi, t) stacked as (p1, p2, p3) in R^6, fixed-size: the recursion of linkage/chart.hpp written
 // out for 4 rods (the spec's psi4Position with nu_in in its cancellation-free form).
