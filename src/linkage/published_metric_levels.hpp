@@ -5,17 +5,20 @@
 // from std::cos / std::sin / atan2. Inline: the stencil calls them 8 times per evaluation.
 
 #include <cmath>
+#include <limits>
 
 #include <Eigen/Dense>
 
 namespace sl {
 
 struct PublishedOuterLevel {  // everything of metric4 that depends on phi only
-  double L, ctheta, stheta, d, dthetaP, ddP, dRP, alpha_in, sin_ai, dalphainP;
+  double L, ctheta, stheta, d, dthetaP, ddP, dRP, cos_ai, sin_ai, alpha_in, dalphainP;
 };
 
-// alpha = acos((L^2 - 8) / 2L); cos, sin of theta = alpha sin phi.
-inline PublishedOuterLevel publishedOuterLevel(double L, double alpha, double cphi, double ctheta, double stheta) {
+// alpha = acos((L^2 - 8) / 2L); cos, sin of theta = alpha sin phi. Everything but alpha_in = acos(cos_ai),
+// which a stencil may obtain from a neighbour's (cos_ai, sin_ai, alpha_in) instead.
+inline PublishedOuterLevel publishedOuterLevelExceptAlphaIn(double L, double alpha, double cphi, double ctheta,
+                                                            double stheta) {
   PublishedOuterLevel o{};
   o.L = L;
   o.ctheta = ctheta;
@@ -25,9 +28,16 @@ inline PublishedOuterLevel publishedOuterLevel(double L, double alpha, double cp
   o.dthetaP = alpha * cphi;
   o.ddP = (L * stheta / d) * o.dthetaP;
   o.dRP = ((1 - L * ctheta) / (d * d)) * o.dthetaP;
-  o.alpha_in = std::acos((d * d - 3) / (2 * d));
+  o.cos_ai = (d * d - 3) / (2 * d);
   o.sin_ai = std::sqrt((d * d - 1) * (9 - d * d)) / (2 * d);
   o.dalphainP = -((d * d + 3) / (2 * d * d * o.sin_ai)) * o.ddP;
+  o.alpha_in = std::numeric_limits<double>::quiet_NaN();
+  return o;
+}
+
+inline PublishedOuterLevel publishedOuterLevel(double L, double alpha, double cphi, double ctheta, double stheta) {
+  PublishedOuterLevel o = publishedOuterLevelExceptAlphaIn(L, alpha, cphi, ctheta, stheta);
+  o.alpha_in = std::acos(o.cos_ai);
   return o;
 }
 

@@ -101,18 +101,19 @@ Turn doubled(const Turn& half) { return {1 - 2 * half.s * half.s, 2 * half.s * h
 
 struct FourRodInnerTrig {  // at t: theta_in = alpha_in sin t, A, B = alpha_in (1 +- sin t) / 2
   Turn t, thetaIn;
-  double halfSineIn, sincA, sincB;
+  double halfSineIn, sincProduct;  // sin(theta_in / 2), sinc(A) sinc(B)
 };
 
 // Inner 3-chain on base d, in its own frame: last hinge P2 = d - e^(i theta_in). Elbow offset
 // nu_in = sign(cos t) sqrt(4 - |p2|^2) = alpha_in cos t sqrt(d sinc(A) sinc(B)): the sinc form (chart.hpp),
-// smooth across the seam cos t = 0.
+// smooth across the seam cos t = 0. The elbow P1 = (P2 / |P2|) (|P2| + i nu_in) / 2 = (P2 + i P2 nu_in / |P2|) / 2,
+// with nu_in / |P2| under one square root (|P2|^2 = (d-1)^2 + 4d sin^2(theta_in/2), a sum of squares).
 Vector6d fourRodInner(const FourRodOuter& o, const FourRodInnerTrig& in) {
   const double d = o.d;
   const Eigen::Vector2d innerP2(d - in.thetaIn.c, -in.thetaIn.s);
-  const double p2Abs = std::sqrt((d - 1) * (d - 1) + 4 * d * in.halfSineIn * in.halfSineIn);
-  const double nuIn = o.alphaIn * in.t.c * std::sqrt(d * (in.sincA * in.sincB));
-  const Eigen::Vector2d innerP1 = rotate(innerP2 * (1 / p2Abs), Eigen::Vector2d(0.5 * p2Abs, 0.5 * nuIn));
+  const double p2Squared = (d - 1) * (d - 1) + 4 * d * in.halfSineIn * in.halfSineIn;
+  const double nuOverP2 = o.alphaIn * in.t.c * std::sqrt(d * in.sincProduct / p2Squared);
+  const Eigen::Vector2d innerP1 = 0.5 * (innerP2 + nuOverP2 * Eigen::Vector2d(-innerP2.y(), innerP2.x()));
   Vector6d q;
   q.segment<2>(0) = rotate(o.u, innerP1);
   q.segment<2>(2) = rotate(o.u, innerP2);
@@ -163,18 +164,23 @@ Eigen::Vector2d christoffelFdAcceleration(double L, const Eigen::Vector2d& coord
   std::array<PublishedOuterLevel, 3> outer;
   std::array<Eigen::Vector2d, 3> towardP3;  // e^(i R) = p3 / |p3|, R = arg(L - e^(i theta))
   for (int k = 0; k < 3; ++k) {
-    const Turn phi = turnAt(phis[k], phiCentre, phis[0]);
-    const Turn theta = turnAt(alpha * phi.s, thetaCentreTurn, thetaCentre);
-    outer[k] = publishedOuterLevel(L, alpha, phi.c, theta.c, theta.s);
+    const Turn phi = k == 0 ? phiCentre : turnAt(phis[k], phiCentre, phis[0]);
+    const Turn theta = k == 0 ? thetaCentreTurn : turnAt(alpha * phi.s, thetaCentreTurn, thetaCentre);
+    outer[k] = publishedOuterLevelExceptAlphaIn(L, alpha, phi.c, theta.c, theta.s);
     towardP3[k] = Eigen::Vector2d(L - theta.c, -theta.s) * (1 / outer[k].d);
   }
+  // alpha_in = acos(cos_ai) at the centre, at phi +- eps turned from it by (cos_ai, sin_ai).
+  outer[0].alpha_in = std::acos(outer[0].cos_ai);
+  for (int k = 1; k < 3; ++k)
+    outer[k].alpha_in = angleAt(outer[k].sin_ai, outer[k].cos_ai, outer[0].sin_ai, outer[0].cos_ai, outer[0].alpha_in);
 
   const Turn tCentre = turnOf(ts[0]);
   const std::array<Turn, 3> t = {tCentre, turnAt(ts[1], tCentre, ts[0]), turnAt(ts[2], tCentre, ts[0])};
   const double thetaInCentre = outer[0].alpha_in * t[0].s;
   const Turn thetaInCentreTurn = turnOf(thetaInCentre);
   auto metricAt = [&](int k, int j) {  // u3 = e^(i (R + theta_in)) = e^(i R) e^(i theta_in)
-    const Turn thetaIn = turnAt(outer[k].alpha_in * t[j].s, thetaInCentreTurn, thetaInCentre);
+    const Turn thetaIn = k == 0 && j == 0 ? thetaInCentreTurn
+                                          : turnAt(outer[k].alpha_in * t[j].s, thetaInCentreTurn, thetaInCentre);
     return publishedInnerLevel(outer[k], t[j].c, t[j].s, rotate(towardP3[k], Eigen::Vector2d(thetaIn.c, thetaIn.s)));
   };
   return christoffelFdFromMetrics(metricAt(0, 0), metricAt(1, 0), metricAt(2, 0), metricAt(0, 1), metricAt(0, 2), eps,
@@ -201,7 +207,7 @@ Vector6d fourRodHinges(double L, double phi, double t) {
   const double sinT = std::sin(t);
   const double thetaIn = outer.alphaIn * sinT;
   const FourRodInnerTrig inner{{std::cos(t), sinT}, turnOf(thetaIn), std::sin(0.5 * thetaIn),
-                               sinc(0.5 * outer.alphaIn * (1 + sinT)), sinc(0.5 * outer.alphaIn * (1 - sinT))};
+                               sinc(0.5 * outer.alphaIn * (1 + sinT)) * sinc(0.5 * outer.alphaIn * (1 - sinT))};
   return fourRodInner(outer, inner);
 }
 
@@ -246,7 +252,7 @@ Eigen::Vector2d embeddedFdAcceleration(double L, const Eigen::Vector2d& coords, 
       const double sinA = beta.y() * halfThetaIn.c + beta.x() * halfThetaIn.s;
       const double sinB = beta.y() * halfThetaIn.c - beta.x() * halfThetaIn.s;
       const double A = 0.5 * alphaIn * (1 + sinT), B = 0.5 * alphaIn * (1 - sinT);
-      const FourRodInnerTrig inner{t[j], doubled(halfThetaIn), halfThetaIn.s, sincFromSine(A, sinA), sincFromSine(B, sinB)};
+      const FourRodInnerTrig inner{t[j], doubled(halfThetaIn), halfThetaIn.s, sincProductFromSines(A, sinA, B, sinB)};
       q[k][j] = fourRodInner(outer[k], inner);
     }
   }

@@ -43,6 +43,12 @@ inline double sincFromSine(double x, double sinX) {
          x2 * (1.0 / 6227020800.0 + x2 * (-1.0 / 1307674368000.0)))))));
 }
 
+// sinc(a) sinc(b) given sin a and sin b: one division for both where neither takes the series.
+inline double sincProductFromSines(double a, double sinA, double b, double sinB) {
+  if (std::abs(a) >= 0.5 && std::abs(b) >= 0.5) return (sinA * sinB) / (a * b);
+  return sincFromSine(a, sinA) * sincFromSine(b, sinB);
+}
+
 // The same idea for an angle given as atan2(y, x): its difference from the centre's angle is the argument of
 // (x, y) times the conjugate of (x0, y0), an atan of a small ratio, by its series. The cross product's
 // rounding (an ulp of x x0) is an ulp of the angle too.

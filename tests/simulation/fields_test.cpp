@@ -277,6 +277,13 @@ TEST(StencilTrig, SincFromSineMatchesSinc) {
   for (double x : {0.4999999, 0.5, -0.5, 0.1, 1e-9, 0.0})
     worst = std::max(worst, std::abs(sincFromSine(x, std::sin(x)) - sinc(x)) / sinc(x));
   EXPECT_LT(worst, 3 * std::numeric_limits<double>::epsilon());
+  double worstProduct = 0;
+  for (double a : {-2.0, -0.3, 0.0, 0.2, 0.5, 1.1, 2.9})
+    for (double b : {-1.7, 1e-8, 0.4999, 0.7, 3.0}) {
+      const double expected = sinc(a) * sinc(b);
+      worstProduct = std::max(worstProduct, std::abs(sincProductFromSines(a, std::sin(a), b, std::sin(b)) - expected) / expected);
+    }
+  EXPECT_LT(worstProduct, 4 * std::numeric_limits<double>::epsilon());
 }
 
 TEST(StencilTrig, AngleFromTheCentreMatchesAtan2) {
