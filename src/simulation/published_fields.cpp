@@ -107,12 +107,19 @@ struct FourRodInnerTrig {  // at t: theta_in = alpha_in sin t, A, B = alpha_in (
 // Inner 3-chain on base d, in its own frame: last hinge P2 = d - e^(i theta_in). Elbow offset
 // nu_in = sign(cos t) sqrt(4 - |p2|^2) = alpha_in cos t sqrt(d sinc(A) sinc(B)): the sinc form (chart.hpp),
 // smooth across the seam cos t = 0. The elbow P1 = (P2 / |P2|) (|P2| + i nu_in) / 2 = (P2 + i P2 nu_in / |P2|) / 2,
-// with nu_in / |P2| under one square root (|P2|^2 = (d-1)^2 + 4d sin^2(theta_in/2), a sum of squares).
-Vector6d fourRodInner(const FourRodOuter& o, const FourRodInnerTrig& in) {
+// with nu_in / |P2| = alpha_in cos t sqrt(d sinc(A) sinc(B) / |P2|^2), |P2|^2 = (d-1)^2 + 4d sin^2(theta_in/2)
+// (a sum of squares). In two steps, so that a stencil can take the square roots of all its points at once.
+struct ElbowRadicand {  // d sinc(A) sinc(B) / |P2|^2 = numerator / denominator
+  double numerator, denominator;
+};
+ElbowRadicand elbowRadicand(const FourRodOuter& o, const FourRodInnerTrig& in) {
   const double d = o.d;
-  const Eigen::Vector2d innerP2(d - in.thetaIn.c, -in.thetaIn.s);
-  const double p2Squared = (d - 1) * (d - 1) + 4 * d * in.halfSineIn * in.halfSineIn;
-  const double nuOverP2 = o.alphaIn * in.t.c * std::sqrt(d * in.sincProduct / p2Squared);
+  return {d * in.sincProduct, (d - 1) * (d - 1) + 4 * d * in.halfSineIn * in.halfSineIn};
+}
+
+Vector6d fourRodInner(const FourRodOuter& o, const FourRodInnerTrig& in, double rootOfRadicand) {
+  const Eigen::Vector2d innerP2(o.d - in.thetaIn.c, -in.thetaIn.s);
+  const double nuOverP2 = o.alphaIn * in.t.c * rootOfRadicand;
   const Eigen::Vector2d innerP1 = 0.5 * (innerP2 + nuOverP2 * Eigen::Vector2d(-innerP2.y(), innerP2.x()));
   Vector6d q;
   q.segment<2>(0) = rotate(o.u, innerP1);
@@ -208,7 +215,8 @@ Vector6d fourRodHinges(double L, double phi, double t) {
   const double thetaIn = outer.alphaIn * sinT;
   const FourRodInnerTrig inner{{std::cos(t), sinT}, turnOf(thetaIn), std::sin(0.5 * thetaIn),
                                sinc(0.5 * outer.alphaIn * (1 + sinT)) * sinc(0.5 * outer.alphaIn * (1 - sinT))};
-  return fourRodInner(outer, inner);
+  const ElbowRadicand radicand = elbowRadicand(outer, inner);
+  return fourRodInner(outer, inner, std::sqrt(radicand.numerator / radicand.denominator));
 }
 
 Eigen::Vector2d embeddedFdAcceleration(double L, const Eigen::Vector2d& coords, const Eigen::Vector2d& rates) {
@@ -242,7 +250,8 @@ Eigen::Vector2d embeddedFdAcceleration(double L, const Eigen::Vector2d& coords, 
   // (|A| or |B| small, the seam), sincFromSine takes the series instead.
   const double halfThetaIn0 = 0.5 * (outer[0].alphaIn * t[0].s);
   const Turn halfThetaIn0Turn = turnOf(halfThetaIn0);
-  HingeStencil q;
+  std::array<FourRodInnerTrig, 9> inner;  // point (k, j) at 3k + j
+  Eigen::Array<double, 9, 1> numerators, denominators;
   for (int k = 0; k < 3; ++k) {
     const Eigen::Vector2d beta = amplitudeHalfTurn[k] * (1 / amplitudeHalfTurn[k].norm());
     const double alphaIn = outer[k].alphaIn;
@@ -252,10 +261,17 @@ Eigen::Vector2d embeddedFdAcceleration(double L, const Eigen::Vector2d& coords, 
       const double sinA = beta.y() * halfThetaIn.c + beta.x() * halfThetaIn.s;
       const double sinB = beta.y() * halfThetaIn.c - beta.x() * halfThetaIn.s;
       const double A = 0.5 * alphaIn * (1 + sinT), B = 0.5 * alphaIn * (1 - sinT);
-      const FourRodInnerTrig inner{t[j], doubled(halfThetaIn), halfThetaIn.s, sincProductFromSines(A, sinA, B, sinB)};
-      q[k][j] = fourRodInner(outer[k], inner);
+      inner[3 * k + j] = {t[j], doubled(halfThetaIn), halfThetaIn.s, sincProductFromSines(A, sinA, B, sinB)};
+      const ElbowRadicand radicand = elbowRadicand(outer[k], inner[3 * k + j]);
+      numerators(3 * k + j) = radicand.numerator;
+      denominators(3 * k + j) = radicand.denominator;
     }
   }
+  // The 9 divisions and square roots as packed operations: the divider is the bottleneck here.
+  const Eigen::Array<double, 9, 1> roots = (numerators / denominators).sqrt();
+  HingeStencil q;
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < 3; ++j) q[k][j] = fourRodInner(outer[k], inner[3 * k + j], roots(3 * k + j));
   return embeddedFdFromHinges(q, eps, rates);
 }
 
