@@ -113,7 +113,8 @@ void FrameManifest::addRenderer(const std::string& glRenderer, const std::string
 void FrameManifest::record(const FrameEntry& entry) {
   std::lock_guard guard(mutex_);
   pending_[entry.frame] = entry;
-  if (std::chrono::steady_clock::now() - lastFlush_ >= flushInterval_) flushLocked();
+  // A replaced manifest describes a whole file: written once, by flush(), never part-way.
+  if (existing_ == Existing::merge && std::chrono::steady_clock::now() - lastFlush_ >= flushInterval_) flushLocked();
 }
 
 void FrameManifest::flush() {
@@ -124,10 +125,12 @@ void FrameManifest::flush() {
 void FrameManifest::flushLocked() {
   lastFlush_ = std::chrono::steady_clock::now();
   if (pending_.empty()) return;
-  ManifestLock lock(folder_, fileName_);
-  // merge: what other processes wrote since, plus ours; replace: ours alone (known_ holds earlier flushes).
-  nlohmann::json manifest = existing_ == Existing::merge ? readLocked() : emptyManifest();
-  std::map<int, FrameEntry> merged = existing_ == Existing::merge ? std::map<int, FrameEntry>{} : known_;
+  // merge: what other processes wrote since, plus ours, under the lock; replace: ours alone (known_ holds
+  // earlier flushes), with no lock, as nothing is merged.
+  std::optional<ManifestLock> lock;
+  if (existing_ == Existing::merge) lock.emplace(folder_, fileName_);
+  nlohmann::json manifest = lock ? readLocked() : emptyManifest();
+  std::map<int, FrameEntry> merged = lock ? std::map<int, FrameEntry>{} : known_;
   for (const auto& j : manifest.at("frames")) merged[j.at("frame").get<int>()] = fromJson(j);
   for (const auto& [frame, e] : pending_) merged[frame] = e;
   std::set<std::string> renderers = renderers_;

@@ -21,8 +21,8 @@
 // frames are simply rendered again on resume. A video render records pixel hashes only (file empty).
 //
 // Existing::replace is for a file that is always written whole (a video): the manifest on disk, of any
-// earlier render, is neither read nor merged but replaced by this render's entries. A manifest with no
-// entries recorded is never written.
+// earlier render, is neither read nor merged nor locked but replaced by this render's entries, written only
+// by flush() (record() does not flush part-way). A manifest with no entries recorded is never written.
 
 #include <chrono>
 #include <map>

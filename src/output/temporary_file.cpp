@@ -14,14 +14,26 @@ namespace {
 
 constexpr const char* kMarker = ".tmp.";
 
-// This host's name reduced to [A-Za-z0-9-], so it never adds a '.' to the name's fields.
+// The pid namespace's inode ("pid:[4026531836]" -> "4026531836"): containers that share a host name still have
+// pid namespaces of their own, and a pid means something only within its namespace.
+std::string pidNamespace() {
+  char link[64] = {};
+  const ssize_t size = ::readlink("/proc/self/ns/pid", link, sizeof link - 1);
+  std::string digits;
+  for (ssize_t i = 0; i < size; ++i)
+    if (std::isdigit(static_cast<unsigned char>(link[i]))) digits += link[i];
+  return digits.empty() ? "0" : digits;
+}
+
+// Who can tell whether a pid is alive: this host (its full name, each character outside [A-Za-z0-9] as '-', so
+// it never adds a '.' to the name's fields) and this pid namespace.
 const std::string& hostTag() {
   static const std::string tag = [] {
     char name[256] = {};
-    if (::gethostname(name, sizeof name - 1) != 0 || name[0] == '\0') return std::string("host");
-    std::string tag;
-    for (const char* c = name; *c && *c != '.'; ++c) tag += std::isalnum(static_cast<unsigned char>(*c)) ? *c : '-';
-    return tag.empty() ? std::string("host") : tag;
+    std::string host;
+    if (::gethostname(name, sizeof name - 1) == 0)
+      for (const char* c = name; *c; ++c) host += std::isalnum(static_cast<unsigned char>(*c)) ? *c : '-';
+    return (host.empty() ? std::string("host") : host) + "-" + pidNamespace();
   }();
   return tag;
 }

@@ -118,6 +118,9 @@ void VideoSink::closeAndWait() {
 void VideoSink::finish() {
   writer_->wait();
   closeAndWait();
+  // The earlier video's manifest goes first: a kill between here and the flush leaves a video without a
+  // manifest, never one that describes another video.
+  ::unlink(manifest_.path().c_str());
   if (std::rename(temporary_.c_str(), settings_.path.c_str()) != 0)
     throw std::runtime_error("cannot rename the finished video into " + settings_.path + ": " + std::strerror(errno));
   finished_ = true;
