@@ -45,6 +45,12 @@ struct RenderPlan {
   bool quiet = false, resume = false;
 };
 
+// The folder a video goes into ("." for a bare file name).
+std::string videoFolder(const std::string& video) {
+  const fs::path parent = fs::path(video).parent_path();
+  return parent.empty() ? "." : parent.string();
+}
+
 void applySize(const RenderArguments& args, Scene& scene) {
   if (args.size.empty()) return;
   const auto [width, height] = parseImageSize(args.size);
@@ -73,8 +79,7 @@ RenderPlan planRender(const RenderArguments& args) {
     problems.push_back(problem);
   }
   if (!plan.video.empty()) {
-    const std::string parent = fs::path(plan.video).parent_path().string();
-    for (SceneProblem& problem : checkOutputFolder(parent.empty() ? "." : parent, args.video.empty() ? "output.video" : "--video")) {
+    for (SceneProblem& problem : checkOutputFolder(videoFolder(plan.video), args.video.empty() ? "output.video" : "--video")) {
       problems.push_back(problem);
     }
   }
@@ -94,11 +99,21 @@ nlohmann::json manifestInfo(const RenderPlan& plan) {
           {"frames", scene.frameCount()}};
 }
 
-// Before the first PNG is written: do the frames still to write fit? `image` is frame k, the first drawn.
-void checkSpaceForFrames(const RenderPlan& plan, int k, const Image& image) {
+// Samples the history up to (not including) frame k, one frame at a time so that a signal is noticed even while
+// a late shard walks up to its first frame; false if interrupted.
+bool sampleUpTo(FrameBuilder& builder, int k) {
+  for (int next = builder.lastSampledFrame() + 1; next < k && !interruptRequested(); ++next) builder.advanceTo(next);
+  return !interruptRequested();
+}
+
+// Before anything is written or created: do the PNG frames still to write fit? The range's first frame is drawn
+// and encoded to measure one (the render loop draws it again: a few milliseconds).
+void checkSpaceForFrames(const RenderPlan& plan, Renderer& renderer, FrameBuilder& builder) {
   if (!plan.png) return;  // x264's output size depends on the motion; a full disk shows up as ffmpeg's error
-  FrameSpaceNeed need{plan.folder, 0, k, output::PngEncoder().encode(image).size(), image.width, image.height};
-  for (int frame = k; frame < plan.range.end; ++frame)
+  const int first = plan.range.first;
+  const Image image = renderer.render(builder.frame(first));
+  FrameSpaceNeed need{plan.folder, 0, first, output::PngEncoder().encode(image).size(), image.width, image.height};
+  for (int frame = first; frame < plan.range.end; ++frame)
     need.framesToWrite += !fs::exists(fs::path(plan.folder) / output::frameFileName(frame));
   refuseIfFramesCannotFit(need);
 }
@@ -107,22 +122,15 @@ void checkSpaceForFrames(const RenderPlan& plan, int k, const Image& image) {
 bool renderFrames(const RenderPlan& plan, output::FrameManifest* pngManifest, const std::vector<output::FrameSink*>& sinks,
                   Renderer& renderer, FrameBuilder& builder) {
   Progress progress(plan.range.end - plan.range.first, plan.quiet);
-  bool spaceChecked = false;
   for (int k = plan.range.first; k < plan.range.end; ++k) {
     const bool complete = plan.resume && pngManifest && pngManifest->isFrameComplete(k);
     if (complete) {
       progress.update(k - plan.range.first + 1);
       continue;
     }
-    // Frames before k are sampled (not rendered) for the path and plot history, one at a time so that
-    // a signal is noticed even while a late shard walks up to its first frame.
-    for (int next = builder.lastSampledFrame() + 1; next < k && !interruptRequested(); ++next) builder.advanceTo(next);
-    if (interruptRequested()) return false;
+    // Frames before k are sampled (not rendered) for the path and plot history.
+    if (!sampleUpTo(builder, k)) return false;
     Image image = renderer.render(builder.frame(k));
-    if (!spaceChecked) {
-      checkSpaceForFrames(plan, k, image);
-      spaceChecked = true;
-    }
     for (size_t i = 0; i + 1 < sinks.size(); ++i) sinks[i]->consume(k, image);
     sinks.back()->consume(k, std::move(image));
     progress.update(k - plan.range.first + 1);
@@ -130,21 +138,11 @@ bool renderFrames(const RenderPlan& plan, output::FrameManifest* pngManifest, co
   return true;
 }
 
-// A folder this render created and wrote nothing into but its manifest lock.
-void removeIfUnused(const std::string& folder) {
-  std::error_code error;
-  for (const auto& entry : fs::directory_iterator(folder, error)) {
-    if (entry.path().filename() != ".manifest.json.lock") return;
-  }
-  fs::remove(fs::path(folder) / ".manifest.json.lock", error);
-  fs::remove(folder, error);
-}
-
 // Temporaries a killed render left in the output folders (its frames in flight, its video) go first.
-void removeStaleTemporaries(const RenderPlan& plan) {
+void sweepOutputFolders(const RenderPlan& plan) {
   std::vector<std::string> folders;
   if (plan.png) folders.push_back(plan.folder);
-  if (!plan.video.empty()) folders.push_back(fs::path(plan.video).parent_path().empty() ? "." : fs::path(plan.video).parent_path().string());
+  if (!plan.video.empty()) folders.push_back(videoFolder(plan.video));
   for (const std::string& folder : folders) {
     const std::vector<std::string> removed = output::removeStaleTemporaries(folder);
     if (!removed.empty() && !plan.quiet)
@@ -158,8 +156,10 @@ void runRender(const RenderArguments& args) {
   const Scene& scene = plan.scene;
   Renderer renderer(scene.view.render);
   const nlohmann::json info = manifestInfo(plan);
-  removeStaleTemporaries(plan);
-  const bool folderExisted = fs::exists(plan.folder);
+  FrameBuilder builder(scene, makeTrajectories(scene));
+  if (!sampleUpTo(builder, plan.range.first)) stopIfInterrupted("nothing was written yet");
+  checkSpaceForFrames(plan, renderer, builder);
+  sweepOutputFolders(plan);
 
   std::unique_ptr<output::FrameManifest> pngManifest, videoManifest;
   std::unique_ptr<output::PngSequenceSink> pngSink;
@@ -172,9 +172,8 @@ void runRender(const RenderArguments& args) {
     sinks.push_back(pngSink.get());
   }
   if (!plan.video.empty()) {
-    const fs::path video(plan.video);
-    const std::string parent = video.parent_path().empty() ? "." : video.parent_path().string();
-    videoManifest = std::make_unique<output::FrameManifest>(parent, info, video.filename().string() + ".manifest.json",
+    videoManifest = std::make_unique<output::FrameManifest>(videoFolder(plan.video), info,
+                                                            fs::path(plan.video).filename().string() + ".manifest.json",
                                                             output::FrameManifest::Existing::replace);
     videoManifest->addRenderer(renderer.glRenderer(), renderer.glVersion());
     output::VideoSettings settings{plan.video, scene.output.width, scene.output.height, double(scene.output.fps)};
@@ -182,15 +181,7 @@ void runRender(const RenderArguments& args) {
     sinks.push_back(videoSink.get());
   }
 
-  FrameBuilder builder(scene, makeTrajectories(scene));
-  bool finished = false;
-  try {
-    finished = renderFrames(plan, pngManifest.get(), sinks, renderer, builder);
-  } catch (const CommandExit&) {
-    pngSink.reset(), videoSink.reset();
-    if (!folderExisted) removeIfUnused(plan.folder);  // refused before any frame: leave no empty folder behind
-    throw;
-  }
+  const bool finished = renderFrames(plan, pngManifest.get(), sinks, renderer, builder);
   if (pngSink) pngSink->finish();  // every frame handed over is written whole, interrupted or not
   if (videoSink && finished) videoSink->finish();
   videoSink.reset();  // unfinished: reaps ffmpeg and removes its temporary, so the video never gets its name

@@ -17,9 +17,21 @@ std::string formatBytes(std::uintmax_t bytes) {
   return text;
 }
 
+namespace {
+
+// The folder, or its nearest existing ancestor when it is yet to be created: the file system it will be on.
+std::filesystem::path existingAncestor(std::filesystem::path folder) {
+  std::error_code error;
+  while (!folder.empty() && !std::filesystem::exists(folder, error) && folder.has_parent_path() && folder.parent_path() != folder)
+    folder = folder.parent_path();
+  return folder.empty() || !std::filesystem::exists(folder, error) ? std::filesystem::path(".") : folder;
+}
+
+}  // namespace
+
 void refuseIfFramesCannotFit(const FrameSpaceNeed& need) {
   std::error_code error;
-  const std::filesystem::space_info space = std::filesystem::space(need.folder, error);
+  const std::filesystem::space_info space = std::filesystem::space(existingAncestor(need.folder), error);
   if (error) return;  // unknown (an exotic file system): writing reports a full disk if it happens
   const std::uintmax_t required = std::uintmax_t(need.framesToWrite) * need.bytesPerFrame;
   if (required <= space.available) return;

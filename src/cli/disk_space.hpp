@@ -19,6 +19,8 @@ struct FrameSpaceNeed {
 // Throws CommandExit(kExitBadInput) if framesToWrite x bytesPerFrame exceeds the space available to this
 // user in `folder`. Frames with longer paths and trails are somewhat larger than the measured one, so a
 // render that barely fits may still fill the disk: that is reported when it happens, completed frames kept.
+// Each shard checks its own range against the whole free space, so shards started together can overcommit
+// it in the same way.
 void refuseIfFramesCannotFit(const FrameSpaceNeed& need);
 
 // "248.4 kB", "1.5 GB": decimal units, as df -H prints them.
