@@ -20,8 +20,9 @@ bool drawable(const Vec3& p) {
   return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && p.x * p.x + p.y * p.y + p.z * p.z < 400.0;
 }
 
-// Consecutive path samples lie a few thousandths apart; a chord this long is the ball view's jump
-// through the antipode (from one side of the boundary to the other), drawn as a gap, never a line.
+// The ball view's jump through the antipode (from one side of the boundary to the other) is drawn as a gap,
+// never a line. Consecutive path samples lie a few thousandths apart at the shipped sampling; a jump is a
+// chord of nearly 2. Only the ball view can jump: other views never break a path on length.
 constexpr double kMaxPathChord = 0.5;
 double distance(const Vec3& a, const Vec3& b) { return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z)); }
 
@@ -47,22 +48,20 @@ float pathAlpha(const RenderSettings& settings, double age) {
 }
 
 void drawPath(const RunFrame& run, const PanelContext& context, const SphereCamera& camera,
-              const Placement& placement, ShapeBatch& batch) {
+              const Placement& placement, bool throughAntipode, ShapeBatch& batch) {
   std::vector<PolylinePoint> points;
   points.reserve(run.path.size() + 1);
   for (std::size_t i = 0; i < run.path.size(); ++i) {
     const double age = i < run.pathTimes.size() ? context.frame.time - run.pathTimes[i] : 0.0;
     const float alpha = pathAlpha(context.settings, age);
     const V3 p = placement.place(run.path[i]);
-    if (i > 0 && distance(run.path[i - 1], run.path[i]) > kMaxPathChord) {  // a gap, then this point
+    const bool hidden = alpha <= 0.0f || !drawable(run.path[i]) || !camera.inFront(p);
+    const bool jump = throughAntipode && i > 0 && distance(run.path[i - 1], run.path[i]) > kMaxPathChord;
+    if (hidden || jump) {  // a gap: draw what came before, start afresh (with this point, unless hidden)
       batch.polyline(points, true, 0.35f);
       points.clear();
     }
-    if (alpha <= 0.0f || !drawable(run.path[i]) || !camera.inFront(p)) {
-      batch.polyline(points, true, 0.35f);  // a gap: draw what came before, start afresh
-      points.clear();
-      continue;
-    }
+    if (hidden) continue;
     const float halfWidth = std::max(1.0f, float(kTubeRadius * camera.pixelsPerUnitAt(p)));
     points.push_back({camera.project(p), halfWidth, toRgba(run.color, alpha), placement.world(p)});
   }
@@ -101,7 +100,7 @@ SphereView drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   SphereCamera camera(context.settings.camera, context.frame.time, context.rect);
   const Placement placement{space == ViewSpace::Sphere, kTubeRadius};
   if (space == ViewSpace::Circle) drawEquator(camera, batch);
-  for (const RunFrame& run : context.frame.runs) drawPath(run, context, camera, placement, batch);
+  for (const RunFrame& run : context.frame.runs) drawPath(run, context, camera, placement, space == ViewSpace::Ball, batch);
   for (const RunFrame& run : context.frame.runs) drawBall(run, camera, placement, batch);
   return {camera, space == ViewSpace::Sphere ? SphereLook::Opaque : SphereLook::Glass};
 }
