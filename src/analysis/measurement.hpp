@@ -25,7 +25,8 @@ struct Measurement {
   std::string stopDetail;
   double finalError = 0;      // position error at the last grid time (NaN if the run stopped early)
   double maxError = 0;        // max over the grid times the run reached
-  double maxEnergyDrift = 0;  // max |E - E0| / E0 over the grid times and every step's end
+  double maxEnergyDrift = 0;  // max |E - E0| / E0 over the grid times and every step's end (including the
+                              // step that runs past the last grid time)
   double maxRodLengthError = 0;  // likewise
   long evaluations = 0;       // vector-field evaluations
   long steps = 0;
