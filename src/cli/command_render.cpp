@@ -156,10 +156,10 @@ void runRender(const RenderArguments& args) {
   const Scene& scene = plan.scene;
   Renderer renderer(scene.view.render);
   const nlohmann::json info = manifestInfo(plan);
+  sweepOutputFolders(plan);  // first: a killed render's leftovers must not count against the free space
   FrameBuilder builder(scene, makeTrajectories(scene));
   if (!sampleUpTo(builder, plan.range.first)) stopIfInterrupted("nothing was written yet");
   checkSpaceForFrames(plan, renderer, builder);
-  sweepOutputFolders(plan);
 
   std::unique_ptr<output::FrameManifest> pngManifest, videoManifest;
   std::unique_ptr<output::PngSequenceSink> pngSink;
