@@ -9,8 +9,8 @@
 #include <string>
 
 #include "frames/scene_start.hpp"
-#include "simulation/initial_state.hpp"
 #include "scene/scene_loader.hpp"
+#include "simulation/initial_state.hpp"
 
 namespace {
 

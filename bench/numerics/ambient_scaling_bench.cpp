@@ -41,6 +41,23 @@ void BM_AmbientRk4Step(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(BM_AmbientEvaluation)->Arg(4)->Arg(16)->Arg(64)->Arg(256)->Arg(1024)->Arg(4096)->Arg(10000)->Complexity(benchmark::oN);
-BENCHMARK(BM_AmbientRk4Step)->Arg(4)->Arg(16)->Arg(64)->Arg(256)->Arg(1000)->Arg(1024)->Arg(4096)->Arg(10000)->Complexity(benchmark::oN);
+BENCHMARK(BM_AmbientEvaluation)
+    ->Arg(4)
+    ->Arg(16)
+    ->Arg(64)
+    ->Arg(256)
+    ->Arg(1024)
+    ->Arg(4096)
+    ->Arg(10000)
+    ->Complexity(benchmark::oN);
+BENCHMARK(BM_AmbientRk4Step)
+    ->Arg(4)
+    ->Arg(16)
+    ->Arg(64)
+    ->Arg(256)
+    ->Arg(1000)
+    ->Arg(1024)
+    ->Arg(4096)
+    ->Arg(10000)
+    ->Complexity(benchmark::oN);
 BENCHMARK(BM_AmbientEvaluationRodMasses)->Arg(4)->Arg(64)->Arg(1000)->Arg(10000)->Complexity(benchmark::oN);

@@ -24,7 +24,8 @@ void run(benchmark::State& state, const std::string& method, const std::string& 
 
 }  // namespace
 
-BENCHMARK_CAPTURE(run, default, sl::RunConfig().method, sl::RunConfig().integrator, sl::RunConfig().tolerance)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(run, default, sl::RunConfig().method, sl::RunConfig().integrator, sl::RunConfig().tolerance)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(run, ambient_dopri5_1e12, "ambient", "dopri5", 1e-12)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(run, ambient_bs_1e12, "ambient", "bulirsch-stoer", 1e-12)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(run, ambient_bs_1e11, "ambient", "bulirsch-stoer", 1e-11)->Unit(benchmark::kMillisecond);

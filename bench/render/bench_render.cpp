@@ -57,14 +57,22 @@ Options parse(int argc, char** argv) {
       }
       return argv[++i];
     };
-    if (a == "--frames") o.frames = std::stoi(next());
-    else if (a == "--size") std::sscanf(next().c_str(), "%dx%d", &o.width, &o.height);
-    else if (a == "--sink") o.sink = next();
-    else if (a == "--out") o.out = next();
-    else if (a == "--encoders") o.encoders = std::stoi(next());
-    else if (a == "--repeat") o.repeat = std::stoi(next());
-    else if (a == "--no-aa") o.antialias = false;
-    else if (a == "--orbit") o.orbit = true;
+    if (a == "--frames")
+      o.frames = std::stoi(next());
+    else if (a == "--size")
+      std::sscanf(next().c_str(), "%dx%d", &o.width, &o.height);
+    else if (a == "--sink")
+      o.sink = next();
+    else if (a == "--out")
+      o.out = next();
+    else if (a == "--encoders")
+      o.encoders = std::stoi(next());
+    else if (a == "--repeat")
+      o.repeat = std::stoi(next());
+    else if (a == "--no-aa")
+      o.antialias = false;
+    else if (a == "--orbit")
+      o.orbit = true;
     else {
       std::fprintf(stderr, "unknown option %s (see the comment at the top of bench_render.cpp)\n", a.c_str());
       std::exit(2);

@@ -39,9 +39,7 @@ double CsvTable::number(size_t row, const std::string& name) const {
   return parseNumber(rows.at(row).at(column(name)));
 }
 
-const std::string& CsvTable::text(size_t row, const std::string& name) const {
-  return rows.at(row).at(column(name));
-}
+const std::string& CsvTable::text(size_t row, const std::string& name) const { return rows.at(row).at(column(name)); }
 
 namespace {
 

@@ -1,10 +1,10 @@
 #include "analysis/gnuplot.hpp"
 
+#include <sys/wait.h>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
-#include <sys/wait.h>
 
 namespace sl {
 

@@ -23,15 +23,15 @@ struct Measurement {
   std::string status = "ok";  // ok | wrong-path | reference-stopped | a StopInfo reason
   double stopTime = 0;        // the run's last good time (the duration when it finished)
   std::string stopDetail;
-  double finalError = 0;      // position error at the last grid time (NaN if the run stopped early)
-  double maxError = 0;        // max over the grid times the run reached
-  double maxEnergyDrift = 0;  // max |E - E0| / E0 over the grid times and every step's end (including the
-                              // step that runs past the last grid time)
+  double finalError = 0;         // position error at the last grid time (NaN if the run stopped early)
+  double maxError = 0;           // max over the grid times the run reached
+  double maxEnergyDrift = 0;     // max |E - E0| / E0 over the grid times and every step's end (including the
+                                 // step that runs past the last grid time)
   double maxRodLengthError = 0;  // likewise
-  long evaluations = 0;       // vector-field evaluations
+  long evaluations = 0;          // vector-field evaluations
   long steps = 0;
-  double wallSeconds = 0;     // one run: construction and sampling at the grid times
-  double cpuSeconds = 0;      // the same span in this thread's CPU time (robust on a shared machine)
+  double wallSeconds = 0;  // one run: construction and sampling at the grid times
+  double cpuSeconds = 0;   // the same span in this thread's CPU time (robust on a shared machine)
 
   bool failed() const { return status != "ok"; }
 };

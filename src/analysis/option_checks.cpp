@@ -13,8 +13,7 @@ void requireKnownNames(const std::string& option, const std::string& what, const
   for (const auto& name : given) {
     if (std::find(known.begin(), known.end(), name) != known.end()) continue;
     std::string list;
-    for (size_t k = 0; k < known.size(); ++k)
-      list += (k == 0 ? "" : k + 1 == known.size() ? " or " : ", ") + known[k];
+    for (size_t k = 0; k < known.size(); ++k) list += (k == 0 ? "" : k + 1 == known.size() ? " or " : ", ") + known[k];
     throw std::invalid_argument(option + ": unknown " + what + " '" + name + "' (expected " + list + ")");
   }
 }

@@ -11,8 +11,10 @@ std::string referenceMethodFor(const std::string& methodUnderTest) {
 std::string tightestIntegrator() {
   std::string chosen = "dopri5";
   for (const auto& name : integratorNames())
-    if (name == "rkf78") return name;
-    else if (integratorIsAdaptive(name)) chosen = name;
+    if (name == "rkf78")
+      return name;
+    else if (integratorIsAdaptive(name))
+      chosen = name;
   return chosen;
 }
 
@@ -28,8 +30,10 @@ std::vector<double> gridTimes(double duration, double interval) {
   std::vector<double> times;
   const long count = std::lround(std::floor(duration / interval * (1 + 1e-12)));
   for (long k = 0; k <= count; ++k) times.push_back(k * interval);
-  if (duration - times.back() > 1e-9 * interval) times.push_back(duration);
-  else times.back() = duration;
+  if (duration - times.back() > 1e-9 * interval)
+    times.push_back(duration);
+  else
+    times.back() = duration;
   return times;
 }
 

@@ -32,7 +32,8 @@ std::string failurePalette() {
   return palette + ")\n" + tics + ")\nset cbrange [-0.5:" + std::to_string(names.size() - 0.5) + "]\n";
 }
 
-std::string mapScript(const CsvTable& rows, const std::string& kind, const std::string& method, const std::string& png) {
+std::string mapScript(const CsvTable& rows, const std::string& kind, const std::string& method,
+                      const std::string& png) {
   std::vector<std::string> lines;
   std::string integrator, setting;
   long cells = 0, within9 = 0;
@@ -65,10 +66,12 @@ std::string mapScript(const CsvTable& rows, const std::string& kind, const std::
   script += "set xlabel " + gnuplotQuote(xLabel) + "\nset ylabel " + gnuplotQuote(yLabel) + "\n";
   script += "set autoscale xfix\nset autoscale yfix\nset tics out\nunset key\n";
   // Failed cells are left out of the error image and show the dark background.
-  script += "set object 1 rectangle from graph 0,0 to graph 1,1 behind fillcolor rgb '#303030' fillstyle solid noborder\n";
-  script += std::string("set title '") + (checked ? "log_{10} max position error" : "log_{10} max relative energy drift") +
-            " (dark: failed)'\n";
-  script += "set palette defined (-16 '#08306b', -12 '#2171b5', -9 '#6baed6', -6 '#c6dbef', -3 '#fee391', 0 '#d7301f')\n";
+  script +=
+      "set object 1 rectangle from graph 0,0 to graph 1,1 behind fillcolor rgb '#303030' fillstyle solid noborder\n";
+  script += std::string("set title '") +
+            (checked ? "log_{10} max position error" : "log_{10} max relative energy drift") + " (dark: failed)'\n";
+  script +=
+      "set palette defined (-16 '#08306b', -12 '#2171b5', -9 '#6baed6', -6 '#c6dbef', -3 '#fee391', 0 '#d7301f')\n";
   script += "set cbrange [-16:0]\nset cbtics 2\n";
   script += "plot $cells using 1:2:3 with image\n";
   script += "unset object 1\nset title 'failure mode'\nset rmargin 20\n" + failurePalette();
@@ -78,7 +81,8 @@ std::string mapScript(const CsvTable& rows, const std::string& kind, const std::
 
 }  // namespace
 
-std::vector<std::string> writeStabilityCharts(const CsvTable& rows, const std::string& kind, const std::string& outDir) {
+std::vector<std::string> writeStabilityCharts(const CsvTable& rows, const std::string& kind,
+                                              const std::string& outDir) {
   std::vector<std::string> methods;
   for (size_t r = 0; r < rows.rows.size(); ++r)
     if (std::find(methods.begin(), methods.end(), rows.text(r, "method")) == methods.end())

@@ -21,7 +21,7 @@
 namespace sl {
 
 struct StabilityCell {
-  int i = 0, j = 0;    // column (x) and row (y)
+  int i = 0, j = 0;  // column (x) and row (y)
   double x = 0, y = 0;
   Chain chain;
   InitialState start;

@@ -30,10 +30,23 @@ std::string sweepIntegratorFor(const std::string& method) {
 }
 
 std::vector<std::string> stabilityColumns() {
-  return {"cell",      "i",           "j",         "x",         "y",
-          "method",    "integrator",  "setting",   "status",    "stop_time",
-          "final_error", "max_error", "max_energy_drift", "max_rod_length_error", "evaluations",
-          "reference_method", "stop_detail"};
+  return {"cell",
+          "i",
+          "j",
+          "x",
+          "y",
+          "method",
+          "integrator",
+          "setting",
+          "status",
+          "stop_time",
+          "final_error",
+          "max_error",
+          "max_energy_drift",
+          "max_rod_length_error",
+          "evaluations",
+          "reference_method",
+          "stop_detail"};
 }
 
 namespace {
@@ -60,7 +73,8 @@ std::vector<std::vector<std::string>> cellRows(const StabilityOptions& options, 
   std::map<std::string, ReferencePath> references;
   // Without a reference the samples would only feed the invariants, which the run tracks at every step:
   // the start and the end suffice (dense samples cost an extra step each, as much as the run itself).
-  const auto times = gridTimes(options.duration, options.checkAgainstReference ? options.sampleInterval : options.duration);
+  const auto times =
+      gridTimes(options.duration, options.checkAgainstReference ? options.sampleInterval : options.duration);
   try {
     const StabilityCell cell = stabilityCell(options.kind, options.grid, i, j, options.duration);
     for (const auto& method : methods) {
@@ -83,8 +97,8 @@ std::vector<std::vector<std::string>> cellRows(const StabilityOptions& options, 
     for (const auto& method : methods) {
       const RunConfig config = sweepConfig(options, method);
       rows.push_back({std::to_string(cellIndex), std::to_string(i), std::to_string(j), "nan", "nan", method,
-                      config.integrator, formatNumber(settingOf(config)), "reference-stopped", "0", "nan", "nan",
-                      "nan", "nan", "0", referenceMethodFor(method), error.what()});
+                      config.integrator, formatNumber(settingOf(config)), "reference-stopped", "0", "nan", "nan", "nan",
+                      "nan", "0", referenceMethodFor(method), error.what()});
     }
   }
   return rows;
@@ -93,7 +107,8 @@ std::vector<std::vector<std::string>> cellRows(const StabilityOptions& options, 
 }  // namespace
 
 CsvTable runStabilitySweep(const StabilityOptions& options, const CellProgress& progress) {
-  if (!isStabilityKind(options.kind)) throw std::invalid_argument("unknown stability sweep kind '" + options.kind + "'");
+  if (!isStabilityKind(options.kind))
+    throw std::invalid_argument("unknown stability sweep kind '" + options.kind + "'");
   if (options.grid < 1) throw std::invalid_argument("--grid must be at least 1");
   const auto methods = options.methods.empty() ? methodNames() : options.methods;
   std::vector<long> cells;
@@ -131,8 +146,8 @@ std::string stabilityCsvPath(const std::string& outDir, const std::string& kind)
 }
 
 std::string stabilityShardPath(const std::string& outDir, const std::string& kind, const Shard& shard) {
-  return (std::filesystem::path(outDir) /
-          ("stability-" + kind + ".shard-" + std::to_string(shard.index) + "-of-" + std::to_string(shard.count) + ".csv"))
+  return (std::filesystem::path(outDir) / ("stability-" + kind + ".shard-" + std::to_string(shard.index) + "-of-" +
+                                           std::to_string(shard.count) + ".csv"))
       .string();
 }
 
@@ -158,7 +173,8 @@ bool mergeStabilityShards(const std::string& outDir, const std::string& kind, in
   for (const auto& path : paths) {
     CsvTable shard = readCsvFile(path);
     if (shard.columns != table.columns)
-      throw std::runtime_error(path + ": not a stability shard (columns differ from " + stabilityColumns().front() + ",...)");
+      throw std::runtime_error(path + ": not a stability shard (columns differ from " + stabilityColumns().front() +
+                               ",...)");
     for (auto& row : shard.rows) table.rows.push_back(std::move(row));
   }
   const size_t cellColumn = table.column("cell");
@@ -172,17 +188,27 @@ bool mergeStabilityShards(const std::string& outDir, const std::string& kind, in
     cells.insert(std::stol(table.rows[r][cellColumn]));
     gridSize = std::max(gridSize, std::stol(table.text(r, "i")) + 1);
   }
-  if (static_cast<long>(cells.size()) != gridSize * gridSize || (!cells.empty() && *cells.rbegin() != gridSize * gridSize - 1))
-    throw std::runtime_error(outDir + ": the " + std::to_string(shardCount) + " shards of the '" + kind + "' sweep hold " +
-                             std::to_string(cells.size()) + " cells, expected " + std::to_string(gridSize * gridSize) +
-                             " (were they run with the same --grid?)");
+  if (static_cast<long>(cells.size()) != gridSize * gridSize ||
+      (!cells.empty() && *cells.rbegin() != gridSize * gridSize - 1))
+    throw std::runtime_error(outDir + ": the " + std::to_string(shardCount) + " shards of the '" + kind +
+                             "' sweep hold " + std::to_string(cells.size()) + " cells, expected " +
+                             std::to_string(gridSize * gridSize) + " (were they run with the same --grid?)");
   merged = std::move(table);
   return true;
 }
 
 std::vector<std::string> stabilityStatusNames() {
-  return {"ok",         "wrong-path",    "pole-fold-back",     "pole-singularity", "non-finite", "energy-blow-up",
-          "step-size-collapse", "rod-length", "max-steps", "reference-stopped", "other"};
+  return {"ok",
+          "wrong-path",
+          "pole-fold-back",
+          "pole-singularity",
+          "non-finite",
+          "energy-blow-up",
+          "step-size-collapse",
+          "rod-length",
+          "max-steps",
+          "reference-stopped",
+          "other"};
 }
 
 int stabilityStatusCode(const std::string& status) {
@@ -192,8 +218,8 @@ int stabilityStatusCode(const std::string& status) {
 }
 
 std::vector<std::string> stabilitySummaryColumns() {
-  std::vector<std::string> columns = {"method", "integrator", "setting", "cells", "within_1e-6", "within_1e-9",
-                                      "median_max_error"};
+  std::vector<std::string> columns = {"method",      "integrator",  "setting",         "cells",
+                                      "within_1e-6", "within_1e-9", "median_max_error"};
   for (const auto& status : stabilityStatusNames()) columns.push_back(status);
   return columns;
 }
@@ -232,8 +258,13 @@ CsvTable stabilitySummary(const CsvTable& rows) {
       median = t.errors[t.errors.size() / 2];
     }
     auto fraction = [&](long count) { return formatNumber(t.checked ? static_cast<double>(count) / t.cells : NAN); };
-    std::vector<std::string> row = {method, t.integrator, t.setting, std::to_string(t.cells), fraction(t.within6),
-                                    fraction(t.within9), formatNumber(median)};
+    std::vector<std::string> row = {method,
+                                    t.integrator,
+                                    t.setting,
+                                    std::to_string(t.cells),
+                                    fraction(t.within6),
+                                    fraction(t.within9),
+                                    formatNumber(median)};
     for (long count : t.statusCounts) row.push_back(std::to_string(count));
     summary.rows.push_back(std::move(row));
   }

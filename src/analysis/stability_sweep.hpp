@@ -31,7 +31,7 @@ struct StabilityOptions {
   double tolerance = RunConfig().tolerance;
   double step = RunConfig().step;
   bool checkAgainstReference = true;  // false: fate and invariants only (no reference runs: much faster)
-  int threads = 0;  // 0: std::thread::hardware_concurrency()
+  int threads = 0;                    // 0: std::thread::hardware_concurrency()
   Shard shard;
 };
 

@@ -51,10 +51,10 @@ NamedStart poleStart(std::string name, std::string description, double distance)
 std::vector<NamedStart> shippedStarts() {
   const Eigen::Vector2d genericCoords(0.3, 0.2), genericRates(0.5, 0.7);
   return {
-      chartStart("generic", "L=3, (phi,t)=(0.3,0.2), rates (0.5,0.7); the reference generic_L3", 3.0,
-                 genericCoords, genericRates),
-      chartStart("seam-crossing", "L=3, (phi,t)=(-0.2,1.0), rates (0.1,1.0): crosses t=pi/2+k pi seven times",
-                 3.0, Eigen::Vector2d(-0.2, 1.0), Eigen::Vector2d(0.1, 1.0)),
+      chartStart("generic", "L=3, (phi,t)=(0.3,0.2), rates (0.5,0.7); the reference generic_L3", 3.0, genericCoords,
+                 genericRates),
+      chartStart("seam-crossing", "L=3, (phi,t)=(-0.2,1.0), rates (0.1,1.0): crosses t=pi/2+k pi seven times", 3.0,
+                 Eigen::Vector2d(-0.2, 1.0), Eigen::Vector2d(0.1, 1.0)),
       poleStart("near-pole", "L=3, passes 1e-3 from the pole phi=pi/2 at time 5", 1e-3),
       poleStart("through-pole", "L=3, passes through the pole phi=pi/2 at time 5", 0.0),
       chartStart("L-near-2", "L=2.01, the generic chart start", 2.01, genericCoords, genericRates),

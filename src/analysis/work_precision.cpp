@@ -21,8 +21,10 @@ RunConfig configFor(const std::string& method, const std::string& integrator, do
   RunConfig config;
   config.method = method;
   config.integrator = integrator;
-  if (integratorIsAdaptive(integrator)) config.tolerance = setting;
-  else config.step = setting;
+  if (integratorIsAdaptive(integrator))
+    config.tolerance = setting;
+  else
+    config.step = setting;
   config.maxSteps = stepBudget(config, duration);
   return config;
 }
@@ -46,8 +48,9 @@ std::vector<WorkPrecisionPoint> runWorkPrecision(const std::vector<NamedStart>& 
       for (const auto& integrator : integrators) {
         for (double setting : settingsFor(integrator, options)) {
           WorkPrecisionPoint point{start.name, method, integrator, setting, referenceMethod, {}};
-          point.measurement = measureRunTimed(start.chain, start.state, configFor(method, integrator, setting, start.duration),
-                                              reference, options.repeats);
+          point.measurement =
+              measureRunTimed(start.chain, start.state, configFor(method, integrator, setting, start.duration),
+                              reference, options.repeats);
           if (progress) progress(point);
           points.push_back(std::move(point));
         }
@@ -58,9 +61,22 @@ std::vector<WorkPrecisionPoint> runWorkPrecision(const std::vector<NamedStart>& 
 }
 
 std::vector<std::string> workPrecisionColumns() {
-  return {"start",         "method",     "integrator",       "setting_kind",         "setting",
-          "status",        "wall_seconds", "cpu_seconds", "evaluations",    "steps",                "final_error",
-          "max_error",     "max_energy_drift", "max_rod_length_error", "stop_time", "reference_method",
+  return {"start",
+          "method",
+          "integrator",
+          "setting_kind",
+          "setting",
+          "status",
+          "wall_seconds",
+          "cpu_seconds",
+          "evaluations",
+          "steps",
+          "final_error",
+          "max_error",
+          "max_energy_drift",
+          "max_rod_length_error",
+          "stop_time",
+          "reference_method",
           "stop_detail"};
 }
 
@@ -68,11 +84,11 @@ CsvTable workPrecisionTable(const std::vector<WorkPrecisionPoint>& points) {
   CsvTable table{workPrecisionColumns(), {}};
   for (const auto& p : points) {
     const Measurement& m = p.measurement;
-    table.rows.push_back({p.start, p.method, p.integrator, settingKind(p.integrator), formatNumber(p.setting),
-                          m.status, formatNumber(m.wallSeconds), formatNumber(m.cpuSeconds), std::to_string(m.evaluations),
+    table.rows.push_back({p.start, p.method, p.integrator, settingKind(p.integrator), formatNumber(p.setting), m.status,
+                          formatNumber(m.wallSeconds), formatNumber(m.cpuSeconds), std::to_string(m.evaluations),
                           std::to_string(m.steps), formatNumber(m.finalError), formatNumber(m.maxError),
-                          formatNumber(m.maxEnergyDrift), formatNumber(m.maxRodLengthError),
-                          formatNumber(m.stopTime), p.referenceMethod, m.stopDetail});
+                          formatNumber(m.maxEnergyDrift), formatNumber(m.maxRodLengthError), formatNumber(m.stopTime),
+                          p.referenceMethod, m.stopDetail});
   }
   return table;
 }
@@ -80,7 +96,7 @@ CsvTable workPrecisionTable(const std::vector<WorkPrecisionPoint>& points) {
 std::vector<WorkPrecisionPoint> workPrecisionPointsFromTable(const CsvTable& table) {
   std::vector<WorkPrecisionPoint> points;
   for (size_t r = 0; r < table.rows.size(); ++r) {
-    WorkPrecisionPoint p{table.text(r, "start"), table.text(r, "method"), table.text(r, "integrator"),
+    WorkPrecisionPoint p{table.text(r, "start"),     table.text(r, "method"),           table.text(r, "integrator"),
                          table.number(r, "setting"), table.text(r, "reference_method"), {}};
     Measurement& m = p.measurement;
     m.status = table.text(r, "status");
@@ -142,8 +158,8 @@ std::vector<CheapestSetting> cheapestSettings(const std::vector<WorkPrecisionPoi
         // Fewest evaluations; on a tie the looser (larger) setting, which is the cheaper to choose.
         if (!best.reached || s.worstEvaluations < best.worstEvaluations ||
             (s.worstEvaluations == best.worstEvaluations && setting > best.setting))
-          best = {key.first, key.second, target, true, setting, s.worstError, s.worstEvaluations, s.worstWallSeconds,
-                  s.worstCpuSeconds};
+          best = {key.first,          key.second,         target,           true, setting, s.worstError,
+                  s.worstEvaluations, s.worstWallSeconds, s.worstCpuSeconds};
       }
       result.push_back(best);
     }

@@ -53,11 +53,11 @@ struct CheapestSetting {
   std::string method, integrator;
   double target = 0;
   bool reached = false;
-  double setting = 0;            // valid when reached
-  double worstError = 0;         // max over the starts of the max position error at that setting
-  long worstEvaluations = 0;     // max over the starts
-  double worstWallSeconds = 0;   // max over the starts of the median wall time
-  double worstCpuSeconds = 0;    // max over the starts of the median CPU time
+  double setting = 0;           // valid when reached
+  double worstError = 0;        // max over the starts of the max position error at that setting
+  long worstEvaluations = 0;    // max over the starts
+  double worstWallSeconds = 0;  // max over the starts of the median wall time
+  double worstCpuSeconds = 0;   // max over the starts of the median CPU time
 };
 
 // For each method x integrator (in first-appearance order) and each target: among the settings at which

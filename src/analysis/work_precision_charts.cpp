@@ -11,13 +11,15 @@ namespace sl {
 
 namespace {
 
-constexpr double kFailedBand = 30;     // where failed points are drawn (the y axis ends at 1e2)
-constexpr double kFloor = 1e-17;       // zero drift or error is drawn here on the log axis
+constexpr double kFailedBand = 30;  // where failed points are drawn (the y axis ends at 1e2)
+constexpr double kFloor = 1e-17;    // zero drift or error is drawn here on the log axis
 
 std::string methodColor(const std::string& method) {
-  static const std::map<std::string, std::string> colors = {
-      {"christoffel-fd", "#d95f02"}, {"embedded-fd", "#a6761d"}, {"christoffel", "#1f78b4"},
-      {"embedded", "#33a02c"},       {"ambient", "#6a3d9a"}};
+  static const std::map<std::string, std::string> colors = {{"christoffel-fd", "#d95f02"},
+                                                            {"embedded-fd", "#a6761d"},
+                                                            {"christoffel", "#1f78b4"},
+                                                            {"embedded", "#33a02c"},
+                                                            {"ambient", "#6a3d9a"}};
   const auto found = colors.find(method);
   return found == colors.end() ? "#444444" : found->second;
 }
@@ -46,11 +48,17 @@ struct ChartSpec {
 };
 
 std::vector<ChartSpec> chartSpecs() {
-  return {{"error-time", "max position error against wall time", {"wall time per run [ms] (median)", wallMilliseconds},
+  return {{"error-time",
+           "max position error against wall time",
+           {"wall time per run [ms] (median)", wallMilliseconds},
            {"max hinge position error over the run", positionError}},
-          {"error-evaluations", "max position error against vector-field evaluations",
-           {"vector-field evaluations", evaluations}, {"max hinge position error over the run", positionError}},
-          {"energy-time", "max relative energy drift against wall time", {"wall time per run [ms] (median)", wallMilliseconds},
+          {"error-evaluations",
+           "max position error against vector-field evaluations",
+           {"vector-field evaluations", evaluations},
+           {"max hinge position error over the run", positionError}},
+          {"energy-time",
+           "max relative energy drift against wall time",
+           {"wall time per run [ms] (median)", wallMilliseconds},
            {"max |E - E_0| / E_0", energyDrift}}};
 }
 
@@ -61,7 +69,9 @@ std::string chartScript(const std::string& title, const ChartSpec& spec, const s
                         const std::string& pngPath) {
   std::string script = gnuplotPngPreamble(pngPath, 1100, 720);
   script += "set title " + gnuplotQuote(title + ": " + spec.title) + " noenhanced\n";
-  script += "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset grid xtics ytics mxtics mytics lc rgb '#dddddd'\n";
+  script +=
+      "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset grid xtics ytics mxtics mytics lc rgb "
+      "'#dddddd'\n";
   script += "set xlabel " + gnuplotQuote(spec.x.label) + "\nset ylabel " + gnuplotQuote(spec.y.label) + "\n";
   script += "set yrange [1e-17:1e2]\nset key outside right top noenhanced\n";
   script += "set arrow from graph 0, first 10 to graph 1, first 10 nohead lc rgb '#bbbbbb' dt 3\n";
@@ -73,8 +83,10 @@ std::string chartScript(const std::string& title, const ChartSpec& spec, const s
     for (const auto* p : series[i]) {
       const Measurement& m = p->measurement;
       const std::string x = formatNumber(spec.x.value(m));
-      if (m.failed()) failed.push_back(x + " " + formatNumber(kFailedBand) + " 0x" + methodColor(p->method).substr(1));
-      else lines.push_back(x + " " + formatNumber(spec.y.value(m)));
+      if (m.failed())
+        failed.push_back(x + " " + formatNumber(kFailedBand) + " 0x" + methodColor(p->method).substr(1));
+      else
+        lines.push_back(x + " " + formatNumber(spec.y.value(m)));
     }
     if (lines.empty()) lines.push_back("NaN NaN");
     const std::string block = "s" + std::to_string(i);
@@ -101,8 +113,7 @@ std::vector<Series> seriesOf(const std::vector<const WorkPrecisionPoint*>& point
     }
     series[index[key]].push_back(p);
   }
-  for (auto& s : series)
-    std::stable_sort(s.begin(), s.end(), [](auto* a, auto* b) { return a->setting > b->setting; });
+  for (auto& s : series) std::stable_sort(s.begin(), s.end(), [](auto* a, auto* b) { return a->setting > b->setting; });
   return series;
 }
 
@@ -144,7 +155,8 @@ std::vector<std::string> writeWorkPrecisionCharts(const std::vector<WorkPrecisio
   auto chartsFor = [&](const std::string& name, const std::vector<const WorkPrecisionPoint*>& chosen) {
     const auto series = seriesOf(chosen);
     for (const auto& spec : chartSpecs()) {
-      const std::string png = (std::filesystem::path(outDir) / ("wp-" + name + "-" + spec.fileSuffix + ".png")).string();
+      const std::string png =
+          (std::filesystem::path(outDir) / ("wp-" + name + "-" + spec.fileSuffix + ".png")).string();
       renderGnuplotChart(chartScript(name, spec, series, png), png);
       written.push_back(png);
     }

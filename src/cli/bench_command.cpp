@@ -1,11 +1,11 @@
 // `linkage bench`: work-precision sweeps (src/analysis/work_precision.hpp) over the shipped starts,
 // written as CSV, gnuplot charts and a table of the cheapest setting reaching each target error.
 
+#include <unistd.h>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 

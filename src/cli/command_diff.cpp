@@ -60,7 +60,8 @@ bool diffFolders(const DiffArguments& args) {
     const auto other = after.find(frame);
     if (other == after.end() || other->second == hash || written >= args.maxImages) continue;
     const PixelDifference pixels = comparePixels(args.before, args.after, frame, args.imageFolder);
-    std::cout << "frame " << frame << ": " << pixels.fraction * 100 << "% of pixels differ; " << pixels.diffImage << '\n';
+    std::cout << "frame " << frame << ": " << pixels.fraction * 100 << "% of pixels differ; " << pixels.diffImage
+              << '\n';
     ++written;
   }
   return result.matches();
@@ -81,15 +82,20 @@ void runDiff(const DiffArguments& args) {
 
 void addDiffCommand(CLI::App& app) {
   auto args = std::make_shared<DiffArguments>();
-  CLI::App* command = app.add_subcommand("diff", "Compare two trajectory CSVs or two render folders (exit 0 same, 1 different)");
+  CLI::App* command =
+      app.add_subcommand("diff", "Compare two trajectory CSVs or two render folders (exit 0 same, 1 different)");
   command->add_option("old", args->before, "CSV from `linkage simulate --csv`, or a render folder")->required();
   command->add_option("new", args->after, "the same kind as OLD")->required();
   command->add_option("--tol", args->tolerance, "CSV: largest hinge position difference that still matches")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  command->add_flag("--images", args->images, "folders: decode differing frames, print the fraction of differing pixels, write diff images");
-  command->add_option("--image-dir", args->imageFolder, "where --images writes diff_frame_NNNNN.png")->capture_default_str();
-  command->add_option("--max-images", args->maxImages, "at most this many diff images")->check(CLI::PositiveNumber)->capture_default_str();
+  command->add_flag("--images", args->images,
+                    "folders: decode differing frames, print the fraction of differing pixels, write diff images");
+  command->add_option("--image-dir", args->imageFolder, "where --images writes diff_frame_NNNNN.png")
+      ->capture_default_str();
+  command->add_option("--max-images", args->maxImages, "at most this many diff images")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   command->footer(
       "CSV: per run, the worst hinge position difference and the first time it exceeds --tol.\n"
       "Folders: frames compared by the pixel SHA-256 in manifest.json; the first differing frame and how many.\n"

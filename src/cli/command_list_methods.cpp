@@ -17,7 +17,8 @@ void addListMethodsCommand(CLI::App& app) {
     for (const std::string& name : methodNames()) std::cout << "  " << name << '\n';
     std::cout << "integrators:\n";
     for (const std::string& name : integratorNames()) {
-      std::cout << "  " << name << (integratorIsAdaptive(name) ? "  (adaptive: uses \"tolerance\")" : "  (fixed step: uses \"step\")")
+      std::cout << "  " << name
+                << (integratorIsAdaptive(name) ? "  (adaptive: uses \"tolerance\")" : "  (fixed step: uses \"step\")")
                 << '\n';
     }
   });

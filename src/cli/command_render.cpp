@@ -68,10 +68,12 @@ RenderPlan planRender(const RenderArguments& args) {
   plan.quiet = args.quiet;
   plan.resume = args.resume;
   if (!plan.png && plan.video.empty()) {
-    throw CommandExit(kExitBadInput, "nothing to write: PNG frames are off (--no-png or output.png) and no video is asked for");
+    throw CommandExit(kExitBadInput,
+                      "nothing to write: PNG frames are off (--no-png or output.png) and no video is asked for");
   }
   if (plan.resume && !plan.video.empty()) {
-    throw CommandExit(kExitBadInput, "--resume completes PNG frames; a video is always encoded whole (drop --video or --resume)");
+    throw CommandExit(kExitBadInput,
+                      "--resume completes PNG frames; a video is always encoded whole (drop --video or --resume)");
   }
   std::vector<SceneProblem> problems = checkImageSize(scene.output.width, scene.output.height, !plan.video.empty(),
                                                       programLimits(), args.size.empty() ? "output" : "--size");
@@ -79,7 +81,8 @@ RenderPlan planRender(const RenderArguments& args) {
     problems.push_back(problem);
   }
   if (!plan.video.empty()) {
-    for (SceneProblem& problem : checkOutputFolder(videoFolder(plan.video), args.video.empty() ? "output.video" : "--video")) {
+    for (SceneProblem& problem :
+         checkOutputFolder(videoFolder(plan.video), args.video.empty() ? "output.video" : "--video")) {
       problems.push_back(problem);
     }
   }
@@ -91,12 +94,9 @@ RenderPlan planRender(const RenderArguments& args) {
 // Identifies the render in its manifest, so shards and resumes only ever join the same render.
 nlohmann::json manifestInfo(const RenderPlan& plan) {
   const Scene& scene = plan.scene;
-  return {{"scene", scene.name},
-          {"sceneSha256", output::sha256OfFile(scene.file)},
-          {"width", scene.output.width},
-          {"height", scene.output.height},
-          {"fps", scene.output.fps},
-          {"frames", scene.frameCount()}};
+  return {{"scene", scene.name},         {"sceneSha256", output::sha256OfFile(scene.file)},
+          {"width", scene.output.width}, {"height", scene.output.height},
+          {"fps", scene.output.fps},     {"frames", scene.frameCount()}};
 }
 
 // Samples the history up to (not including) frame k, one frame at a time so that a signal is noticed even while
@@ -119,8 +119,8 @@ void checkSpaceForFrames(const RenderPlan& plan, Renderer& renderer, FrameBuilde
 }
 
 // The frames of the plan's range into the sinks; returns false if interrupted.
-bool renderFrames(const RenderPlan& plan, output::FrameManifest* pngManifest, const std::vector<output::FrameSink*>& sinks,
-                  Renderer& renderer, FrameBuilder& builder) {
+bool renderFrames(const RenderPlan& plan, output::FrameManifest* pngManifest,
+                  const std::vector<output::FrameSink*>& sinks, Renderer& renderer, FrameBuilder& builder) {
   Progress progress(plan.range.end - plan.range.first, plan.quiet);
   for (int k = plan.range.first; k < plan.range.end; ++k) {
     const bool complete = plan.resume && pngManifest && pngManifest->isFrameComplete(k);
@@ -146,7 +146,8 @@ void sweepOutputFolders(const RenderPlan& plan) {
   for (const std::string& folder : folders) {
     const std::vector<std::string> removed = output::removeStaleTemporaries(folder);
     if (!removed.empty() && !plan.quiet)
-      std::cerr << "removed " << removed.size() << " temporary file(s) an interrupted render left in " << folder << "\n";
+      std::cerr << "removed " << removed.size() << " temporary file(s) an interrupted render left in " << folder
+                << "\n";
   }
 }
 
@@ -198,11 +199,13 @@ void runRender(const RenderArguments& args) {
 
 void addRenderCommand(CLI::App& app) {
   auto args = std::make_shared<RenderArguments>();
-  CLI::App* command = app.add_subcommand("render", "Render a scene to PNG frames (with a checksum manifest) and/or a video");
+  CLI::App* command =
+      app.add_subcommand("render", "Render a scene to PNG frames (with a checksum manifest) and/or a video");
   command->add_option("scene", args->scene, "scene file (JSON, see scenes/README.md)")->required();
   command->add_option("--out", args->out, "frame folder (default: the scene's output.folder, renders/<name>)");
-  command->add_option("--frames", args->frames, "half-open range A:B of frames to render (A: or :B allowed); shards of one "
-                                                "animation give byte-identical files");
+  command->add_option("--frames", args->frames,
+                      "half-open range A:B of frames to render (A: or :B allowed); shards of one "
+                      "animation give byte-identical files");
   command->add_option("--video", args->video, "also encode a video with ffmpeg (H.264, yuv420p), e.g. out.mp4");
   command->add_flag("--png", args->png, "write PNG frames (the default unless the scene says output.png: false)");
   command->add_flag("--no-png", args->noPng, "no PNG frames (with --video: the video only)");

@@ -54,7 +54,8 @@ void runSimulate(const SimulateArguments& args) {
   const Scene scene = loadSceneForCommand(args.scene);
   // The CSV for --csv is built in memory (then written atomically): keep it below about a gigabyte.
   if (args.dt > 0 && scene.duration / args.dt > 5e6) {
-    throw CommandExit(kExitBadInput, "--dt " + std::to_string(args.dt) + " gives more than 5e6 samples per run; expected a larger step");
+    throw CommandExit(kExitBadInput, "--dt " + std::to_string(args.dt) +
+                                         " gives more than 5e6 samples per run; expected a larger step");
   }
   installInterruptHandlers();
   const std::vector<double> times = sampleTimes(scene, args.dt);
@@ -72,7 +73,8 @@ void runSimulate(const SimulateArguments& args) {
 
 void addSimulateCommand(CLI::App& app) {
   auto args = std::make_shared<SimulateArguments>();
-  CLI::App* command = app.add_subcommand("simulate", "Integrate the scene's runs and write trajectory CSV (no rendering)");
+  CLI::App* command =
+      app.add_subcommand("simulate", "Integrate the scene's runs and write trajectory CSV (no rendering)");
   command->add_option("scene", args->scene, "scene file (JSON, see scenes/README.md)")->required();
   command->add_option("--csv", args->csv, "write the CSV here instead of stdout (written whole or not at all)");
   command->add_option("--dt", args->dt, "sample every DT time units (default: the frame times k / fps)")

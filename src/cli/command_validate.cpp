@@ -17,9 +17,10 @@ void runValidate(const std::string& file) {
   const Scene scene = loadSceneForCommand(file);
   failOnProblems(file, checkOutputFolder(scene.output.folder, "output.folder"));
   std::cout << file << ": ok: \"" << scene.name << "\", " << scene.chain.rods << " rods, L = " << scene.chain.baseLength
-            << ", " << scene.frameCount() << " frames of " << scene.output.width << "x" << scene.output.height
-            << " at " << scene.output.fps << " fps, runs:";
-  for (const RunSpec& run : scene.runs) std::cout << " \"" << run.name << "\" (" << run.config.method << ", " << run.config.integrator << ")";
+            << ", " << scene.frameCount() << " frames of " << scene.output.width << "x" << scene.output.height << " at "
+            << scene.output.fps << " fps, runs:";
+  for (const RunSpec& run : scene.runs)
+    std::cout << " \"" << run.name << "\" (" << run.config.method << ", " << run.config.integrator << ")";
   std::cout << '\n';
 }
 

@@ -55,7 +55,8 @@ RunDifference compareRun(const std::string& name, const std::vector<const Row*>&
     }
     if (!(distance <= tolerance) && !result.firstExceedsAt) result.firstExceedsAt = a.values[0];
     if (a.status != b.status) {
-      result.structure = "status at t = " + std::to_string(a.values[0]) + ": \"" + a.status + "\" vs \"" + b.status + "\"";
+      result.structure =
+          "status at t = " + std::to_string(a.values[0]) + ": \"" + a.status + "\" vs \"" + b.status + "\"";
       return result;
     }
   }
@@ -67,7 +68,8 @@ RunDifference compareRun(const std::string& name, const std::vector<const Row*>&
 
 }  // namespace
 
-std::vector<RunDifference> compareTrajectories(const TrajectoryCsv& before, const TrajectoryCsv& after, double tolerance) {
+std::vector<RunDifference> compareTrajectories(const TrajectoryCsv& before, const TrajectoryCsv& after,
+                                               double tolerance) {
   std::vector<RunDifference> differences;
   if (before.columns != after.columns) {
     differences.push_back({"(all)", 0, 0, std::nullopt, "the columns differ (different numbers of rods?)"});
@@ -94,8 +96,10 @@ bool printTrajectoryDifferences(std::ostream& out, const std::vector<RunDifferen
   for (const RunDifference& run : differences) {
     allMatch = allMatch && run.matches();
     out << "run \"" << run.run << "\": worst hinge difference " << run.worstDistance << " at t = " << run.worstTime;
-    if (run.firstExceedsAt) out << "; first exceeds --tol " << tolerance << " at t = " << *run.firstExceedsAt;
-    else out << "; within --tol " << tolerance;
+    if (run.firstExceedsAt)
+      out << "; first exceeds --tol " << tolerance << " at t = " << *run.firstExceedsAt;
+    else
+      out << "; within --tol " << tolerance;
     if (!run.structure.empty()) out << "; not comparable row by row: " << run.structure;
     out << '\n';
   }

@@ -20,7 +20,8 @@ struct RunDifference {
   bool matches() const { return structure.empty() && !firstExceedsAt; }
 };
 
-std::vector<RunDifference> compareTrajectories(const TrajectoryCsv& before, const TrajectoryCsv& after, double tolerance);
+std::vector<RunDifference> compareTrajectories(const TrajectoryCsv& before, const TrajectoryCsv& after,
+                                               double tolerance);
 
 // One line per run; returns whether all match.
 bool printTrajectoryDifferences(std::ostream& out, const std::vector<RunDifference>& differences, double tolerance);

@@ -22,7 +22,8 @@ namespace {
 // The folder, or its nearest existing ancestor when it is yet to be created: the file system it will be on.
 std::filesystem::path existingAncestor(std::filesystem::path folder) {
   std::error_code error;
-  while (!folder.empty() && !std::filesystem::exists(folder, error) && folder.has_parent_path() && folder.parent_path() != folder)
+  while (!folder.empty() && !std::filesystem::exists(folder, error) && folder.has_parent_path() &&
+         folder.parent_path() != folder)
     folder = folder.parent_path();
   return folder.empty() || !std::filesystem::exists(folder, error) ? std::filesystem::path(".") : folder;
 }
@@ -36,10 +37,10 @@ void refuseIfFramesCannotFit(const FrameSpaceNeed& need) {
   const std::uintmax_t required = std::uintmax_t(need.framesToWrite) * need.bytesPerFrame;
   if (required <= space.available) return;
   throw CommandExit(kExitBadInput,
-                    need.folder + ": " + std::to_string(need.framesToWrite) + " frames of " + std::to_string(need.width) +
-                        "x" + std::to_string(need.height) + " need about " + formatBytes(required) + " (frame " +
-                        std::to_string(need.measuredFrame) + " encodes to " + formatBytes(need.bytesPerFrame) +
-                        "), but only " + formatBytes(space.available) +
+                    need.folder + ": " + std::to_string(need.framesToWrite) + " frames of " +
+                        std::to_string(need.width) + "x" + std::to_string(need.height) + " need about " +
+                        formatBytes(required) + " (frame " + std::to_string(need.measuredFrame) + " encodes to " +
+                        formatBytes(need.bytesPerFrame) + "), but only " + formatBytes(space.available) +
                         " are free there; free space, choose a smaller --size, or render part with --frames A:B");
 }
 

@@ -10,9 +10,9 @@ namespace sl {
 
 struct FrameSpaceNeed {
   std::string folder;
-  int framesToWrite = 0;              // frames in the range whose file does not exist yet
-  int measuredFrame = 0;              // the frame whose encoded size was measured
-  std::uintmax_t bytesPerFrame = 0;   // its PNG size
+  int framesToWrite = 0;             // frames in the range whose file does not exist yet
+  int measuredFrame = 0;             // the frame whose encoded size was measured
+  std::uintmax_t bytesPerFrame = 0;  // its PNG size
   int width = 0, height = 0;
 };
 

@@ -6,8 +6,8 @@
 #include <set>
 #include <stdexcept>
 
-#include <nlohmann/json.hpp>
 #include <stb_image.h>
+#include <nlohmann/json.hpp>
 
 #include "output/atomic_file.hpp"
 #include "output/png_encoder.hpp"
@@ -62,7 +62,8 @@ DecodedImage decodePng(const std::string& path) {
 
 }  // namespace
 
-PixelDifference comparePixels(const std::string& before, const std::string& after, int frame, const std::string& imageFolder) {
+PixelDifference comparePixels(const std::string& before, const std::string& after, int frame,
+                              const std::string& imageFolder) {
   const std::string name = output::frameFileName(frame);
   const DecodedImage a = decodePng(before + "/" + name), b = decodePng(after + "/" + name);
   if (a.width != b.width || a.height != b.height) return {1.0, ""};

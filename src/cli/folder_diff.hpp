@@ -11,7 +11,7 @@ namespace sl {
 
 struct FolderDifference {
   int framesBefore = 0, framesAfter = 0;
-  int differing = 0;                // frames whose pixels differ or that only one side has
+  int differing = 0;  // frames whose pixels differ or that only one side has
   std::optional<int> firstDiffering;
   bool matches() const { return differing == 0; }
 };
@@ -22,12 +22,13 @@ std::map<int, std::string> readPixelHashes(const std::string& folder);
 FolderDifference compareFolders(const std::map<int, std::string>& before, const std::map<int, std::string>& after);
 
 struct PixelDifference {
-  double fraction = 0;   // of pixels with any channel different
-  std::string diffImage; // path written, empty if none
+  double fraction = 0;    // of pixels with any channel different
+  std::string diffImage;  // path written, empty if none
 };
 
 // Decodes DIR/frame_k.png on both sides; writes a diff image (differing pixels red over a faded grey
 // copy of the new frame) into imageFolder. Throws std::runtime_error if a frame cannot be read.
-PixelDifference comparePixels(const std::string& before, const std::string& after, int frame, const std::string& imageFolder);
+PixelDifference comparePixels(const std::string& before, const std::string& after, int frame,
+                              const std::string& imageFolder);
 
 }  // namespace sl

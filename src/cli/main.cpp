@@ -11,9 +11,10 @@
 #endif
 
 int main(int argc, char** argv) {
-  CLI::App app{"linkage: geodesics of planar linkages on their configuration spheres, rendered to frames and video.\n"
-               "Write or copy a scene file (scenes/README.md), then run one command.",
-               "linkage"};
+  CLI::App app{
+      "linkage: geodesics of planar linkages on their configuration spheres, rendered to frames and video.\n"
+      "Write or copy a scene file (scenes/README.md), then run one command.",
+      "linkage"};
   app.require_subcommand(1, 1);
   app.footer(std::string("Examples:\n  linkage validate scenes/default.json\n  linkage render scenes/default.json\n"
                          "  linkage render scenes/comparison.json --frames 0:100 --size 640x360\n\n") +

@@ -1,8 +1,8 @@
 #include "cli/scene_input.hpp"
 
 #include "cli/exit_codes.hpp"
-#include "render/renderer.hpp"
 #include "frames/scene_start.hpp"
+#include "render/renderer.hpp"
 
 namespace sl {
 

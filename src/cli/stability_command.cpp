@@ -1,11 +1,11 @@
 // `linkage stability`: where each method fails. Runs a sweep kind over a grid of starts on all cores,
 // writes its CSV, summary and heat maps; splits into shards that merge into the same bytes.
 
+#include <unistd.h>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 
@@ -46,7 +46,8 @@ int detectShardCount(const StabilityArguments& args) {
   const auto counts = stabilityShardCounts(args.out, args.options.kind);
   if (counts.size() != 1)
     throw std::runtime_error(args.out + ": expected shard files stability-" + args.options.kind +
-                             ".shard-K-of-N.csv for exactly one N, found " + std::to_string(counts.size()) + " values of N");
+                             ".shard-K-of-N.csv for exactly one N, found " + std::to_string(counts.size()) +
+                             " values of N");
   return counts.front();
 }
 
@@ -98,7 +99,8 @@ void runStability(StabilityArguments& args) {
 
 void addStabilityCommand(CLI::App& app) {
   auto args = std::make_shared<StabilityArguments>();
-  CLI::App* stability = app.add_subcommand("stability", "Stability maps: where each method fails over a grid of starts");
+  CLI::App* stability =
+      app.add_subcommand("stability", "Stability maps: where each method fails over a grid of starts");
   stability->footer(
       "Sweep kinds (x by y, 4 rods):\n"
       "  launch     launch point over the sphere (t0 by phi0), fixed heading\n"
@@ -124,8 +126,9 @@ void addStabilityCommand(CLI::App& app) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   stability->add_option("--methods", args->options.methods, "methods (default all)")->delimiter(',');
-  stability->add_option("--integrator", args->options.integrator,
-                        "integrator for every method (default: rk4 for the published -fd methods, the default run's otherwise)");
+  stability->add_option(
+      "--integrator", args->options.integrator,
+      "integrator for every method (default: rk4 for the published -fd methods, the default run's otherwise)");
   stability->add_option("--tolerance", args->options.tolerance, "adaptive tolerance (default: the default run's)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();

@@ -77,8 +77,8 @@ void FrameBuilder::sampleFrame(int k) {
   for (size_t run = 0; run < runs_.size(); ++run) {
     for (int j = 1; j <= substeps; ++j) {
       // The last substep is the frame time itself, computed as k / fps so it is the same in every shard.
-      const double t = j == substeps ? scene_.frameTime(k)
-                                     : ((k - 1) * substeps + j) / double(substeps * scene_.output.fps);
+      const double t =
+          j == substeps ? scene_.frameTime(k) : ((k - 1) * substeps + j) / double(substeps * scene_.output.fps);
       sampleRunAt(run, t, j == substeps);
     }
   }

@@ -33,12 +33,12 @@ class FrameBuilder {
 
  private:
   struct RunHistory {
-    RunFrame frame;                      // the latest state and the path, trails so far
-    std::vector<Vec2> hingesAtFrame;     // for the divergence plot; empty once stopped
-    std::vector<double> energyErrors;    // one per frame while running
+    RunFrame frame;                    // the latest state and the path, trails so far
+    std::vector<Vec2> hingesAtFrame;   // for the divergence plot; empty once stopped
+    std::vector<double> energyErrors;  // one per frame while running
   };
 
-  void sampleFrame(int k);               // advance the history to frame k (k = sampled_ + 1)
+  void sampleFrame(int k);  // advance the history to frame k (k = sampled_ + 1)
   void sampleRunAt(size_t run, double t, bool isFrameTime);
   void recordPlots(int k);
   FrameState snapshot(int k) const;
@@ -47,7 +47,7 @@ class FrameBuilder {
   std::vector<Trajectory> runs_;
   SphereView view_;
   int frameCount_;
-  int sampled_ = -1;                     // the last frame sampled into the history
+  int sampled_ = -1;  // the last frame sampled into the history
   std::vector<RunHistory> history_;
   std::vector<double> plotTimes_;
   std::vector<std::vector<double>> divergence_;  // [run - 1][frame]: run 0 against run

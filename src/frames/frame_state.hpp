@@ -11,24 +11,30 @@
 
 namespace sl {
 
-struct Vec2 { double x = 0, y = 0; };
-struct Vec3 { double x = 0, y = 0, z = 0; };
-struct ColorRGB { float r = 0, g = 0, b = 0; };
+struct Vec2 {
+  double x = 0, y = 0;
+};
+struct Vec3 {
+  double x = 0, y = 0, z = 0;
+};
+struct ColorRGB {
+  float r = 0, g = 0, b = 0;
+};
 
 // How configuration-space points are shown in the sphere panel.
 enum class ViewSpace {
-  Sphere,         // 4 rods: the point (cos phi cos t, cos phi sin t, sin phi) on S^2
-  Ball,           // 5+ rods: S^(n-2) mapped into the unit ball, the start at the centre (frames/sphere_view.hpp)
-  Circle          // 3 rods: (cos t, sin t, 0) on the equator
+  Sphere,  // 4 rods: the point (cos phi cos t, cos phi sin t, sin phi) on S^2
+  Ball,    // 5+ rods: S^(n-2) mapped into the unit ball, the start at the centre (frames/sphere_view.hpp)
+  Circle   // 3 rods: (cos t, sin t, 0) on the equator
 };
 
 // One run's state at this frame.
 struct RunFrame {
-  std::string name;     // run name from the scene
-  std::string method;   // method name, e.g. "christoffel-fd"
-  ColorRGB color;       // the run's colour in every panel
-  bool stopped = false; // the run stopped at or before this frame's time
-  double stopTime = 0;  // when it stopped (valid if stopped)
+  std::string name;        // run name from the scene
+  std::string method;      // method name, e.g. "christoffel-fd"
+  ColorRGB color;          // the run's colour in every panel
+  bool stopped = false;    // the run stopped at or before this frame's time
+  double stopTime = 0;     // when it stopped (valid if stopped)
   std::string stopReason;  // short reason, e.g. "pole fold-back", "non-finite state"
 
   // Linkage panel: the n-1 interior hinges at the last valid time (frozen once stopped).
@@ -51,19 +57,19 @@ struct PlotSeries {
 };
 
 struct PlotFrame {
-  std::string title;        // e.g. "divergence |p_a - p_b|" or "relative energy error"
+  std::string title;  // e.g. "divergence |p_a - p_b|" or "relative energy error"
   bool logY = true;
   double timeMin = 0, timeMax = 1;  // the x axis spans the whole animation, so it does not jump
   std::vector<PlotSeries> series;
 };
 
 struct FrameState {
-  int index = 0;         // frame number in the whole animation
-  double time = 0;       // simulation time of this frame
-  double duration = 0;   // total simulated time
-  std::string title;     // scene title
-  int rods = 4;          // n
-  double baseLength = 3; // L
+  int index = 0;          // frame number in the whole animation
+  double time = 0;        // simulation time of this frame
+  double duration = 0;    // total simulated time
+  std::string title;      // scene title
+  int rods = 4;           // n
+  double baseLength = 3;  // L
   ViewSpace viewSpace = ViewSpace::Sphere;
   std::vector<RunFrame> runs;
   std::vector<PlotFrame> plots;  // one per plot panel, in layout order

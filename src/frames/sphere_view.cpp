@@ -33,8 +33,8 @@ Vec3 SphereView::project(const Eigen::VectorXd& x) const {
   if (rods_ == 4) return {x(0), x(1), x(2)};
   const Eigen::VectorXd y = toNorthPole_ * x;  // the start is e_last
   const Eigen::Index last = y.size() - 1;
-  const double across = y.head(last).norm();         // sin(theta)
-  const double theta = std::atan2(across, y(last));  // the angle from the start, in [0, pi]
+  const double across = y.head(last).norm();                             // sin(theta)
+  const double theta = std::atan2(across, y(last));                      // the angle from the start, in [0, pi]
   if (!(across > 0)) return y(last) > 0 ? Vec3{} : Vec3{0.0, 0.0, 1.0};  // the start; the antipode (any direction)
   const double scale = theta / (std::acos(-1.0) * across);
   return {y(0) * scale, y(1) * scale, y(2) * scale};

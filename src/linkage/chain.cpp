@@ -20,8 +20,8 @@ bool Chain::hasRodMass() const { return (rodMasses.array() != 0.0).any(); }
 void Chain::validate() const {
   if (rods < 3) throw std::invalid_argument("a chain needs at least 3 rods, got " + std::to_string(rods));
   if (!std::isfinite(baseLength) || !(baseLength > rods - 2) || !(baseLength < rods))
-    throw std::invalid_argument("L must lie in (n-2, n) = (" + std::to_string(rods - 2) + ", " +
-                                std::to_string(rods) + "), got " + std::to_string(baseLength));
+    throw std::invalid_argument("L must lie in (n-2, n) = (" + std::to_string(rods - 2) + ", " + std::to_string(rods) +
+                                "), got " + std::to_string(baseLength));
   if (hingeMasses.size() != rods - 1)
     throw std::invalid_argument("expected " + std::to_string(rods - 1) + " hinge masses");
   if (rodMasses.size() != rods) throw std::invalid_argument("expected " + std::to_string(rods) + " rod masses");
@@ -60,16 +60,14 @@ double AmbientMassMatrix::innerProduct(const Eigen::Matrix2Xd& a, const Eigen::M
   return (a.array() * apply(b).array()).sum();
 }
 
-double kineticEnergy(const AmbientMassMatrix& mass, const Eigen::Matrix2Xd& v) {
-  return 0.5 * mass.innerProduct(v, v);
-}
+double kineticEnergy(const AmbientMassMatrix& mass, const Eigen::Matrix2Xd& v) { return 0.5 * mass.innerProduct(v, v); }
 
 double rodLengthError(const Chain& chain, const Eigen::Matrix2Xd& hinges) {
   double worst = 0;
   Eigen::Vector2d previous(0.0, 0.0);
   for (int k = 0; k <= hinges.cols(); ++k) {
-    const Eigen::Vector2d next = k < hinges.cols() ? Eigen::Vector2d(hinges.col(k))
-                                                   : Eigen::Vector2d(chain.baseLength, 0.0);
+    const Eigen::Vector2d next =
+        k < hinges.cols() ? Eigen::Vector2d(hinges.col(k)) : Eigen::Vector2d(chain.baseLength, 0.0);
     const double error = std::abs((next - previous).norm() - 1.0);
     worst = std::isfinite(error) ? std::max(worst, error) : error;
     if (!std::isfinite(worst)) return worst;

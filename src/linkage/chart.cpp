@@ -7,7 +7,7 @@ namespace sl {
 double chainAmplitude(int rods, double base) {
   const double m = rods;
   const double oneMinusCos = std::max((m - base) * (m - 2.0 + base), 0.0);  // times 2d
-  const double onePlusCos = std::max((base + 2.0 - m) * (base + m), 0.0);    // times 2d
+  const double onePlusCos = std::max((base + 2.0 - m) * (base + m), 0.0);   // times 2d
   return 2.0 * std::atan2(std::sqrt(oneMinusCos), std::sqrt(onePlusCos));
 }
 
@@ -69,8 +69,8 @@ Eigen::MatrixXd forwardJacobian(const Eigen::VectorXd& at, Map&& map, Eigen::Ind
   for (Eigen::Index h = 0; h < hinges.cols(); ++h)
     for (int c = 0; c < 2; ++c) {
       const Eigen::VectorXd& derivative = hinges(c, h).derivatives();
-      jacobian.row(2 * h + c) = derivative.size() ? Eigen::RowVectorXd(derivative.transpose())
-                                                  : Eigen::RowVectorXd::Zero(k);
+      jacobian.row(2 * h + c) =
+          derivative.size() ? Eigen::RowVectorXd(derivative.transpose()) : Eigen::RowVectorXd::Zero(k);
     }
   return jacobian;
 }

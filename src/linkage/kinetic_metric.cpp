@@ -15,8 +15,11 @@ double sincDerivative(double x) {
   if (std::abs(x) < 0.5) {
     const double x2 = x * x;
     // (sin x - x cos x)/x^3 = sum_k (-1)^k (2k+2) x^(2k) / (2k+3)!
-    const double g = 1.0 / 3 + x2 * (-1.0 / 30 + x2 * (1.0 / 840 + x2 * (-1.0 / 45360 +
-                     x2 * (1.0 / 3991680 + x2 * (-1.0 / 518918400 + x2 * (1.0 / 93405312000.0))))));
+    const double g =
+        1.0 / 3 +
+        x2 * (-1.0 / 30 +
+              x2 * (1.0 / 840 +
+                    x2 * (-1.0 / 45360 + x2 * (1.0 / 3991680 + x2 * (-1.0 / 518918400 + x2 * (1.0 / 93405312000.0))))));
     return -x * g;
   }
   return (x * std::cos(x) - std::sin(x)) / (x * x);
@@ -118,7 +121,8 @@ Eigen::MatrixXd stackedMassMatrix(const Chain& chain) {
   const AmbientMassMatrix mass = ambientMassMatrix(chain);
   const Eigen::Index size = 2 * chain.hingeCount();
   Eigen::MatrixXd M = Eigen::MatrixXd::Zero(size, size);
-  for (Eigen::Index j = 0; j < mass.diagonal.size(); ++j) M.block<2, 2>(2 * j, 2 * j).diagonal().setConstant(mass.diagonal(j));
+  for (Eigen::Index j = 0; j < mass.diagonal.size(); ++j)
+    M.block<2, 2>(2 * j, 2 * j).diagonal().setConstant(mass.diagonal(j));
   for (Eigen::Index j = 0; j < mass.coupling.size(); ++j) {
     M.block<2, 2>(2 * j, 2 * j + 2).diagonal().setConstant(mass.coupling(j));
     M.block<2, 2>(2 * j + 2, 2 * j).diagonal().setConstant(mass.coupling(j));

@@ -42,7 +42,8 @@ inline PublishedOuterLevel publishedOuterLevel(double L, double alpha, double cp
 }
 
 // The rest of metric4 at (phi, t): cos, sin of t and u3 = e^(i (R + alpha_in sin t)).
-inline Eigen::Matrix2d publishedInnerLevel(const PublishedOuterLevel& o, double ct, double st, const Eigen::Vector2d& u3v) {
+inline Eigen::Matrix2d publishedInnerLevel(const PublishedOuterLevel& o, double ct, double st,
+                                           const Eigen::Vector2d& u3v) {
   const double L = o.L, ctheta = o.ctheta, stheta = o.stheta, d = o.d;
   const double dthetaP = o.dthetaP, dRP = o.dRP, alpha_in = o.alpha_in, sin_ai = o.sin_ai;
   const double dthetainT = alpha_in * ct;
@@ -53,18 +54,18 @@ inline Eigen::Matrix2d publishedInnerLevel(const PublishedOuterLevel& o, double 
   const double u3[2] = {u3v.x(), u3v.y()};
   const double p2[2] = {p3[0] - u3[0], p3[1] - u3[1]};
   const double p2_abs = std::hypot(p2[0], p2[1]);
-  const double nu_in = std::abs(ct) < 1e-6 ? ct * std::sqrt(d * alpha_in * sin_ai)
-                                           : ct * std::sqrt((4 - p2_abs * p2_abs) / (ct * ct));
+  const double nu_in =
+      std::abs(ct) < 1e-6 ? ct * std::sqrt(d * alpha_in * sin_ai) : ct * std::sqrt((4 - p2_abs * p2_abs) / (ct * ct));
 
   const double dt_p2[2] = {u3[1] * dthetainT, -u3[0] * dthetainT};
   const double c1 = dthetaP, c2 = dRP + dthetainP;
   const double dphi_p2[2] = {u4[1] * c1 + u3[1] * c2, -(u4[0] * c1 + u3[0] * c2)};
   // Omega_a = Im(d_a p2 / p2) - Re(d_a p2 conj(p2)) / (|p2| nu_in) for a = t, phi: each pair of quotients
   // divided at once (packed IEEE division rounds exactly as two scalar ones, in half the divider time).
-  const Eigen::Array2d im = Eigen::Array2d(p2[0] * dt_p2[1] - p2[1] * dt_p2[0], p2[0] * dphi_p2[1] - p2[1] * dphi_p2[0]) /
-                            (p2_abs * p2_abs);
-  const Eigen::Array2d re = Eigen::Array2d(p2[0] * dt_p2[0] + p2[1] * dt_p2[1], p2[0] * dphi_p2[0] + p2[1] * dphi_p2[1]) /
-                            (p2_abs * nu_in);
+  const Eigen::Array2d im =
+      Eigen::Array2d(p2[0] * dt_p2[1] - p2[1] * dt_p2[0], p2[0] * dphi_p2[1] - p2[1] * dphi_p2[0]) / (p2_abs * p2_abs);
+  const Eigen::Array2d re =
+      Eigen::Array2d(p2[0] * dt_p2[0] + p2[1] * dt_p2[1], p2[0] * dphi_p2[0] + p2[1] * dphi_p2[1]) / (p2_abs * nu_in);
   const double Omega_t = im(0) - re(0), Omega_phi = im(1) - re(1);
   const double u34_dot = u3[0] * u4[0] + u3[1] * u4[1];
 

@@ -42,7 +42,7 @@ Eigen::VectorXd coordinateRatesFromSphereVelocity(const Eigen::VectorXd& coords,
 int sphereChartCount(int ambientDimension) {
   if (ambientDimension <= 2) return 1;  // the circle needs one periodic chart
   if (ambientDimension == 3) return 2;
-  return (ambientDimension + 1) / 2;    // pairs (0,1), (2,3), ..., and (N-1, 0) when N is odd
+  return (ambientDimension + 1) / 2;  // pairs (0,1), (2,3), ..., and (N-1, 0) when N is odd
 }
 
 std::vector<int> sphereChartAxes(int ambientDimension, int chart) {
@@ -50,8 +50,10 @@ std::vector<int> sphereChartAxes(int ambientDimension, int chart) {
   std::iota(axes.begin(), axes.end(), 0);
   if (chart == 0) return axes;
   int first = 2 * chart, second = 2 * chart + 1;
-  if (ambientDimension == 3) first = 1, second = 2;               // x = (sin phi', cos phi' cos t', cos phi' sin t')
-  else if (second >= ambientDimension) first = ambientDimension - 1, second = 0;
+  if (ambientDimension == 3)
+    first = 1, second = 2;  // x = (sin phi', cos phi' cos t', cos phi' sin t')
+  else if (second >= ambientDimension)
+    first = ambientDimension - 1, second = 0;
   std::vector<int> rest;
   for (int a = 0; a < ambientDimension; ++a)
     if (a != first && a != second) rest.push_back(a);

@@ -19,7 +19,8 @@ enum class Sync { none, data };
 
 // Throws std::runtime_error naming the path and the system error.
 void writeFileAtomically(const std::string& path, const std::uint8_t* data, std::size_t size, Sync sync = Sync::none);
-inline void writeFileAtomically(const std::string& path, const std::vector<std::uint8_t>& bytes, Sync sync = Sync::none) {
+inline void writeFileAtomically(const std::string& path, const std::vector<std::uint8_t>& bytes,
+                                Sync sync = Sync::none) {
   writeFileAtomically(path, bytes.data(), bytes.size(), sync);
 }
 void writeFileAtomically(const std::string& path, const std::string& text, Sync sync = Sync::none);

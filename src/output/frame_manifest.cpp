@@ -50,13 +50,17 @@ nlohmann::json toJson(const FrameEntry& e) {
 }
 
 FrameEntry fromJson(const nlohmann::json& j) {
-  return {j.at("frame").get<int>(), j.value("file", ""), j.at("pixelSha256").get<std::string>(), j.value("fileSha256", "")};
+  return {j.at("frame").get<int>(), j.value("file", ""), j.at("pixelSha256").get<std::string>(),
+          j.value("fileSha256", "")};
 }
 
 }  // namespace
 
 FrameManifest::FrameManifest(std::string folder, nlohmann::json info, std::string fileName, Existing existing)
-    : folder_(std::move(folder)), fileName_(std::move(fileName)), info_(std::move(info)), existing_(existing),
+    : folder_(std::move(folder)),
+      fileName_(std::move(fileName)),
+      info_(std::move(info)),
+      existing_(existing),
       lastFlush_(std::chrono::steady_clock::now()) {
   std::filesystem::create_directories(folder_);
   if (existing_ == Existing::merge) reload();
@@ -71,7 +75,10 @@ FrameManifest::~FrameManifest() {
 }
 
 nlohmann::json FrameManifest::emptyManifest() const {
-  return {{"format", kFormat}, {"info", info_}, {"renderers", nlohmann::json::array()}, {"frames", nlohmann::json::array()}};
+  return {{"format", kFormat},
+          {"info", info_},
+          {"renderers", nlohmann::json::array()},
+          {"frames", nlohmann::json::array()}};
 }
 
 nlohmann::json FrameManifest::readLocked() const {

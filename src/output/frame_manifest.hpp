@@ -14,9 +14,9 @@
 //   manifest.flush();                          // also automatic every 0.5 s and in the destructor
 //
 // On disk: <folder>/manifest.json (or the given name), replaced atomically (temporary + rename) while
-// holding flock(2) on <folder>/.manifest.json.lock (a hidden lock file per manifest), merging the entries already there, so concurrent shards
-// never lose each other's entries. Entries are listed only after their file was renamed into place.
-// Content is deterministic: frames sorted, keys sorted, no timestamps or host names; the union of shards
+// holding flock(2) on <folder>/.manifest.json.lock (a hidden lock file per manifest), merging the entries already
+// there, so concurrent shards never lose each other's entries. Entries are listed only after their file was renamed
+// into place. Content is deterministic: frames sorted, keys sorted, no timestamps or host names; the union of shards
 // equals a single run byte for byte. After SIGKILL at most the last 0.5 s of entries are missing; their
 // frames are simply rendered again on resume. A video render records pixel hashes only (file empty).
 //

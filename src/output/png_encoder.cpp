@@ -25,7 +25,8 @@ void chunk(std::vector<std::uint8_t>& out, const char type[4], const std::uint8_
 }  // namespace
 
 PngEncoder::PngEncoder(int level, PngFilter filter) : compressor_(libdeflate_alloc_compressor(level)), filter_(filter) {
-  if (!compressor_) throw std::runtime_error("libdeflate: cannot create a level " + std::to_string(level) + " compressor");
+  if (!compressor_)
+    throw std::runtime_error("libdeflate: cannot create a level " + std::to_string(level) + " compressor");
 }
 
 PngEncoder::~PngEncoder() { libdeflate_free_compressor(static_cast<libdeflate_compressor*>(compressor_)); }

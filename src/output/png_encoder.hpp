@@ -26,7 +26,7 @@ class PngEncoder {
   std::vector<std::uint8_t> encode(const Image& image);
 
  private:
-  void* compressor_;                    // libdeflate_compressor
+  void* compressor_;  // libdeflate_compressor
   PngFilter filter_;
   std::vector<std::uint8_t> filtered_;  // reused between frames
 };

@@ -16,7 +16,9 @@ std::string frameFileName(int frameIndex) {
 }
 
 PngSequenceSink::PngSequenceSink(std::string folder, FrameManifest& manifest, int encoderThreads)
-    : folder_(std::move(folder)), manifest_(manifest), workers_(std::make_unique<WorkerPool>(encoderThreads, 2 * encoderThreads + 1)) {}
+    : folder_(std::move(folder)),
+      manifest_(manifest),
+      workers_(std::make_unique<WorkerPool>(encoderThreads, 2 * encoderThreads + 1)) {}
 
 PngSequenceSink::~PngSequenceSink() {
   workers_.reset();  // lets queued frames finish

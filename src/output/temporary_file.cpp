@@ -39,8 +39,7 @@ const std::string& hostTag() {
 }
 
 bool isNumber(const std::string& text) {
-  return !text.empty() && text.size() < 12 &&
-         text.find_first_not_of("0123456789") == std::string::npos;
+  return !text.empty() && text.size() < 12 && text.find_first_not_of("0123456789") == std::string::npos;
 }
 
 bool processExists(pid_t pid) { return ::kill(pid, 0) == 0 || errno == EPERM; }
@@ -51,7 +50,8 @@ pid_t localWriter(const std::string& name) {
   if (marker == std::string::npos || marker == 0) return 0;
   std::istringstream fields(name.substr(marker + std::char_traits<char>::length(kMarker)));
   std::string host, pid, serial;
-  if (!std::getline(fields, host, '.') || !std::getline(fields, pid, '.') || !std::getline(fields, serial, '.')) return 0;
+  if (!std::getline(fields, host, '.') || !std::getline(fields, pid, '.') || !std::getline(fields, serial, '.'))
+    return 0;
   if (host != hostTag() || !isNumber(pid) || !isNumber(serial)) return 0;
   return static_cast<pid_t>(std::stol(pid));
 }

@@ -26,11 +26,37 @@ namespace {
 std::vector<std::string> ffmpegArguments(const VideoSettings& s, const std::string& temporary) {
   char rate[32];
   std::snprintf(rate, sizeof rate, "%.6g", s.fps);
-  return {s.ffmpeg, "-hide_banner", "-loglevel", "error", "-nostdin", "-y",
-          "-f", "rawvideo", "-pix_fmt", "rgb24", "-s", std::to_string(s.width) + "x" + std::to_string(s.height),
-          "-framerate", rate, "-i", "pipe:0",
-          "-c:v", "libx264", "-preset", s.preset, "-crf", std::to_string(s.crf), "-pix_fmt", "yuv420p",
-          "-fflags", "+bitexact", "-flags:v", "+bitexact", "-movflags", "+faststart", "file:" + temporary};
+  return {s.ffmpeg,
+          "-hide_banner",
+          "-loglevel",
+          "error",
+          "-nostdin",
+          "-y",
+          "-f",
+          "rawvideo",
+          "-pix_fmt",
+          "rgb24",
+          "-s",
+          std::to_string(s.width) + "x" + std::to_string(s.height),
+          "-framerate",
+          rate,
+          "-i",
+          "pipe:0",
+          "-c:v",
+          "libx264",
+          "-preset",
+          s.preset,
+          "-crf",
+          std::to_string(s.crf),
+          "-pix_fmt",
+          "yuv420p",
+          "-fflags",
+          "+bitexact",
+          "-flags:v",
+          "+bitexact",
+          "-movflags",
+          "+faststart",
+          "file:" + temporary};
 }
 
 void writeAll(int fd, const std::uint8_t* data, std::size_t size) {
@@ -45,7 +71,8 @@ void writeAll(int fd, const std::uint8_t* data, std::size_t size) {
 
 }  // namespace
 
-VideoSink::VideoSink(const VideoSettings& settings, FrameManifest& manifest) : settings_(settings), manifest_(manifest) {
+VideoSink::VideoSink(const VideoSettings& settings, FrameManifest& manifest)
+    : settings_(settings), manifest_(manifest) {
   if (settings.width % 2 || settings.height % 2)
     throw std::invalid_argument("video size " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
                                 " must be even in both directions (H.264 yuv420p)");

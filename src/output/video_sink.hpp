@@ -22,9 +22,9 @@ struct VideoSettings {
   std::string path;  // e.g. "out/animation.mp4"
   int width = 1280, height = 720;
   double fps = 60;
-  int crf = 18;                       // x264 quality (lower = better)
-  std::string preset = "veryfast";    // x264 speed/size trade-off
-  std::string ffmpeg = "ffmpeg";      // program name or path
+  int crf = 18;                     // x264 quality (lower = better)
+  std::string preset = "veryfast";  // x264 speed/size trade-off
+  std::string ffmpeg = "ffmpeg";    // program name or path
 };
 
 class VideoSink : public FrameSink {

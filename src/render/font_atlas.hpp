@@ -23,7 +23,7 @@ class FontAtlas {
   FontAtlas& operator=(const FontAtlas&) = delete;
 
   float width(const std::string& utf8, TextSize size) const;
-  float ascent(TextSize size) const;     // pixels above the baseline
+  float ascent(TextSize size) const;  // pixels above the baseline
   float lineHeight(TextSize size) const;
   // Draws UTF-8 text with its baseline at y, starting at x; returns the x after the last glyph.
   float draw(ShapeBatch& batch, const std::string& utf8, TextSize size, float x, float y, Rgba color) const;

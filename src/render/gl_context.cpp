@@ -9,9 +9,19 @@ namespace sl::render {
 
 GlContext::GlContext(int width, int height) : width_(width), height_(height) {
   // Asking for 3.3 core; llvmpipe answers with its newest core profile (4.5 on Debian 12).
-  const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_STENCIL_BITS, 0,
-                            OSMESA_PROFILE, OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 3,
-                            OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
+  const int attributes[] = {OSMESA_FORMAT,
+                            OSMESA_RGBA,
+                            OSMESA_DEPTH_BITS,
+                            0,
+                            OSMESA_STENCIL_BITS,
+                            0,
+                            OSMESA_PROFILE,
+                            OSMESA_CORE_PROFILE,
+                            OSMESA_CONTEXT_MAJOR_VERSION,
+                            3,
+                            OSMESA_CONTEXT_MINOR_VERSION,
+                            3,
+                            0};
   OSMesaContext context = OSMesaCreateContextAttribs(attributes, nullptr);
   if (!context) throw std::runtime_error("OSMesa: could not create an OpenGL 3.3 core context");
   context_ = context;

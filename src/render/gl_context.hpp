@@ -50,9 +50,9 @@ class GlContext {
 
  private:
   int width_, height_;
-  void* context_ = nullptr;             // OSMesaContext
+  void* context_ = nullptr;                 // OSMesaContext
   std::vector<std::uint8_t> clientBuffer_;  // OSMesaMakeCurrent needs one; 1x1 is enough
-  std::unique_ptr<GlLayer> frame_;       // the frame itself
+  std::unique_ptr<GlLayer> frame_;          // the frame itself
 };
 
 }  // namespace sl::render

@@ -7,7 +7,9 @@ namespace sl::render {
 
 namespace {
 
-bool inDisc(double x, double y, double cx, double radius) { return (x - cx) * (x - cx) + y * y <= radius * radius * (1 + 1e-12); }
+bool inDisc(double x, double y, double cx, double radius) {
+  return (x - cx) * (x - cx) + y * y <= radius * radius * (1 + 1e-12);
+}
 
 // Highest point of the lens {|p| <= a} and {|p - (L, 0)| <= b}: the top of one disc if it lies in
 // the other, else where the two circles cross.

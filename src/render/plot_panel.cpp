@@ -37,7 +37,8 @@ Axis linearAxis(double lo, double hi, int count) {
   }
   const double step = niceStep(hi - lo, count);
   Axis axis{std::floor(lo / step) * step, std::ceil(hi / step) * step, false, {}};
-  for (double t = axis.lo; t <= axis.hi + 1e-9 * step; t += step) axis.ticks.push_back(std::abs(t) < 1e-12 * step ? 0 : t);
+  for (double t = axis.lo; t <= axis.hi + 1e-9 * step; t += step)
+    axis.ticks.push_back(std::abs(t) < 1e-12 * step ? 0 : t);
   return axis;
 }
 

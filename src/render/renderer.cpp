@@ -163,7 +163,8 @@ struct Renderer::Impl {
     // The camera looks at the sphere's centre, so its outline is a circle of radius f / sqrt(D^2 - 1)
     // about the panel centre: a quad just around it saves the shader a quarter of the panel's pixels.
     const V3 eye = view.camera.eye();
-    const double outline = view.camera.focal() / std::sqrt(std::max(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z - 1, 1e-6));
+    const double outline =
+        view.camera.focal() / std::sqrt(std::max(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z - 1, 1e-6));
     const float half = float(outline) + 2.0f;
     const P2 centre = view.camera.centre();
     ShapeBatch quad;
@@ -193,10 +194,18 @@ struct Renderer::Impl {
     const PanelContext context{frame, settings, font, rect};
     std::optional<SphereView> view;
     switch (panel.kind) {
-      case PanelKind::Linkage: drawLinkagePanel(context, batch); break;
-      case PanelKind::Sphere: view = drawSpherePanel(context, batch); break;
-      case PanelKind::Plot: drawPlotPanel(context, panel.plotIndex, batch); break;
-      case PanelKind::Text: drawTextPanel(context, batch); break;
+      case PanelKind::Linkage:
+        drawLinkagePanel(context, batch);
+        break;
+      case PanelKind::Sphere:
+        view = drawSpherePanel(context, batch);
+        break;
+      case PanelKind::Plot:
+        drawPlotPanel(context, panel.plotIndex, batch);
+        break;
+      case PanelKind::Text:
+        drawTextPanel(context, batch);
+        break;
     }
     if (view) drawSphereCached(*view, rect, frame.viewSpace);
     drawShapes(batch, view ? &view->camera : nullptr);

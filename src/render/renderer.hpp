@@ -31,14 +31,14 @@ enum class LinkageLayout { SingleRun, SideBySide, Overlay };
 
 struct RenderSettings {
   int width = 1280, height = 720;
-  std::vector<PanelSpec> panels;        // layout order
+  std::vector<PanelSpec> panels;  // layout order
   CameraSpec camera;
   LinkageLayout linkageLayout = LinkageLayout::SingleRun;
-  int linkageRun = 0;                   // for SingleRun
-  double pathFadeSeconds = 0;           // 0 = the path never fades
+  int linkageRun = 0;          // for SingleRun
+  double pathFadeSeconds = 0;  // 0 = the path never fades
   double trailFadeSeconds = 2;
   ColorRGB background{0.96f, 0.95f, 0.92f};
-  std::string resourceDir;              // folder holding shaders/ and fonts (default: the source tree)
+  std::string resourceDir;  // folder holding shaders/ and fonts (default: the source tree)
   bool antialias = true;
 };
 

@@ -59,7 +59,8 @@ ShaderProgram::ShaderProgram(const std::vector<std::string>& vertexFiles,
   if (!ok) {
     char log[4096];
     glGetProgramInfoLog(program_, sizeof log, nullptr, log);
-    throw std::runtime_error("shaders " + joined(vertexFiles) + " / " + joined(fragmentFiles) + " do not link:\n" + log);
+    throw std::runtime_error("shaders " + joined(vertexFiles) + " / " + joined(fragmentFiles) + " do not link:\n" +
+                             log);
   }
 }
 

@@ -18,10 +18,26 @@ P2 normal(P2 from, P2 to) {
   return len > 1e-6f ? P2{-d.y / len, d.x / len} : P2{0, 1};
 }
 
-ShapeVertex vertex(P2 at, P2 local, ShapeKind kind, float size, float extra, Rgba color, bool shaded,
-                   float specular, P2 axis, Occludable world) {
-  return {at.x,    at.y,    local.x, local.y, static_cast<float>(kind), size,    extra,   specular,
-          color.r, color.g, color.b, color.a, axis.x,  axis.y,  world.x, world.y, world.z, world.w,
+ShapeVertex vertex(P2 at, P2 local, ShapeKind kind, float size, float extra, Rgba color, bool shaded, float specular,
+                   P2 axis, Occludable world) {
+  return {at.x,
+          at.y,
+          local.x,
+          local.y,
+          static_cast<float>(kind),
+          size,
+          extra,
+          specular,
+          color.r,
+          color.g,
+          color.b,
+          color.a,
+          axis.x,
+          axis.y,
+          world.x,
+          world.y,
+          world.z,
+          world.w,
           shaded ? 1.0f : 0.0f};
 }
 
@@ -29,9 +45,9 @@ ShapeVertex vertex(P2 at, P2 local, ShapeKind kind, float size, float extra, Rgb
 
 void ShapeBatch::quad(const ShapeVertex corners[4]) {
   const ShapeVertex& v = corners[0];
-  const ShapeProgram program = v.kind == float(ShapeKind::Glyph)       ? ShapeProgram::Glyph
+  const ShapeProgram program = v.kind == float(ShapeKind::Glyph)  ? ShapeProgram::Glyph
                                : (v.shaded > 0.5f || v.ww > 0.5f) ? ShapeProgram::Lit
-                                                                      : ShapeProgram::Flat;
+                                                                  : ShapeProgram::Flat;
   if (segments_.empty() || segments_.back().program != program) segments_.push_back({program, vertices_.size(), 0});
   segments_.back().count += 6;
   for (int i : {0, 1, 2, 0, 2, 3}) vertices_.push_back(corners[i]);
@@ -50,10 +66,12 @@ void ShapeBatch::capsule(P2 a, P2 b, float halfWidth, Rgba color, bool shaded, f
   quad(corners);
 }
 
-void ShapeBatch::disc(P2 c, float radius, Rgba color, bool shaded, float specular, Occludable world, float worldRadius) {
+void ShapeBatch::disc(P2 c, float radius, Rgba color, bool shaded, float specular, Occludable world,
+                      float worldRadius) {
   const float e = radius + kMargin;
   auto make = [&](float dx, float dy) {
-    return vertex(c + P2{dx, dy}, {dx, dy}, ShapeKind::Disc, radius, worldRadius, color, shaded, specular, {0, 1}, world);
+    return vertex(c + P2{dx, dy}, {dx, dy}, ShapeKind::Disc, radius, worldRadius, color, shaded, specular, {0, 1},
+                  world);
   };
   const ShapeVertex corners[4] = {make(-e, -e), make(e, -e), make(e, e), make(-e, e)};
   quad(corners);

@@ -24,8 +24,8 @@ struct Occludable {
 enum class ShapeKind { Capsule = 0, Disc = 1, Glyph = 3, Rect = 4 };
 
 struct ShapeVertex {
-  float x, y;            // pixel position
-  float localX, localY;  // shape-local coordinates (pixels; texture coordinates for glyphs)
+  float x, y;                         // pixel position
+  float localX, localY;               // shape-local coordinates (pixels; texture coordinates for glyphs)
   float kind, size, extra, specular;  // size: half width / radius; extra: capsule length / ball radius (world)
   float r, g, b, a;
   float axisX, axisY;    // screen direction across a tube (for its shading)
@@ -53,8 +53,7 @@ struct ShapeSegment {
 class ShapeBatch {
  public:
   // A segment with round ends; `shaded` lights it as a cylinder.
-  void capsule(P2 a, P2 b, float halfWidth, Rgba color, bool shaded = false, float specular = 0,
-               Occludable world = {});
+  void capsule(P2 a, P2 b, float halfWidth, Rgba color, bool shaded = false, float specular = 0, Occludable world = {});
   // A disc; `shaded` lights it as a ball. With `world`, a ball of `worldRadius` about that point, hidden
   // per pixel by the sphere of the sphere panel.
   void disc(P2 centre, float radius, Rgba color, bool shaded = false, float specular = 0, Occludable world = {},

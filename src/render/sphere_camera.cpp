@@ -9,9 +9,7 @@ namespace {
 V3 operator*(double s, const V3& v) { return {s * v.x, s * v.y, s * v.z}; }
 V3 operator-(const V3& a, const V3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 double dot(const V3& a, const V3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-V3 cross(const V3& a, const V3& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
+V3 cross(const V3& a, const V3& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 V3 normalized(const V3& v) { return (1.0 / std::sqrt(dot(v, v))) * v; }
 
 }  // namespace
@@ -47,9 +45,7 @@ P2 SphereCamera::project(const V3& p) const {
           static_cast<float>(centre_.y - focal_ * dot(v, up_) / depth)};
 }
 
-double SphereCamera::pixelsPerUnitAt(const V3& p) const {
-  return focal_ / std::max(dot(p - eye_, forward_), 1e-6);
-}
+double SphereCamera::pixelsPerUnitAt(const V3& p) const { return focal_ / std::max(dot(p - eye_, forward_), 1e-6); }
 
 bool SphereCamera::inFront(const V3& p) const { return dot(p - eye_, forward_) > 1e-3; }
 

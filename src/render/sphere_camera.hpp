@@ -21,9 +21,9 @@ class SphereCamera {
   // The camera frames a sphere of radius `fitRadius` about the origin in `panel`.
   SphereCamera(const CameraSpec& spec, double time, const PixelRect& panel, double fitRadius = 1.0);
 
-  P2 project(const V3& p) const;                    // pixel position
-  double pixelsPerUnitAt(const V3& p) const;        // scale of a small object at p
-  bool inFront(const V3& p) const;                  // in front of the eye plane
+  P2 project(const V3& p) const;              // pixel position
+  double pixelsPerUnitAt(const V3& p) const;  // scale of a small object at p
+  bool inFront(const V3& p) const;            // in front of the eye plane
   V3 eye() const { return eye_; }
 
   // Shader uniforms: eye, forward * focal, right, up (world), panel centre (pixels).

@@ -24,7 +24,9 @@ bool drawable(const Vec3& p) {
 // never a line. Consecutive path samples lie a few thousandths apart at the shipped sampling; a jump is a
 // chord of nearly 2. Only the ball view can jump: other views never break a path on length.
 constexpr double kMaxPathChord = 0.5;
-double distance(const Vec3& a, const Vec3& b) { return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z)); }
+double distance(const Vec3& a, const Vec3& b) {
+  return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z));
+}
 
 // On the opaque sphere, points ride on a shell just outside it so the tube's front half is never
 // inside the sphere; lines elsewhere are not occluded.
@@ -37,9 +39,7 @@ struct Placement {
     const double s = r > 1e-12 ? (1.0 + lift) / r : 0.0;
     return {p.x * s, p.y * s, p.z * s};
   }
-  Occludable world(const V3& p) const {
-    return {float(p.x), float(p.y), float(p.z), onSphere ? 1.0f : 0.0f};
-  }
+  Occludable world(const V3& p) const { return {float(p.x), float(p.y), float(p.z), onSphere ? 1.0f : 0.0f}; }
 };
 
 float pathAlpha(const RenderSettings& settings, double age) {
@@ -47,8 +47,8 @@ float pathAlpha(const RenderSettings& settings, double age) {
   return static_cast<float>(std::clamp(1.0 - age / settings.pathFadeSeconds, 0.0, 1.0));
 }
 
-void drawPath(const RunFrame& run, const PanelContext& context, const SphereCamera& camera,
-              const Placement& placement, bool throughAntipode, ShapeBatch& batch) {
+void drawPath(const RunFrame& run, const PanelContext& context, const SphereCamera& camera, const Placement& placement,
+              bool throughAntipode, ShapeBatch& batch) {
   std::vector<PolylinePoint> points;
   points.reserve(run.path.size() + 1);
   for (std::size_t i = 0; i < run.path.size(); ++i) {
@@ -100,7 +100,8 @@ SphereView drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   SphereCamera camera(context.settings.camera, context.frame.time, context.rect);
   const Placement placement{space == ViewSpace::Sphere, kTubeRadius};
   if (space == ViewSpace::Circle) drawEquator(camera, batch);
-  for (const RunFrame& run : context.frame.runs) drawPath(run, context, camera, placement, space == ViewSpace::Ball, batch);
+  for (const RunFrame& run : context.frame.runs)
+    drawPath(run, context, camera, placement, space == ViewSpace::Ball, batch);
   for (const RunFrame& run : context.frame.runs) drawBall(run, camera, placement, batch);
   return {camera, space == ViewSpace::Sphere ? SphereLook::Opaque : SphereLook::Glass};
 }

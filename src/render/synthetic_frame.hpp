@@ -9,7 +9,7 @@ namespace sl {
 
 struct SyntheticOptions {
   int runs = 2;
-  double duration = 10;   // seconds of simulated time
+  double duration = 10;  // seconds of simulated time
   double samplesPerSecond = 60;
   bool stopSecondRun = false;  // the second run stops at half time with a reason
   ViewSpace viewSpace = ViewSpace::Sphere;

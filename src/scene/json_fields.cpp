@@ -152,8 +152,8 @@ bool JsonObject::checkRange(const std::string& key, double value, double low, do
 bool JsonObject::checkSize(const std::string& key, const Eigen::VectorXd& value, long expected,
                            const std::string& what) const {
   if (value.size() == expected) return true;
-  report(key, "found " + std::to_string(value.size()) + " numbers; expected " + std::to_string(expected) + " (" +
-                  what + ")");
+  report(key, "found " + std::to_string(value.size()) + " numbers; expected " + std::to_string(expected) + " (" + what +
+                  ")");
   return false;
 }
 

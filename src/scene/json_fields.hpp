@@ -53,6 +53,7 @@ class JsonObject {
 std::string indexPath(const std::string& path, size_t index);
 
 // A finite JSON number, or a problem recorded under path.
-std::optional<double> readNumber(const nlohmann::json& value, const std::string& path, std::vector<SceneProblem>& problems);
+std::optional<double> readNumber(const nlohmann::json& value, const std::string& path,
+                                 std::vector<SceneProblem>& problems);
 
 }  // namespace sl

@@ -1,9 +1,9 @@
 #include "scene/output_folder.hpp"
 
+#include <unistd.h>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 namespace sl {
 

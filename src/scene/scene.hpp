@@ -18,11 +18,11 @@ namespace sl {
 struct InitialSpec {
   enum class Kind { ChartCoordinates, Drag };
   Kind kind = Kind::ChartCoordinates;
-  Eigen::VectorXd coords;     // chart 0 coordinates, outermost first ((phi, t) for 4 rods)
-  Eigen::VectorXd velocity;   // their rates
-  Eigen::VectorXd dragPoint;  // a point of R^(n-1), normalised onto S^(n-2)
+  Eigen::VectorXd coords;         // chart 0 coordinates, outermost first ((phi, t) for 4 rods)
+  Eigen::VectorXd velocity;       // their rates
+  Eigen::VectorXd dragPoint;      // a point of R^(n-1), normalised onto S^(n-2)
   Eigen::VectorXd dragDirection;  // projected onto the tangent space at dragPoint
-  bool unitSpeed = false;     // rescale the velocity so that g(v, v) = 1
+  bool unitSpeed = false;         // rescale the velocity so that g(v, v) = 1
 };
 
 struct RunSpec {
@@ -42,21 +42,21 @@ struct PlotSpec {
 struct OutputSpec {
   int fps = 30;
   int width = 1280, height = 720;
-  std::string folder;   // default renders/<name>, relative to the working directory
-  bool png = true;      // write PNG frames
-  std::string video;    // an mp4 path, empty = no video
+  std::string folder;  // default renders/<name>, relative to the working directory
+  bool png = true;     // write PNG frames
+  std::string video;   // an mp4 path, empty = no video
 };
 
 struct ViewSpec {
-  RenderSettings render;            // panels, camera, linkage layout, fades (width/height from output)
-  std::vector<PlotSpec> plots;      // one per Plot panel, in layout order (PanelSpec::plotIndex)
-  std::vector<int> trailHinges;     // 1-based hinge numbers with fading trails
-  int pathSamplesPerFrame = 4;      // sphere-path points recorded per frame interval
+  RenderSettings render;         // panels, camera, linkage layout, fades (width/height from output)
+  std::vector<PlotSpec> plots;   // one per Plot panel, in layout order (PanelSpec::plotIndex)
+  std::vector<int> trailHinges;  // 1-based hinge numbers with fading trails
+  int pathSamplesPerFrame = 4;   // sphere-path points recorded per frame interval
 };
 
 struct Scene {
-  std::string file;   // where it was loaded from (for messages)
-  std::string name;   // also the default output folder name
+  std::string file;  // where it was loaded from (for messages)
+  std::string name;  // also the default output folder name
   std::string title;
   Chain chain;
   InitialSpec initial;

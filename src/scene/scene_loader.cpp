@@ -29,10 +29,9 @@ std::string joined(const std::vector<std::string>& names) {
 
 // A scene name becomes a folder name: keep it to characters that are safe everywhere.
 bool isSafeName(const std::string& name) {
-  return !name.empty() && name != "." && name != ".." &&
-         std::all_of(name.begin(), name.end(), [](char c) {
-           return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.';
-         });
+  return !name.empty() && name != "." && name != ".." && std::all_of(name.begin(), name.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.';
+  });
 }
 
 void readLinkage(const json& value, Scene& scene, const SceneLimits& limits, std::vector<SceneProblem>& problems) {
@@ -96,7 +95,8 @@ void readDrag(const JsonObject& initial, Scene& scene, std::vector<SceneProblem>
     const Eigen::VectorXd x = spec.dragPoint.normalized();
     const Eigen::VectorXd tangent = spec.dragDirection - x * x.dot(spec.dragDirection);
     if (spec.unitSpeed && tangent.norm() <= 1e-12 * std::max(1.0, spec.dragDirection.norm())) {
-      drag.report("direction", "has no component tangent to the sphere at the point; unit_speed needs a release direction");
+      drag.report("direction",
+                  "has no component tangent to the sphere at the point; unit_speed needs a release direction");
     }
   }
 }
@@ -109,7 +109,8 @@ void readInitial(const json& value, Scene& scene, std::vector<SceneProblem>& pro
   const bool hasDrag = initial.has("drag");
   const bool hasCoords = initial.has("coords") || initial.has("velocity");
   if (hasDrag && hasCoords) {
-    initial.report("drag", "given together with coords/velocity; expected one start: either coords and velocity, or drag");
+    initial.report("drag",
+                   "given together with coords/velocity; expected one start: either coords and velocity, or drag");
     return;
   }
   if (hasDrag) {
@@ -134,7 +135,8 @@ void readInitial(const json& value, Scene& scene, std::vector<SceneProblem>& pro
 void readWatchdog(const JsonObject& run, RunConfig& config, std::vector<SceneProblem>& problems) {
   const JsonObject watchdog(*run.member("watchdog"), run.pathOf("watchdog"), problems,
                             {"max_energy_drift", "max_rod_length_error", "max_steps"});
-  if (const auto drift = watchdog.number("max_energy_drift"); drift && watchdog.checkPositive("max_energy_drift", *drift)) {
+  if (const auto drift = watchdog.number("max_energy_drift");
+      drift && watchdog.checkPositive("max_energy_drift", *drift)) {
     config.maxRelativeEnergyDrift = *drift;
   }
   if (const auto error = watchdog.number("max_rod_length_error");
@@ -159,7 +161,8 @@ std::optional<ColorRGB> readColor(const JsonObject& object, const std::string& k
 
 RunSpec readRun(const json& value, const std::string& path, const Scene& scene, const SceneLimits& limits,
                 std::vector<SceneProblem>& problems) {
-  const JsonObject run(value, path, problems, {"name", "method", "integrator", "tolerance", "step", "color", "watchdog"});
+  const JsonObject run(value, path, problems,
+                       {"name", "method", "integrator", "tolerance", "step", "color", "watchdog"});
   RunSpec spec;
   spec.name = run.string("name", true).value_or("");
   if (run.has("name") && spec.name.empty()) run.report("name", "is empty; expected a name shown in the panels");
@@ -172,11 +175,12 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
     // The published methods are the spec's 4-rod, unit-mass ones; the simulation refuses them otherwise,
     // so say so here, with the JSON path, before any work.
     const Chain& chain = scene.chain;
-    const bool specsChain = chain.rods == 4 && (chain.hingeMasses.array() == 1.0).all() &&
-                            (chain.rodMasses.array() == 0.0).all();
+    const bool specsChain =
+        chain.rods == 4 && (chain.hingeMasses.array() == 1.0).all() && (chain.rodMasses.array() == 0.0).all();
     if (method->ends_with("-fd") && !specsChain) {
-      run.report("method", "found \"" + *method + "\", the spec's published method for 4 rods with unit hinge masses and "
-                           "massless rods; this chain differs: expected christoffel, embedded or ambient");
+      run.report("method", "found \"" + *method +
+                               "\", the spec's published method for 4 rods with unit hinge masses and "
+                               "massless rods; this chain differs: expected christoffel, embedded or ambient");
     }
   }
   if (const auto integrator = run.string("integrator")) {
@@ -204,10 +208,12 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
   const bool adaptive = contains(limits.adaptiveIntegrators, spec.config.integrator);
   const bool knownIntegrator = contains(limits.integrators, spec.config.integrator);
   if (knownIntegrator && adaptive && run.has("step")) {
-    run.report("step", "is not used by the adaptive integrator \"" + spec.config.integrator + "\"; expected \"tolerance\" instead");
+    run.report("step", "is not used by the adaptive integrator \"" + spec.config.integrator +
+                           "\"; expected \"tolerance\" instead");
   }
   if (knownIntegrator && !adaptive && run.has("tolerance")) {
-    run.report("tolerance", "is not used by the fixed-step integrator \"" + spec.config.integrator + "\"; expected \"step\" instead");
+    run.report("tolerance", "is not used by the fixed-step integrator \"" + spec.config.integrator +
+                                "\"; expected \"step\" instead");
   }
   spec.color = readColor(run, "color");
   if (run.has("watchdog")) readWatchdog(run, spec.config, problems);
@@ -307,16 +313,22 @@ Scene parseScene(const std::string& text, const std::string& file, const SceneLi
 
   scene.name = top.string("name", true).value_or("");
   if (top.has("name") && !isSafeName(scene.name)) {
-    top.report("name", "found \"" + scene.name + "\"; expected a non-empty name of letters, digits, '-', '_' or '.' (it names the output folder)");
+    top.report("name",
+               "found \"" + scene.name +
+                   "\"; expected a non-empty name of letters, digits, '-', '_' or '.' (it names the output folder)");
   }
   scene.title = top.string("title").value_or(scene.name);
   if (const auto duration = top.number("duration", true); duration && top.checkPositive("duration", *duration)) {
     scene.duration = *duration;
   }
-  if (top.has("linkage")) readLinkage(*top.member("linkage"), scene, limits, problems);
-  else top.reportMissing("linkage", "an object with rods and L");
-  if (top.has("initial")) readInitial(*top.member("initial"), scene, problems);
-  else top.reportMissing("initial", "an object with coords and velocity, or drag");
+  if (top.has("linkage"))
+    readLinkage(*top.member("linkage"), scene, limits, problems);
+  else
+    top.reportMissing("linkage", "an object with rods and L");
+  if (top.has("initial"))
+    readInitial(*top.member("initial"), scene, problems);
+  else
+    top.reportMissing("initial", "an object with coords and velocity, or drag");
   readRuns(top.member("runs"), scene, limits, problems);
   readOutput(top.has("output") ? *top.member("output") : json::object(), scene, limits, problems);
   for (SceneProblem& problem : checkFrameCount(scene.duration, scene.output.fps, limits)) problems.push_back(problem);

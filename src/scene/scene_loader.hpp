@@ -15,8 +15,8 @@ struct SceneLimits {
   std::vector<std::string> methods;
   std::vector<std::string> integrators;
   std::vector<std::string> adaptiveIntegrators;  // these use "tolerance", the others "step"
-  int maxImageSize = 4096;        // largest width or height
-  long maxFrames = 1'000'000;     // about 9 hours at 30 fps: anything longer is a typo
+  int maxImageSize = 4096;                       // largest width or height
+  long maxFrames = 1'000'000;                    // about 9 hours at 30 fps: anything longer is a typo
   int maxRods = 12;
 };
 

@@ -47,7 +47,8 @@ void addPanel(const json& value, const std::string& path, Scene& scene, std::vec
   } else {
     const JsonObject object(value, path, problems, {"panel", "plot", "scale", "rect"});
     if (!object.isObject()) return;
-    if (const auto name = object.string("panel", true)) kind = pickName(object.pathOf("panel"), *name, kPanelNames, problems);
+    if (const auto name = object.string("panel", true))
+      kind = pickName(object.pathOf("panel"), *name, kPanelNames, problems);
     if (const auto name = object.string("plot")) {
       const int plotKind = pickName(object.pathOf("plot"), *name, kPlotNames, problems);
       if (plotKind >= 0) plot.kind = plotKind == 0 ? PlotKind::Divergence : PlotKind::EnergyError;
@@ -56,7 +57,8 @@ void addPanel(const json& value, const std::string& path, Scene& scene, std::vec
       const int logOrLinear = pickName(object.pathOf("scale"), *scale, {"log", "linear"}, problems);
       plot.logY = logOrLinear != 1;
     }
-    if (const auto rect = object.numbers("rect"); rect && object.checkSize("rect", *rect, 4, "x, y, width, height as fractions")) {
+    if (const auto rect = object.numbers("rect");
+        rect && object.checkSize("rect", *rect, 4, "x, y, width, height as fractions")) {
       if (rect->minCoeff() < 0 || rect->maxCoeff() > 1 || (*rect)(2) <= 0 || (*rect)(3) <= 0) {
         object.report("rect", "expected fractions of the frame from 0 to 1, with positive width and height");
       }
@@ -129,8 +131,8 @@ void readTrails(const JsonObject& view, Scene& scene) {
     const double hinge = (*hinges)(i);
     // Range first: converting a double beyond int's range to int is undefined behaviour.
     if (!(hinge >= 1 && hinge <= count) || hinge != std::floor(hinge)) {
-      view.report("trails", "found " + describeJson(json(hinge)) + "; expected hinge numbers from 1 to n-1 = " +
-                                std::to_string(count));
+      view.report("trails", "found " + describeJson(json(hinge)) +
+                                "; expected hinge numbers from 1 to n-1 = " + std::to_string(count));
       return;
     }
     scene.view.trailHinges.push_back(static_cast<int>(hinge));
@@ -148,7 +150,8 @@ void readFades(const JsonObject& view, Scene& scene) {
   }
   if (const auto samples = view.integer("path_samples_per_frame")) {
     if (*samples < 1 || *samples > 100) {
-      view.report("path_samples_per_frame", "found " + std::to_string(*samples) + "; expected an integer from 1 to 100");
+      view.report("path_samples_per_frame",
+                  "found " + std::to_string(*samples) + "; expected an integer from 1 to 100");
     } else {
       scene.view.pathSamplesPerFrame = static_cast<int>(*samples);
     }
@@ -171,7 +174,8 @@ void readView(const json& value, Scene& scene, std::vector<SceneProblem>& proble
   readTrails(view, scene);
   readFades(view, scene);
   if (const auto rgb = view.numbers("background"); rgb && view.checkSize("background", *rgb, 3, "red, green, blue")) {
-    if (rgb->minCoeff() < 0 || rgb->maxCoeff() > 1) view.report("background", "expected red, green, blue each from 0 to 1");
+    if (rgb->minCoeff() < 0 || rgb->maxCoeff() > 1)
+      view.report("background", "expected red, green, blue each from 0 to 1");
     render.background = {float((*rgb)(0)), float((*rgb)(1)), float((*rgb)(2))};
   }
   render.antialias = view.boolean("antialias").value_or(render.antialias);

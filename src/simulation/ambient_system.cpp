@@ -18,7 +18,8 @@ double chartZeroAngleForUnwrapping(const Chain& chain, const Eigen::Matrix2Xd& h
   // (v0, v1) = (side * sqrt(alpha3^2 - theta3^2), theta3), theta3 = that chain's last rod angle and side =
   // which side of 0->p2 the elbow p1 lies on (linkage/chart.hpp). O(1) for any n, instead of inverting the
   // whole chart; accurate to ~1e-8 near the seams, plenty to choose the branch of t.
-  const Eigen::Vector2d base = chain.rods == 3 ? Eigen::Vector2d(chain.baseLength, 0.0) : Eigen::Vector2d(hinges.col(2));
+  const Eigen::Vector2d base =
+      chain.rods == 3 ? Eigen::Vector2d(chain.baseLength, 0.0) : Eigen::Vector2d(hinges.col(2));
   const double d = base.norm();
   const Eigen::Vector2d u = base / d, p1 = hinges.col(0), p2 = hinges.col(1);
   const Eigen::Vector2d inFrame(u.x() * p2.x() + u.y() * p2.y(), -u.y() * p2.x() + u.x() * p2.y());

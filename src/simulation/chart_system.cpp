@@ -170,9 +170,11 @@ StepSummary ChartSystem::summarize(const State& y, double previousT) const {
   const Eigen::VectorXd v = Eigen::Map<const Eigen::VectorXd>(y.data() + k, k);
   const Eigen::VectorXd stacked = chartJacobian(chain_, axes_, c) * v;
   StepSummary summary;
-  summary.energy = kineticEnergy(ambientMassMatrix(chain_), Eigen::Map<const Eigen::Matrix2Xd>(stacked.data(), 2, chain_.hingeCount()));
+  summary.energy = kineticEnergy(ambientMassMatrix(chain_),
+                                 Eigen::Map<const Eigen::Matrix2Xd>(stacked.data(), 2, chain_.hingeCount()));
   summary.rodLengthError = rodLengthError(chain_, hingePositionsInChart<double>(chain_, axes_, c));
-  summary.chartZeroT = chart_ == 0 ? c(k - 1) : coordinatesFromSpherePoint(spherePointInChart<double>(axes_, c), previousT)(k - 1);
+  summary.chartZeroT =
+      chart_ == 0 ? c(k - 1) : coordinatesFromSpherePoint(spherePointInChart<double>(axes_, c), previousT)(k - 1);
   return summary;
 }
 

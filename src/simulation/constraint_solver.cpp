@@ -111,7 +111,8 @@ void ConstraintSolver::solveKkt(const Eigen::VectorXd& rhs, Eigen::Matrix2Xd& co
         K.coeffRef(Kkt::mu(r), Kkt::x(r + 1, xy)) = K.coeffRef(Kkt::x(r + 1, xy), Kkt::mu(r)) = rods_(xy, r);
     }
   kkt_->lu.factorize(K);
-  if (kkt_->lu.info() != Eigen::Success) throw std::runtime_error("rod constraints are degenerate (KKT factorisation failed)");
+  if (kkt_->lu.info() != Eigen::Success)
+    throw std::runtime_error("rod constraints are degenerate (KKT factorisation failed)");
   kkt_->rhs.setZero();
   for (Eigen::Index r = 0; r < n; ++r) kkt_->rhs(Kkt::mu(r)) = rhs(r);
   kkt_->solution = kkt_->lu.solve(kkt_->rhs);

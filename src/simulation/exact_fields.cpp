@@ -36,7 +36,8 @@ struct NestedJacobian {
     VectorX<Outer> c(k);
     for (Eigen::Index i = 0; i < k; ++i) {
       Eigen::Matrix<Inner, K, 1> outerSeed(k);
-      for (Eigen::Index b = 0; b < k; ++b) outerSeed(b) = Inner(b == i ? 1.0 : 0.0, Eigen::Matrix<double, K, 1>::Zero(k));
+      for (Eigen::Index b = 0; b < k; ++b)
+        outerSeed(b) = Inner(b == i ? 1.0 : 0.0, Eigen::Matrix<double, K, 1>::Zero(k));
       c(i) = Outer(Inner(coords(i), k, i), outerSeed);
     }
     const HingeMatrix<Outer> hinges = hingePositionsInChart<Outer>(chain, axes, c);
@@ -66,7 +67,8 @@ struct NestedJacobian {
       for (Eigen::Index c = b; c < k; ++c) {
         const Inner hbc = massInnerProduct(mass, q[static_cast<size_t>(b)], q[static_cast<size_t>(c)], k);
         h(b, c) = h(c, b) = hbc.value();
-        for (Eigen::Index a = 0; a < k; ++a) dh[static_cast<size_t>(a)](b, c) = dh[static_cast<size_t>(a)](c, b) = hbc.derivatives()(a);
+        for (Eigen::Index a = 0; a < k; ++a)
+          dh[static_cast<size_t>(a)](b, c) = dh[static_cast<size_t>(a)](c, b) = hbc.derivatives()(a);
       }
   }
 
@@ -99,7 +101,8 @@ std::vector<Eigen::MatrixXd> symbols(const Chain& chain, const std::vector<int>&
     for (Eigen::Index j = 0; j < k; ++j)
       for (Eigen::Index m = 0; m < k; ++m)
         lowered[static_cast<size_t>(l)](j, m) =
-            0.5 * (dh[static_cast<size_t>(j)](l, m) + dh[static_cast<size_t>(m)](l, j) - dh[static_cast<size_t>(l)](j, m));
+            0.5 *
+            (dh[static_cast<size_t>(j)](l, m) + dh[static_cast<size_t>(m)](l, j) - dh[static_cast<size_t>(l)](j, m));
   std::vector<Eigen::MatrixXd> gamma(static_cast<size_t>(k), Eigen::MatrixXd(k, k));
   Eigen::VectorXd column(k);
   for (Eigen::Index j = 0; j < k; ++j)

@@ -12,7 +12,8 @@ namespace sl {
 namespace {
 void requireSize(const Eigen::VectorXd& v, Eigen::Index size, const std::string& what) {
   if (v.size() != size)
-    throw std::invalid_argument(what + " needs " + std::to_string(size) + " components, got " + std::to_string(v.size()));
+    throw std::invalid_argument(what + " needs " + std::to_string(size) + " components, got " +
+                                std::to_string(v.size()));
   if (!v.allFinite()) throw std::invalid_argument(what + " has a non-finite component");
 }
 }  // namespace
@@ -50,7 +51,8 @@ void validateInitialState(const Chain& chain, const InitialState& start) {
   requireSize(start.spherePoint, chain.rods - 1, "initial sphere point");
   requireSize(start.sphereVelocity, chain.rods - 1, "initial sphere velocity");
   if (std::abs(start.spherePoint.norm() - 1.0) > 1e-9)
-    throw std::invalid_argument("initial sphere point must be a unit vector, |x| = " + std::to_string(start.spherePoint.norm()));
+    throw std::invalid_argument("initial sphere point must be a unit vector, |x| = " +
+                                std::to_string(start.spherePoint.norm()));
   if (std::abs(start.spherePoint.dot(start.sphereVelocity)) > 1e-9 * (1.0 + start.sphereVelocity.norm()))
     throw std::invalid_argument("initial sphere velocity must be tangent (x . xdot = 0)");
 }

@@ -45,9 +45,9 @@ std::array<double, 3> stencilOf(double x, double eps) { return {x, x + eps, x - 
 
 // ---- christoffel-fd (spec section 4): the Christoffel algebra on the metric stencil -----------------
 
-Eigen::Vector2d christoffelFdFromMetrics(const Eigen::Matrix2d& m, const Eigen::Matrix2d& mPh, const Eigen::Matrix2d& mPl,
-                                         const Eigen::Matrix2d& mTh, const Eigen::Matrix2d& mTl, double eps,
-                                         const Eigen::Vector2d& rates) {
+Eigen::Vector2d christoffelFdFromMetrics(const Eigen::Matrix2d& m, const Eigen::Matrix2d& mPh,
+                                         const Eigen::Matrix2d& mPl, const Eigen::Matrix2d& mTh,
+                                         const Eigen::Matrix2d& mTl, double eps, const Eigen::Vector2d& rates) {
   // Divisions by a common denominator as one reciprocal and products (within an ulp of the quotients).
   const double inv2eps = 1 / (2 * eps);
   const double E = m(0, 0), F = m(0, 1), G = m(1, 1);
@@ -185,8 +185,8 @@ Eigen::Vector2d christoffelFdAcceleration(double L, const Eigen::Vector2d& coord
   const double thetaInCentre = outer[0].alpha_in * t[0].s;
   const Turn thetaInCentreTurn = turnOf(thetaInCentre);
   auto metricAt = [&](int k, int j) {  // u3 = e^(i (R + theta_in)) = e^(i R) e^(i theta_in)
-    const Turn thetaIn = k == 0 && j == 0 ? thetaInCentreTurn
-                                          : turnAt(outer[k].alpha_in * t[j].s, thetaInCentreTurn, thetaInCentre);
+    const Turn thetaIn =
+        k == 0 && j == 0 ? thetaInCentreTurn : turnAt(outer[k].alpha_in * t[j].s, thetaInCentreTurn, thetaInCentre);
     return publishedInnerLevel(outer[k], t[j].c, t[j].s, rotate(towardP3[k], Eigen::Vector2d(thetaIn.c, thetaIn.s)));
   };
   return christoffelFdFromMetrics(metricAt(0, 0), metricAt(1, 0), metricAt(2, 0), metricAt(0, 1), metricAt(0, 2), eps,
@@ -212,7 +212,9 @@ Vector6d fourRodHinges(double L, double phi, double t) {
   outer.alphaIn = chainAmplitude(3, outer.d);
   const double sinT = std::sin(t);
   const double thetaIn = outer.alphaIn * sinT;
-  const FourRodInnerTrig inner{{std::cos(t), sinT}, turnOf(thetaIn), std::sin(0.5 * thetaIn),
+  const FourRodInnerTrig inner{{std::cos(t), sinT},
+                               turnOf(thetaIn),
+                               std::sin(0.5 * thetaIn),
                                sinc(0.5 * outer.alphaIn * (1 + sinT)) * sinc(0.5 * outer.alphaIn * (1 - sinT))};
   const ElbowRadicand radicand = elbowRadicand(outer, inner);
   return fourRodInner(outer, inner, std::sqrt(radicand.numerator / radicand.denominator));

@@ -15,7 +15,8 @@
 namespace sl {
 
 // (phiddot, tddot) from (phi, t) and (phidot, tdot).
-Eigen::Vector2d christoffelFdAcceleration(double baseLength, const Eigen::Vector2d& coords, const Eigen::Vector2d& rates);
+Eigen::Vector2d christoffelFdAcceleration(double baseLength, const Eigen::Vector2d& coords,
+                                          const Eigen::Vector2d& rates);
 Eigen::Vector2d embeddedFdAcceleration(double baseLength, const Eigen::Vector2d& coords, const Eigen::Vector2d& rates);
 
 Eigen::Vector2d christoffelFdAccelerationStencilByStencil(double baseLength, const Eigen::Vector2d& coords,

@@ -34,13 +34,16 @@ inline Turn turnAt(double angle, const Turn& centre, double centreAngle) {
 }
 
 // sinc(x) given sin x: its Taylor series on |x| < 0.5 (terms to x^14, which is 4.7e-17 at 0.5; the next,
-// x^16/17!, is below 5e-20), where sin x obtained by angle addition may have lost digits to cancellation, else sin x / x.
-// Both branches are within an ulp or two of sinc(x) (linkage/smooth_functions.hpp).
+// x^16/17!, is below 5e-20), where sin x obtained by angle addition may have lost digits to cancellation, else sin x /
+// x. Both branches are within an ulp or two of sinc(x) (linkage/smooth_functions.hpp).
 inline double sincFromSine(double x, double sinX) {
   if (std::abs(x) >= 0.5) return sinX / x;
   const double x2 = x * x;
-  return 1 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040 + x2 * (1.0 / 362880 + x2 * (-1.0 / 39916800 +
-         x2 * (1.0 / 6227020800.0 + x2 * (-1.0 / 1307674368000.0)))))));
+  return 1 + x2 * (-1.0 / 6 +
+                   x2 * (1.0 / 120 +
+                         x2 * (-1.0 / 5040 +
+                               x2 * (1.0 / 362880 + x2 * (-1.0 / 39916800 + x2 * (1.0 / 6227020800.0 +
+                                                                                  x2 * (-1.0 / 1307674368000.0)))))));
 }
 
 // sinc(a) sinc(b) given sin a and sin b: one division for both where neither takes the series.

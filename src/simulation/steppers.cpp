@@ -76,8 +76,10 @@ class DenseOutput : public Stepper {
   const State& endState() const override { return dense_.current_state(); }
   void stateAt(double t, State& y) override {
     y.resize(dense_.current_state().size());
-    if (t == t1_) y = dense_.current_state();  // exact, also before the first step
-    else dense_.calc_state(t, y);
+    if (t == t1_)
+      y = dense_.current_state();  // exact, also before the first step
+    else
+      dense_.calc_state(t, y);
   }
 
  private:
@@ -152,7 +154,8 @@ std::unique_ptr<Stepper> makeStepper(const std::string& integrator, double toler
     // control_interpolation: the error of the dense output itself enters the step control, so that samples
     // between the (long) extrapolation steps are as accurate as the steps.
     return dense(odeint::bulirsch_stoer_dense_out<State>(tolerance, tolerance, 1.0, 1.0, 0.0, true), firstStep);
-  throw std::invalid_argument("unknown integrator '" + integrator + "' (expected rk4, dopri5, rkf78 or bulirsch-stoer)");
+  throw std::invalid_argument("unknown integrator '" + integrator +
+                              "' (expected rk4, dopri5, rkf78 or bulirsch-stoer)");
 }
 
 }  // namespace sl

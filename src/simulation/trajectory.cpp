@@ -54,10 +54,12 @@ void validateConfig(const RunConfig& config) {
     throw std::invalid_argument("unknown method '" + config.method +
                                 "' (expected christoffel-fd, embedded-fd, christoffel, embedded or ambient)");
   if (std::find(integrators.begin(), integrators.end(), config.integrator) == integrators.end())
-    throw std::invalid_argument("unknown integrator '" + config.integrator + "' (expected rk4, dopri5, rkf78 or bulirsch-stoer)");
+    throw std::invalid_argument("unknown integrator '" + config.integrator +
+                                "' (expected rk4, dopri5, rkf78 or bulirsch-stoer)");
   if (!(config.tolerance > 0) || !std::isfinite(config.tolerance))
     throw std::invalid_argument("tolerance must be positive and finite");
-  if (!(config.step > 0) || !std::isfinite(config.step)) throw std::invalid_argument("step must be positive and finite");
+  if (!(config.step > 0) || !std::isfinite(config.step))
+    throw std::invalid_argument("step must be positive and finite");
   if (!(config.maxRelativeEnergyDrift > 0) || !(config.maxRodLengthError > 0))
     throw std::invalid_argument("watchdog limits must be positive");
   if (config.maxSteps <= 0) throw std::invalid_argument("maxSteps must be positive");
@@ -76,7 +78,9 @@ std::string formatTime(double t) {
 
 }  // namespace
 
-std::vector<std::string> methodNames() { return {"christoffel-fd", "embedded-fd", "christoffel", "embedded", "ambient"}; }
+std::vector<std::string> methodNames() {
+  return {"christoffel-fd", "embedded-fd", "christoffel", "embedded", "ambient"};
+}
 std::vector<std::string> integratorNames() { return stepperNames(); }
 bool integratorIsAdaptive(const std::string& integrator) { return integrator != "rk4"; }
 
@@ -94,13 +98,14 @@ struct Trajectory::Impl {
   std::optional<StopInfo> stop;
   InvariantExtremes extremes;
 
-  void halt(const std::string& reason, double time, const std::string& detail) { stop = StopInfo{reason, time, detail}; }
+  void halt(const std::string& reason, double time, const std::string& detail) {
+    stop = StopInfo{reason, time, detail};
+  }
 
   // One integration step with every watchdog; on failure the run stops at the step's start time.
   void advance() {
     const double t0 = stepper->endTime();
-    if (steps >= config.maxSteps)
-      return halt("max-steps", t0, "reached maxSteps = " + std::to_string(config.maxSteps));
+    if (steps >= config.maxSteps) return halt("max-steps", t0, "reached maxSteps = " + std::to_string(config.maxSteps));
     State y = stepper->endState();
     if (system->adjust(y)) stepper->initialize(*system, y, t0);
     // A failed step is rolled back: the run ends on its last good state, which stays sampleable at the
@@ -118,16 +123,21 @@ struct Trajectory::Impl {
     const State& end = stepper->endState();
     const double t1 = stepper->endTime();
     if (!allFinite(end) || !std::isfinite(t1))
-      return haltAtLastGoodState("non-finite", "state became non-finite in the step from t = " + formatTime(t0) + "; last good state " + system->describe(y));
+      return haltAtLastGoodState("non-finite", "state became non-finite in the step from t = " + formatTime(t0) +
+                                                   "; last good state " + system->describe(y));
     if (!(t1 - t0 > minimumRelativeStep * std::max(1.0, std::abs(t0))))
-      return haltAtLastGoodState("step-size-collapse", "step size " + formatTime(t1 - t0) + " at t = " + formatTime(t0));
-    if (const auto failure = system->inspect(end)) return haltAtLastGoodState(failure->reason, failure->detail + " at t = " + formatTime(t1));
+      return haltAtLastGoodState("step-size-collapse",
+                                 "step size " + formatTime(t1 - t0) + " at t = " + formatTime(t0));
+    if (const auto failure = system->inspect(end))
+      return haltAtLastGoodState(failure->reason, failure->detail + " at t = " + formatTime(t1));
     const StepSummary summary = system->summarize(end, chartZeroTAtEnd);
     const double drift = std::abs(summary.energy - initialEnergy) / initialEnergy;
     if (!(drift <= config.maxRelativeEnergyDrift))
-      return haltAtLastGoodState("energy-blow-up", "relative energy drift " + formatTime(drift) + " at t = " + formatTime(t1));
+      return haltAtLastGoodState("energy-blow-up",
+                                 "relative energy drift " + formatTime(drift) + " at t = " + formatTime(t1));
     if (!(summary.rodLengthError <= config.maxRodLengthError))
-      return haltAtLastGoodState("rod-length", "rod-length error " + formatTime(summary.rodLengthError) + " at t = " + formatTime(t1));
+      return haltAtLastGoodState(
+          "rod-length", "rod-length error " + formatTime(summary.rodLengthError) + " at t = " + formatTime(t1));
     extremes.maxRelativeEnergyDrift = std::max(extremes.maxRelativeEnergyDrift, drift);
     extremes.maxRodLengthError = std::max(extremes.maxRodLengthError, summary.rodLengthError);
     chartZeroTAtStart = chartZeroTAtEnd;
@@ -164,7 +174,8 @@ Trajectory::Trajectory(const Chain& chain, const InitialState& start, const RunC
   run.system = std::make_unique<CountingSystem>(makeSystem(chain, start, config));
   run.stepper = makeStepper(config.integrator, config.tolerance, config.step);
   run.start = run.system->initialState();
-  const StepSummary summary = run.system->summarize(run.start, start.spherePoint.size() >= 2 ? std::atan2(start.spherePoint(1), start.spherePoint(0)) : 0.0);
+  const StepSummary summary = run.system->summarize(
+      run.start, start.spherePoint.size() >= 2 ? std::atan2(start.spherePoint(1), start.spherePoint(0)) : 0.0);
   run.initialEnergy = summary.energy;
   if (!(run.initialEnergy > 0)) throw std::invalid_argument("the initial velocity is zero: nothing moves");
   run.chartZeroTAtStart = run.chartZeroTAtEnd = summary.chartZeroT;

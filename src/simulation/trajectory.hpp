@@ -24,10 +24,10 @@ struct RunConfig {
   // Default: the chart-free ambient method with RKF 7(8) at 1e-14: hinge positions within 1e-10 of the
   // reference starts over T = 20, poles included, and relative energy drift below 1e-12 (at 1e-13 the
   // drift is 2.5e-12), for about 1.3x the steps of 1e-13 (docs/methods.md).
-  std::string method = "ambient";    // christoffel-fd | embedded-fd | christoffel | embedded | ambient
-  std::string integrator = "rkf78";  // rk4 | dopri5 | rkf78 | bulirsch-stoer
-  double tolerance = 1e-14;          // adaptive integrators: relative and absolute
-  double step = 0.01;                // fixed-step integrators
+  std::string method = "ambient";        // christoffel-fd | embedded-fd | christoffel | embedded | ambient
+  std::string integrator = "rkf78";      // rk4 | dopri5 | rkf78 | bulirsch-stoer
+  double tolerance = 1e-14;              // adaptive integrators: relative and absolute
+  double step = 0.01;                    // fixed-step integrators
   double maxRelativeEnergyDrift = 1e-2;  // watchdog: |E - E0| / E0 beyond this stops the run
   double maxRodLengthError = 1e-6;       // watchdog
   long maxSteps = 50'000'000;            // watchdog: bounds the work of any run
@@ -35,19 +35,20 @@ struct RunConfig {
 
 struct Sample {
   double time = 0;
-  Eigen::VectorXd coords;        // chart coordinates of the spec's chart, outermost first; t unwrapped
-  Eigen::VectorXd rates;         // their time derivatives (may be non-finite at a pole of the chart)
-  Eigen::VectorXd spherePoint;   // x in S^(n-2), R^(n-1)
+  Eigen::VectorXd coords;          // chart coordinates of the spec's chart, outermost first; t unwrapped
+  Eigen::VectorXd rates;           // their time derivatives (may be non-finite at a pole of the chart)
+  Eigen::VectorXd spherePoint;     // x in S^(n-2), R^(n-1)
   Eigen::VectorXd sphereVelocity;  // xdot, tangent at x (chart-free velocity: restarts a run exactly)
-  Eigen::Matrix2Xd hinges;       // interior hinges p1..p(n-1)
+  Eigen::Matrix2Xd hinges;         // interior hinges p1..p(n-1)
   Eigen::Matrix2Xd hingeVelocities;
-  double energy = 0;             // (1/2) g(v, v)
+  double energy = 0;  // (1/2) g(v, v)
   double relativeEnergyDrift = 0;
-  double rodLengthError = 0;     // max_k | |p_k - p_(k-1)| - 1 |
+  double rodLengthError = 0;  // max_k | |p_k - p_(k-1)| - 1 |
 };
 
 struct StopInfo {
-  std::string reason;  // non-finite | pole-fold-back | pole-singularity | energy-blow-up | step-size-collapse | rod-length | max-steps
+  std::string reason;  // non-finite | pole-fold-back | pole-singularity | energy-blow-up | step-size-collapse |
+                       // rod-length | max-steps
   double time = 0;     // last good time
   std::string detail;  // human-readable: where and what
 };

@@ -94,7 +94,8 @@ TrajectoryCsv readTrajectoryCsv(std::istream& in, const std::string& sourceName)
   std::string line;
   if (!std::getline(in, line)) throw std::runtime_error(sourceName + ": empty file, expected a trajectory CSV header");
   csv.columns = splitFields(line);
-  if (csv.columns.size() < 4 || csv.columns.front() != "run" || csv.columns[1] != "time" || csv.columns.back() != "status")
+  if (csv.columns.size() < 4 || csv.columns.front() != "run" || csv.columns[1] != "time" ||
+      csv.columns.back() != "status")
     throw std::runtime_error(sourceName + ":1: expected a header 'run,time,...,status', got '" + line + "'");
   long lineNumber = 1;
   while (std::getline(in, line)) {

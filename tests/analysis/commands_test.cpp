@@ -2,8 +2,8 @@
 
 #include <filesystem>
 
-#include <CLI/CLI.hpp>
 #include <gtest/gtest.h>
+#include <CLI/CLI.hpp>
 
 #include "analysis/commands.hpp"
 #include "analysis/csv_table.hpp"
@@ -35,8 +35,9 @@ TEST(StabilityCommand, WritesTheCsvAndSummaryOfASweep) {
 
 TEST(StabilityCommand, TheLastShardMergesAutomatically) {
   const std::string out = sl::testing::freshTestFolder("out");
-  const std::vector<std::string> common = {"stability", "--kind", "length", "--grid", "2", "--duration", "0.3",
-                                           "--methods", "ambient", "--no-charts", "--quiet", "--out", out};
+  const std::vector<std::string> common = {"stability",  "--kind", "length",    "--grid",  "2",
+                                           "--duration", "0.3",    "--methods", "ambient", "--no-charts",
+                                           "--quiet",    "--out",  out};
   auto withShard = [&](const std::string& shard) {
     auto arguments = common;
     arguments.insert(arguments.end(), {"--shard", shard});
@@ -54,7 +55,8 @@ TEST(StabilityCommand, RefusesUnknownKindsMethodsAndShards) {
   EXPECT_THROW(parse({"stability", "--kind", "poles", "--out", out}), CLI::ValidationError);
   EXPECT_THROW(parse({"stability", "--methods", "ambiant", "--out", out}), std::invalid_argument);
   EXPECT_THROW(parse({"stability", "--grid", "0", "--out", out}), CLI::ValidationError);
-  EXPECT_THROW(parse({"stability", "--shard", "3/2", "--no-charts", "--grid", "1", "--out", out}), std::invalid_argument);
+  EXPECT_THROW(parse({"stability", "--shard", "3/2", "--no-charts", "--grid", "1", "--out", out}),
+               std::invalid_argument);
   EXPECT_THROW(parse({"stability", "--merge", "--no-charts", "--out", out}), std::runtime_error);
 }
 

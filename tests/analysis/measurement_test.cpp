@@ -56,8 +56,7 @@ TEST(ReferencePath, MatchesTheShippedGenericReference) {
         expected(0, h) = shipped.number(rows[k], "p" + std::to_string(h + 1) + "x");
         expected(1, h) = shipped.number(rows[k], "p" + std::to_string(h + 1) + "y");
       }
-      EXPECT_LT(hingeDistance(path.hinges[k], expected), 5e-9)
-          << path.config.method << " at time " << times[k];
+      EXPECT_LT(hingeDistance(path.hinges[k], expected), 5e-9) << path.config.method << " at time " << times[k];
     }
   }
 }
@@ -117,8 +116,10 @@ TEST(ShippedStarts, LNearTwoAmplifiesPerturbationsOfTheStartAMillionfold) {
     const NamedStart start = shippedStart(name);
     const double moved = hingeDistance(endHinges(start, 0.0), endHinges(start, 1e-14));
     std::cout << name << ": a 1e-14 nudge of the start moves the hinges at T = 20 by " << moved << "\n";
-    if (name == "L-near-2") EXPECT_GT(moved, 1e-8);
-    else EXPECT_LT(moved, 1e-11);
+    if (name == "L-near-2")
+      EXPECT_GT(moved, 1e-8);
+    else
+      EXPECT_LT(moved, 1e-11);
   }
 }
 

@@ -92,7 +92,8 @@ TEST(StabilitySweep, ThePublishedMethodFoldsBackNearThePole) {
       EXPECT_EQ(rows.text(r, "integrator"), "rk4");
       if (column == 1 || column == 2) {
         const std::string status = rows.text(r, "status");
-        EXPECT_TRUE(status == "pole-fold-back" || status == "non-finite") << status << ": " << rows.text(r, "stop_detail");
+        EXPECT_TRUE(status == "pole-fold-back" || status == "non-finite")
+            << status << ": " << rows.text(r, "stop_detail");
         foldBacks += status == "pole-fold-back";
       }
       if (column < 3) EXPECT_LE(rows.number(r, "stop_time"), 1.0);
@@ -169,7 +170,8 @@ TEST(StabilityGrid, EveryKindGivesStartsOnTheSphere) {
 TEST(Shard, ParsesKOfNAndRefusesNonsense) {
   EXPECT_EQ(parseShard("2/5").index, 2);
   EXPECT_EQ(parseShard("2/5").count, 5);
-  for (const char* bad : {"0/3", "4/3", "1", "a/b", "1/0", "-1/2"}) EXPECT_THROW(parseShard(bad), std::invalid_argument) << bad;
+  for (const char* bad : {"0/3", "4/3", "1", "a/b", "1/0", "-1/2"})
+    EXPECT_THROW(parseShard(bad), std::invalid_argument) << bad;
 }
 
 }  // namespace

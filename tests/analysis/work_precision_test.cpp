@@ -20,8 +20,8 @@ WorkPrecisionPoint point(const std::string& start, const std::string& integrator
 
 TEST(CheapestSettings, PicksTheFewestEvaluationsReachingTheTargetOnEveryStart) {
   const std::vector<WorkPrecisionPoint> points = {
-      point("a", "dopri5", 1e-6, 1e-7, 100),  point("b", "dopri5", 1e-6, 3e-6, 120),
-      point("a", "dopri5", 1e-9, 1e-10, 300), point("b", "dopri5", 1e-9, 5e-10, 350),
+      point("a", "dopri5", 1e-6, 1e-7, 100),   point("b", "dopri5", 1e-6, 3e-6, 120),
+      point("a", "dopri5", 1e-9, 1e-10, 300),  point("b", "dopri5", 1e-9, 5e-10, 350),
       point("a", "dopri5", 1e-12, 1e-13, 900), point("b", "dopri5", 1e-12, 2e-13, 800)};
   const auto cheapest = cheapestSettings(points, {1e-6, 1e-9, 1e-12, 1e-14});
   ASSERT_EQ(cheapest.size(), 4u);
@@ -39,7 +39,7 @@ TEST(CheapestSettings, PicksTheFewestEvaluationsReachingTheTargetOnEveryStart) {
 
 TEST(CheapestSettings, AFailedOrMissingStartDisqualifiesASetting) {
   const std::vector<WorkPrecisionPoint> points = {
-      point("a", "rk4", 0.01, 1e-11, 8000),  point("b", "rk4", 0.01, 1e-12, 8000, "pole-fold-back"),
+      point("a", "rk4", 0.01, 1e-11, 8000), point("b", "rk4", 0.01, 1e-12, 8000, "pole-fold-back"),
       point("a", "rk4", 0.001, 1e-12, 80000), point("b", "rk4", 0.001, 1e-13, 80000),
       point("a", "rk4", 0.1, 1e-13, 800)};  // start b never ran at 0.1
   const auto cheapest = cheapestSettings(points, {1e-9});
@@ -57,10 +57,23 @@ TEST(WorkPrecisionCsv, HasNamedColumnsAndRoundTrips) {
   const std::vector<WorkPrecisionPoint> points = {point("generic", "rk4", 0.01, 1.25e-7, 8004),
                                                   point("through-pole", "dopri5", 1e-10, 3e-11, 1234, "non-finite")};
   const CsvTable table = workPrecisionTable(points);
-  const std::vector<std::string> expected = {"start", "method", "integrator", "setting_kind", "setting", "status",
-                                             "wall_seconds", "cpu_seconds", "evaluations", "steps", "final_error", "max_error",
-                                             "max_energy_drift", "max_rod_length_error", "stop_time",
-                                             "reference_method", "stop_detail"};
+  const std::vector<std::string> expected = {"start",
+                                             "method",
+                                             "integrator",
+                                             "setting_kind",
+                                             "setting",
+                                             "status",
+                                             "wall_seconds",
+                                             "cpu_seconds",
+                                             "evaluations",
+                                             "steps",
+                                             "final_error",
+                                             "max_error",
+                                             "max_energy_drift",
+                                             "max_rod_length_error",
+                                             "stop_time",
+                                             "reference_method",
+                                             "stop_detail"};
   EXPECT_EQ(table.columns, expected);
   ASSERT_EQ(table.rows.size(), 2u);
   EXPECT_EQ(table.text(0, "setting_kind"), "h");

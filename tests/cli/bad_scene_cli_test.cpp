@@ -49,9 +49,9 @@ TEST(BadScenesCli, ValidateAndRenderRefuseNamingThePathAndWriteNothing) {
 TEST(BadScenesCli, BadOptionsAreUsageErrors) {
   TempFolder folder;
   const std::string scene = quoted(shippedScene("default.json"));
-  for (const char* options : {"--frames 5:2", "--frames 0:9999", "--frames x", "--size 12x12", "--size big",
-                                     "--no-png", "--size 321x180 --video v.mp4", "--resume --video v.mp4",
-                                     "--out /proc/linkage-nope", "--frobnicate"}) {
+  for (const char* options :
+       {"--frames 5:2", "--frames 0:9999", "--frames x", "--size 12x12", "--size big", "--no-png",
+        "--size 321x180 --video v.mp4", "--resume --video v.mp4", "--out /proc/linkage-nope", "--frobnicate"}) {
     SCOPED_TRACE(options);
     const CommandResult result = runLinkage("render " + scene + " " + std::string(options), folder.path());
     EXPECT_EQ(result.status, 2) << result.err;

@@ -1,10 +1,10 @@
 #include "cli_support.hpp"
 
+#include <sys/wait.h>
 #include <cstdlib>
 #include <fstream>
 #include <random>
 #include <sstream>
-#include <sys/wait.h>
 
 namespace sl::testing {
 
@@ -31,8 +31,8 @@ std::string readFile(const std::string& path) {
 CommandResult runShell(const std::string& commandLine, const fs::path& folder) {
   const fs::path out = folder.parent_path() / (folder.filename().string() + ".out");
   const fs::path err = folder.parent_path() / (folder.filename().string() + ".err");
-  const std::string line =
-      "cd " + quoted(folder.string()) + " && " + commandLine + " >" + quoted(out.string()) + " 2>" + quoted(err.string());
+  const std::string line = "cd " + quoted(folder.string()) + " && " + commandLine + " >" + quoted(out.string()) +
+                           " 2>" + quoted(err.string());
   const int raw = std::system(line.c_str());
   CommandResult result;
   result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);

@@ -46,8 +46,10 @@ TEST(DiffCli, TrajectoryCsvs) {
   perturb(folder / "b.csv", "embedded (published),1,", 1e-6);
   const CommandResult changed = runLinkage("diff a.csv b.csv --tol 1e-9", folder.path());
   EXPECT_EQ(changed.status, 1);
-  EXPECT_NE(changed.out.find("run \"embedded (published)\": worst hinge difference 1e-06 at t = 1; first exceeds --tol 1e-09 at t = 1"),
-            std::string::npos)
+  EXPECT_NE(
+      changed.out.find(
+          "run \"embedded (published)\": worst hinge difference 1e-06 at t = 1; first exceeds --tol 1e-09 at t = 1"),
+      std::string::npos)
       << changed.out;
   EXPECT_NE(changed.out.find("run \"christoffel (published)\": worst hinge difference 0"), std::string::npos);
   EXPECT_EQ(runLinkage("diff a.csv b.csv --tol 1e-5", folder.path()).status, 0);
@@ -61,7 +63,8 @@ TEST(DiffCli, RenderFolders) {
   const std::string options = " --size 160x90 --frames 0:4 --quiet";
   ASSERT_EQ(runLinkage("render " + quoted(shippedScene("seam.json")) + " --out a" + options, folder.path()).status, 0);
   ASSERT_EQ(runLinkage("render " + quoted(shippedScene("seam.json")) + " --out b" + options, folder.path()).status, 0);
-  ASSERT_EQ(runLinkage("render " + quoted(shippedScene("comparison.json")) + " --out c" + options, folder.path()).status, 0);
+  ASSERT_EQ(
+      runLinkage("render " + quoted(shippedScene("comparison.json")) + " --out c" + options, folder.path()).status, 0);
   const CommandResult same = runLinkage("diff a b", folder.path());
   EXPECT_EQ(same.status, 0) << same.out << same.err;
   EXPECT_NE(same.out.find("4 frames vs 4; 0 differ"), std::string::npos) << same.out;
@@ -70,7 +73,10 @@ TEST(DiffCli, RenderFolders) {
   EXPECT_NE(other.out.find("4 frames vs 4; 4 differ; first differing frame 0"), std::string::npos) << other.out;
   EXPECT_NE(other.out.find("% of pixels differ"), std::string::npos);
   EXPECT_TRUE(fs::exists(folder.path() / "pictures" / "diff_frame_00000.png"));
-  ASSERT_EQ(runLinkage("render " + quoted(shippedScene("seam.json")) + " --out d --size 160x90 --frames 0:3 --quiet", folder.path()).status, 0);
+  ASSERT_EQ(runLinkage("render " + quoted(shippedScene("seam.json")) + " --out d --size 160x90 --frames 0:3 --quiet",
+                       folder.path())
+                .status,
+            0);
   const CommandResult fewer = runLinkage("diff a d", folder.path());
   EXPECT_EQ(fewer.status, 1);
   EXPECT_NE(fewer.out.find("first differing frame 3"), std::string::npos) << fewer.out;

@@ -1,10 +1,10 @@
 // `linkage render` and `simulate` on shipped scenes: small renders, shards by the documented GNU
 // parallel recipe, an interrupted render finished by --resume.
+#include <spawn.h>
+#include <sys/wait.h>
 #include <csignal>
 #include <fstream>
 #include <functional>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -17,15 +17,15 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(RenderCli, EveryShippedSceneValidatesAndRendersAFewSmallFrames) {
-  for (const char* name : {"default.json", "comparison.json", "pole-passage.json", "seam.json", "massive-rods.json",
-                           "five-rods.json"}) {
+  for (const char* name :
+       {"default.json", "comparison.json", "pole-passage.json", "seam.json", "massive-rods.json", "five-rods.json"}) {
     SCOPED_TRACE(name);
     TempFolder folder;
     const CommandResult validate = runLinkage("validate " + quoted(shippedScene(name)), folder.path());
     EXPECT_EQ(validate.status, 0) << validate.err;
     EXPECT_NE(validate.out.find(": ok"), std::string::npos);
-    const CommandResult render =
-        runLinkage("render " + quoted(shippedScene(name)) + " --size 320x180 --frames 0:3 --out out --quiet", folder.path());
+    const CommandResult render = runLinkage(
+        "render " + quoted(shippedScene(name)) + " --size 320x180 --frames 0:3 --out out --quiet", folder.path());
     ASSERT_EQ(render.status, 0) << render.err;
     for (const char* file : {"frame_00000.png", "frame_00001.png", "frame_00002.png", "manifest.json"}) {
       EXPECT_TRUE(fs::exists(folder.path() / "out" / file)) << file;
@@ -36,7 +36,8 @@ TEST(RenderCli, EveryShippedSceneValidatesAndRendersAFewSmallFrames) {
 
 TEST(RenderCli, DefaultFolderIsRendersSlashSceneName) {
   TempFolder folder;
-  const CommandResult render = runLinkage("render " + quoted(shippedScene("seam.json")) + " --size 160x90 --frames 4:5", folder.path());
+  const CommandResult render =
+      runLinkage("render " + quoted(shippedScene("seam.json")) + " --size 160x90 --frames 4:5", folder.path());
   ASSERT_EQ(render.status, 0) << render.err;
   EXPECT_TRUE(fs::exists(folder.path() / "renders" / "seam" / "frame_00004.png"));
 }
@@ -52,7 +53,8 @@ std::string readmeParallelRecipe() {
 }
 
 std::string replaceAll(std::string text, const std::string& from, const std::string& to) {
-  for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) text.replace(at, from.size(), to);
+  for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
   return text;
 }
 
@@ -61,10 +63,12 @@ TEST(RenderCli, ShardsByTheReadmeRecipeEqualAWholeRenderByteForByte) {
   ASSERT_FALSE(recipe.empty()) << "scenes/README.md lost its GNU parallel recipe";
   TempFolder folder;
   recipe = replaceAll(recipe, "parallel linkage ", "parallel " + quoted(linkageBinary()) + " ");
-  recipe = replaceAll(recipe, "scenes/default.json", quoted(shippedScene("default.json")) + " --size 160x90 --out shards");
+  recipe =
+      replaceAll(recipe, "scenes/default.json", quoted(shippedScene("default.json")) + " --size 160x90 --out shards");
   const CommandResult shards = runShell(recipe, folder.path());
   ASSERT_EQ(shards.status, 0) << recipe << "\n" << shards.err;
-  const CommandResult whole = runLinkage("render " + quoted(shippedScene("default.json")) + " --size 160x90 --out whole --quiet", folder.path());
+  const CommandResult whole = runLinkage(
+      "render " + quoted(shippedScene("default.json")) + " --size 160x90 --out whole --quiet", folder.path());
   ASSERT_EQ(whole.status, 0) << whole.err;
   const auto a = folderContents(folder.path() / "shards"), b = folderContents(folder.path() / "whole");
   EXPECT_EQ(a.size(), 601u + 2u);  // frames, manifest.json, .manifest.json.lock
@@ -102,9 +106,11 @@ TEST(RenderCli, ResumeAfterSigtermEqualsAnUninterruptedRender) {
   }
   EXPECT_EQ(partial, 0u) << "a partial file was left behind";
   EXPECT_LT(frames, 601u) << "the render finished before it could be interrupted";
-  const CommandResult resume = runLinkage("render " + quoted(scene) + " --size 160x90 --quiet --resume --out resumed", folder.path());
+  const CommandResult resume =
+      runLinkage("render " + quoted(scene) + " --size 160x90 --quiet --resume --out resumed", folder.path());
   ASSERT_EQ(resume.status, 0) << resume.err;
-  const CommandResult whole = runLinkage("render " + quoted(scene) + " --size 160x90 --quiet --out whole", folder.path());
+  const CommandResult whole =
+      runLinkage("render " + quoted(scene) + " --size 160x90 --quiet --out whole", folder.path());
   ASSERT_EQ(whole.status, 0) << whole.err;
   EXPECT_TRUE(folderContents(out) == folderContents(folder.path() / "whole"));
 }
@@ -114,24 +120,26 @@ TEST(RenderCli, ResumeAfterSigtermEqualsAnUninterruptedRender) {
 TEST(RenderCli, InterruptedVideoLeavesTheEarlierVideoUntouched) {
   TempFolder folder;
   const std::string scene = shippedScene("default.json");
-  const CommandResult first = runLinkage("render " + quoted(scene) + " --size 160x90 --frames 0:30 --no-png --video v.mp4 --quiet",
-                                         folder.path());
+  const CommandResult first = runLinkage(
+      "render " + quoted(scene) + " --size 160x90 --frames 0:30 --no-png --video v.mp4 --quiet", folder.path());
   ASSERT_EQ(first.status, 0) << first.err;
   const auto before = folderContents(folder.path());
   ASSERT_EQ(before.size(), 2u);  // v.mp4 and v.mp4.manifest.json, nothing else
   const auto encoding = [&] {
     for (const auto& entry : fs::directory_iterator(folder.path()))
       if (std::error_code gone; entry.path().filename().string().find(".tmp.") != std::string::npos &&
-                                  fs::file_size(entry.path(), gone) > 0 && !gone)
+                                fs::file_size(entry.path(), gone) > 0 && !gone)
         return true;
     return false;
   };
   const std::string video = folder / "v.mp4";
-  const int status = renderUntilTerminated({"render", scene, "--size", "160x90", "--no-png", "--video", video, "--quiet"}, encoding);
+  const int status =
+      renderUntilTerminated({"render", scene, "--size", "160x90", "--no-png", "--video", video, "--quiet"}, encoding);
   EXPECT_EQ(status, 130);
   const auto after = folderContents(folder.path());
   std::string names;
-  for (const auto& [name, bytes] : after) names += " " + name + (before.count(name) && before.at(name) == bytes ? "" : " (new or changed)");
+  for (const auto& [name, bytes] : after)
+    names += " " + name + (before.count(name) && before.at(name) == bytes ? "" : " (new or changed)");
   EXPECT_TRUE(after == before) << "the interrupted video changed or left files in the folder:" << names;
 }
 

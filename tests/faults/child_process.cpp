@@ -1,23 +1,23 @@
 #include "child_process.hpp"
 
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
-#include <fcntl.h>
 #include <fstream>
-#include <spawn.h>
 #include <sstream>
 #include <stdexcept>
-#include <sys/wait.h>
 #include <thread>
-#include <unistd.h>
 
 extern char** environ;
 
 namespace sl::faults {
 
-ChildProcess::ChildProcess(const std::string& program, const std::vector<std::string>& args,
-                           const std::string& folder, const std::string& logName)
+ChildProcess::ChildProcess(const std::string& program, const std::vector<std::string>& args, const std::string& folder,
+                           const std::string& logName)
     : errPath_(folder + "/" + logName + ".err") {
   std::vector<std::string> words{program};
   words.insert(words.end(), args.begin(), args.end());

@@ -3,15 +3,15 @@
 // posix_spawn (no shell), output streams to files, waited for with a time limit so that a hang fails
 // the test instead of blocking the suite.
 
-#include <string>
 #include <sys/types.h>
+#include <string>
 #include <vector>
 
 namespace sl::faults {
 
 struct ExitStatus {
-  int code = -1;    // exit status, or -1 if killed by a signal
-  int signal = 0;   // the signal that ended it, or 0
+  int code = -1;   // exit status, or -1 if killed by a signal
+  int signal = 0;  // the signal that ended it, or 0
   bool timedOut = false;
 };
 

@@ -30,7 +30,8 @@ std::string scene(const std::string& name, int rods, const std::string& baseLeng
   text << "{ \"name\": \"" << name << "\", \"linkage\": { \"rods\": " << rods << ", \"L\": " << baseLength << " },\n"
        << "  \"initial\": " << initial << ",\n  \"duration\": " << duration << ",\n  \"runs\": " << runs << ",\n"
        << "  \"output\": { \"fps\": " << fps << ", \"width\": 160, \"height\": 90 },\n"
-       << "  \"view\": { \"panels\": [\"sphere\", \"linkage\", { \"panel\": \"plot\", \"plot\": \"energy\" }, \"text\"], \"trails\": [1] } }\n";
+       << "  \"view\": { \"panels\": [\"sphere\", \"linkage\", { \"panel\": \"plot\", \"plot\": \"energy\" }, "
+          "\"text\"], \"trails\": [1] } }\n";
   return text.str();
 }
 
@@ -47,8 +48,10 @@ std::vector<FaultScene> numericalFaultScenes() {
   const std::string coords4 = R"({ "coords": [0.3, 0.2], "velocity": [0.5, 0.7] })";
   std::vector<FaultScene> scenes = {
       {"pole", scene("pole", 4, "3.0", R"({ "coords": [)" + pole + R"(, 0], "velocity": [0.3, 0.5] })", 4, 5)},
-      {"seam-plus", scene("seam-plus", 4, "3.0", R"({ "coords": [0.3, )" + pole + R"(], "velocity": [0.2, 0.7] })", 4, 5)},
-      {"seam-minus", scene("seam-minus", 4, "3.0", R"({ "coords": [0.3, -)" + pole + R"(], "velocity": [0.2, 0.7] })", 4, 5)},
+      {"seam-plus",
+       scene("seam-plus", 4, "3.0", R"({ "coords": [0.3, )" + pole + R"(], "velocity": [0.2, 0.7] })", 4, 5)},
+      {"seam-minus",
+       scene("seam-minus", 4, "3.0", R"({ "coords": [0.3, -)" + pole + R"(], "velocity": [0.2, 0.7] })", 4, 5)},
       {"huge-velocity", scene("huge-velocity", 4, "3.0", R"({ "coords": [0.3, 0.2], "velocity": [5e5, 7e5] })", 2, 5)},
       {"L-near-n-minus-2", scene("L-near-n-minus-2", 4, "2.000000000001", coords4, 2, 5)},
       {"L-near-n", scene("L-near-n", 4, "3.999999999999", coords4, 2, 5)},
@@ -59,9 +62,10 @@ std::vector<FaultScene> numericalFaultScenes() {
   };
   // n = 12 is the scene format's largest chain (SceneLimits::maxRods); n = 200 is covered through the
   // simulation API in numerical_faults_test.cpp.
-  scenes.push_back({"twelve-rods", scene("twelve-rods", 12, "10.5",
-                                         "{ \"coords\": " + zeros(10, "0.2") + ", \"velocity\": " + zeros(10, "0.3") + " }",
-                                         1, 5, kGenericMethods)});
+  scenes.push_back(
+      {"twelve-rods", scene("twelve-rods", 12, "10.5",
+                            "{ \"coords\": " + zeros(10, "0.2") + ", \"velocity\": " + zeros(10, "0.3") + " }", 1, 5,
+                            kGenericMethods)});
   return scenes;
 }
 
@@ -69,9 +73,11 @@ std::string smallRenderScene(int frames, const std::string& folder) {
   std::ostringstream text;
   text << R"({ "name": "small", "linkage": { "rods": 4, "L": 3.0 },
   "initial": { "drag": { "point": [0.936, 0.190, 0.296], "direction": [-0.35, 0.55, 0.75] }, "unit_speed": true },
-  "duration": )" << (frames - 1) / 10.0 << R"(,
+  "duration": )"
+       << (frames - 1) / 10.0 << R"(,
   "runs": [ { "name": "geodesic", "method": "ambient", "integrator": "dopri5", "tolerance": 1e-9 } ],
-  "output": { "fps": 10, "width": 160, "height": 90, "folder": ")" << folder << R"(" },
+  "output": { "fps": 10, "width": 160, "height": 90, "folder": ")"
+       << folder << R"(" },
   "view": { "panels": ["sphere", "linkage"], "trails": [2] } })";
   return text.str();
 }

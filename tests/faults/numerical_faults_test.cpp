@@ -47,8 +47,9 @@ RunConfig config(const std::string& method, const std::string& integrator, long 
   return c;
 }
 
-const std::set<std::string> kStopReasons = {"non-finite",   "pole-fold-back", "pole-singularity", "energy-blow-up",
-                                            "step-size-collapse", "rod-length", "max-steps"};
+const std::set<std::string> kStopReasons = {"non-finite",     "pole-fold-back",     "pole-singularity",
+                                            "energy-blow-up", "step-size-collapse", "rod-length",
+                                            "max-steps"};
 
 // What one run did, for the tests that pin a particular outcome.
 struct Outcome {

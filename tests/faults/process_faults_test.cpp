@@ -180,7 +180,8 @@ TEST_F(ProcessFaults, FullDiskGivesAClearErrorAndKeepsCompletedFrames) {
   ChildProcess child(faults::linkageBinary(), {"render", "small.json", "--quiet", "--out", "disk/frames"},
                      folder_.path().string(), "full-disk");
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-  while (child.running() && frameFileCount(folder_.path() / "disk/frames") < 5 && std::chrono::steady_clock::now() < deadline) {
+  while (child.running() && frameFileCount(folder_.path() / "disk/frames") < 5 &&
+         std::chrono::steady_clock::now() < deadline) {
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   child.sendSignal(SIGSTOP);
@@ -201,11 +202,14 @@ TEST_F(ProcessFaults, FullDiskGivesAClearErrorAndKeepsCompletedFrames) {
 TEST_F(ProcessFaults, RenderThatCannotFitIsRefusedUpFront) {
   Mount disk(folder_.path() / "small-disk", "size=64k");
   if (!disk.mounted()) GTEST_SKIP() << "mounting a tmpfs is not permitted here (needs root)";
-  ASSERT_GT(kFrames * reference_.at("frame_00000.png").size(), 64u * 1024u) << "the test needs frames that do not fit into 64 kB";
+  ASSERT_GT(kFrames * reference_.at("frame_00000.png").size(), 64u * 1024u)
+      << "the test needs frames that do not fit into 64 kB";
   std::string errors;
   const ExitStatus status = render({"--quiet", "--out", "small-disk/frames"}, &errors);
   EXPECT_EQ(status.code, 2) << errors;
-  EXPECT_NE(errors.find("small-disk/frames: " + std::to_string(kFrames) + " frames of 160x90 need about"), std::string::npos) << errors;
+  EXPECT_NE(errors.find("small-disk/frames: " + std::to_string(kFrames) + " frames of 160x90 need about"),
+            std::string::npos)
+      << errors;
   EXPECT_NE(errors.find("kB are free there"), std::string::npos) << errors;
   EXPECT_FALSE(fs::exists(folder_.path() / "small-disk/frames")) << "a refused render must write nothing";
 }

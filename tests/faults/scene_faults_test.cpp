@@ -6,10 +6,10 @@
 
 #include <gtest/gtest.h>
 
-#include "frames/scene_start.hpp"
 #include "child_process.hpp"
 #include "fault_scenes.hpp"
 #include "frames/frame_builder.hpp"
+#include "frames/scene_start.hpp"
 #include "scene/scene_loader.hpp"
 #include "temp_folder.hpp"
 
@@ -83,8 +83,8 @@ TEST(SceneFaults, SimulateWritesNoNonFiniteNumber) {
     SCOPED_TRACE(fault.name);
     faults::writeText(folder / (fault.name + ".json"), fault.json);
     std::string errors;
-    const faults::ExitStatus status =
-        faults::runLinkage({"simulate", fault.name + ".json", "--csv", fault.name + ".csv"}, folder.path(), 300, &errors);
+    const faults::ExitStatus status = faults::runLinkage(
+        {"simulate", fault.name + ".json", "--csv", fault.name + ".csv"}, folder.path(), 300, &errors);
     ASSERT_EQ(status.code, 0) << errors;
     std::stringstream csv(faults::readText(folder / (fault.name + ".csv")));
     std::string line;
@@ -112,8 +112,9 @@ TEST(SceneFaults, RenderDrawsStoppedRuns) {
     SCOPED_TRACE(fault.name);
     faults::writeText(folder / (fault.name + ".json"), fault.json);
     std::string errors;
-    const faults::ExitStatus status = faults::runLinkage(
-        {"render", fault.name + ".json", "--quiet", "--frames", "0:3", "--out", fault.name}, folder.path(), 300, &errors);
+    const faults::ExitStatus status =
+        faults::runLinkage({"render", fault.name + ".json", "--quiet", "--frames", "0:3", "--out", fault.name},
+                           folder.path(), 300, &errors);
     ASSERT_EQ(status.code, 0) << errors;
     for (int k = 0; k < 3; ++k) {
       EXPECT_TRUE(std::filesystem::exists(folder.path() / fault.name / ("frame_0000" + std::to_string(k) + ".png")));

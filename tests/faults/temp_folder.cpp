@@ -1,7 +1,7 @@
 #include "temp_folder.hpp"
 
-#include <stdexcept>
 #include <stdlib.h>
+#include <stdexcept>
 
 namespace sl::faults {
 

@@ -20,7 +20,8 @@ Scene twoRunScene(const std::string& extraView = "") {
              {"name": "published", "method": "christoffel-fd", "integrator": "rk4", "step": 0.05}],
     "output": {"fps": 10},
     "view": {"panels": ["sphere", "linkage", {"panel": "plot", "plot": "divergence"},
-                        {"panel": "plot", "plot": "energy"}], "trails": [1, 3])" + extraView + "}}",
+                        {"panel": "plot", "plot": "energy"}], "trails": [1, 3])" +
+                        extraView + "}}",
                     "t.json", limits());
 }
 
@@ -43,7 +44,8 @@ void expectSameFrame(const FrameState& a, const FrameState& b) {
     ASSERT_EQ(a.runs[r].hinges.size(), b.runs[r].hinges.size());
     for (size_t h = 0; h < a.runs[r].hinges.size(); ++h) EXPECT_EQ(a.runs[r].hinges[h].x, b.runs[r].hinges[h].x);
     ASSERT_EQ(a.runs[r].trails.size(), b.runs[r].trails.size());
-    for (size_t t = 0; t < a.runs[r].trails.size(); ++t) EXPECT_EQ(a.runs[r].trails[t].size(), b.runs[r].trails[t].size());
+    for (size_t t = 0; t < a.runs[r].trails.size(); ++t)
+      EXPECT_EQ(a.runs[r].trails[t].size(), b.runs[r].trails[t].size());
     EXPECT_EQ(a.runs[r].stopped, b.runs[r].stopped);
   }
   ASSERT_EQ(a.plots.size(), b.plots.size());
@@ -71,7 +73,8 @@ TEST(FrameBuilder, FrameTimesAndCount) {
   // 4 path samples per frame interval after frame 0; pathTimes increase and end at the frame time.
   EXPECT_EQ(last.runs[0].path.size(), 1u + 10u * 4u);
   EXPECT_DOUBLE_EQ(last.runs[0].pathTimes.back(), 1.0);
-  for (size_t i = 1; i < last.runs[0].pathTimes.size(); ++i) EXPECT_LT(last.runs[0].pathTimes[i - 1], last.runs[0].pathTimes[i]);
+  for (size_t i = 1; i < last.runs[0].pathTimes.size(); ++i)
+    EXPECT_LT(last.runs[0].pathTimes[i - 1], last.runs[0].pathTimes[i]);
 }
 
 // Shards: frame k built after skipping straight to it equals frame k of a full walk.

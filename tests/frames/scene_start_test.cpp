@@ -1,9 +1,9 @@
 // The start of the motion: chart coordinates and drags become a point and a tangent vector of the sphere.
 #include <gtest/gtest.h>
 
+#include "frames/scene_start.hpp"
 #include "linkage/kinetic_metric.hpp"
 #include "linkage/sphere_coordinates.hpp"
-#include "frames/scene_start.hpp"
 #include "simulation/initial_state.hpp"
 
 namespace sl {

@@ -59,7 +59,8 @@ TEST(SphereView, FiveRodsStayInsideTheBallAndSeparateDirections) {
   std::mt19937 random(7);
   std::normal_distribution<double> normal;
   for (int k = 0; k < 1000; ++k) {
-    const Eigen::Vector4d x = Eigen::Vector4d(normal(random), normal(random), normal(random), normal(random)).normalized();
+    const Eigen::Vector4d x =
+        Eigen::Vector4d(normal(random), normal(random), normal(random), normal(random)).normalized();
     EXPECT_LE(norm(view.project(x)), 1.0 + 1e-15);
   }
 }

@@ -10,9 +10,7 @@ namespace sl {
 namespace {
 
 // Interior points of the valid L range for n rods, including both ends' neighbourhoods.
-std::vector<double> baseLengths(int n) {
-  return {n - 2 + 1e-3, n - 2 + 0.3, n - 1.0, n - 0.4, n - 1e-3};
-}
+std::vector<double> baseLengths(int n) { return {n - 2 + 1e-3, n - 2 + 0.3, n - 1.0, n - 0.4, n - 1e-3}; }
 
 Eigen::VectorXd randomUnit(std::mt19937& rng, int size) {
   std::normal_distribution<double> normal;
@@ -26,7 +24,8 @@ TEST(Chart, RodLengthsAreOneOnDenseGridsIncludingSeamsAndPoles) {
     for (double L : baseLengths(n)) {
       const Chain chain = Chain::uniform(n, L);
       const int k = n - 2;
-      std::vector<double> samples = {-M_PI / 2, M_PI / 2, -M_PI / 2 + 1e-12, M_PI / 2 - 1e-12, 0.0, 0.3, -1.1, 2.5, M_PI};
+      std::vector<double> samples = {-M_PI / 2, M_PI / 2, -M_PI / 2 + 1e-12, M_PI / 2 - 1e-12, 0.0, 0.3, -1.1,
+                                     2.5,       M_PI};
       for (int i = 0; i < 24; ++i) samples.push_back(-M_PI + 2 * M_PI * i / 24.0);
       for (double a : samples)
         for (double b : samples) {
@@ -136,7 +135,8 @@ TEST(Chart, JacobianByADMatchesCentralDifferences) {
     const double h = 1e-6;
     const Eigen::Vector3d e = h * Eigen::Vector3d::Unit(a);
     const Eigen::Matrix2Xd diff = (hingePositionsInChart<double>(chain, axes, Eigen::VectorXd(c + e)) -
-                                   hingePositionsInChart<double>(chain, axes, Eigen::VectorXd(c - e))) / (2 * h);
+                                   hingePositionsInChart<double>(chain, axes, Eigen::VectorXd(c - e))) /
+                                  (2 * h);
     for (int r = 0; r < J.rows(); ++r) EXPECT_NEAR(J(r, a), diff(r % 2, r / 2), 1e-8);
   }
 }

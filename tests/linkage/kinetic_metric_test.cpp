@@ -78,7 +78,8 @@ TEST(KineticMetric, TimeComponentIsTheInnerCircleMetric) {
     for (double t : {-2.0, 0.3, M_PI / 2, 2.5}) {
       const double alpha = chainAmplitude(4, L);
       const double d = std::abs(L - std::polar(1.0, alpha * std::sin(phi)));
-      const Eigen::MatrixXd circle = kineticMetricPullback(Chain::uniform(3, d), circleAxes, Eigen::VectorXd::Constant(1, t));
+      const Eigen::MatrixXd circle =
+          kineticMetricPullback(Chain::uniform(3, d), circleAxes, Eigen::VectorXd::Constant(1, t));
       EXPECT_NEAR(kineticMetricClosedForm(L, phi, t)(1, 1), circle(0, 0), 1e-12 * circle(0, 0));
     }
 }

@@ -51,11 +51,11 @@ TEST(FrameManifest, EntriesSortedAndCheckedAgainstFiles) {
 
   FrameManifest resumed(folder, kInfo);
   EXPECT_TRUE(resumed.isFrameComplete(5));
-  EXPECT_FALSE(resumed.isFrameComplete(3));                      // never recorded
+  EXPECT_FALSE(resumed.isFrameComplete(3));  // never recorded
   writeFileAtomically(folder + "/frame_5.png", std::string("truncated"));
-  EXPECT_FALSE(resumed.isFrameComplete(5));                      // file no longer matches
+  EXPECT_FALSE(resumed.isFrameComplete(5));  // file no longer matches
   std::filesystem::remove(folder + "/frame_7.png");
-  EXPECT_FALSE(resumed.isFrameComplete(7));                      // file gone
+  EXPECT_FALSE(resumed.isFrameComplete(7));  // file gone
 }
 
 TEST(FrameManifest, RefusesAFolderOfAnotherRender) {

@@ -2,8 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdio>
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 
 #include "output/png_sequence_sink.hpp"
@@ -60,7 +60,8 @@ TEST(VideoSink, ProducesAPlayableMp4WithEveryFrame) {
   }
   const std::string frames =
       run("ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames,codec_name,pix_fmt "
-          "-of csv=p=0 '" + path + "'");
+          "-of csv=p=0 '" +
+          path + "'");
   EXPECT_EQ(frames, "h264,yuv420p,12\n");
   EXPECT_EQ(manifest.entry(11)->pixelSha256, sha256Hex(gradient(64, 48, 11).rgb));
   EXPECT_TRUE(manifest.entry(11)->file.empty());
@@ -91,7 +92,8 @@ TEST(VideoSink, AnUnfinishedVideoLeavesTheEarlierOneUntouched) {
   }  // destroyed without finish()
   EXPECT_EQ(sha256OfFile(path), firstVideo);
   EXPECT_EQ(sha256OfFile(path + ".manifest.json"), firstManifest);
-  const std::vector<std::string> expected = {"clip.mp4", "clip.mp4.manifest.json"};  // no lock: a replaced manifest needs none
+  const std::vector<std::string> expected = {"clip.mp4",
+                                             "clip.mp4.manifest.json"};  // no lock: a replaced manifest needs none
   EXPECT_EQ(folderNames(folder), expected);
 }
 
@@ -105,9 +107,10 @@ TEST(VideoSink, AFinishedVideoReplacesTheEarlierOneAndItsManifest) {
     for (int k = 0; k < frames; ++k) sink.consume(k, gradient(64, 48, k));
     sink.finish();
   }
-  EXPECT_EQ(run("ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 'file:" +
-                path + "'"),
-            "2\n");
+  EXPECT_EQ(
+      run("ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 'file:" +
+          path + "'"),
+      "2\n");
   FrameManifest reread(folder, {{"frames", 2}}, "take:2.mp4.manifest.json");  // merge mode: throws for another render
   EXPECT_TRUE(reread.entry(1));
   EXPECT_FALSE(reread.entry(2)) << "the earlier render's frames must not survive in the manifest";

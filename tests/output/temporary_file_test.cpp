@@ -35,7 +35,8 @@ std::string withWriter(const std::string& temporary, pid_t pid) {
 }
 
 TEST(TemporaryFile, KeepsTheFolderHidesTheExtensionAndIsUnique) {
-  const std::string a = temporaryPathFor("out/frames/frame_00012.png"), b = temporaryPathFor("out/frames/frame_00012.png");
+  const std::string a = temporaryPathFor("out/frames/frame_00012.png"),
+                    b = temporaryPathFor("out/frames/frame_00012.png");
   EXPECT_NE(a, b);
   EXPECT_EQ(fs::path(a).parent_path(), "out/frames");
   EXPECT_NE(fs::path(a).extension(), ".png") << "a glob for *.png would see a frame still being written";
@@ -49,8 +50,8 @@ TEST(TemporaryFile, SweepRemovesOnlyLeftoversOfEndedLocalWriters) {
   const std::string dead = withWriter(temporaryPathFor((folder / "frame_00002.png").string()), endedProcess());
   const std::string deadVideo = withWriter(temporaryPathFor((folder / "clip.mp4").string()) + ".mp4", endedProcess());
   const std::string otherHost = "frame_00003.png.tmp.elsewhere.999999.0";
-  for (const std::string& name : {fs::path(mine).filename().string(), dead, deadVideo, otherHost, std::string("frame_00004.png"),
-                                  std::string("notes.tmp.txt")})
+  for (const std::string& name : {fs::path(mine).filename().string(), dead, deadVideo, otherHost,
+                                  std::string("frame_00004.png"), std::string("notes.tmp.txt")})
     touch(folder / name);
 
   std::vector<std::string> removed = removeStaleTemporaries(folder.string());

@@ -55,8 +55,8 @@ double differingFraction(const Image& a, const Image& b, int levels, Image& diff
 }
 
 void regenerate(Renderer& renderer) {
-  nlohmann::json reference{{"glRenderer", renderer.glRenderer()}, {"glVersion", renderer.glVersion()},
-                           {"frames", nlohmann::json::array()}};
+  nlohmann::json reference{
+      {"glRenderer", renderer.glRenderer()}, {"glVersion", renderer.glVersion()}, {"frames", nlohmann::json::array()}};
   output::PngEncoder encoder;
   for (const auto& [name, state] : testing::referenceFrames()) {
     const Image image = renderer.render(state);
@@ -75,8 +75,8 @@ TEST(FrameChecksum, ReferenceFramesMatch) {
   std::ifstream in(kFolder + "/reference.json");
   ASSERT_TRUE(in) << "missing " << kFolder << "/reference.json (see the comment at the top of this test)";
   const nlohmann::json reference = nlohmann::json::parse(in);
-  const bool sameRenderer = reference.at("glRenderer") == renderer.glRenderer() &&
-                            reference.at("glVersion") == renderer.glVersion();
+  const bool sameRenderer =
+      reference.at("glRenderer") == renderer.glRenderer() && reference.at("glVersion") == renderer.glVersion();
   const auto frames = testing::referenceFrames();
   ASSERT_EQ(reference.at("frames").size(), frames.size());
   output::PngEncoder encoder;

@@ -63,8 +63,8 @@ TEST(PanelLayout, AutomaticLayoutTilesTheFrame) {
     EXPECT_LE(r.y + r.height, 720);
   }
   EXPECT_DOUBLE_EQ(area, 1280.0 * 720.0);  // no gaps, no overlaps (all inside, areas add up)
-  EXPECT_EQ(rects[0].y, 0);                 // the text band on top
-  EXPECT_EQ(rects[1].x, 0);                 // the sphere on the left
+  EXPECT_EQ(rects[0].y, 0);                // the text band on top
+  EXPECT_EQ(rects[1].x, 0);                // the sphere on the left
 }
 
 TEST(PanelLayout, ExplicitRectsAreKept) {
@@ -95,8 +95,8 @@ TEST(SphereCamera, ProjectionAgreesWithPixelRays) {
     EXPECT_NEAR(cosine, 1.0, 1e-9);
   }
   // The unit sphere fills 88% of the short side: its silhouette radius is 0.44 * 400 pixels.
-  const double distance = std::sqrt(camera.eye().x * camera.eye().x + camera.eye().y * camera.eye().y +
-                                    camera.eye().z * camera.eye().z);
+  const double distance =
+      std::sqrt(camera.eye().x * camera.eye().x + camera.eye().y * camera.eye().y + camera.eye().z * camera.eye().z);
   EXPECT_NEAR(camera.focal() / std::sqrt(distance * distance - 1), 0.44 * 400, 1e-6);
 }
 

@@ -19,7 +19,9 @@ using testing::Rgb8;
 
 const double kDeg = std::acos(-1.0) / 180;
 
-Vec3 onSphere(double phi, double t) { return {std::cos(phi) * std::cos(t), std::cos(phi) * std::sin(t), std::sin(phi)}; }
+Vec3 onSphere(double phi, double t) {
+  return {std::cos(phi) * std::cos(t), std::cos(phi) * std::sin(t), std::sin(phi)};
+}
 
 // A camera looking at the middle of a grid cell (phi = t = 7.5 deg), so the panel centre shows bare sphere.
 RenderSettings probeSettings() {

@@ -72,9 +72,7 @@ TEST(BadScenes, EachNamesItsJsonPathAndWhatIsWrong) {
   }
 }
 
-TEST(BadScenes, SeveralProblemsAreAllReported) {
-  EXPECT_EQ(problemsOf(kBadDir + "several_problems.json").size(), 3u);
-}
+TEST(BadScenes, SeveralProblemsAreAllReported) { EXPECT_EQ(problemsOf(kBadDir + "several_problems.json").size(), 3u); }
 
 TEST(BadScenes, MessageStartsWithTheFileName) {
   try {

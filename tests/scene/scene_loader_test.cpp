@@ -102,8 +102,8 @@ TEST(SceneLoader, FrameCountCoversTheDurationWithBothEnds) {
 }
 
 TEST(SceneLoader, ShippedScenesLoad) {
-  for (const char* name : {"default.json", "comparison.json", "pole-passage.json", "seam.json", "massive-rods.json",
-                           "five-rods.json"}) {
+  for (const char* name :
+       {"default.json", "comparison.json", "pole-passage.json", "seam.json", "massive-rods.json", "five-rods.json"}) {
     SCOPED_TRACE(name);
     EXPECT_NO_THROW(loadScene(shippedScene(name), testLimits()));
   }

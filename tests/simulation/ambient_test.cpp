@@ -66,7 +66,8 @@ void crossCheck(const Chain& chain, const InitialState& start, double T, double 
   for (double t : times) {
     const auto a = ambient.sampleAt(t), c = christoffel.sampleAt(t), e = embedded.sampleAt(t);
     ASSERT_TRUE(a && c && e) << "a run stopped before t = " << t;
-    worst = std::max({worst, (a->hinges - c->hinges).cwiseAbs().maxCoeff(), (a->hinges - e->hinges).cwiseAbs().maxCoeff()});
+    worst =
+        std::max({worst, (a->hinges - c->hinges).cwiseAbs().maxCoeff(), (a->hinges - e->hinges).cwiseAbs().maxCoeff()});
     drift = std::max({drift, a->relativeEnergyDrift, c->relativeEnergyDrift, e->relativeEnergyDrift});
     rod = std::max({rod, a->rodLengthError, c->rodLengthError, e->rodLengthError});
   }
@@ -127,7 +128,8 @@ TEST(Ambient, CheapChartAngleMatchesTheChartInverse) {
       for (Eigen::Index i = 0; i < x.size(); ++i) x(i) = normal(rng);
       x.normalize();
       const double expected = coordinatesFromSpherePoint(x, 0.0)(rods - 3);
-      EXPECT_NEAR(chartZeroAngleForUnwrapping(chain, hingePositionsAt(chain, x), 0.0), expected, 1e-7) << rods << " rods";
+      EXPECT_NEAR(chartZeroAngleForUnwrapping(chain, hingePositionsAt(chain, x), 0.0), expected, 1e-7)
+          << rods << " rods";
     }
 }
 

@@ -118,7 +118,8 @@ TEST(PublishedFields, AgreeWithTheExactFieldToTheirDifferenceError) {
     for (double t : {-2.5, -0.4, 0.2, 1.3, 2.9}) {
       const Eigen::Vector2d c(phi, t), v(0.6, -0.9);
       const Eigen::VectorXd exact = christoffelAcceleration(chain, axes, c, v);
-      worstChristoffel = std::max(worstChristoffel, (christoffelFdAcceleration(3.0, c, v) - exact).norm() / exact.norm());
+      worstChristoffel =
+          std::max(worstChristoffel, (christoffelFdAcceleration(3.0, c, v) - exact).norm() / exact.norm());
       worstEmbedded = std::max(worstEmbedded, (embeddedFdAcceleration(3.0, c, v) - exact).norm() / exact.norm());
     }
   // Central differences: eps^2 truncation plus rounding / eps (1e-5 and 1e-4 steps, second differences).
@@ -137,7 +138,6 @@ TEST(PublishedFields, ChristoffelFdFailsOnTheSeamWhereThePublishedMetricDoes) {
   // The embedded-fd route never touches nu_in's division: fine on the seam.
   EXPECT_LT((embeddedFdAcceleration(3.0, onSeam, v) - exact).norm(), 1e-6 * exact.norm());
 }
-
 
 // ---- The shared-work -fd fields against the same stencils evaluated point by point ----------------------
 // Both evaluate the same formulas at the same stencil points; they differ only in how the sines, cosines,
@@ -192,7 +192,8 @@ TEST(PublishedFields, SharedStencilMatchesStencilByStencilNearAndOnTheSeam) {
   // t down to 1e-7 from the seam and on it: embedded-fd (sinc form, smooth there) to 3e-7; christoffel-fd,
   // whose printed metric loses digits as 1/cos^2 t, to 1e-8 / cos^2 t while cos t >= 5e-3 (closer in, the
   // published metric itself is wrong: ChristoffelFdFailsOnTheSeamWhereThePublishedMetricDoes).
-  const std::vector<double> ts = withSeamAndPoleOffsets(stateGrid(-1.8, -1.35, 0.05), {0.03, 0.01, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 0});
+  const std::vector<double> ts =
+      withSeamAndPoleOffsets(stateGrid(-1.8, -1.35, 0.05), {0.03, 0.01, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 0});
   for (double L : {2.2, 3.0, 3.3, 3.9})
     for (double phi : stateGrid(-1.4, 1.4, 0.2))
       for (double t : ts) {
@@ -247,7 +248,6 @@ TEST(PublishedFields, SharedStencilIsStillAnApproximationNotACopy) {
   EXPECT_GT(largest, 0.0);
 }
 
-
 // ---- The stencil trigonometry the shared fields rely on (simulation/stencil_trig.hpp) -------------------
 
 TEST(StencilTrig, TurnedSinesAndCosinesAreThoseOfTheSameDouble) {
@@ -259,8 +259,10 @@ TEST(StencilTrig, TurnedSinesAndCosinesAreThoseOfTheSameDouble) {
       const double angle = centre + step;
       const Turn turned = turnAt(angle, turnOf(centre), centre);
       const double scale = std::numeric_limits<double>::epsilon();
-      worst = std::max(worst, std::abs(turned.c - std::cos(angle)) / (scale * std::max(std::abs(std::cos(angle)), 0.5)));
-      worst = std::max(worst, std::abs(turned.s - std::sin(angle)) / (scale * std::max(std::abs(std::sin(angle)), 0.5)));
+      worst =
+          std::max(worst, std::abs(turned.c - std::cos(angle)) / (scale * std::max(std::abs(std::cos(angle)), 0.5)));
+      worst =
+          std::max(worst, std::abs(turned.s - std::sin(angle)) / (scale * std::max(std::abs(std::sin(angle)), 0.5)));
       const Turn throughZero = turnAt(step * 1e-3, turnOf(-step), -step);  // result ~ step / 1000
       worstNearZero = std::max(worstNearZero, std::abs(throughZero.s - std::sin(step * 1e-3)) / std::abs(step));
     }
@@ -273,7 +275,8 @@ TEST(StencilTrig, TurnedSinesAndCosinesAreThoseOfTheSameDouble) {
 
 TEST(StencilTrig, SincFromSineMatchesSinc) {
   double worst = 0;
-  for (double x = -3.0; x <= 3.0; x += 0.00731) worst = std::max(worst, std::abs(sincFromSine(x, std::sin(x)) - sinc(x)) / sinc(x));
+  for (double x = -3.0; x <= 3.0; x += 0.00731)
+    worst = std::max(worst, std::abs(sincFromSine(x, std::sin(x)) - sinc(x)) / sinc(x));
   for (double x : {0.4999999, 0.5, -0.5, 0.1, 1e-9, 0.0})
     worst = std::max(worst, std::abs(sincFromSine(x, std::sin(x)) - sinc(x)) / sinc(x));
   EXPECT_LT(worst, 3 * std::numeric_limits<double>::epsilon());
@@ -281,7 +284,8 @@ TEST(StencilTrig, SincFromSineMatchesSinc) {
   for (double a : {-2.0, -0.3, 0.0, 0.2, 0.5, 1.1, 2.9})
     for (double b : {-1.7, 1e-8, 0.4999, 0.7, 3.0}) {
       const double expected = sinc(a) * sinc(b);
-      worstProduct = std::max(worstProduct, std::abs(sincProductFromSines(a, std::sin(a), b, std::sin(b)) - expected) / expected);
+      worstProduct =
+          std::max(worstProduct, std::abs(sincProductFromSines(a, std::sin(a), b, std::sin(b)) - expected) / expected);
     }
   EXPECT_LT(worstProduct, 4 * std::numeric_limits<double>::epsilon());
 }
@@ -293,11 +297,13 @@ TEST(StencilTrig, AngleFromTheCentreMatchesAtan2) {
       const double r0 = 1.7, r = 1.7 + 0.3 * step;  // lengths need not agree
       const double x0 = r0 * std::cos(a), y0 = r0 * std::sin(a), x = r * std::cos(a + step), y = r * std::sin(a + step);
       const double expected = std::atan2(y, x);
-      worst = std::max(worst, std::abs(angleAt(y, x, y0, x0, std::atan2(y0, x0)) - expected) / (1 + std::abs(expected)));
+      worst =
+          std::max(worst, std::abs(angleAt(y, x, y0, x0, std::atan2(y0, x0)) - expected) / (1 + std::abs(expected)));
     }
   EXPECT_LT(worst, 4 * std::numeric_limits<double>::epsilon());
   // Opposite directions have a zero cross product too: no shortcut there.
-  EXPECT_EQ(angleAt(-std::sin(1.2), -std::cos(1.2), std::sin(1.2), std::cos(1.2), 1.2), std::atan2(-std::sin(1.2), -std::cos(1.2)));
+  EXPECT_EQ(angleAt(-std::sin(1.2), -std::cos(1.2), std::sin(1.2), std::cos(1.2), 1.2),
+            std::atan2(-std::sin(1.2), -std::cos(1.2)));
 }
 
 }  // namespace

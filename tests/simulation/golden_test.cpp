@@ -20,8 +20,8 @@ struct GoldenCase {
   std::string name;
   Chain chain;
   std::string method, integrator;
-  double tolerance;    // of the adaptive integrators (rk4 runs with h = 0.01)
-  double allowed;      // max difference from the stored numbers
+  double tolerance;  // of the adaptive integrators (rk4 runs with h = 0.01)
+  double allowed;    // max difference from the stored numbers
 };
 
 Chain fiveRodsWithMasses() {
@@ -43,14 +43,16 @@ std::vector<GoldenCase> goldenCases() {
   };
 }
 
-std::string goldenPath(const std::string& name) { return std::string(SL_SOURCE_DIR) + "/tests/data/golden/" + name + ".csv"; }
+std::string goldenPath(const std::string& name) {
+  return std::string(SL_SOURCE_DIR) + "/tests/data/golden/" + name + ".csv";
+}
 
 std::string runCsv(const GoldenCase& c) {
   RunConfig config = testing::config(c.method, c.integrator, c.tolerance);
   config.step = 0.01;
-  InitialState start = c.chain.rods == 4
-                           ? testing::genericStart(c.chain)
-                           : initialStateFromDrag(c.chain, Eigen::Vector4d(0.5, -0.2, 0.7, 0.4), Eigen::Vector4d(0.3, 1.0, -0.4, 0.2), true);
+  InitialState start = c.chain.rods == 4 ? testing::genericStart(c.chain)
+                                         : initialStateFromDrag(c.chain, Eigen::Vector4d(0.5, -0.2, 0.7, 0.4),
+                                                                Eigen::Vector4d(0.3, 1.0, -0.4, 0.2), true);
   Trajectory run(c.chain, start, config);
   std::ostringstream out;
   writeTrajectoryCsv(out, c.name, run, testing::evenTimes(2.0, 20));

@@ -52,7 +52,8 @@ TEST(PublishedMethods, ChristoffelFdCannotCrossTheSeamAtTightTolerance) {
 
 TEST(PublishedMethods, RefuseChainsTheyDoNotCover) {
   Chain five = Chain::uniform(5, 3.5);
-  const InitialState start = initialStateFromDrag(five, Eigen::Vector4d(1, 0.2, 0.3, 0.1), Eigen::Vector4d(0, 1, 0, 0), true);
+  const InitialState start =
+      initialStateFromDrag(five, Eigen::Vector4d(1, 0.2, 0.3, 0.1), Eigen::Vector4d(0, 1, 0, 0), true);
   for (const std::string method : {"christoffel-fd", "embedded-fd"}) {
     try {
       Trajectory run(five, start, testing::config(method));
@@ -63,7 +64,8 @@ TEST(PublishedMethods, RefuseChainsTheyDoNotCover) {
   }
   Chain massive = Chain::uniform(4, 3.0);
   massive.rodMasses(1) = 0.5;
-  EXPECT_THROW(Trajectory(massive, testing::genericStart(massive), testing::config("embedded-fd")), std::invalid_argument);
+  EXPECT_THROW(Trajectory(massive, testing::genericStart(massive), testing::config("embedded-fd")),
+               std::invalid_argument);
 }
 
 TEST(PublishedMethods, StopWithPoleFoldBackOnAPolePassage) {
@@ -73,8 +75,10 @@ TEST(PublishedMethods, StopWithPoleFoldBackOnAPolePassage) {
       Trajectory run(specChain, start, testing::config(method, integrator, 1e-10));
       std::optional<Sample> last;
       for (double t : testing::evenTimes(4.0, 400))
-        if (auto s = run.sampleAt(t)) last = s;
-        else break;
+        if (auto s = run.sampleAt(t))
+          last = s;
+        else
+          break;
       ASSERT_TRUE(run.stop()) << method << "/" << integrator << " ran through the pole";
       std::cout << method << "/" << integrator << ": " << run.stop()->reason << " at t = " << run.stop()->time << " ("
                 << run.stop()->detail << ")\n";
@@ -92,7 +96,8 @@ TEST(PublishedMethods, StopWithPoleFoldBackOnAPolePassage) {
 TEST(PublishedMethods, StartOnTheSeamWherePublishedMetricFails) {
   // metric4 as printed switches branches at |cos t| < 1e-6 and divides by nu_in ~ cos t (spec section 3).
   // Starting exactly at t = pi/2 the difference quotients straddle that branch: pinned outcomes.
-  const InitialState start = initialStateFromChart(specChain, Eigen::Vector2d(0.3, M_PI / 2), Eigen::Vector2d(0.5, 0.7));
+  const InitialState start =
+      initialStateFromChart(specChain, Eigen::Vector2d(0.3, M_PI / 2), Eigen::Vector2d(0.5, 0.7));
   Trajectory adaptive(specChain, start, testing::config("christoffel-fd", "dopri5", 1e-10));
   EXPECT_FALSE(adaptive.sampleAt(1.0));
   ASSERT_TRUE(adaptive.stop());

@@ -44,7 +44,8 @@ TEST(Trajectory, RepeatedSamplingOfOneTimeIsStable) {
 
 TEST(Trajectory, Rk4IsFourthOrder) {
   // Errors at T = 4 against the ambient method at 1e-13 (a different method, not a self-check).
-  Trajectory reference(specChain, testing::genericStart(specChain), testing::config("ambient", "bulirsch-stoer", 1e-13));
+  Trajectory reference(specChain, testing::genericStart(specChain),
+                       testing::config("ambient", "bulirsch-stoer", 1e-13));
   const Eigen::Matrix2Xd target = reference.sampleAt(4.0)->hinges;
   for (const std::string method : {"christoffel", "embedded"}) {
     std::vector<double> errors;
@@ -69,7 +70,8 @@ TEST(Trajectory, HermiteSamplingBetweenRk4StepsKeepsTheStepAccuracy) {
   RunConfig c = testing::config("christoffel", "rk4");
   c.step = 0.01;
   Trajectory run(specChain, testing::genericStart(specChain), c);
-  Trajectory reference(specChain, testing::genericStart(specChain), testing::config("ambient", "bulirsch-stoer", 1e-13));
+  Trajectory reference(specChain, testing::genericStart(specChain),
+                       testing::config("ambient", "bulirsch-stoer", 1e-13));
   double worst = 0;
   for (double t = 0.0; t < 2.0; t += 0.0037)
     worst = std::max(worst, (run.sampleAt(t)->hinges - reference.sampleAt(t)->hinges).cwiseAbs().maxCoeff());
@@ -134,9 +136,11 @@ TEST(Trajectory, RejectsBadConfigurationAndStartsWithClearErrors) {
     return std::string("no error");
   };
   const InitialState start = testing::genericStart(specChain);
-  EXPECT_NE(message([&] { Trajectory(specChain, start, testing::config("verlet")); }).find("unknown method"), std::string::npos);
-  EXPECT_NE(message([&] { Trajectory(specChain, start, testing::config("ambient", "euler")); }).find("unknown integrator"),
+  EXPECT_NE(message([&] { Trajectory(specChain, start, testing::config("verlet")); }).find("unknown method"),
             std::string::npos);
+  EXPECT_NE(
+      message([&] { Trajectory(specChain, start, testing::config("ambient", "euler")); }).find("unknown integrator"),
+      std::string::npos);
   EXPECT_NE(message([&] { Trajectory(specChain, start, testing::config("ambient", "dopri5", 0.0)); }).find("tolerance"),
             std::string::npos);
   EXPECT_NE(message([&] { Trajectory(Chain::uniform(4, 4.5), start, testing::config("ambient")); }).find("L must lie"),
@@ -145,9 +149,11 @@ TEST(Trajectory, RejectsBadConfigurationAndStartsWithClearErrors) {
   EXPECT_NE(message([&] { Trajectory(specChain, wrongSize, testing::config("ambient")); }).find("needs 3 components"),
             std::string::npos);
   InitialState notTangent{Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(1, 1, 0)};
-  EXPECT_NE(message([&] { Trajectory(specChain, notTangent, testing::config("ambient")); }).find("tangent"), std::string::npos);
+  EXPECT_NE(message([&] { Trajectory(specChain, notTangent, testing::config("ambient")); }).find("tangent"),
+            std::string::npos);
   InitialState resting{Eigen::Vector3d(1, 0, 0), Eigen::Vector3d::Zero()};
-  EXPECT_NE(message([&] { Trajectory(specChain, resting, testing::config("christoffel")); }).find("zero"), std::string::npos);
+  EXPECT_NE(message([&] { Trajectory(specChain, resting, testing::config("christoffel")); }).find("zero"),
+            std::string::npos);
   Trajectory run(specChain, start, testing::config("ambient"));
   run.sampleAt(1.0);
   EXPECT_THROW(run.sampleAt(0.5), std::invalid_argument);
@@ -156,7 +162,8 @@ TEST(Trajectory, RejectsBadConfigurationAndStartsWithClearErrors) {
 
 TEST(InitialState, ChartAndDragStartsAgree) {
   const InitialState chart = testing::genericStart(specChain);
-  const InitialState drag = initialStateFromDrag(specChain, 2.0 * chart.spherePoint, chart.sphereVelocity + 0.3 * chart.spherePoint, false);
+  const InitialState drag =
+      initialStateFromDrag(specChain, 2.0 * chart.spherePoint, chart.sphereVelocity + 0.3 * chart.spherePoint, false);
   EXPECT_LT((drag.spherePoint - chart.spherePoint).norm(), 1e-15);
   EXPECT_LT((drag.sphereVelocity - chart.sphereVelocity).norm(), 1e-15);
   const InitialState unit = initialStateFromDrag(specChain, chart.spherePoint, chart.sphereVelocity, true);
