@@ -8,21 +8,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "frames/scene_start.hpp"
 #include "scene/scene_loader.hpp"
 #include "simulation/initial_state.hpp"
 
 namespace {
-
-// The names a full build accepts (the CLI fills these from the simulation; fixed here so that the
-// fuzzer links neither the simulation nor the renderer).
-sl::SceneLimits fuzzLimits() {
-  sl::SceneLimits limits;
-  limits.methods = {"christoffel-fd", "embedded-fd", "christoffel", "embedded", "ambient"};
-  limits.integrators = {"rk4", "dopri5", "rkf78", "bulirsch-stoer"};
-  limits.adaptiveIntegrators = {"dopri5", "rkf78", "bulirsch-stoer"};
-  return limits;
-}
 
 [[noreturn]] void finding(const std::string& what) {
   std::fprintf(stderr, "scene_fuzzer: %s\n", what.c_str());
@@ -31,7 +20,7 @@ sl::SceneLimits fuzzLimits() {
 
 void checkStart(const sl::Scene& scene) {
   try {
-    const sl::InitialState start = sl::sceneStart(scene);
+    const sl::InitialState start = sl::initialStateFromSpec(scene.chain, scene.initial);
     if (!start.spherePoint.allFinite() || !start.sphereVelocity.allFinite()) {
       finding("an accepted scene gives a non-finite start");
     }
@@ -50,10 +39,9 @@ void checkStart(const sl::Scene& scene) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  static const sl::SceneLimits limits = fuzzLimits();
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
-    const sl::Scene scene = sl::parseScene(text, "fuzz.json", limits);
+    const sl::Scene scene = sl::parseScene(text, "fuzz.json");
     if (scene.runs.empty()) finding("an accepted scene without runs");
     checkStart(scene);
   } catch (const sl::SceneError& error) {

@@ -3,6 +3,7 @@
 // Must grow linearly: compare n = 10^4 with n = 10^3.
 #include <benchmark/benchmark.h>
 
+#include "contracts/registry.hpp"
 #include "simulation/ambient_system.hpp"
 #include "simulation/steppers.hpp"
 
@@ -33,7 +34,7 @@ void BM_AmbientEvaluationRodMasses(benchmark::State& state) { evaluation(state, 
 
 void BM_AmbientRk4Step(benchmark::State& state) {
   const sl::AmbientSystem system = chainOf(static_cast<int>(state.range(0)), false);
-  const std::unique_ptr<sl::Stepper> stepper = sl::makeStepper("rk4", 0.0, 1e-4);
+  const std::unique_ptr<sl::Stepper> stepper = sl::makeStepper(sl::Integrator::Rk4, 0.0, 1e-4);
   stepper->initialize(system, system.initialState(), 0.0);
   for (auto _ : state) stepper->doStep(system);
   state.SetComplexityN(state.range(0));

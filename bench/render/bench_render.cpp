@@ -22,7 +22,7 @@
 #include "output/png_sequence_sink.hpp"
 #include "output/video_sink.hpp"
 #include "render/renderer.hpp"
-#include "render/synthetic_frame.hpp"
+#include "fixtures/synthetic_frame.hpp"
 
 namespace {
 
@@ -81,10 +81,8 @@ Options parse(int argc, char** argv) {
   return o;
 }
 
-sl::RenderSettings settingsFor(const Options& o) {
-  sl::RenderSettings s;
-  s.width = o.width;
-  s.height = o.height;
+sl::ViewSettings settingsFor(const Options& o) {
+  sl::ViewSettings s;
   s.antialias = o.antialias;
   s.pathFadeSeconds = 6;
   s.camera.orbitDegreesPerSecond = o.orbit ? 6 : 0;
@@ -138,7 +136,7 @@ Split runOnce(const Options& o, sl::Renderer& renderer, const sl::SyntheticOptio
 
 int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
-  sl::Renderer renderer(settingsFor(o));
+  sl::Renderer renderer(settingsFor(o), {o.width, o.height});
   const double fps = 60;
   sl::SyntheticOptions synthetic;
   synthetic.duration = o.frames / fps;

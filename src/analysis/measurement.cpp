@@ -6,7 +6,19 @@
 #include <ctime>
 #include <vector>
 
+#include "simulation/trajectory.hpp"
+
 namespace sl {
+
+std::string statusName(const RunStatus& status) {
+  return std::visit([](auto kind) { return nameOf(kind); }, status);
+}
+
+std::optional<RunStatus> parseStatus(std::string_view name) {
+  if (const auto verdict = parseKind(kVerdicts, name)) return *verdict;
+  if (const auto reason = parseKind(kStopReasons, name)) return *reason;
+  return std::nullopt;
+}
 
 namespace {
 
@@ -62,7 +74,7 @@ Measurement compare(const RunRecord& record, const ReferencePath& reference) {
     m.maxEnergyDrift = std::max(m.maxEnergyDrift, std::abs(sample.relativeEnergyDrift));
     m.maxRodLengthError = std::max(m.maxRodLengthError, sample.rodLengthError);
   }
-  const bool checked = !reference.hinges.empty() || reference.stop;
+  const bool checked = reference.config.has_value();
   const size_t compared = std::min(record.samples.size(), reference.hinges.size());
   m.maxError = checked ? 0.0 : std::nan("");
   for (size_t k = 0; k < compared; ++k) {
@@ -75,15 +87,15 @@ Measurement compare(const RunRecord& record, const ReferencePath& reference) {
                      ? hingeDistance(record.samples.back().hinges, reference.hinges.back())
                      : std::nan("");
   if (reference.stop) {
-    m.status = "reference-stopped";
-    m.stopDetail = reference.config.method + ": " + reference.stop->reason + " at time " +
+    m.status = Verdict::ReferenceStopped;
+    m.stopDetail = referenceMethodName(reference) + ": " + nameOf(reference.stop->reason) + " at time " +
                    std::to_string(reference.stop->time) + ": " + reference.stop->detail;
   } else if (record.stop && !finished) {
     m.status = record.stop->reason;
     m.stopTime = record.stop->time;
     m.stopDetail = record.stop->detail;
   } else if (checked && !(m.maxError < kWrongPathError)) {
-    m.status = "wrong-path";
+    m.status = Verdict::WrongPath;
   }
   return m;
 }
@@ -91,7 +103,7 @@ Measurement compare(const RunRecord& record, const ReferencePath& reference) {
 }  // namespace
 
 long stepBudget(const RunConfig& config, double duration) {
-  if (!integratorIsAdaptive(config.integrator)) return static_cast<long>(std::ceil(duration / config.step)) + 10;
+  if (!traits(config.integrator).adaptive) return static_cast<long>(std::ceil(duration / config.step)) + 10;
   return std::max(1000L, static_cast<long>(std::ceil(kAdaptiveStepsPerTimeUnit * duration)));
 }
 

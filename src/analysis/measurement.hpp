@@ -2,9 +2,14 @@
 // One run measured against its reference: the errors, invariants, work and fate of a single point of a
 // work-precision chart or a single cell of a stability map.
 
+#include <array>
+#include <optional>
 #include <string>
+#include <string_view>
+#include <variant>
 
 #include "analysis/reference_path.hpp"
+#include "contracts/registry.hpp"
 
 namespace sl {
 
@@ -19,9 +24,30 @@ inline constexpr double kWrongPathError = 1e-2;
 inline constexpr double kAdaptiveStepsPerTimeUnit = 1000;
 long stepBudget(const RunConfig& config, double duration);
 
+// The measurement's own verdicts, beside the reasons a run stops (kStopReasons).
+enum class Verdict {
+  Ok,               // finished within kWrongPathError of the reference (or unchecked)
+  WrongPath,        // finished, but off the reference's path
+  ReferenceStopped  // the reference itself stopped: no verdict on the run
+};
+inline constexpr std::array<Named<Verdict>, 3> kVerdicts{{
+    {Verdict::Ok, "ok"},
+    {Verdict::WrongPath, "wrong-path"},
+    {Verdict::ReferenceStopped, "reference-stopped"},
+}};
+inline std::string nameOf(Verdict v) { return std::string(traitsOf(kVerdicts, v).name); }
+
+// What became of a run: a verdict, or why it stopped before the last grid time.
+using RunStatus = std::variant<Verdict, StopReason>;
+
+// The status as the CSVs write it: the verdict's or the stop reason's name.
+std::string statusName(const RunStatus& status);
+// The status of a name written by statusName; empty for any other text.
+std::optional<RunStatus> parseStatus(std::string_view name);
+
 struct Measurement {
-  std::string status = "ok";  // ok | wrong-path | reference-stopped | a StopInfo reason
-  double stopTime = 0;        // the run's last good time (the duration when it finished)
+  RunStatus status = Verdict::Ok;
+  double stopTime = 0;  // the run's last good time (the duration when it finished)
   std::string stopDetail;
   double finalError = 0;         // position error at the last grid time (NaN if the run stopped early)
   double maxError = 0;           // max over the grid times the run reached
@@ -33,11 +59,11 @@ struct Measurement {
   double wallSeconds = 0;  // one run: construction and sampling at the grid times
   double cpuSeconds = 0;   // the same span in this thread's CPU time (robust on a shared machine)
 
-  bool failed() const { return status != "ok"; }
+  bool failed() const { return status != RunStatus(Verdict::Ok); }
 };
 
 // Runs `config` from `start` once, sampling at the reference's grid times. With a reference that holds
-// times but no hinges (noReference), only the fate and the invariants are measured; errors are NaN.
+// times but no run (noReference), only the fate and the invariants are measured; errors are NaN.
 Measurement measureRun(const Chain& chain, const InitialState& start, const RunConfig& config,
                        const ReferencePath& reference);
 

@@ -1,24 +1,14 @@
 #include "analysis/reference_path.hpp"
 
-#include <cmath>
-
 namespace sl {
 
-std::string referenceMethodFor(const std::string& methodUnderTest) {
-  return methodUnderTest == "ambient" ? "embedded" : "ambient";
+static_assert(traitsOf(kIntegrators, tightestIntegrator()).adaptive, "references are run at a tolerance");
+
+Method referenceMethodFor(Method methodUnderTest) {
+  return methodUnderTest == Method::Ambient ? Method::Embedded : Method::Ambient;
 }
 
-std::string tightestIntegrator() {
-  std::string chosen = "dopri5";
-  for (const auto& name : integratorNames())
-    if (name == "rkf78")
-      return name;
-    else if (integratorIsAdaptive(name))
-      chosen = name;
-  return chosen;
-}
-
-RunConfig referenceConfig(const std::string& methodUnderTest) {
+RunConfig referenceConfig(Method methodUnderTest) {
   RunConfig config;
   config.method = referenceMethodFor(methodUnderTest);
   config.integrator = tightestIntegrator();
@@ -26,22 +16,7 @@ RunConfig referenceConfig(const std::string& methodUnderTest) {
   return config;
 }
 
-std::vector<double> gridTimes(double duration, double interval) {
-  std::vector<double> times;
-  const long count = std::lround(std::floor(duration / interval * (1 + 1e-12)));
-  for (long k = 0; k <= count; ++k) times.push_back(k * interval);
-  if (duration - times.back() > 1e-9 * interval)
-    times.push_back(duration);
-  else
-    times.back() = duration;
-  return times;
-}
-
-ReferencePath noReference(const std::vector<double>& times) {
-  RunConfig none;
-  none.method = "none";
-  return {none, times, {}, std::nullopt};
-}
+ReferencePath noReference(const std::vector<double>& times) { return {std::nullopt, times, {}, std::nullopt}; }
 
 ReferencePath computeReferencePath(const Chain& chain, const InitialState& start, const std::vector<double>& times,
                                    const RunConfig& config) {
@@ -58,8 +33,8 @@ ReferencePath computeReferencePath(const Chain& chain, const InitialState& start
   return path;
 }
 
-double hingeDistance(const Eigen::Matrix2Xd& a, const Eigen::Matrix2Xd& b) {
-  return (a - b).colwise().norm().maxCoeff();
+std::string referenceMethodName(const ReferencePath& reference) {
+  return reference.config ? nameOf(reference.config->method) : std::string(kNoReferenceName);
 }
 
 }  // namespace sl

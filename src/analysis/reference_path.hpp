@@ -5,10 +5,13 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <Eigen/Dense>
 
+#include "contracts/registry.hpp"
+#include "contracts/run_config.hpp"
 #include "linkage/chain.hpp"
 #include "simulation/trajectory.hpp"
 
@@ -16,22 +19,21 @@ namespace sl {
 
 inline constexpr double kReferenceTolerance = 1e-13;
 
-// The method that checks `methodUnderTest`: ambient, or embedded when the method is ambient.
-std::string referenceMethodFor(const std::string& methodUnderTest);
+// What the CSVs' reference_method column says when runs were not checked against a reference.
+inline constexpr std::string_view kNoReferenceName = "none";
 
-// The integrator for references: rkf78 (order 7(8), the cheapest at tight tolerances), else the last
-// adaptive integrator on offer.
-std::string tightestIntegrator();
+// The method that checks `methodUnderTest`: ambient, or embedded when the method is ambient.
+Method referenceMethodFor(Method methodUnderTest);
+
+// The integrator for references: rkf78, order 7(8), the cheapest adaptive integrator at tight tolerances.
+constexpr Integrator tightestIntegrator() { return Integrator::Rkf78; }
 
 // RunConfig for the reference of `methodUnderTest`: referenceMethodFor, tightestIntegrator,
 // tolerance kReferenceTolerance.
-RunConfig referenceConfig(const std::string& methodUnderTest);
-
-// 0, interval, 2 interval, ..., and duration itself as the last time.
-std::vector<double> gridTimes(double duration, double interval);
+RunConfig referenceConfig(Method methodUnderTest);
 
 struct ReferencePath {
-  RunConfig config;
+  std::optional<RunConfig> config;  // the reference's run; empty for noReference
   std::vector<double> times;
   std::vector<Eigen::Matrix2Xd> hinges;  // one per time reached
   std::optional<StopInfo> stop;          // set if the reference itself stopped (then the check is void)
@@ -43,7 +45,7 @@ ReferencePath noReference(const std::vector<double>& times);
 ReferencePath computeReferencePath(const Chain& chain, const InitialState& start, const std::vector<double>& times,
                                    const RunConfig& config);
 
-// max over hinges of |a_k - b_k|: the position error of one configuration.
-double hingeDistance(const Eigen::Matrix2Xd& a, const Eigen::Matrix2Xd& b);
+// The reference's method as the CSVs write it: its name, or kNoReferenceName.
+std::string referenceMethodName(const ReferencePath& reference);
 
 }  // namespace sl

@@ -5,6 +5,8 @@
 #include <filesystem>
 
 #include "analysis/gnuplot.hpp"
+#include "analysis/measurement.hpp"
+#include "analysis/reference_path.hpp"
 #include "analysis/stability_grid.hpp"
 #include "analysis/stability_sweep.hpp"
 
@@ -12,11 +14,11 @@ namespace sl {
 
 namespace {
 
-// One colour per failure mode, in stabilityStatusNames() order.
-const std::vector<std::string>& statusColors() {
+// One colour per status, in stabilityStatusNames() order; a status beyond the list is drawn grey.
+std::string statusColor(size_t code) {
   static const std::vector<std::string> colors = {"#1a9850", "#fdae61", "#d73027", "#f46d43", "#000000", "#7b3294",
                                                   "#2c7bb6", "#abd9e9", "#bababa", "#ffffbf", "#878787"};
-  return colors;
+  return code < colors.size() ? colors[code] : "#878787";
 }
 
 std::string failurePalette() {
@@ -25,7 +27,7 @@ std::string failurePalette() {
   std::string palette = "set palette defined (";
   std::string tics = "set cbtics (";
   for (size_t k = 0; k < names.size(); ++k) {
-    const std::string color = " '" + statusColors()[k] + "'";
+    const std::string color = " '" + statusColor(k) + "'";
     palette += (k ? ", " : "") + std::to_string(k) + color + ", " + std::to_string(k + 1) + color;
     tics += (k ? ", " : "") + gnuplotQuote(names[k]) + " " + std::to_string(k);
   }
@@ -39,7 +41,7 @@ std::string mapScript(const CsvTable& rows, const std::string& kind, const std::
   long cells = 0, within9 = 0;
   bool checked = false;  // errors against a reference; without one the left panel shows the energy drift
   for (size_t r = 0; r < rows.rows.size(); ++r)
-    if (rows.text(r, "method") == method) checked = checked || rows.text(r, "reference_method") != "none";
+    if (rows.text(r, "method") == method) checked = checked || rows.text(r, "reference_method") != kNoReferenceName;
   const std::string valueColumn = checked ? "max_error" : "max_energy_drift";
   for (size_t r = 0; r < rows.rows.size(); ++r) {
     if (rows.text(r, "method") != method) continue;
@@ -47,7 +49,7 @@ std::string mapScript(const CsvTable& rows, const std::string& kind, const std::
     setting = rows.text(r, "setting");
     const std::string status = rows.text(r, "status");
     const double value = rows.number(r, valueColumn), error = rows.number(r, "max_error");
-    const bool ok = status == "ok";
+    const bool ok = status == nameOf(Verdict::Ok);
     const double logError = ok ? std::clamp(std::log10(std::max(value, 1e-300)), -16.0, 0.0) : NAN;
     lines.push_back(rows.text(r, "x") + " " + rows.text(r, "y") + " " + formatNumber(logError) + " " +
                     std::to_string(stabilityStatusCode(status)));

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "contracts/run_config.hpp"
 #include "linkage/chain.hpp"
-#include "simulation/trajectory.hpp"
 
 namespace sl {
 

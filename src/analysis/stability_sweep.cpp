@@ -12,6 +12,8 @@
 #include <thread>
 
 #include "analysis/measurement.hpp"
+#include "analysis/option_checks.hpp"
+#include "contracts/time_grid.hpp"
 
 namespace sl {
 
@@ -25,8 +27,8 @@ Shard parseShard(const std::string& text) {
   throw std::invalid_argument("--shard: expected K/N with 1 <= K <= N (e.g. 2/4), found '" + text + "'");
 }
 
-std::string sweepIntegratorFor(const std::string& method) {
-  return method.size() > 3 && method.ends_with("-fd") ? "rk4" : RunConfig().integrator;
+Integrator sweepIntegratorFor(Method method) {
+  return traits(method).published ? Integrator::Rk4 : RunConfig().integrator;
 }
 
 std::vector<std::string> stabilityColumns() {
@@ -51,54 +53,55 @@ std::vector<std::string> stabilityColumns() {
 
 namespace {
 
-RunConfig sweepConfig(const StabilityOptions& options, const std::string& method) {
+RunConfig sweepConfig(const StabilityOptions& options, Method method) {
   RunConfig config;
   config.method = method;
-  config.integrator = options.integrator.empty() ? sweepIntegratorFor(method) : options.integrator;
+  config.integrator = options.integrator.value_or(sweepIntegratorFor(method));
   config.tolerance = options.tolerance;
   config.step = options.step;
   config.maxSteps = stepBudget(config, options.duration);
   return config;
 }
 
-double settingOf(const RunConfig& config) {
-  return integratorIsAdaptive(config.integrator) ? config.tolerance : config.step;
-}
-
 // The rows of one cell: each method against its reference (computed once per reference method).
-std::vector<std::vector<std::string>> cellRows(const StabilityOptions& options, const std::vector<std::string>& methods,
+std::vector<std::vector<std::string>> cellRows(const StabilityOptions& options, const std::vector<Method>& methods,
                                                long cellIndex) {
   const int i = static_cast<int>(cellIndex % options.grid), j = static_cast<int>(cellIndex / options.grid);
   std::vector<std::vector<std::string>> rows;
-  std::map<std::string, ReferencePath> references;
+  // By reference method; the one entry without a reference is keyed by no method.
+  std::map<std::optional<Method>, ReferencePath> references;
   // Without a reference the samples would only feed the invariants, which the run tracks at every step:
   // the start and the end suffice (dense samples cost an extra step each, as much as the run itself).
   const auto times =
-      gridTimes(options.duration, options.checkAgainstReference ? options.sampleInterval : options.duration);
+      gridTimesThrough(options.duration, options.checkAgainstReference ? options.sampleInterval : options.duration);
   try {
     const StabilityCell cell = stabilityCell(options.kind, options.grid, i, j, options.duration);
-    for (const auto& method : methods) {
-      const std::string referenceMethod = options.checkAgainstReference ? referenceMethodFor(method) : "none";
+    for (const Method method : methods) {
+      const std::optional<Method> referenceMethod =
+          options.checkAgainstReference ? std::optional(referenceMethodFor(method)) : std::nullopt;
       if (!references.count(referenceMethod))
-        references[referenceMethod] = options.checkAgainstReference
+        references[referenceMethod] = referenceMethod
                                           ? computeReferencePath(cell.chain, cell.start, times, referenceConfig(method))
                                           : noReference(times);
+      const ReferencePath& reference = references[referenceMethod];
       const RunConfig config = sweepConfig(options, method);
-      const Measurement m = measureRun(cell.chain, cell.start, config, references[referenceMethod]);
+      const Measurement m = measureRun(cell.chain, cell.start, config, reference);
       rows.push_back({std::to_string(cellIndex), std::to_string(i), std::to_string(j), formatNumber(cell.x),
-                      formatNumber(cell.y), method, config.integrator, formatNumber(settingOf(config)), m.status,
-                      formatNumber(m.stopTime), formatNumber(m.finalError), formatNumber(m.maxError),
-                      formatNumber(m.maxEnergyDrift), formatNumber(m.maxRodLengthError), std::to_string(m.evaluations),
-                      referenceMethod, m.stopDetail});
+                      formatNumber(cell.y), nameOf(method), nameOf(config.integrator),
+                      formatNumber(config.accuracySetting()), statusName(m.status), formatNumber(m.stopTime),
+                      formatNumber(m.finalError), formatNumber(m.maxError), formatNumber(m.maxEnergyDrift),
+                      formatNumber(m.maxRodLengthError), std::to_string(m.evaluations), referenceMethodName(reference),
+                      m.stopDetail});
     }
   } catch (const std::exception& error) {
     // A start the reference cannot construct (e.g. the backward run of a pole cell stopped) is a result too.
     rows.clear();
-    for (const auto& method : methods) {
+    for (const Method method : methods) {
       const RunConfig config = sweepConfig(options, method);
-      rows.push_back({std::to_string(cellIndex), std::to_string(i), std::to_string(j), "nan", "nan", method,
-                      config.integrator, formatNumber(settingOf(config)), "reference-stopped", "0", "nan", "nan", "nan",
-                      "nan", "0", referenceMethodFor(method), error.what()});
+      rows.push_back({std::to_string(cellIndex), std::to_string(i), std::to_string(j), "nan", "nan", nameOf(method),
+                      nameOf(config.integrator), formatNumber(config.accuracySetting()),
+                      nameOf(Verdict::ReferenceStopped), "0", "nan", "nan", "nan", "nan", "0",
+                      nameOf(referenceMethodFor(method)), error.what()});
     }
   }
   return rows;
@@ -110,7 +113,7 @@ CsvTable runStabilitySweep(const StabilityOptions& options, const CellProgress& 
   if (!isStabilityKind(options.kind))
     throw std::invalid_argument("unknown stability sweep kind '" + options.kind + "'");
   if (options.grid < 1) throw std::invalid_argument("--grid must be at least 1");
-  const auto methods = options.methods.empty() ? methodNames() : options.methods;
+  const auto methods = options.methods.empty() ? kindsOf(kMethods) : options.methods;
   std::vector<long> cells;
   for (long c = options.shard.index - 1; c < static_cast<long>(options.grid) * options.grid; c += options.shard.count)
     cells.push_back(c);
@@ -198,17 +201,16 @@ bool mergeStabilityShards(const std::string& outDir, const std::string& kind, in
 }
 
 std::vector<std::string> stabilityStatusNames() {
-  return {"ok",
-          "wrong-path",
-          "pole-fold-back",
-          "pole-singularity",
-          "non-finite",
-          "energy-blow-up",
-          "step-size-collapse",
-          "rod-length",
-          "max-steps",
-          "reference-stopped",
-          "other"};
+  // The summary's columns and the maps' colours follow this order, so it is kept fixed: the chart's own
+  // failure (what these maps are about) before the other stop reasons, and "pole-singularity", which no run
+  // reports (its column is always 0) but whose column the summary CSVs carry.
+  std::vector<std::string> names = {nameOf(Verdict::Ok), nameOf(Verdict::WrongPath), nameOf(StopReason::PoleFoldBack),
+                                    "pole-singularity"};
+  for (const StopReasonTraits& reason : kStopReasons)
+    if (reason.kind != StopReason::PoleFoldBack) names.emplace_back(reason.name);
+  names.push_back(nameOf(Verdict::ReferenceStopped));
+  names.push_back("other");
+  return names;
 }
 
 int stabilityStatusCode(const std::string& status) {
@@ -240,10 +242,10 @@ CsvTable stabilitySummary(const CsvTable& rows) {
     Tally& t = tallies[method];
     t.integrator = rows.text(r, "integrator");
     t.setting = rows.text(r, "setting");
-    const bool ok = rows.text(r, "status") == "ok";
+    const bool ok = rows.text(r, "status") == nameOf(Verdict::Ok);
     const double error = rows.number(r, "max_error");
     t.cells += 1;
-    t.checked = t.checked || rows.text(r, "reference_method") != "none";
+    t.checked = t.checked || rows.text(r, "reference_method") != kNoReferenceName;
     t.within6 += ok && error <= 1e-6;
     t.within9 += ok && error <= 1e-9;
     t.errors.push_back(ok ? error : INFINITY);

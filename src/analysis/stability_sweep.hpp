@@ -5,11 +5,14 @@
 // A sweep splits into shards (cells c with c mod N = K - 1) whose rows merge into the same table.
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "analysis/csv_table.hpp"
 #include "analysis/stability_grid.hpp"
+#include "contracts/registry.hpp"
+#include "contracts/run_config.hpp"
 
 namespace sl {
 
@@ -26,8 +29,8 @@ struct StabilityOptions {
   int grid = 64;
   double duration = 20;
   double sampleInterval = 0.1;
-  std::vector<std::string> methods;  // empty: all of methodNames()
-  std::string integrator;            // empty: each method's sweep default (sweepIntegratorFor)
+  std::vector<Method> methods;           // empty: every method of the registry (kMethods)
+  std::optional<Integrator> integrator;  // empty: each method's sweep default (sweepIntegratorFor)
   double tolerance = RunConfig().tolerance;
   double step = RunConfig().step;
   bool checkAgainstReference = true;  // false: fate and invariants only (no reference runs: much faster)
@@ -38,10 +41,10 @@ struct StabilityOptions {
 // Called after each cell with (cells done, cells in this shard); from worker threads, serialised.
 using CellProgress = std::function<void(long done, long total)>;
 
-// The integrator a method is swept with when none is given: rk4 for the published -fd methods (the
-// spec's demo integrates them with RK4; adaptive steps crawl at their poles), the default run's
-// integrator (RunConfig) for the others.
-std::string sweepIntegratorFor(const std::string& method);
+// The integrator a method is swept with when none is given: rk4 for the published methods (the spec's
+// demo integrates them with RK4; adaptive steps crawl at their poles), the default run's integrator
+// (RunConfig) for the others.
+Integrator sweepIntegratorFor(Method method);
 
 std::vector<std::string> stabilityColumns();
 
@@ -64,7 +67,8 @@ std::vector<int> stabilityShardCounts(const std::string& outDir, const std::stri
 std::vector<std::string> stabilitySummaryColumns();
 CsvTable stabilitySummary(const CsvTable& rows);
 
-// Failure modes in map order (code = index): ok first.
+// The statuses of the rows in map order (code = index; also the summary's column order): the measurement's
+// verdicts and the runs' stop reasons, ok first, then "other" for any other text.
 std::vector<std::string> stabilityStatusNames();
 int stabilityStatusCode(const std::string& status);
 

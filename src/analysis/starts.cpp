@@ -5,15 +5,16 @@
 
 #include "analysis/reference_path.hpp"
 #include "simulation/initial_state.hpp"
+#include "simulation/trajectory.hpp"
 
 namespace sl {
 
 InitialState stateArrivingAt(const Chain& chain, const InitialState& arrival, double arrivalTime) {
   const InitialState reversed{arrival.spherePoint, -arrival.sphereVelocity};
-  Trajectory backwards(chain, reversed, referenceConfig("ambient"));
+  Trajectory backwards(chain, reversed, referenceConfig(Method::Ambient));
   const auto end = backwards.sampleAt(arrivalTime);
   if (!end)
-    throw std::runtime_error("the backward reference run stopped (" + backwards.stop()->reason + " at time " +
+    throw std::runtime_error("the backward reference run stopped (" + nameOf(backwards.stop()->reason) + " at time " +
                              std::to_string(backwards.stop()->time) + ")");
   return {end->spherePoint, -end->sphereVelocity};
 }

@@ -9,8 +9,8 @@
 
 #include <Eigen/Dense>
 
+#include "contracts/run_config.hpp"
 #include "linkage/chain.hpp"
-#include "simulation/trajectory.hpp"
 
 namespace sl {
 

@@ -6,22 +6,26 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <stdexcept>
+
+#include "analysis/option_checks.hpp"
+#include "contracts/time_grid.hpp"
 
 namespace sl {
 
-const std::vector<double>& settingsFor(const std::string& integrator, const WorkPrecisionOptions& options) {
-  return integratorIsAdaptive(integrator) ? options.tolerances : options.steps;
+const std::vector<double>& settingsFor(Integrator integrator, const WorkPrecisionOptions& options) {
+  return traits(integrator).adaptive ? options.tolerances : options.steps;
 }
 
-std::string settingKind(const std::string& integrator) { return integratorIsAdaptive(integrator) ? "tol" : "h"; }
+std::string settingKind(Integrator integrator) { return traits(integrator).adaptive ? "tol" : "h"; }
 
 namespace {
 
-RunConfig configFor(const std::string& method, const std::string& integrator, double setting, double duration) {
+RunConfig configFor(Method method, Integrator integrator, double setting, double duration) {
   RunConfig config;
   config.method = method;
   config.integrator = integrator;
-  if (integratorIsAdaptive(integrator))
+  if (traits(integrator).adaptive)
     config.tolerance = setting;
   else
     config.step = setting;
@@ -34,18 +38,18 @@ RunConfig configFor(const std::string& method, const std::string& integrator, do
 std::vector<WorkPrecisionPoint> runWorkPrecision(const std::vector<NamedStart>& starts,
                                                  const WorkPrecisionOptions& options,
                                                  const ProgressCallback& progress) {
-  const auto methods = options.methods.empty() ? methodNames() : options.methods;
-  const auto integrators = options.integrators.empty() ? integratorNames() : options.integrators;
+  const auto methods = options.methods.empty() ? kindsOf(kMethods) : options.methods;
+  const auto integrators = options.integrators.empty() ? kindsOf(kIntegrators) : options.integrators;
   std::vector<WorkPrecisionPoint> points;
   for (const auto& start : starts) {
-    const auto times = gridTimes(start.duration, options.sampleInterval);
-    std::map<std::string, ReferencePath> references;  // by reference method
-    for (const auto& method : methods) {
-      const std::string referenceMethod = referenceMethodFor(method);
+    const auto times = gridTimesThrough(start.duration, options.sampleInterval);
+    std::map<Method, ReferencePath> references;  // by reference method
+    for (const Method method : methods) {
+      const Method referenceMethod = referenceMethodFor(method);
       if (!references.count(referenceMethod))
         references[referenceMethod] = computeReferencePath(start.chain, start.state, times, referenceConfig(method));
       const ReferencePath& reference = references[referenceMethod];
-      for (const auto& integrator : integrators) {
+      for (const Integrator integrator : integrators) {
         for (double setting : settingsFor(integrator, options)) {
           WorkPrecisionPoint point{start.name, method, integrator, setting, referenceMethod, {}};
           point.measurement =
@@ -84,22 +88,44 @@ CsvTable workPrecisionTable(const std::vector<WorkPrecisionPoint>& points) {
   CsvTable table{workPrecisionColumns(), {}};
   for (const auto& p : points) {
     const Measurement& m = p.measurement;
-    table.rows.push_back({p.start, p.method, p.integrator, settingKind(p.integrator), formatNumber(p.setting), m.status,
-                          formatNumber(m.wallSeconds), formatNumber(m.cpuSeconds), std::to_string(m.evaluations),
-                          std::to_string(m.steps), formatNumber(m.finalError), formatNumber(m.maxError),
-                          formatNumber(m.maxEnergyDrift), formatNumber(m.maxRodLengthError), formatNumber(m.stopTime),
-                          p.referenceMethod, m.stopDetail});
+    table.rows.push_back(
+        {p.start, nameOf(p.method), nameOf(p.integrator), settingKind(p.integrator), formatNumber(p.setting),
+         statusName(m.status), formatNumber(m.wallSeconds), formatNumber(m.cpuSeconds), std::to_string(m.evaluations),
+         std::to_string(m.steps), formatNumber(m.finalError), formatNumber(m.maxError), formatNumber(m.maxEnergyDrift),
+         formatNumber(m.maxRodLengthError), formatNumber(m.stopTime), nameOf(p.referenceMethod), m.stopDetail});
   }
   return table;
 }
 
+namespace {
+
+// The kind a table's field names; throws std::invalid_argument naming the row and column.
+template <class Table>
+auto kindIn(const CsvTable& table, size_t row, const std::string& column, const Table& kinds) {
+  const std::string& name = table.text(row, column);
+  if (const auto kind = parseKind(kinds, name)) return *kind;
+  throw std::invalid_argument("row " + std::to_string(row + 1) + ": unknown " + column + " '" + name + "'");
+}
+
+RunStatus statusIn(const CsvTable& table, size_t row) {
+  const std::string& name = table.text(row, "status");
+  if (const auto status = parseStatus(name)) return *status;
+  throw std::invalid_argument("row " + std::to_string(row + 1) + ": unknown status '" + name + "'");
+}
+
+}  // namespace
+
 std::vector<WorkPrecisionPoint> workPrecisionPointsFromTable(const CsvTable& table) {
   std::vector<WorkPrecisionPoint> points;
   for (size_t r = 0; r < table.rows.size(); ++r) {
-    WorkPrecisionPoint p{table.text(r, "start"),     table.text(r, "method"),           table.text(r, "integrator"),
-                         table.number(r, "setting"), table.text(r, "reference_method"), {}};
+    WorkPrecisionPoint p{table.text(r, "start"),
+                         kindIn(table, r, "method", kMethods),
+                         kindIn(table, r, "integrator", kIntegrators),
+                         table.number(r, "setting"),
+                         kindIn(table, r, "reference_method", kMethods),
+                         {}};
     Measurement& m = p.measurement;
-    m.status = table.text(r, "status");
+    m.status = statusIn(table, r);
     m.wallSeconds = table.number(r, "wall_seconds");
     m.cpuSeconds = table.number(r, "cpu_seconds");
     m.evaluations = std::stol(table.text(r, "evaluations"));
@@ -131,7 +157,7 @@ struct SettingSummary {
 
 std::vector<CheapestSetting> cheapestSettings(const std::vector<WorkPrecisionPoint>& points,
                                               const std::vector<double>& targets) {
-  using SeriesKey = std::pair<std::string, std::string>;
+  using SeriesKey = std::pair<Method, Integrator>;
   std::vector<SeriesKey> order;
   std::set<std::string> allStarts;
   std::map<SeriesKey, std::map<double, SettingSummary>> summaries;
@@ -171,8 +197,8 @@ std::string cheapestSettingsText(const std::vector<CheapestSetting>& cheapest, c
   auto cell = [](const CheapestSetting& c) -> std::string {
     if (!c.reached) return "never";
     char text[96];
-    std::snprintf(text, sizeof text, "%s=%-6g %7.2f ms (cpu %.2f)", integratorIsAdaptive(c.integrator) ? "tol" : "h",
-                  c.setting, c.worstWallSeconds * 1e3, c.worstCpuSeconds * 1e3);
+    std::snprintf(text, sizeof text, "%s=%-6g %7.2f ms (cpu %.2f)", settingKind(c.integrator).c_str(), c.setting,
+                  c.worstWallSeconds * 1e3, c.worstCpuSeconds * 1e3);
     return text;
   };
   std::string out;
@@ -185,7 +211,8 @@ std::string cheapestSettingsText(const std::vector<CheapestSetting>& cheapest, c
   }
   out += "\n";
   for (size_t i = 0; i < cheapest.size(); i += targets.size()) {
-    std::snprintf(line, sizeof line, "%-16s %-10s", cheapest[i].method.c_str(), cheapest[i].integrator.c_str());
+    std::snprintf(line, sizeof line, "%-16s %-10s", nameOf(cheapest[i].method).c_str(),
+                  nameOf(cheapest[i].integrator).c_str());
     out += line;
     for (size_t t = 0; t < targets.size(); ++t) {
       std::snprintf(line, sizeof line, " | %-31s", cell(cheapest[i + t]).c_str());

@@ -10,21 +10,22 @@
 #include "analysis/csv_table.hpp"
 #include "analysis/measurement.hpp"
 #include "analysis/starts.hpp"
+#include "contracts/registry.hpp"
 
 namespace sl {
 
 struct WorkPrecisionPoint {
   std::string start;
-  std::string method;
-  std::string integrator;
+  Method method = Method::Ambient;
+  Integrator integrator = Integrator::Rkf78;
   double setting = 0;  // the step (fixed-step integrators) or the tolerance (adaptive ones)
-  std::string referenceMethod;
+  Method referenceMethod = Method::Embedded;
   Measurement measurement;
 };
 
 struct WorkPrecisionOptions {
-  std::vector<std::string> methods;      // empty: all of methodNames()
-  std::vector<std::string> integrators;  // empty: all of integratorNames()
+  std::vector<Method> methods;          // empty: every method of the registry (kMethods)
+  std::vector<Integrator> integrators;  // empty: every integrator of the registry (kIntegrators)
   std::vector<double> steps = {0.2, 0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001};
   std::vector<double> tolerances = {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13, 1e-14};
   double sampleInterval = 0.1;  // the grid on which errors are taken
@@ -32,10 +33,10 @@ struct WorkPrecisionOptions {
 };
 
 // The settings swept for one integrator: options.steps or options.tolerances.
-const std::vector<double>& settingsFor(const std::string& integrator, const WorkPrecisionOptions& options);
+const std::vector<double>& settingsFor(Integrator integrator, const WorkPrecisionOptions& options);
 
 // "h" for fixed-step integrators, "tol" for adaptive ones.
-std::string settingKind(const std::string& integrator);
+std::string settingKind(Integrator integrator);
 
 using ProgressCallback = std::function<void(const WorkPrecisionPoint&)>;
 
@@ -46,11 +47,13 @@ std::vector<WorkPrecisionPoint> runWorkPrecision(const std::vector<NamedStart>& 
 // === CSV: one row per point, named columns (docs/analysis.md lists them)
 std::vector<std::string> workPrecisionColumns();
 CsvTable workPrecisionTable(const std::vector<WorkPrecisionPoint>& points);
+// Throws std::invalid_argument naming the row and column of a name that is no method, integrator or status.
 std::vector<WorkPrecisionPoint> workPrecisionPointsFromTable(const CsvTable& table);
 
 // === The summary: the cheapest setting of each method x integrator that reaches a target
 struct CheapestSetting {
-  std::string method, integrator;
+  Method method = Method::Ambient;
+  Integrator integrator = Integrator::Rkf78;
   double target = 0;
   bool reached = false;
   double setting = 0;           // valid when reached

@@ -9,12 +9,13 @@
 
 #include <CLI/CLI.hpp>
 
-#include "analysis/commands.hpp"
 #include "analysis/csv_table.hpp"
 #include "analysis/gnuplot.hpp"
 #include "analysis/option_checks.hpp"
 #include "analysis/work_precision.hpp"
 #include "analysis/work_precision_charts.hpp"
+#include "cli/commands.hpp"
+#include "contracts/registry.hpp"
 
 namespace sl {
 
@@ -22,6 +23,7 @@ namespace {
 
 struct BenchArguments {
   std::vector<std::string> starts;
+  std::vector<std::string> methods, integrators;  // as given; parsed into options
   WorkPrecisionOptions options;
   std::vector<double> targets = {1e-6, 1e-9, 1e-10, 1e-12};
   std::string out = "renders/bench";
@@ -55,8 +57,8 @@ void runBench(BenchArguments& args) {
     args.options.tolerances = {1e-4, 1e-7, 1e-10, 1e-13};
     args.options.repeats = 3;
   }
-  requireKnownNames("--methods", "method", args.options.methods, methodNames());
-  requireKnownNames("--integrators", "integrator", args.options.integrators, integratorNames());
+  args.options.methods = parseKindsOption("--methods", "method", args.methods, kMethods);
+  args.options.integrators = parseKindsOption("--integrators", "integrator", args.integrators, kIntegrators);
   requirePositive("--steps", args.options.steps);
   requirePositive("--tolerances", args.options.tolerances);
   requirePositive("--targets", args.targets);
@@ -68,8 +70,8 @@ void runBench(BenchArguments& args) {
   long done = 0;
   const auto points = runWorkPrecision(starts, args.options, [&](const WorkPrecisionPoint& p) {
     if (showProgress)
-      std::fprintf(stderr, "\r%-14s %-15s %-15s %-8g %-16s   [%ld]   ", p.start.c_str(), p.method.c_str(),
-                   p.integrator.c_str(), p.setting, p.measurement.status.c_str(), ++done);
+      std::fprintf(stderr, "\r%-14s %-15s %-15s %-8g %-16s   [%ld]   ", p.start.c_str(), nameOf(p.method).c_str(),
+                   nameOf(p.integrator).c_str(), p.setting, statusName(p.measurement.status).c_str(), ++done);
   });
   if (showProgress) std::fprintf(stderr, "\n");
 
@@ -97,8 +99,8 @@ void addBenchCommand(CLI::App& app) {
   bench->add_option("--start", args->starts,
                     "shipped start to run (repeatable; default all: generic, seam-crossing, near-pole, through-pole, "
                     "L-near-2, L-near-4)");
-  bench->add_option("--methods", args->options.methods, "methods (default all)")->delimiter(',');
-  bench->add_option("--integrators", args->options.integrators, "integrators (default all)")->delimiter(',');
+  bench->add_option("--methods", args->methods, "methods (default all)")->delimiter(',');
+  bench->add_option("--integrators", args->integrators, "integrators (default all)")->delimiter(',');
   bench->add_option("--steps", args->options.steps, "rk4 steps to sweep")->delimiter(',');
   bench->add_option("--tolerances", args->options.tolerances, "adaptive tolerances to sweep")->delimiter(',');
   bench->add_option("--targets", args->targets, "errors for the cheapest-setting table")->delimiter(',');

@@ -1,5 +1,5 @@
 #pragma once
-// The subcommands of `linkage`, one file each (command_<name>.cpp). Each adds itself to the app with
+// The subcommands of `linkage`, one file each (<name>_command.cpp). Each adds itself to the app with
 // its options and a callback that does the work and throws CommandExit (exit_codes.hpp) to fail.
 
 namespace CLI {
@@ -13,5 +13,9 @@ void addSimulateCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
 void addDiffCommand(CLI::App& app);
 void addListMethodsCommand(CLI::App& app);
+// `linkage bench`: work-precision sweeps, CSV, charts and the cheapest-setting table.
+void addBenchCommand(CLI::App& app);
+// `linkage stability`: stability maps over grids of starts, sharded and merged.
+void addStabilityCommand(CLI::App& app);
 
 }  // namespace sl

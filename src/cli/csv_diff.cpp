@@ -39,7 +39,8 @@ double hingeDistance(const Row& a, const Row& b, const std::vector<std::pair<int
 RunDifference compareRun(const std::string& name, const std::vector<const Row*>& before,
                          const std::vector<const Row*>& after, const std::vector<std::pair<int, int>>& columns,
                          double tolerance) {
-  RunDifference result{name};
+  RunDifference result;
+  result.run = name;
   const size_t common = std::min(before.size(), after.size());
   for (size_t i = 0; i < common; ++i) {
     const Row& a = *before[i];

@@ -32,7 +32,9 @@ std::map<int, std::string> readPixelHashes(const std::string& folder) {
 }
 
 FolderDifference compareFolders(const std::map<int, std::string>& before, const std::map<int, std::string>& after) {
-  FolderDifference result{static_cast<int>(before.size()), static_cast<int>(after.size())};
+  FolderDifference result;
+  result.framesBefore = static_cast<int>(before.size());
+  result.framesAfter = static_cast<int>(after.size());
   std::set<int> frames;
   for (const auto& [frame, hash] : before) frames.insert(frame);
   for (const auto& [frame, hash] : after) frames.insert(frame);

@@ -6,9 +6,6 @@
 
 #include "cli/commands.hpp"
 #include "cli/exit_codes.hpp"
-#ifdef SL_HAVE_ANALYSIS_COMMANDS
-#include "analysis/commands.hpp"
-#endif
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -24,10 +21,8 @@ int main(int argc, char** argv) {
   sl::addValidateCommand(app);
   sl::addDiffCommand(app);
   sl::addListMethodsCommand(app);
-#ifdef SL_HAVE_ANALYSIS_COMMANDS
   sl::addBenchCommand(app);
   sl::addStabilityCommand(app);
-#endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {

@@ -8,7 +8,7 @@ void reportStops(const Scene& scene, const std::vector<Trajectory>& runs) {
   for (size_t i = 0; i < runs.size(); ++i) {
     const std::optional<StopInfo>& stop = runs[i].stop();
     if (!stop) continue;
-    std::cerr << "run \"" << scene.runs[i].name << "\" stopped at t = " << stop->time << ": " << stop->reason
+    std::cerr << "run \"" << scene.runs[i].name << "\" stopped at t = " << stop->time << ": " << nameOf(stop->reason)
               << (stop->detail.empty() ? "" : " (" + stop->detail + ")") << '\n';
   }
 }

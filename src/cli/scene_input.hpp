@@ -1,20 +1,26 @@
 #pragma once
-// Scenes as the commands read them: validated against what this build of the program accepts.
+// Scenes as the commands read them. Every command goes through these, so that what `validate` accepts,
+// `render` and `simulate` accept too.
 
 #include <string>
+#include <vector>
 
+#include "contracts/run_config.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_loader.hpp"
+#include "simulation/trajectory.hpp"
 
 namespace sl {
-
-// Method and integrator names from the simulation, the largest image from the renderer.
-SceneLimits programLimits();
 
 // Loads and validates; on problems prints them all to stderr and throws CommandExit(kExitBadInput).
 Scene loadSceneForCommand(const std::string& file);
 
 // Throws CommandExit(kExitBadInput) listing the problems, if any.
 void failOnProblems(const std::string& file, const std::vector<SceneProblem>& problems);
+
+// The scene's start as the runs' InitialState, and one Trajectory per run from it. A start or run the
+// simulation refuses is a problem of the scene: CommandExit(kExitBadInput) naming the file and the JSON path.
+InitialState sceneStart(const Scene& scene);
+std::vector<Trajectory> startRuns(const Scene& scene, const InitialState& start);
 
 }  // namespace sl

@@ -9,17 +9,20 @@
 
 #include <CLI/CLI.hpp>
 
-#include "analysis/commands.hpp"
 #include "analysis/gnuplot.hpp"
 #include "analysis/option_checks.hpp"
 #include "analysis/stability_charts.hpp"
 #include "analysis/stability_sweep.hpp"
+#include "cli/commands.hpp"
+#include "contracts/registry.hpp"
 
 namespace sl {
 
 namespace {
 
 struct StabilityArguments {
+  std::vector<std::string> methods;  // as given; parsed into options
+  std::string integrator;            // as given, empty: each method's sweep default
   StabilityOptions options;
   std::string shard;
   double duration = 0;  // 0: the kind's default
@@ -58,9 +61,9 @@ void runStability(StabilityArguments& args) {
     for (const auto& k : stabilityKindNames()) kinds += (kinds.empty() ? "" : ", ") + k;
     throw CLI::ValidationError("--kind", "unknown sweep kind '" + options.kind + "' (expected one of " + kinds + ")");
   }
-  requireKnownNames("--methods", "method", options.methods, methodNames());
-  if (!options.integrator.empty())
-    requireKnownNames("--integrator", "integrator", {options.integrator}, integratorNames());
+  options.methods = parseKindsOption("--methods", "method", args.methods, kMethods);
+  if (!args.integrator.empty())
+    options.integrator = parseKindOption("--integrator", "integrator", args.integrator, kIntegrators);
   options.duration = args.duration > 0 ? args.duration : defaultStabilityDuration(options.kind);
   if (args.charts && !gnuplotAvailable())
     throw std::runtime_error("charts need gnuplot with pngcairo: apt-get install gnuplot-nox (or pass --no-charts)");
@@ -125,9 +128,9 @@ void addStabilityCommand(CLI::App& app) {
   stability->add_option("--interval", args->options.sampleInterval, "error grid spacing in time units")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  stability->add_option("--methods", args->options.methods, "methods (default all)")->delimiter(',');
+  stability->add_option("--methods", args->methods, "methods (default all)")->delimiter(',');
   stability->add_option(
-      "--integrator", args->options.integrator,
+      "--integrator", args->integrator,
       "integrator for every method (default: rk4 for the published -fd methods, the default run's otherwise)");
   stability->add_option("--tolerance", args->options.tolerance, "adaptive tolerance (default: the default run's)")
       ->check(CLI::PositiveNumber)

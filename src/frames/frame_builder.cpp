@@ -5,7 +5,6 @@
 #include <limits>
 #include <stdexcept>
 
-#include "frames/scene_start.hpp"
 
 namespace sl {
 
@@ -39,24 +38,17 @@ ColorRGB runColor(const Scene& scene, size_t run) {
   return chosen ? *chosen : palette[run % std::size(palette)];
 }
 
-std::vector<Trajectory> makeTrajectories(const Scene& scene) {
-  const InitialState start = sceneStart(scene);
-  std::vector<Trajectory> runs;
-  for (const RunSpec& run : scene.runs) runs.emplace_back(scene.chain, start, run.config);
-  return runs;
-}
-
-FrameBuilder::FrameBuilder(const Scene& scene, std::vector<Trajectory> runs)
+FrameBuilder::FrameBuilder(const Scene& scene, const InitialState& start, std::vector<Trajectory> runs)
     : scene_(scene),
       runs_(std::move(runs)),
-      view_(scene.chain.rods, sceneStart(scene).spherePoint),
+      view_(scene.chain.rods, start.spherePoint),
       frameCount_(scene.frameCount()),
       history_(runs_.size()),
       divergence_(runs_.empty() ? 0 : runs_.size() - 1) {
   for (size_t i = 0; i < runs_.size(); ++i) {
     RunFrame& frame = history_[i].frame;
     frame.name = scene.runs[i].name;
-    frame.method = scene.runs[i].config.method;
+    frame.method = nameOf(scene.runs[i].config.method);
     frame.color = runColor(scene, i);
     frame.trails.resize(scene.view.trailHinges.size());
   }
@@ -95,20 +87,20 @@ void FrameBuilder::sampleRunAt(size_t run, double t, bool isFrameTime) {
     frame.stopped = true;
     const std::optional<StopInfo>& stop = runs_[run].stop();
     frame.stopTime = stop ? stop->time : t;
-    frame.stopReason = stop ? stop->reason : "stopped";
-    history.hingesAtFrame.clear();
+    if (stop) frame.stopReason = nameOf(stop->reason);
+    history.hingesAtFrame.resize(2, 0);
     return;
   }
   frame.current = view_.project(sample->spherePoint);
   frame.path.push_back(frame.current);
   frame.pathTimes.push_back(t);
-  fadeOut(frame.path, frame.pathTimes, t, scene_.view.render.pathFadeSeconds);
+  fadeOut(frame.path, frame.pathTimes, t, scene_.view.pathFadeSeconds);
   if (!isFrameTime) return;
   frame.hinges = hingeList(sample->hinges);
-  history.hingesAtFrame = frame.hinges;
+  history.hingesAtFrame = sample->hinges;
   history.energyErrors.push_back(std::abs(sample->relativeEnergyDrift));
   // Trails keep one point per frame, for as long as they are visible.
-  const size_t kept = static_cast<size_t>(std::ceil(scene_.view.render.trailFadeSeconds * scene_.output.fps)) + 1;
+  const size_t kept = static_cast<size_t>(std::ceil(scene_.view.trailFadeSeconds * scene_.output.fps)) + 1;
   for (size_t i = 0; i < scene_.view.trailHinges.size(); ++i) {
     std::vector<Vec2>& trail = frame.trails[i];
     trail.push_back(frame.hinges[static_cast<size_t>(scene_.view.trailHinges[i] - 1)]);
@@ -120,14 +112,11 @@ void FrameBuilder::sampleRunAt(size_t run, double t, bool isFrameTime) {
 // both still run. Energy error: |E - E0| / E0 per run, while it runs.
 void FrameBuilder::recordPlots(int k) {
   plotTimes_.push_back(scene_.frameTime(k));
-  const std::vector<Vec2>& reference = history_[0].hingesAtFrame;
+  const Eigen::Matrix2Xd& reference = history_[0].hingesAtFrame;
   for (size_t run = 1; run < runs_.size(); ++run) {
-    const std::vector<Vec2>& other = history_[run].hingesAtFrame;
-    double worst = reference.empty() || other.empty() ? kNaN : 0.0;
-    for (size_t h = 0; h < std::min(reference.size(), other.size()); ++h) {
-      worst = std::max(worst, std::hypot(reference[h].x - other[h].x, reference[h].y - other[h].y));
-    }
-    divergence_[run - 1].push_back(worst);
+    const Eigen::Matrix2Xd& other = history_[run].hingesAtFrame;
+    divergence_[run - 1].push_back(reference.size() == 0 || other.size() == 0 ? kNaN
+                                                                             : hingeDistance(reference, other));
   }
   for (RunHistory& history : history_) {
     if (history.energyErrors.size() < plotTimes_.size()) history.energyErrors.push_back(kNaN);

@@ -8,19 +8,18 @@
 
 #include <vector>
 
-#include "frames/frame_state.hpp"
-#include "frames/sphere_view.hpp"
+#include "contracts/frame_state.hpp"
+#include "contracts/run_config.hpp"
+#include "frames/configuration_view.hpp"
 #include "scene/scene.hpp"
 #include "simulation/trajectory.hpp"
 
 namespace sl {
 
-// One Trajectory per scene run, all from the scene's start.
-std::vector<Trajectory> makeTrajectories(const Scene& scene);
-
 class FrameBuilder {
  public:
-  FrameBuilder(const Scene& scene, std::vector<Trajectory> runs);
+  // runs: one Trajectory per scene run, in the scene's order, all from `start`.
+  FrameBuilder(const Scene& scene, const InitialState& start, std::vector<Trajectory> runs);
 
   int frameCount() const { return frameCount_; }
   // Frame k; k must not be smaller than the previous call's.
@@ -34,7 +33,7 @@ class FrameBuilder {
  private:
   struct RunHistory {
     RunFrame frame;                    // the latest state and the path, trails so far
-    std::vector<Vec2> hingesAtFrame;   // for the divergence plot; empty once stopped
+    Eigen::Matrix2Xd hingesAtFrame;    // for the divergence plot; no columns once stopped
     std::vector<double> energyErrors;  // one per frame while running
   };
 
@@ -45,7 +44,7 @@ class FrameBuilder {
 
   const Scene& scene_;
   std::vector<Trajectory> runs_;
-  SphereView view_;
+  ConfigurationView view_;
   int frameCount_;
   int sampled_ = -1;  // the last frame sampled into the history
   std::vector<RunHistory> history_;

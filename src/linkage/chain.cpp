@@ -1,5 +1,6 @@
 #include "linkage/chain.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -72,6 +73,16 @@ double rodLengthError(const Chain& chain, const Eigen::Matrix2Xd& hinges) {
     worst = std::isfinite(error) ? std::max(worst, error) : error;
     if (!std::isfinite(worst)) return worst;
     previous = next;
+  }
+  return worst;
+}
+
+double hingeDistance(const Eigen::Matrix2Xd& a, const Eigen::Matrix2Xd& b) {
+  double worst = 0;
+  for (Eigen::Index k = 0; k < std::min(a.cols(), b.cols()); ++k) {
+    const double d = std::hypot(a(0, k) - b(0, k), a(1, k) - b(1, k));
+    if (std::isnan(d)) return d;
+    worst = std::max(worst, d);
   }
   return worst;
 }

@@ -42,6 +42,10 @@ AmbientMassMatrix ambientMassMatrix(const Chain& chain);
 // T = (1/2) <v, M v>.
 double kineticEnergy(const AmbientMassMatrix& mass, const Eigen::Matrix2Xd& hingeVelocities);
 
+// max_k |a_k - b_k| over the hinges of two configurations (Euclidean in the plane): how far apart two
+// linkages are. NaN if any coordinate is NaN, so a broken state is never reported as close.
+double hingeDistance(const Eigen::Matrix2Xd& a, const Eigen::Matrix2Xd& b);
+
 // max_k | |p_k - p_(k-1)| - 1 | over all n rods, pins included.
 double rodLengthError(const Chain& chain, const Eigen::Matrix2Xd& hinges);
 

@@ -28,6 +28,7 @@
 #include <Eigen/Dense>
 
 #include "linkage/chain.hpp"
+#include "linkage/chain_constants.hpp"
 #include "linkage/smooth_functions.hpp"
 #include "linkage/sphere_coordinates.hpp"
 
@@ -95,17 +96,29 @@ void scaledChainHinges(int m, const S& d, const VectorX<S>& v, const S& alpha, H
 
 }  // namespace detail
 
-// Psi^n_L(x) for a unit vector x in R^(n-1).
+// Psi^n_L(x) for a unit vector x in R^(n-1), with the chain's amplitude alpha_n(L) given.
 template <class S>
-HingeMatrix<S> hingePositionsOnSphere(const Chain& chain, const VectorX<S>& x) {
-  const double alpha = chainAmplitude(chain.rods, chain.baseLength);
+HingeMatrix<S> hingePositionsOnSphere(const Chain& chain, double alpha, const VectorX<S>& x) {
   HingeMatrix<S> hinges;
   const VectorX<S> v = x * alpha;
   detail::scaledChainHinges<S>(chain.rods, S(chain.baseLength), v, S(alpha), hinges);
   return hinges;
 }
+template <class S>
+HingeMatrix<S> hingePositionsOnSphere(const ChainConstants& bound, const VectorX<S>& x) {
+  return hingePositionsOnSphere<S>(bound.chain, bound.amplitude, x);
+}
+template <class S>
+HingeMatrix<S> hingePositionsOnSphere(const Chain& chain, const VectorX<S>& x) {
+  return hingePositionsOnSphere<S>(chain, chainAmplitude(chain.rods, chain.baseLength), x);
+}
 
 // Psi in a chart of the atlas (chart 0 = the spec's coordinates, (phi, t) for 4 rods).
+template <class S>
+HingeMatrix<S> hingePositionsInChart(const ChainConstants& bound, const std::vector<int>& axes,
+                                     const VectorX<S>& coords) {
+  return hingePositionsOnSphere<S>(bound, spherePointInChart<S>(axes, coords));
+}
 template <class S>
 HingeMatrix<S> hingePositionsInChart(const Chain& chain, const std::vector<int>& axes, const VectorX<S>& coords) {
   return hingePositionsOnSphere<S>(chain, spherePointInChart<S>(axes, coords));
@@ -126,6 +139,7 @@ Eigen::VectorXd coordinatesFromHinges(const Chain& chain, const Eigen::Matrix2Xd
 // Jacobian of the stacked hinges q = (p1x, p1y, p2x, ...) with respect to the coordinates of a chart,
 // by forward-mode AD: 2(n-1) x (n-2).
 Eigen::MatrixXd chartJacobian(const Chain& chain, const std::vector<int>& axes, const Eigen::VectorXd& coords);
+Eigen::MatrixXd chartJacobian(const ChainConstants& bound, const std::vector<int>& axes, const Eigen::VectorXd& coords);
 
 // Jacobian of q with respect to the sphere point x in R^(n-1) (the derivative of Psi as a map on
 // R^(n-1) restricted to unit vectors; apply it to tangent vectors only): 2(n-1) x (n-1).

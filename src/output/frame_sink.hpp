@@ -3,7 +3,7 @@
 // own threads, overlapping with rendering); finish() waits for everything, flushes the manifest, and
 // rethrows the first error a worker met. Errors also surface from the next consume().
 
-#include "render/renderer.hpp"
+#include "contracts/image.hpp"
 
 namespace sl::output {
 

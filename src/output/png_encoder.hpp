@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "render/renderer.hpp"
+#include "contracts/image.hpp"
 
 namespace sl::output {
 

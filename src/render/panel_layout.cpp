@@ -4,7 +4,7 @@
 
 namespace sl::render {
 
-std::vector<PanelSpec> effectivePanels(const RenderSettings& settings) {
+std::vector<PanelSpec> effectivePanels(const ViewSettings& settings) {
   if (!settings.panels.empty()) return settings.panels;
   PanelSpec sphere, linkage, text;
   sphere.kind = PanelKind::Sphere;

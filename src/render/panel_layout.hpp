@@ -5,13 +5,13 @@
 
 #include <vector>
 
-#include "render/renderer.hpp"
+#include "contracts/view_settings.hpp"
 #include "render/sphere_camera.hpp"
 
 namespace sl::render {
 
 // The panels to draw: settings.panels, or sphere + linkage + text when none are given.
-std::vector<PanelSpec> effectivePanels(const RenderSettings& settings);
+std::vector<PanelSpec> effectivePanels(const ViewSettings& settings);
 
 std::vector<PixelRect> layoutPanels(const std::vector<PanelSpec>& panels, int width, int height);
 

@@ -4,9 +4,10 @@
 
 #include <optional>
 
-#include "frames/frame_state.hpp"
+#include "contracts/frame_state.hpp"
+#include "contracts/view_settings.hpp"
+#include "render/draw_list.hpp"
 #include "render/font_atlas.hpp"
-#include "render/renderer.hpp"
 #include "render/shape_batch.hpp"
 #include "render/sphere_camera.hpp"
 
@@ -14,20 +15,13 @@ namespace sl::render {
 
 struct PanelContext {
   const FrameState& frame;
-  const RenderSettings& settings;
+  const ViewSettings& settings;
   const FontAtlas& font;
   PixelRect rect;
 };
 
-enum class SphereLook { Opaque = 0, Glass = 1 };
-
-struct SphereView {
-  SphereCamera camera;
-  SphereLook look;
-};
-
 void drawLinkagePanel(const PanelContext& context, ShapeBatch& batch);
-SphereView drawSpherePanel(const PanelContext& context, ShapeBatch& batch);
+SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch);
 void drawPlotPanel(const PanelContext& context, int plotIndex, ShapeBatch& batch);
 void drawTextPanel(const PanelContext& context, ShapeBatch& batch);
 

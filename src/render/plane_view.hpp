@@ -2,7 +2,7 @@
 // The linkage panel's view: plane coordinates (rod lengths, y up) to pixels, fixed per scene (from n
 // and L alone) so the picture never jumps as the chain moves.
 
-#include "frames/frame_state.hpp"
+#include "contracts/frame_state.hpp"
 #include "render/shape_batch.hpp"
 #include "render/sphere_camera.hpp"
 

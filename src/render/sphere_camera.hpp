@@ -3,7 +3,7 @@
 // CameraSpec::viewDirection, orbiting about the vertical (z) axis. Projection happens on the CPU (the
 // shapes are drawn in pixels); the shaders get the same basis to cast per-pixel rays, so both agree.
 
-#include "render/renderer.hpp"
+#include "contracts/view_settings.hpp"
 #include "render/shape_batch.hpp"
 
 namespace sl::render {

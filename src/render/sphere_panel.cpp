@@ -42,7 +42,7 @@ struct Placement {
   Occludable world(const V3& p) const { return {float(p.x), float(p.y), float(p.z), onSphere ? 1.0f : 0.0f}; }
 };
 
-float pathAlpha(const RenderSettings& settings, double age) {
+float pathAlpha(const ViewSettings& settings, double age) {
   if (settings.pathFadeSeconds <= 0) return 1.0f;
   return static_cast<float>(std::clamp(1.0 - age / settings.pathFadeSeconds, 0.0, 1.0));
 }
@@ -95,7 +95,7 @@ void drawEquator(const SphereCamera& camera, ShapeBatch& batch) {
 
 }  // namespace
 
-SphereView drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
+SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   const ViewSpace space = context.frame.viewSpace;
   SphereCamera camera(context.settings.camera, context.frame.time, context.rect);
   const Placement placement{space == ViewSpace::Sphere, kTubeRadius};

@@ -6,6 +6,8 @@
 #include <set>
 #include <sstream>
 
+#include "contracts/limits.hpp"
+#include "contracts/registry.hpp"
 #include "scene/did_you_mean.hpp"
 #include "scene/json_error_path.hpp"
 #include "scene/json_fields.hpp"
@@ -17,16 +19,6 @@ using nlohmann::json;
 
 namespace {
 
-bool contains(const std::vector<std::string>& names, const std::string& name) {
-  return std::find(names.begin(), names.end(), name) != names.end();
-}
-
-std::string joined(const std::vector<std::string>& names) {
-  std::string text;
-  for (const std::string& name : names) text += text.empty() ? name : ", " + name;
-  return text;
-}
-
 // A scene name becomes a folder name: keep it to characters that are safe everywhere.
 bool isSafeName(const std::string& name) {
   return !name.empty() && name != "." && name != ".." && std::all_of(name.begin(), name.end(), [](char c) {
@@ -34,14 +26,14 @@ bool isSafeName(const std::string& name) {
   });
 }
 
-void readLinkage(const json& value, Scene& scene, const SceneLimits& limits, std::vector<SceneProblem>& problems) {
+void readLinkage(const json& value, Scene& scene, std::vector<SceneProblem>& problems) {
   const JsonObject linkage(value, "linkage", problems, {"rods", "L", "hinge_masses", "rod_masses"});
   Chain& chain = scene.chain;
   bool rodsKnown = false;  // L is judged against n only when n itself is valid
   if (const auto rods = linkage.integer("rods", true)) {
-    if (*rods < 3 || *rods > limits.maxRods) {
+    if (*rods < limits::kMinRods || *rods > limits::kMaxRods) {
       linkage.report("rods", "found " + std::to_string(*rods) + "; expected an integer from 3 to " +
-                                 std::to_string(limits.maxRods) + " (fewer than 3 rods cannot move)");
+                                 std::to_string(limits::kMaxRods) + " (fewer than 3 rods cannot move)");
     } else {
       chain.rods = static_cast<int>(*rods);
       rodsKnown = true;
@@ -159,36 +151,32 @@ std::optional<ColorRGB> readColor(const JsonObject& object, const std::string& k
   return ColorRGB{float((*rgb)(0)), float((*rgb)(1)), float((*rgb)(2))};
 }
 
-RunSpec readRun(const json& value, const std::string& path, const Scene& scene, const SceneLimits& limits,
-                std::vector<SceneProblem>& problems) {
+RunSpec readRun(const json& value, const std::string& path, const Scene& scene, std::vector<SceneProblem>& problems) {
   const JsonObject run(value, path, problems,
                        {"name", "method", "integrator", "tolerance", "step", "color", "watchdog"});
   RunSpec spec;
   spec.name = run.string("name", true).value_or("");
   if (run.has("name") && spec.name.empty()) run.report("name", "is empty; expected a name shown in the panels");
   if (const auto method = run.string("method")) {
-    if (!contains(limits.methods, *method)) {
-      run.report("method", "found \"" + *method + "\"" + didYouMean(*method, limits.methods) + "; expected one of " +
-                               joined(limits.methods));
-    }
-    spec.config.method = *method;
-    // The published methods are the spec's 4-rod, unit-mass ones; the simulation refuses them otherwise,
-    // so say so here, with the JSON path, before any work.
-    const Chain& chain = scene.chain;
-    const bool specsChain =
-        chain.rods == 4 && (chain.hingeMasses.array() == 1.0).all() && (chain.rodMasses.array() == 0.0).all();
-    if (method->ends_with("-fd") && !specsChain) {
-      run.report("method", "found \"" + *method +
-                               "\", the spec's published method for 4 rods with unit hinge masses and "
-                               "massless rods; this chain differs: expected christoffel, embedded or ambient");
+    if (const auto kind = detail::pickKind(run.pathOf("method"), *method, kMethods, problems)) {
+      spec.config.method = *kind;
+      // The published methods are the spec's 4-rod, unit-mass ones; the simulation refuses them otherwise,
+      // so say so here, with the JSON path, before any work.
+      const Chain& chain = scene.chain;
+      const bool specsChain =
+          chain.rods == 4 && (chain.hingeMasses.array() == 1.0).all() && (chain.rodMasses.array() == 0.0).all();
+      if (traits(*kind).published && !specsChain) {
+        run.report("method", "found \"" + *method +
+                                 "\", the spec's published method for 4 rods with unit hinge masses and "
+                                 "massless rods; this chain differs: expected christoffel, embedded or ambient");
+      }
     }
   }
+  bool knownIntegrator = true;
   if (const auto integrator = run.string("integrator")) {
-    if (!contains(limits.integrators, *integrator)) {
-      run.report("integrator", "found \"" + *integrator + "\"" + didYouMean(*integrator, limits.integrators) +
-                                   "; expected one of " + joined(limits.integrators));
-    }
-    spec.config.integrator = *integrator;
+    const auto kind = detail::pickKind(run.pathOf("integrator"), *integrator, kIntegrators, problems);
+    if (kind) spec.config.integrator = *kind;
+    knownIntegrator = kind.has_value();
   }
   if (const auto tolerance = run.number("tolerance")) {
     if (run.checkRange("tolerance", *tolerance, 1e-16, 1e-1, "a tolerance from 1e-16 to 0.1")) {
@@ -205,14 +193,13 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
   }
   // A step means nothing to an adaptive integrator, a tolerance nothing to a fixed-step one: refuse
   // rather than silently ignore what the user believes is being computed.
-  const bool adaptive = contains(limits.adaptiveIntegrators, spec.config.integrator);
-  const bool knownIntegrator = contains(limits.integrators, spec.config.integrator);
+  const bool adaptive = traits(spec.config.integrator).adaptive;
   if (knownIntegrator && adaptive && run.has("step")) {
-    run.report("step", "is not used by the adaptive integrator \"" + spec.config.integrator +
+    run.report("step", "is not used by the adaptive integrator \"" + nameOf(spec.config.integrator) +
                            "\"; expected \"tolerance\" instead");
   }
   if (knownIntegrator && !adaptive && run.has("tolerance")) {
-    run.report("tolerance", "is not used by the fixed-step integrator \"" + spec.config.integrator +
+    run.report("tolerance", "is not used by the fixed-step integrator \"" + nameOf(spec.config.integrator) +
                                 "\"; expected \"step\" instead");
   }
   spec.color = readColor(run, "color");
@@ -220,7 +207,7 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
   return spec;
 }
 
-void readRuns(const json* value, Scene& scene, const SceneLimits& limits, std::vector<SceneProblem>& problems) {
+void readRuns(const json* value, Scene& scene, std::vector<SceneProblem>& problems) {
   if (value == nullptr) {
     problems.push_back({"runs", "missing; expected an array of runs, each with a name and a method"});
     return;
@@ -232,7 +219,7 @@ void readRuns(const json* value, Scene& scene, const SceneLimits& limits, std::v
   std::set<std::string> names;
   for (size_t i = 0; i < value->size(); ++i) {
     const std::string path = indexPath("runs", i);
-    RunSpec run = readRun((*value)[i], path, scene, limits, problems);
+    RunSpec run = readRun((*value)[i], path, scene, problems);
     if (!run.name.empty() && !names.insert(run.name).second) {
       problems.push_back({path + ".name", "\"" + run.name + "\" is used by an earlier run; expected unique names"});
     }
@@ -240,40 +227,40 @@ void readRuns(const json* value, Scene& scene, const SceneLimits& limits, std::v
   }
 }
 
-void readOutput(const json& value, Scene& scene, const SceneLimits& limits, std::vector<SceneProblem>& problems) {
+void readOutput(const json& value, Scene& scene, std::vector<SceneProblem>& problems) {
   const JsonObject output(value, "output", problems, {"fps", "width", "height", "folder", "png", "video"});
-  OutputSpec& spec = scene.output;
+  OutputSettings& spec = scene.output;
   if (const auto fps = output.integer("fps")) {
-    if (*fps < 1 || *fps > 1000) {
-      output.report("fps", "found " + std::to_string(*fps) + "; expected an integer from 1 to 1000");
+    if (*fps < 1 || *fps > limits::kMaxFps) {
+      output.report("fps", "found " + std::to_string(*fps) + "; expected an integer from 1 to " +
+                               std::to_string(limits::kMaxFps));
     } else {
       spec.fps = static_cast<int>(*fps);
     }
   }
   const auto width = output.integer("width");
   const auto height = output.integer("height");
-  spec.width = static_cast<int>(std::clamp<long>(width.value_or(spec.width), -1, 1 << 30));
-  spec.height = static_cast<int>(std::clamp<long>(height.value_or(spec.height), -1, 1 << 30));
+  spec.size.width = static_cast<int>(std::clamp<long>(width.value_or(spec.size.width), -1, 1 << 30));
+  spec.size.height = static_cast<int>(std::clamp<long>(height.value_or(spec.size.height), -1, 1 << 30));
   spec.folder = output.string("folder").value_or("renders/" + scene.name);
   if (spec.folder.empty()) output.report("folder", "is empty; expected a folder for the frames");
   spec.png = output.boolean("png").value_or(true);
   spec.video = output.string("video").value_or("");
-  for (SceneProblem& problem : checkImageSize(spec.width, spec.height, !spec.video.empty(), limits, "output")) {
+  for (SceneProblem& problem : checkImageSize(spec.size, !spec.video.empty(), "output")) {
     problems.push_back(std::move(problem));
   }
 }
 
 }  // namespace
 
-std::vector<SceneProblem> checkImageSize(int width, int height, bool forVideo, const SceneLimits& limits,
-                                         const std::string& path) {
+std::vector<SceneProblem> checkImageSize(ImageSize size, bool forVideo, const std::string& path) {
   std::vector<SceneProblem> problems;
-  const int minimum = 16;
-  const std::string allowed = "from " + std::to_string(minimum) + " to " + std::to_string(limits.maxImageSize) +
+  const int minimum = limits::kMinImageSide;
+  const std::string allowed = "from " + std::to_string(minimum) + " to " + std::to_string(limits::kMaxImageSide) +
                               " pixels (the renderer's largest size)";
-  for (const auto& [key, value] : {std::pair{"width", width}, std::pair{"height", height}}) {
+  for (const auto& [key, value] : {std::pair{"width", size.width}, std::pair{"height", size.height}}) {
     const std::string where = path + "." + key;
-    if (value < minimum || value > limits.maxImageSize) {
+    if (value < minimum || value > limits::kMaxImageSide) {
       problems.push_back({where, "found " + std::to_string(value) + "; expected " + allowed});
     } else if (forVideo && value % 2 != 0) {
       problems.push_back({where, "found " + std::to_string(value) + "; a video (yuv420p) needs an even size"});
@@ -282,16 +269,16 @@ std::vector<SceneProblem> checkImageSize(int width, int height, bool forVideo, c
   return problems;
 }
 
-std::vector<SceneProblem> checkFrameCount(double duration, int fps, const SceneLimits& limits) {
+std::vector<SceneProblem> checkFrameCount(double duration, int fps) {
   const double frames = std::ceil(duration * fps) + 1;
-  if (frames <= static_cast<double>(limits.maxFrames)) return {};
+  if (frames <= static_cast<double>(limits::kMaxFrames)) return {};
   std::ostringstream message;
-  message << "found " << duration << " s at " << fps << " fps = " << frames << " frames; at most " << limits.maxFrames
+  message << "found " << duration << " s at " << fps << " fps = " << frames << " frames; at most " << limits::kMaxFrames
           << " frames are allowed (split the animation into several scenes)";
   return {{"duration", message.str()}};
 }
 
-Scene parseScene(const std::string& text, const std::string& file, const SceneLimits& limits) {
+Scene parseScene(const std::string& text, const std::string& file) {
   json document;
   try {
     document = json::parse(text);
@@ -322,29 +309,29 @@ Scene parseScene(const std::string& text, const std::string& file, const SceneLi
     scene.duration = *duration;
   }
   if (top.has("linkage"))
-    readLinkage(*top.member("linkage"), scene, limits, problems);
+    readLinkage(*top.member("linkage"), scene, problems);
   else
     top.reportMissing("linkage", "an object with rods and L");
   if (top.has("initial"))
     readInitial(*top.member("initial"), scene, problems);
   else
     top.reportMissing("initial", "an object with coords and velocity, or drag");
-  readRuns(top.member("runs"), scene, limits, problems);
-  readOutput(top.has("output") ? *top.member("output") : json::object(), scene, limits, problems);
-  for (SceneProblem& problem : checkFrameCount(scene.duration, scene.output.fps, limits)) problems.push_back(problem);
+  readRuns(top.member("runs"), scene, problems);
+  readOutput(top.has("output") ? *top.member("output") : json::object(), scene, problems);
+  for (SceneProblem& problem : checkFrameCount(scene.duration, scene.output.fps)) problems.push_back(problem);
   detail::readView(top.has("view") ? *top.member("view") : json::object(), scene, problems);
 
   if (!problems.empty()) throw SceneError(file, std::move(problems));
   return scene;
 }
 
-Scene loadScene(const std::string& file, const SceneLimits& limits) {
+Scene loadScene(const std::string& file) {
   std::ifstream stream(file, std::ios::binary);
   if (!stream) throw SceneError(file, {{"", "cannot open the file for reading"}});
   std::ostringstream text;
   text << stream.rdbuf();
   if (stream.bad()) throw SceneError(file, {{"", "cannot read the file"}});
-  return parseScene(text.str(), file, limits);
+  return parseScene(text.str(), file);
 }
 
 }  // namespace sl

@@ -1,16 +1,32 @@
 #pragma once
-// The readers of each top-level section of a scene (internal to scene_loader.cpp and scene_view.cpp).
+// What the readers of a scene's sections share (internal to scene_loader.cpp and scene_view.cpp).
 
+#include <optional>
+#include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "contracts/registry.hpp"
 #include "scene/scene.hpp"
-#include "scene/scene_loader.hpp"
+#include "scene/scene_problems.hpp"
 
 namespace sl::detail {
 
 // Reads "view" into scene.view; needs scene.runs and scene.chain already read.
 void readView(const nlohmann::json& view, Scene& scene, std::vector<SceneProblem>& problems);
+
+// "found "word" (did you mean ...); expected one of a, b, c" at path.
+void reportUnknownName(const std::string& path, const std::string& word, const std::vector<std::string>& names,
+                       std::vector<SceneProblem>& problems);
+
+// The kind a registry table names `word`, or a problem at path (with a suggestion) and nothing.
+template <class Table>
+auto pickKind(const std::string& path, const std::string& word, const Table& table,
+              std::vector<SceneProblem>& problems) {
+  const auto kind = parseKind(table, word);
+  if (!kind) reportUnknownName(path, word, namesOf(table), problems);
+  return kind;
+}
 
 }  // namespace sl::detail

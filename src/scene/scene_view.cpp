@@ -1,8 +1,9 @@
-// The "view" section: panels, camera, linkage layout, trails and fades, mapped onto RenderSettings.
+// The "view" section: panels, camera, linkage layout, trails and fades, mapped onto ViewSettings.
 
 #include <algorithm>
 #include <cmath>
 
+#include "contracts/limits.hpp"
 #include "scene/did_you_mean.hpp"
 #include "scene/json_fields.hpp"
 #include "scene/scene_sections.hpp"
@@ -13,25 +14,19 @@ using nlohmann::json;
 
 namespace {
 
-const std::vector<std::string> kPanelNames = {"sphere", "linkage", "plot", "text"};
-const std::vector<std::string> kPlotNames = {"divergence", "energy"};
-const std::vector<std::string> kLayoutNames = {"single", "side-by-side", "overlay"};
+}  // namespace
 
-// Reports an unknown word with a suggestion; returns its index in names, or -1.
-int pickName(const std::string& path, const std::string& word, const std::vector<std::string>& names,
-             std::vector<SceneProblem>& problems) {
-  const auto found = std::find(names.begin(), names.end(), word);
-  if (found != names.end()) return static_cast<int>(found - names.begin());
+void reportUnknownName(const std::string& path, const std::string& word, const std::vector<std::string>& names,
+                       std::vector<SceneProblem>& problems) {
   std::string allowed;
   for (const std::string& name : names) allowed += allowed.empty() ? name : ", " + name;
   problems.push_back({path, "found \"" + word + "\"" + didYouMean(word, names) + "; expected one of " + allowed});
-  return -1;
 }
 
-PanelKind panelKind(int index) {
-  static constexpr PanelKind kinds[] = {PanelKind::Sphere, PanelKind::Linkage, PanelKind::Plot, PanelKind::Text};
-  return kinds[index];
-}
+namespace {
+
+// "scale" of a plot: logarithmic or linear y axis.
+constexpr std::array<Named<bool>, 2> kPlotScales{{{true, "log"}, {false, "linear"}}};
 
 // A plot with no kind given: divergence needs two runs to compare, otherwise the energy error.
 PlotSpec defaultPlot(const Scene& scene) {
@@ -41,21 +36,19 @@ PlotSpec defaultPlot(const Scene& scene) {
 void addPanel(const json& value, const std::string& path, Scene& scene, std::vector<SceneProblem>& problems) {
   PanelSpec panel;
   PlotSpec plot = defaultPlot(scene);
-  int kind = -1;
+  std::optional<PanelKind> kind;
   if (value.is_string()) {
-    kind = pickName(path, value.get<std::string>(), kPanelNames, problems);
+    kind = pickKind(path, value.get<std::string>(), kPanelKinds, problems);
   } else {
     const JsonObject object(value, path, problems, {"panel", "plot", "scale", "rect"});
     if (!object.isObject()) return;
     if (const auto name = object.string("panel", true))
-      kind = pickName(object.pathOf("panel"), *name, kPanelNames, problems);
+      kind = pickKind(object.pathOf("panel"), *name, kPanelKinds, problems);
     if (const auto name = object.string("plot")) {
-      const int plotKind = pickName(object.pathOf("plot"), *name, kPlotNames, problems);
-      if (plotKind >= 0) plot.kind = plotKind == 0 ? PlotKind::Divergence : PlotKind::EnergyError;
+      if (const auto plotKind = pickKind(object.pathOf("plot"), *name, kPlotKinds, problems)) plot.kind = *plotKind;
     }
     if (const auto scale = object.string("scale")) {
-      const int logOrLinear = pickName(object.pathOf("scale"), *scale, {"log", "linear"}, problems);
-      plot.logY = logOrLinear != 1;
+      plot.logY = pickKind(object.pathOf("scale"), *scale, kPlotScales, problems).value_or(true);
     }
     if (const auto rect = object.numbers("rect");
         rect && object.checkSize("rect", *rect, 4, "x, y, width, height as fractions")) {
@@ -65,8 +58,8 @@ void addPanel(const json& value, const std::string& path, Scene& scene, std::vec
       panel.rect = std::array<double, 4>{(*rect)(0), (*rect)(1), (*rect)(2), (*rect)(3)};
     }
   }
-  if (kind < 0) return;
-  panel.kind = panelKind(kind);
+  if (!kind) return;
+  panel.kind = *kind;
   if (panel.kind == PanelKind::Plot) {
     if (plot.kind == PlotKind::Divergence && scene.runs.size() < 2) {
       problems.push_back({path, "a divergence plot compares runs; expected at least 2 runs, found " +
@@ -75,7 +68,7 @@ void addPanel(const json& value, const std::string& path, Scene& scene, std::vec
     panel.plotIndex = static_cast<int>(scene.view.plots.size());
     scene.view.plots.push_back(plot);
   }
-  scene.view.render.panels.push_back(panel);
+  scene.view.panels.push_back(panel);
 }
 
 void readPanels(const JsonObject& view, Scene& scene, std::vector<SceneProblem>& problems) {
@@ -107,19 +100,16 @@ void readCamera(const JsonObject& view, CameraSpec& camera, std::vector<ScenePro
 }
 
 void readLinkageChoice(const JsonObject& view, Scene& scene, std::vector<SceneProblem>& problems) {
-  RenderSettings& render = scene.view.render;
   if (const auto layout = view.string("linkage_layout")) {
-    const int index = pickName(view.pathOf("linkage_layout"), *layout, kLayoutNames, problems);
-    if (index >= 0) {
-      static constexpr LinkageLayout layouts[] = {LinkageLayout::SingleRun, LinkageLayout::SideBySide,
-                                                  LinkageLayout::Overlay};
-      render.linkageLayout = layouts[index];
-    }
+    if (const auto kind = pickKind(view.pathOf("linkage_layout"), *layout, kLinkageLayouts, problems))
+      scene.view.linkageLayout = *kind;
   }
   if (const auto run = view.string("linkage_run")) {
     std::vector<std::string> names;
     for (const RunSpec& spec : scene.runs) names.push_back(spec.name);
-    render.linkageRun = std::max(0, pickName(view.pathOf("linkage_run"), *run, names, problems));
+    const auto found = std::find(names.begin(), names.end(), *run);
+    if (found == names.end()) reportUnknownName(view.pathOf("linkage_run"), *run, names, problems);
+    scene.view.linkageRun = found == names.end() ? 0 : static_cast<int>(found - names.begin());
   }
 }
 
@@ -140,7 +130,7 @@ void readTrails(const JsonObject& view, Scene& scene) {
 }
 
 void readFades(const JsonObject& view, Scene& scene) {
-  RenderSettings& render = scene.view.render;
+  ViewSettings& render = scene.view;
   if (const auto fade = view.number("path_fade_seconds");
       fade && view.checkRange("path_fade_seconds", *fade, 0, 1e9, "0 (never fades) or a positive time")) {
     render.pathFadeSeconds = *fade;
@@ -149,9 +139,9 @@ void readFades(const JsonObject& view, Scene& scene) {
     render.trailFadeSeconds = *fade;
   }
   if (const auto samples = view.integer("path_samples_per_frame")) {
-    if (*samples < 1 || *samples > 100) {
-      view.report("path_samples_per_frame",
-                  "found " + std::to_string(*samples) + "; expected an integer from 1 to 100");
+    if (*samples < 1 || *samples > limits::kMaxPathSamplesPerFrame) {
+      view.report("path_samples_per_frame", "found " + std::to_string(*samples) + "; expected an integer from 1 to " +
+                                                std::to_string(limits::kMaxPathSamplesPerFrame));
     } else {
       scene.view.pathSamplesPerFrame = static_cast<int>(*samples);
     }
@@ -165,9 +155,7 @@ void readView(const json& value, Scene& scene, std::vector<SceneProblem>& proble
                         {"panels", "camera", "linkage_layout", "linkage_run", "trails", "trail_fade_seconds",
                          "path_fade_seconds", "path_samples_per_frame", "background", "antialias"});
   if (!view.isObject()) return;
-  RenderSettings& render = scene.view.render;
-  render.width = scene.output.width;
-  render.height = scene.output.height;
+  ViewSettings& render = scene.view;
   readPanels(view, scene, problems);
   if (view.has("camera")) readCamera(view, render.camera, problems);
   readLinkageChoice(view, scene, problems);

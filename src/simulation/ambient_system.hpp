@@ -8,7 +8,7 @@
 #include "linkage/chain.hpp"
 #include "simulation/constraint_solver.hpp"
 #include "simulation/geodesic_system.hpp"
-#include "simulation/trajectory.hpp"
+#include "contracts/run_config.hpp"
 
 namespace sl {
 

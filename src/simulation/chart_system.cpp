@@ -38,39 +38,45 @@ void requireSpecChain(const std::string& name, const Chain& chain) {
 }
 
 template <class Field>
-ChartAcceleration published(double baseLength, Field field) {
-  return [baseLength, field](const std::vector<int>&, const Eigen::VectorXd& c, const Eigen::VectorXd& v) {
-    return Eigen::VectorXd(field(baseLength, Eigen::Vector2d(c), Eigen::Vector2d(v)));
+ChartAcceleration published(const PublishedChain& chain, Field field) {
+  return [chain, field](const std::vector<int>&, const Eigen::VectorXd& c, const Eigen::VectorXd& v) {
+    return Eigen::VectorXd(field(chain, Eigen::Vector2d(c), Eigen::Vector2d(v)));
   };
 }
 
 }  // namespace
 
-ChartMethod chartMethod(const std::string& name, const Chain& chain) {
-  if (name == "christoffel-fd") {
-    requireSpecChain(name, chain);
-    return {published(chain.baseLength, christoffelFdAcceleration), false};
+ChartMethod chartMethod(Method method, const ChainConstants& bound) {
+  const MethodTraits& properties = traits(method);
+  const Chain& chain = bound.chain;
+  if (properties.published) requireSpecChain(nameOf(method), chain);
+  ChartAcceleration acceleration;
+  switch (method) {
+    case Method::ChristoffelFd:
+      acceleration = published(PublishedChain(chain.baseLength), christoffelFdAcceleration);
+      break;
+    case Method::EmbeddedFd:
+      acceleration = published(PublishedChain(chain.baseLength), embeddedFdAcceleration);
+      break;
+    case Method::Christoffel:
+      acceleration = [bound](const std::vector<int>& axes, const Eigen::VectorXd& c, const Eigen::VectorXd& v) {
+        return christoffelAcceleration(bound, axes, c, v);
+      };
+      break;
+    case Method::Embedded:
+      acceleration = [bound](const std::vector<int>& axes, const Eigen::VectorXd& c, const Eigen::VectorXd& v) {
+        return embeddedAcceleration(bound, axes, c, v);
+      };
+      break;
+    case Method::Ambient:
+      throw std::invalid_argument("the ambient method is chart-free: it has no chart acceleration");
   }
-  if (name == "embedded-fd") {
-    requireSpecChain(name, chain);
-    return {published(chain.baseLength, embeddedFdAcceleration), false};
-  }
-  if (name == "christoffel")
-    return {[chain](const std::vector<int>& axes, const Eigen::VectorXd& c, const Eigen::VectorXd& v) {
-              return christoffelAcceleration(chain, axes, c, v);
-            },
-            true};
-  if (name == "embedded")
-    return {[chain](const std::vector<int>& axes, const Eigen::VectorXd& c, const Eigen::VectorXd& v) {
-              return embeddedAcceleration(chain, axes, c, v);
-            },
-            true};
-  throw std::invalid_argument("unknown chart method '" + name + "'");
+  return {acceleration, properties.usesAtlas};
 }
 
-ChartSystem::ChartSystem(const Chain& chain, ChartMethod method, const InitialState& start)
-    : chain_(chain), method_(std::move(method)) {
-  const int ambient = chain.rods - 1;
+ChartSystem::ChartSystem(const ChainConstants& bound, ChartMethod method, const InitialState& start)
+    : bound_(bound), method_(std::move(method)) {
+  const int ambient = bound_.chain.rods - 1;
   switchBelow_ = 0.7 / std::sqrt(static_cast<double>(sphereChartCount(ambient)));
   const int first = method_.usesAtlas ? bestSphereChart(start.spherePoint) : 0;
   enterChart(first, start.spherePoint, start.sphereVelocity, start_);
@@ -79,7 +85,7 @@ ChartSystem::ChartSystem(const Chain& chain, ChartMethod method, const InitialSt
 
 void ChartSystem::enterChart(int chart, const Eigen::VectorXd& x, const Eigen::VectorXd& xdot, State& y) {
   chart_ = chart;
-  axes_ = sphereChartAxes(chain_.rods - 1, chart);
+  axes_ = sphereChartAxes(bound_.chain.rods - 1, chart);
   const Eigen::VectorXd c = coordinatesInChart(axes_, x);
   const Eigen::VectorXd v = ratesInChart(axes_, c, xdot);
   const Eigen::Index k = c.size();
@@ -126,7 +132,7 @@ std::optional<MethodFailure> ChartSystem::inspect(const State& y) const {
       else
         detail << " is within |cos| = " << std::abs(std::cos(latitude)) << " < " << poleMargin
                << " of the pole, where the chart folds back";
-      return MethodFailure{"pole-fold-back", detail.str()};
+      return MethodFailure{StopReason::PoleFoldBack, detail.str()};
     }
   }
   return std::nullopt;
@@ -139,9 +145,9 @@ Observation ChartSystem::observe(const State& y) const {
   Observation o;
   o.spherePoint = spherePointInChart<double>(axes_, c);
   o.sphereVelocity = sphereVelocityInChart(axes_, c, v);
-  o.hinges = hingePositionsInChart<double>(chain_, axes_, c);
-  const Eigen::VectorXd stacked = chartJacobian(chain_, axes_, c) * v;
-  o.hingeVelocities = Eigen::Map<const Eigen::Matrix2Xd>(stacked.data(), 2, chain_.hingeCount());
+  o.hinges = hingePositionsInChart<double>(bound_, axes_, c);
+  const Eigen::VectorXd stacked = chartJacobian(bound_, axes_, c) * v;
+  o.hingeVelocities = Eigen::Map<const Eigen::Matrix2Xd>(stacked.data(), 2, bound_.chain.hingeCount());
   if (chart_ == 0) {
     o.chartZeroCoords = c;
     o.chartZeroRates = v;
@@ -168,11 +174,11 @@ StepSummary ChartSystem::summarize(const State& y, double previousT) const {
   const Eigen::Index k = static_cast<Eigen::Index>(y.size() / 2);
   const Eigen::VectorXd c = Eigen::Map<const Eigen::VectorXd>(y.data(), k);
   const Eigen::VectorXd v = Eigen::Map<const Eigen::VectorXd>(y.data() + k, k);
-  const Eigen::VectorXd stacked = chartJacobian(chain_, axes_, c) * v;
+  const Eigen::VectorXd stacked = chartJacobian(bound_, axes_, c) * v;
   StepSummary summary;
-  summary.energy = kineticEnergy(ambientMassMatrix(chain_),
-                                 Eigen::Map<const Eigen::Matrix2Xd>(stacked.data(), 2, chain_.hingeCount()));
-  summary.rodLengthError = rodLengthError(chain_, hingePositionsInChart<double>(chain_, axes_, c));
+  summary.energy = kineticEnergy(bound_.mass,
+                                 Eigen::Map<const Eigen::Matrix2Xd>(stacked.data(), 2, bound_.chain.hingeCount()));
+  summary.rodLengthError = rodLengthError(bound_.chain, hingePositionsInChart<double>(bound_, axes_, c));
   summary.chartZeroT =
       chart_ == 0 ? c(k - 1) : coordinatesFromSpherePoint(spherePointInChart<double>(axes_, c), previousT)(k - 1);
   return summary;

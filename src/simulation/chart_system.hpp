@@ -8,9 +8,10 @@
 #include <functional>
 #include <memory>
 
-#include "linkage/chain.hpp"
+#include "linkage/chain_constants.hpp"
 #include "simulation/geodesic_system.hpp"
-#include "simulation/trajectory.hpp"
+#include "contracts/registry.hpp"
+#include "contracts/run_config.hpp"
 
 namespace sl {
 
@@ -23,13 +24,13 @@ struct ChartMethod {
   bool usesAtlas = true;
 };
 
-// The method by name (christoffel-fd, embedded-fd, christoffel, embedded); throws std::invalid_argument for
-// unknown names and for -fd methods on chains they do not cover (4 rods, unit hinge masses, massless rods).
-ChartMethod chartMethod(const std::string& name, const Chain& chain);
+// A chart-based method (every method but ambient); throws std::invalid_argument for the ambient method and for
+// the published methods on chains they do not cover (4 rods, unit hinge masses, massless rods).
+ChartMethod chartMethod(Method method, const ChainConstants& bound);
 
 class ChartSystem : public GeodesicSystem {
  public:
-  ChartSystem(const Chain& chain, ChartMethod method, const InitialState& start);
+  ChartSystem(const ChainConstants& bound, ChartMethod method, const InitialState& start);
 
   State initialState() const override { return start_; }
   void derivative(const State& y, State& dydt) const override;
@@ -45,7 +46,7 @@ class ChartSystem : public GeodesicSystem {
  private:
   void enterChart(int chart, const Eigen::VectorXd& x, const Eigen::VectorXd& xdot, State& y);
 
-  Chain chain_;
+  ChainConstants bound_;
   ChartMethod method_;
   int chart_ = 0;
   std::vector<int> axes_;

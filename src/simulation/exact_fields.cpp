@@ -30,7 +30,7 @@ struct NestedJacobian {
   using Outer = Eigen::AutoDiffScalar<Eigen::Matrix<Inner, K, 1>>;
 
   // columns[b](r) = d q_r / d c_b, carrying d/dc_a as inner derivatives.
-  static std::vector<VectorX<Inner>> jacobianColumns(const Chain& chain, const std::vector<int>& axes,
+  static std::vector<VectorX<Inner>> jacobianColumns(const ChainConstants& bound, const std::vector<int>& axes,
                                                      const Eigen::VectorXd& coords) {
     const Eigen::Index k = coords.size();
     VectorX<Outer> c(k);
@@ -40,7 +40,7 @@ struct NestedJacobian {
         outerSeed(b) = Inner(b == i ? 1.0 : 0.0, Eigen::Matrix<double, K, 1>::Zero(k));
       c(i) = Outer(Inner(coords(i), k, i), outerSeed);
     }
-    const HingeMatrix<Outer> hinges = hingePositionsInChart<Outer>(chain, axes, c);
+    const HingeMatrix<Outer> hinges = hingePositionsInChart<Outer>(bound, axes, c);
     const Eigen::Index rows = 2 * hinges.cols();
     std::vector<VectorX<Inner>> columns(static_cast<size_t>(k), VectorX<Inner>(rows));
     for (Eigen::Index h = 0; h < hinges.cols(); ++h)
@@ -56,11 +56,11 @@ struct NestedJacobian {
   }
 
   // h_bc with inner derivatives d_a h_bc: the metric differentiated exactly.
-  static void metricAndDerivatives(const Chain& chain, const std::vector<int>& axes, const Eigen::VectorXd& coords,
+  static void metricAndDerivatives(const ChainConstants& bound, const std::vector<int>& axes, const Eigen::VectorXd& coords,
                                    Eigen::MatrixXd& h, std::vector<Eigen::MatrixXd>& dh) {
     const Eigen::Index k = coords.size();
-    const std::vector<VectorX<Inner>> q = jacobianColumns(chain, axes, coords);
-    const AmbientMassMatrix mass = ambientMassMatrix(chain);
+    const std::vector<VectorX<Inner>> q = jacobianColumns(bound, axes, coords);
+    const AmbientMassMatrix& mass = bound.mass;
     h.resize(k, k);
     dh.assign(static_cast<size_t>(k), Eigen::MatrixXd(k, k));
     for (Eigen::Index b = 0; b < k; ++b)
@@ -89,10 +89,10 @@ struct NestedJacobian {
 };
 
 template <int K>
-std::vector<Eigen::MatrixXd> symbols(const Chain& chain, const std::vector<int>& axes, const Eigen::VectorXd& coords) {
+std::vector<Eigen::MatrixXd> symbols(const ChainConstants& bound, const std::vector<int>& axes, const Eigen::VectorXd& coords) {
   Eigen::MatrixXd h;
   std::vector<Eigen::MatrixXd> dh;
-  NestedJacobian<K>::metricAndDerivatives(chain, axes, coords, h, dh);
+  NestedJacobian<K>::metricAndDerivatives(bound, axes, coords, h, dh);
   const Eigen::Index k = coords.size();
   const Eigen::LDLT<Eigen::MatrixXd> inverse(h);
   // Gamma^i_jk = (1/2) h^il (d_j h_lk + d_k h_lj - d_l h_jk)
@@ -116,7 +116,7 @@ std::vector<Eigen::MatrixXd> symbols(const Chain& chain, const std::vector<int>&
 
 // Second derivative of q along the rates, q_bc v^b v^c, and the Jacobian, from one nested pass along the
 // single direction v (inner and outer both d/ds of q(c + s v)) plus the first-order Jacobian.
-Eigen::VectorXd secondDirectionalDerivative(const Chain& chain, const std::vector<int>& axes,
+Eigen::VectorXd secondDirectionalDerivative(const ChainConstants& bound, const std::vector<int>& axes,
                                             const Eigen::VectorXd& coords, const Eigen::VectorXd& rates) {
   using Inner = Eigen::AutoDiffScalar<Eigen::Matrix<double, 1, 1>>;
   using Outer = Eigen::AutoDiffScalar<Eigen::Matrix<Inner, 1, 1>>;
@@ -127,7 +127,7 @@ Eigen::VectorXd secondDirectionalDerivative(const Chain& chain, const std::vecto
     outerSeed(0) = Inner(rates(i), Eigen::Matrix<double, 1, 1>::Zero());
     c(i) = Outer(Inner(coords(i), Eigen::Matrix<double, 1, 1>(rates(i))), outerSeed);
   }
-  const HingeMatrix<Outer> hinges = hingePositionsInChart<Outer>(chain, axes, c);
+  const HingeMatrix<Outer> hinges = hingePositionsInChart<Outer>(bound, axes, c);
   Eigen::VectorXd w(2 * hinges.cols());
   for (Eigen::Index h = 0; h < hinges.cols(); ++h)
     for (int xy = 0; xy < 2; ++xy) {
@@ -139,25 +139,25 @@ Eigen::VectorXd secondDirectionalDerivative(const Chain& chain, const std::vecto
 
 }  // namespace
 
-std::vector<Eigen::MatrixXd> christoffelSymbols(const Chain& chain, const std::vector<int>& axes,
+std::vector<Eigen::MatrixXd> christoffelSymbols(const ChainConstants& bound, const std::vector<int>& axes,
                                                 const Eigen::VectorXd& coords) {
-  if (coords.size() == 2) return symbols<2>(chain, axes, coords);
-  return symbols<Eigen::Dynamic>(chain, axes, coords);
+  if (coords.size() == 2) return symbols<2>(bound, axes, coords);
+  return symbols<Eigen::Dynamic>(bound, axes, coords);
 }
 
-Eigen::VectorXd christoffelAcceleration(const Chain& chain, const std::vector<int>& axes, const Eigen::VectorXd& coords,
+Eigen::VectorXd christoffelAcceleration(const ChainConstants& bound, const std::vector<int>& axes, const Eigen::VectorXd& coords,
                                         const Eigen::VectorXd& rates) {
-  const std::vector<Eigen::MatrixXd> gamma = christoffelSymbols(chain, axes, coords);
+  const std::vector<Eigen::MatrixXd> gamma = christoffelSymbols(bound, axes, coords);
   Eigen::VectorXd a(coords.size());
   for (Eigen::Index i = 0; i < a.size(); ++i) a(i) = -rates.dot(gamma[static_cast<size_t>(i)] * rates);
   return a;
 }
 
-Eigen::VectorXd embeddedAcceleration(const Chain& chain, const std::vector<int>& axes, const Eigen::VectorXd& coords,
+Eigen::VectorXd embeddedAcceleration(const ChainConstants& bound, const std::vector<int>& axes, const Eigen::VectorXd& coords,
                                      const Eigen::VectorXd& rates) {
-  const Eigen::MatrixXd J = chartJacobian(chain, axes, coords);
-  const Eigen::MatrixXd MJ = stackedMassMatrix(chain) * J;
-  const Eigen::VectorXd w = secondDirectionalDerivative(chain, axes, coords, rates);
+  const Eigen::MatrixXd J = chartJacobian(bound, axes, coords);
+  const Eigen::MatrixXd MJ = bound.stackedMass * J;
+  const Eigen::VectorXd w = secondDirectionalDerivative(bound, axes, coords, rates);
   // h a = -<q_a, M q_bc v^b v^c>: the acceleration q'' = J a + w has no tangential (M-orthogonal) part.
   return (J.transpose() * MJ).ldlt().solve(-MJ.transpose() * w);
 }

@@ -8,18 +8,18 @@
 
 #include <Eigen/Dense>
 
-#include "linkage/chain.hpp"
+#include "linkage/chain_constants.hpp"
 
 namespace sl {
 
-Eigen::VectorXd christoffelAcceleration(const Chain& chain, const std::vector<int>& axes, const Eigen::VectorXd& coords,
+Eigen::VectorXd christoffelAcceleration(const ChainConstants& bound, const std::vector<int>& axes, const Eigen::VectorXd& coords,
                                         const Eigen::VectorXd& rates);
 
-Eigen::VectorXd embeddedAcceleration(const Chain& chain, const std::vector<int>& axes, const Eigen::VectorXd& coords,
+Eigen::VectorXd embeddedAcceleration(const ChainConstants& bound, const std::vector<int>& axes, const Eigen::VectorXd& coords,
                                      const Eigen::VectorXd& rates);
 
 // The Christoffel symbols themselves, Gamma[i](j, k) = Gamma^i_jk, for tests.
-std::vector<Eigen::MatrixXd> christoffelSymbols(const Chain& chain, const std::vector<int>& axes,
+std::vector<Eigen::MatrixXd> christoffelSymbols(const ChainConstants& bound, const std::vector<int>& axes,
                                                 const Eigen::VectorXd& coords);
 
 }  // namespace sl

@@ -9,6 +9,8 @@
 
 #include <Eigen/Dense>
 
+#include "contracts/registry.hpp"
+
 namespace sl {
 
 using State = std::vector<double>;
@@ -31,7 +33,7 @@ struct StepSummary {
 };
 
 struct MethodFailure {
-  std::string reason;  // a StopInfo reason
+  StopReason reason;
   std::string detail;
 };
 

@@ -57,4 +57,14 @@ void validateInitialState(const Chain& chain, const InitialState& start) {
     throw std::invalid_argument("initial sphere velocity must be tangent (x . xdot = 0)");
 }
 
+InitialState initialStateFromSpec(const Chain& chain, const InitialSpec& spec) {
+  if (spec.kind == InitialSpec::Kind::Drag) {
+    return initialStateFromDrag(chain, spec.dragPoint, spec.dragDirection, spec.unitSpeed);
+  }
+  InitialState start = initialStateFromChart(chain, spec.coords, spec.velocity);
+  const double speed = std::sqrt(speedSquared(chain, start));
+  if (spec.unitSpeed && speed > 0) start.sphereVelocity /= speed;
+  return start;
+}
+
 }  // namespace sl

@@ -4,7 +4,7 @@
 #include <Eigen/Dense>
 
 #include "linkage/chain.hpp"
-#include "simulation/trajectory.hpp"
+#include "contracts/run_config.hpp"
 
 namespace sl {
 
@@ -17,6 +17,10 @@ InitialState initialStateFromChart(const Chain& chain, const Eigen::VectorXd& co
 // direction with no tangential part.
 InitialState initialStateFromDrag(const Chain& chain, const Eigen::VectorXd& point, const Eigen::VectorXd& direction,
                                   bool unitSpeed);
+
+// The start a scene states (chart coordinates and rates of chart 0, or a drag), as the chart-free
+// InitialState of its runs; unit_speed rescales the velocity so that g(v, v) = 1.
+InitialState initialStateFromSpec(const Chain& chain, const InitialSpec& spec);
 
 // g(v, v) of a start: |dPsi(xdot)|^2 in the ambient kinetic metric M.
 double speedSquared(const Chain& chain, const InitialState& start);

@@ -21,25 +21,6 @@ Eigen::Vector2d rotate(const Eigen::Vector2d& unit, const Eigen::Vector2d& v) { 
   return {unit.x() * v.x() - unit.y() * v.y(), unit.y() * v.x() + unit.x() * v.y()};
 }
 
-// The chain amplitudes of the full chain depend on L alone, which is constant over a run: each thread
-// remembers the last L (same value as a fresh evaluation, so no effect on the results).
-double fourRodAmplitude(double L) {  // alpha_4(L) = chainAmplitude(4, L), as fourRodHinges
-  thread_local double lastL = std::numeric_limits<double>::quiet_NaN(), lastAlpha = 0;
-  if (!(L == lastL)) {
-    lastAlpha = chainAmplitude(4, L);
-    lastL = L;
-  }
-  return lastAlpha;
-}
-double publishedAmplitude(double L) {  // metric4's alpha = acos((L^2 - 8) / 2L)
-  thread_local double lastL = std::numeric_limits<double>::quiet_NaN(), lastAlpha = 0;
-  if (!(L == lastL)) {
-    lastAlpha = std::acos((L * L - 8) / (2 * L));
-    lastL = L;
-  }
-  return lastAlpha;
-}
-
 // Stencil indices: 0 centre, 1 plus eps, 2 minus eps.
 std::array<double, 3> stencilOf(double x, double eps) { return {x, x + eps, x - eps}; }
 
@@ -157,12 +138,17 @@ constexpr double embeddedEps = 1e-4;
 
 // ---- christoffel-fd ---------------------------------------------------------------------------------
 
-Eigen::Vector2d christoffelFdAcceleration(double L, const Eigen::Vector2d& coords, const Eigen::Vector2d& rates) {
+PublishedChain::PublishedChain(double L)
+    : baseLength(L), amplitude(chainAmplitude(4, L)), printedAmplitude(std::acos((L * L - 8) / (2 * L))) {}
+
+Eigen::Vector2d christoffelFdAcceleration(const PublishedChain& chain, const Eigen::Vector2d& coords,
+                                          const Eigen::Vector2d& rates) {
   // Spec section 4: metric4 at (phi, t), (phi +- eps, t), (phi, t +- eps). Its outer level (phi only) is
   // computed for the 3 phi values, cos/sin of t for the 3 t values, the inner level at the 5 points.
   constexpr double eps = christoffelEps;
   const std::array<double, 3> phis = stencilOf(coords(0), eps), ts = stencilOf(coords(1), eps);
-  const double alpha = publishedAmplitude(L);
+  const double L = chain.baseLength;
+  const double alpha = chain.printedAmplitude;
 
   const Turn phiCentre = turnOf(phis[0]);
   const double thetaCentre = alpha * phiCentre.s;
@@ -220,12 +206,14 @@ Vector6d fourRodHinges(double L, double phi, double t) {
   return fourRodInner(outer, inner, std::sqrt(radicand.numerator / radicand.denominator));
 }
 
-Eigen::Vector2d embeddedFdAcceleration(double L, const Eigen::Vector2d& coords, const Eigen::Vector2d& rates) {
+Eigen::Vector2d embeddedFdAcceleration(const PublishedChain& chain, const Eigen::Vector2d& coords,
+                                       const Eigen::Vector2d& rates) {
   // Spec section 5 on its 3x3 stencil: Psi's outer level for the 3 phi values, cos/sin t for the 3 t values,
   // every other angle turned from its value at the centre (cos/sin of theta and theta_in from their halves).
   constexpr double eps = embeddedEps;
   const std::array<double, 3> phis = stencilOf(coords(0), eps), ts = stencilOf(coords(1), eps);
-  const double alpha = fourRodAmplitude(L);
+  const double L = chain.baseLength;
+  const double alpha = chain.amplitude;
 
   const Turn phiCentre = turnOf(phis[0]);
   const double halfThetaCentre = 0.5 * (alpha * phiCentre.s);
@@ -268,7 +256,7 @@ Eigen::Vector2d embeddedFdAcceleration(double L, const Eigen::Vector2d& coords, 
       denominators(3 * k + j) = radicand.denominator;
     }
   }
-  // The 9 divisions and square roots as packed operations (measured: 308 -> 270 ns per evaluation).
+  // The 9 divisions and square roots as packed operations: the divider is this field's bottleneck.
   const Eigen::Array<double, 9, 1> roots = (numerators / denominators).sqrt();
   HingeStencil q;
   for (int k = 0; k < 3; ++k)

@@ -14,10 +14,21 @@
 
 namespace sl {
 
+// The 4-rod chain on base L with its two amplitudes, constant over a run: computed once when a run is bound.
+struct PublishedChain {
+  explicit PublishedChain(double baseLength);
+  double baseLength;
+  double amplitude;         // alpha_4(L) = chainAmplitude(4, L) (linkage/chart.hpp), as fourRodHinges
+  double printedAmplitude;  // metric4's alpha = acos((L^2 - 8) / 2L), as printed
+};
+
 // (phiddot, tddot) from (phi, t) and (phidot, tdot).
-Eigen::Vector2d christoffelFdAcceleration(double baseLength, const Eigen::Vector2d& coords,
+Eigen::Vector2d christoffelFdAcceleration(const PublishedChain& chain, const Eigen::Vector2d& coords,
                                           const Eigen::Vector2d& rates);
-Eigen::Vector2d embeddedFdAcceleration(double baseLength, const Eigen::Vector2d& coords, const Eigen::Vector2d& rates);
+Eigen::Vector2d embeddedFdAcceleration(const PublishedChain& chain, const Eigen::Vector2d& coords,
+                                       const Eigen::Vector2d& rates);
+
+// The same, every stencil point evaluated from scratch from L (the spec's code): the reference.
 
 Eigen::Vector2d christoffelFdAccelerationStencilByStencil(double baseLength, const Eigen::Vector2d& coords,
                                                           const Eigen::Vector2d& rates);

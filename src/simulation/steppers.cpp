@@ -138,24 +138,22 @@ std::unique_ptr<Stepper> dense(Dense stepper, double firstStep) {
 
 }  // namespace
 
-const std::vector<std::string>& stepperNames() {
-  static const std::vector<std::string> names = {"rk4", "dopri5", "rkf78", "bulirsch-stoer"};
-  return names;
-}
-
-std::unique_ptr<Stepper> makeStepper(const std::string& integrator, double tolerance, double step) {
-  if (integrator == "rk4") return std::make_unique<Rk4Hermite>(step);
+std::unique_ptr<Stepper> makeStepper(Integrator integrator, double tolerance, double step) {
   // A cautious first step; the controllers grow it within a few steps.
   const double firstStep = 1e-3;
-  if (integrator == "dopri5")
-    return dense(odeint::make_dense_output(tolerance, tolerance, odeint::runge_kutta_dopri5<State>()), firstStep);
-  if (integrator == "rkf78") return std::make_unique<Rkf78>(tolerance);
-  if (integrator == "bulirsch-stoer")
-    // control_interpolation: the error of the dense output itself enters the step control, so that samples
-    // between the (long) extrapolation steps are as accurate as the steps.
-    return dense(odeint::bulirsch_stoer_dense_out<State>(tolerance, tolerance, 1.0, 1.0, 0.0, true), firstStep);
-  throw std::invalid_argument("unknown integrator '" + integrator +
-                              "' (expected rk4, dopri5, rkf78 or bulirsch-stoer)");
+  switch (integrator) {
+    case Integrator::Rk4:
+      return std::make_unique<Rk4Hermite>(step);
+    case Integrator::Dopri5:
+      return dense(odeint::make_dense_output(tolerance, tolerance, odeint::runge_kutta_dopri5<State>()), firstStep);
+    case Integrator::Rkf78:
+      return std::make_unique<Rkf78>(tolerance);
+    case Integrator::BulirschStoer:
+      // control_interpolation: the error of the dense output itself enters the step control, so that samples
+      // between the (long) extrapolation steps are as accurate as the steps.
+      return dense(odeint::bulirsch_stoer_dense_out<State>(tolerance, tolerance, 1.0, 1.0, 0.0, true), firstStep);
+  }
+  throw std::invalid_argument("unknown integrator");
 }
 
 }  // namespace sl

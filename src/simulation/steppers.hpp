@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "contracts/registry.hpp"
 #include "simulation/geodesic_system.hpp"
 
 namespace sl {
@@ -28,9 +29,7 @@ class Stepper {
   virtual void stateAt(double t, State& y) = 0;
 };
 
-// integrator: rk4 | dopri5 | rkf78 | bulirsch-stoer. tolerance: absolute and relative (adaptive); step: rk4's step.
-std::unique_ptr<Stepper> makeStepper(const std::string& integrator, double tolerance, double step);
-
-const std::vector<std::string>& stepperNames();
+// tolerance: absolute and relative (adaptive integrators); step: rk4's step.
+std::unique_ptr<Stepper> makeStepper(Integrator integrator, double tolerance, double step);
 
 }  // namespace sl

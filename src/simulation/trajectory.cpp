@@ -39,23 +39,17 @@ class CountingSystem : public GeodesicSystem {
   std::unique_ptr<GeodesicSystem> inner_;
 };
 
-std::unique_ptr<GeodesicSystem> makeSystem(const Chain& chain, const InitialState& start, const RunConfig& config) {
-  if (config.method == "ambient") {
+std::unique_ptr<GeodesicSystem> makeSystem(const ChainConstants& bound, const InitialState& start,
+                                           const RunConfig& config) {
+  if (config.method == Method::Ambient) {
     // Project once the rods drift past a tenth of the tolerance (never below rounding level).
     const double projectBeyond = std::max(1e-14, 0.1 * std::min(config.tolerance, config.maxRodLengthError));
-    return std::make_unique<AmbientSystem>(chain, start, projectBeyond);
+    return std::make_unique<AmbientSystem>(bound.chain, start, projectBeyond);
   }
-  return std::make_unique<ChartSystem>(chain, chartMethod(config.method, chain), start);
+  return std::make_unique<ChartSystem>(bound, chartMethod(config.method, bound), start);
 }
 
 void validateConfig(const RunConfig& config) {
-  const std::vector<std::string> methods = methodNames(), integrators = integratorNames();
-  if (std::find(methods.begin(), methods.end(), config.method) == methods.end())
-    throw std::invalid_argument("unknown method '" + config.method +
-                                "' (expected christoffel-fd, embedded-fd, christoffel, embedded or ambient)");
-  if (std::find(integrators.begin(), integrators.end(), config.integrator) == integrators.end())
-    throw std::invalid_argument("unknown integrator '" + config.integrator +
-                                "' (expected rk4, dopri5, rkf78 or bulirsch-stoer)");
   if (!(config.tolerance > 0) || !std::isfinite(config.tolerance))
     throw std::invalid_argument("tolerance must be positive and finite");
   if (!(config.step > 0) || !std::isfinite(config.step))
@@ -78,16 +72,10 @@ std::string formatTime(double t) {
 
 }  // namespace
 
-std::vector<std::string> methodNames() {
-  return {"christoffel-fd", "embedded-fd", "christoffel", "embedded", "ambient"};
-}
-std::vector<std::string> integratorNames() { return stepperNames(); }
-bool integratorIsAdaptive(const std::string& integrator) { return integrator != "rk4"; }
-
 struct Trajectory::Impl {
-  Chain chain;
+  explicit Impl(const Chain& chain) : bound(chain) {}
+  ChainConstants bound;  // the chain and what every step uses of it, computed once here
   RunConfig config;
-  AmbientMassMatrix mass;
   std::unique_ptr<CountingSystem> system;
   std::unique_ptr<Stepper> stepper;
   State start;
@@ -98,46 +86,46 @@ struct Trajectory::Impl {
   std::optional<StopInfo> stop;
   InvariantExtremes extremes;
 
-  void halt(const std::string& reason, double time, const std::string& detail) {
+  void halt(StopReason reason, double time, const std::string& detail) {
     stop = StopInfo{reason, time, detail};
   }
 
   // One integration step with every watchdog; on failure the run stops at the step's start time.
   void advance() {
     const double t0 = stepper->endTime();
-    if (steps >= config.maxSteps) return halt("max-steps", t0, "reached maxSteps = " + std::to_string(config.maxSteps));
+    if (steps >= config.maxSteps) return halt(StopReason::MaxSteps, t0, "reached maxSteps = " + std::to_string(config.maxSteps));
     State y = stepper->endState();
     if (system->adjust(y)) stepper->initialize(*system, y, t0);
     // A failed step is rolled back: the run ends on its last good state, which stays sampleable at the
     // stop time (never the failed step's non-finite data).
-    auto haltAtLastGoodState = [&](const std::string& reason, const std::string& detail) {
+    auto haltAtLastGoodState = [&](StopReason reason, const std::string& detail) {
       stepper->initialize(*system, y, t0);
       halt(reason, t0, detail);
     };
     try {
       stepper->doStep(*system);
     } catch (const std::exception& e) {
-      return haltAtLastGoodState("step-size-collapse", std::string("integrator gave up: ") + e.what());
+      return haltAtLastGoodState(StopReason::StepSizeCollapse, std::string("integrator gave up: ") + e.what());
     }
     ++steps;
     const State& end = stepper->endState();
     const double t1 = stepper->endTime();
     if (!allFinite(end) || !std::isfinite(t1))
-      return haltAtLastGoodState("non-finite", "state became non-finite in the step from t = " + formatTime(t0) +
+      return haltAtLastGoodState(StopReason::NonFinite, "state became non-finite in the step from t = " + formatTime(t0) +
                                                    "; last good state " + system->describe(y));
     if (!(t1 - t0 > minimumRelativeStep * std::max(1.0, std::abs(t0))))
-      return haltAtLastGoodState("step-size-collapse",
+      return haltAtLastGoodState(StopReason::StepSizeCollapse,
                                  "step size " + formatTime(t1 - t0) + " at t = " + formatTime(t0));
     if (const auto failure = system->inspect(end))
       return haltAtLastGoodState(failure->reason, failure->detail + " at t = " + formatTime(t1));
     const StepSummary summary = system->summarize(end, chartZeroTAtEnd);
     const double drift = std::abs(summary.energy - initialEnergy) / initialEnergy;
     if (!(drift <= config.maxRelativeEnergyDrift))
-      return haltAtLastGoodState("energy-blow-up",
+      return haltAtLastGoodState(StopReason::EnergyBlowUp,
                                  "relative energy drift " + formatTime(drift) + " at t = " + formatTime(t1));
     if (!(summary.rodLengthError <= config.maxRodLengthError))
       return haltAtLastGoodState(
-          "rod-length", "rod-length error " + formatTime(summary.rodLengthError) + " at t = " + formatTime(t1));
+          StopReason::RodLength, "rod-length error " + formatTime(summary.rodLengthError) + " at t = " + formatTime(t1));
     extremes.maxRelativeEnergyDrift = std::max(extremes.maxRelativeEnergyDrift, drift);
     extremes.maxRodLengthError = std::max(extremes.maxRodLengthError, summary.rodLengthError);
     chartZeroTAtStart = chartZeroTAtEnd;
@@ -155,23 +143,20 @@ struct Trajectory::Impl {
     s.coords = o.chartZeroCoords ? *o.chartZeroCoords : coordinatesFromSpherePoint(o.spherePoint, chartZeroTAtStart);
     s.rates = o.chartZeroRates ? *o.chartZeroRates : coordinateRatesFromSphereVelocity(s.coords, o.sphereVelocity);
     if (!s.rates.allFinite()) s.rates.setZero();  // chart 0's singular set: no rates there (never NaN)
-    s.energy = kineticEnergy(mass, s.hingeVelocities);
+    s.energy = kineticEnergy(bound.mass, s.hingeVelocities);
     s.relativeEnergyDrift = std::abs(s.energy - initialEnergy) / initialEnergy;
-    s.rodLengthError = rodLengthError(chain, s.hinges);
+    s.rodLengthError = rodLengthError(bound.chain, s.hinges);
     return s;
   }
 };
 
 Trajectory::Trajectory(const Chain& chain, const InitialState& start, const RunConfig& config)
-    : impl_(std::make_unique<Impl>()) {
-  chain.validate();
+    : impl_(std::make_unique<Impl>(chain)) {
   validateConfig(config);
   validateInitialState(chain, start);
   Impl& run = *impl_;
-  run.chain = chain;
   run.config = config;
-  run.mass = ambientMassMatrix(chain);
-  run.system = std::make_unique<CountingSystem>(makeSystem(chain, start, config));
+  run.system = std::make_unique<CountingSystem>(makeSystem(run.bound, start, config));
   run.stepper = makeStepper(config.integrator, config.tolerance, config.step);
   run.start = run.system->initialState();
   const StepSummary summary = run.system->summarize(

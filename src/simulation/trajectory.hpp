@@ -1,6 +1,6 @@
 #pragma once
-// A run: one geodesic method integrated from an initial state, watched for failure, sampled on demand.
-// Contract shared with frames/, cli/ and bench; simulation/ owns the implementation.
+// The trajectory of one run: a geodesic method integrated from an initial state by an integrator, watched
+// for failure (the watchdogs of RunConfig), sampled on demand. Used by frames/, analysis/ and cli/.
 
 #include <memory>
 #include <optional>
@@ -9,29 +9,11 @@
 
 #include <Eigen/Dense>
 
+#include "contracts/registry.hpp"
+#include "contracts/run_config.hpp"
 #include "linkage/chain.hpp"
 
 namespace sl {
-
-// The start of a motion, chart-free: a point x of the unit sphere S^(n-2) in R^(n-1) and a tangent
-// vector xdot (x . xdot = 0). Chart coordinates and drag starts are converted into this.
-struct InitialState {
-  Eigen::VectorXd spherePoint;
-  Eigen::VectorXd sphereVelocity;
-};
-
-struct RunConfig {
-  // Default: the chart-free ambient method with RKF 7(8) at 1e-14: hinge positions within 1e-10 of the
-  // reference starts over T = 20, poles included, and relative energy drift below 1e-12 (at 1e-13 the
-  // drift is 2.5e-12), for about 1.3x the steps of 1e-13 (docs/methods.md).
-  std::string method = "ambient";        // christoffel-fd | embedded-fd | christoffel | embedded | ambient
-  std::string integrator = "rkf78";      // rk4 | dopri5 | rkf78 | bulirsch-stoer
-  double tolerance = 1e-14;              // adaptive integrators: relative and absolute
-  double step = 0.01;                    // fixed-step integrators
-  double maxRelativeEnergyDrift = 1e-2;  // watchdog: |E - E0| / E0 beyond this stops the run
-  double maxRodLengthError = 1e-6;       // watchdog
-  long maxSteps = 50'000'000;            // watchdog: bounds the work of any run
-};
 
 struct Sample {
   double time = 0;
@@ -47,8 +29,7 @@ struct Sample {
 };
 
 struct StopInfo {
-  std::string reason;  // non-finite | pole-fold-back | pole-singularity | energy-blow-up | step-size-collapse |
-                       // rod-length | max-steps
+  StopReason reason = StopReason::NonFinite;
   double time = 0;     // last good time
   std::string detail;  // human-readable: where and what
 };
@@ -81,10 +62,5 @@ class Trajectory {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
-
-// Names accepted in RunConfig, for validation and help texts.
-std::vector<std::string> methodNames();
-std::vector<std::string> integratorNames();
-bool integratorIsAdaptive(const std::string& integrator);
 
 }  // namespace sl

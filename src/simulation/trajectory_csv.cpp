@@ -78,7 +78,7 @@ void writeTrajectoryCsv(std::ostream& out, const std::string& run, Trajectory& t
       continue;
     }
     const StopInfo& stop = *trajectory.stop();
-    if (const std::optional<Sample> last = trajectory.sampleAt(stop.time)) emit(*last, stop.reason);
+    if (const std::optional<Sample> last = trajectory.sampleAt(stop.time)) emit(*last, nameOf(stop.reason));
     return;
   }
 }

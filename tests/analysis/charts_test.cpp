@@ -10,6 +10,7 @@
 #include "analysis/stability_charts.hpp"
 #include "analysis/stability_sweep.hpp"
 #include "analysis/work_precision_charts.hpp"
+#include "contracts/registry.hpp"
 #include "test_paths.hpp"
 
 namespace sl {
@@ -33,8 +34,8 @@ CsvTable syntheticStabilityRows() {
       row[rows.column("cell")] = std::to_string(j * 2 + i);
       row[rows.column("x")] = std::to_string(i);
       row[rows.column("y")] = std::to_string(j);
-      row[rows.column("method")] = "christoffel-fd";
-      row[rows.column("integrator")] = "rk4";
+      row[rows.column("method")] = nameOf(Method::ChristoffelFd);
+      row[rows.column("integrator")] = nameOf(Integrator::Rk4);
       row[rows.column("status")] = statuses[j * 2 + i];
       row[rows.column("max_error")] = formatNumber(std::pow(10.0, -3.0 * (i + 2 * j + 1)));
       rows.rows.push_back(row);
@@ -60,11 +61,11 @@ TEST(WorkPrecisionCharts, DrawsThreeChartsPerStartAndTheWorstCase) {
   std::vector<WorkPrecisionPoint> points;
   for (double h : {0.1, 0.01})
     for (const std::string start : {"generic", "seam-crossing"}) {
-      WorkPrecisionPoint p{start, "christoffel-fd", "rk4", h, "ambient", {}};
+      WorkPrecisionPoint p{start, Method::ChristoffelFd, Integrator::Rk4, h, Method::Ambient, {}};
       p.measurement.maxError = h * h * h * h;
       p.measurement.evaluations = static_cast<long>(80 / h);
       p.measurement.wallSeconds = 1e-5 / h;
-      if (start == "seam-crossing" && h == 0.1) p.measurement.status = "non-finite";
+      if (start == "seam-crossing" && h == 0.1) p.measurement.status = StopReason::NonFinite;
       points.push_back(p);
     }
   const std::string folder = sl::testing::freshTestFolder("wp");

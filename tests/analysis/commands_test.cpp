@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 #include <CLI/CLI.hpp>
 
-#include "analysis/commands.hpp"
 #include "analysis/csv_table.hpp"
+#include "cli/commands.hpp"
 #include "test_paths.hpp"
 
 namespace sl {
@@ -75,6 +75,17 @@ TEST(BenchCommand, RefusesUnknownStartsAndIntegrators) {
   EXPECT_THROW(parse({"bench", "--start", "nowhere", "--no-charts", "--out", out}), CLI::ValidationError);
   EXPECT_THROW(parse({"bench", "--integrators", "euler", "--no-charts", "--out", out}), std::invalid_argument);
   EXPECT_THROW(parse({"bench", "--steps", "0", "--no-charts", "--out", out}), std::invalid_argument);
+}
+
+TEST(StabilityCommand, AnUnknownIntegratorNamesTheOptionAndTheChoices) {
+  const std::string out = sl::testing::freshTestFolder("out");
+  try {
+    parse({"stability", "--integrator", "euler", "--no-charts", "--out", out});
+    FAIL() << "expected an error";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_STREQ(error.what(),
+                 "--integrator: unknown integrator 'euler' (expected rk4, dopri5, rkf78 or bulirsch-stoer)");
+  }
 }
 
 }  // namespace

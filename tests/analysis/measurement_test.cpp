@@ -9,6 +9,8 @@
 #include "analysis/csv_table.hpp"
 #include "analysis/measurement.hpp"
 #include "analysis/starts.hpp"
+#include "contracts/registry.hpp"
+#include "contracts/time_grid.hpp"
 
 namespace sl {
 namespace {
@@ -20,25 +22,25 @@ NamedStart shippedStart(const std::string& name) {
 }
 
 TEST(GridTimes, CoverTheSpanAndEndExactlyOnIt) {
-  const auto times = gridTimes(20.0, 0.1);
+  const auto times = gridTimesThrough(20.0, 0.1);
   ASSERT_EQ(times.size(), 201u);
   EXPECT_EQ(times.front(), 0.0);
   EXPECT_EQ(times.back(), 20.0);
-  const auto ragged = gridTimes(1.05, 0.1);
+  const auto ragged = gridTimesThrough(1.05, 0.1);
   EXPECT_EQ(ragged.size(), 12u);
   EXPECT_EQ(ragged.back(), 1.05);
 }
 
 TEST(ReferencePath, NeverChecksAMethodWithItself) {
-  for (const auto& method : methodNames()) EXPECT_NE(referenceConfig(method).method, method);
-  EXPECT_EQ(referenceConfig("christoffel").tolerance, kReferenceTolerance);
-  EXPECT_TRUE(integratorIsAdaptive(tightestIntegrator()));
+  for (const MethodTraits& method : kMethods) EXPECT_NE(referenceConfig(method.kind).method, method.kind);
+  EXPECT_EQ(referenceConfig(Method::Christoffel).tolerance, kReferenceTolerance);
+  EXPECT_TRUE(traits(tightestIntegrator()).adaptive);
 }
 
-// Both references (ambient, and embedded for checking ambient) against /work/shared/reference/generic_L3.csv,
+// Both references (ambient, and embedded for checking ambient) against tests/data/reference/generic_L3.csv,
 // computed independently in R^6 by an 8th-order method (trusted to about 2e-9 in hinge positions).
 TEST(ReferencePath, MatchesTheShippedGenericReference) {
-  const CsvTable shipped = readCsvFile(std::string(SL_SHARED_DIR) + "/reference/generic_L3.csv");
+  const CsvTable shipped = readCsvFile(std::string(SL_SOURCE_DIR) + "/tests/data/reference/generic_L3.csv");
   const NamedStart start = shippedStart("generic");
   std::vector<double> times;
   std::vector<size_t> rows;
@@ -46,9 +48,10 @@ TEST(ReferencePath, MatchesTheShippedGenericReference) {
     times.push_back(shipped.number(r, "time"));
     rows.push_back(r);
   }
-  for (const std::string methodUnderTest : {"embedded", "ambient"}) {
+  for (const Method methodUnderTest : {Method::Embedded, Method::Ambient}) {
     const ReferencePath path = computeReferencePath(start.chain, start.state, times, referenceConfig(methodUnderTest));
-    ASSERT_FALSE(path.stop) << path.stop->reason;
+    ASSERT_TRUE(path.config);
+    ASSERT_FALSE(path.stop) << nameOf(path.stop->reason);
     ASSERT_EQ(path.hinges.size(), times.size());
     for (size_t k = 0; k < times.size(); ++k) {
       Eigen::Matrix2Xd expected(2, 3);
@@ -56,7 +59,8 @@ TEST(ReferencePath, MatchesTheShippedGenericReference) {
         expected(0, h) = shipped.number(rows[k], "p" + std::to_string(h + 1) + "x");
         expected(1, h) = shipped.number(rows[k], "p" + std::to_string(h + 1) + "y");
       }
-      EXPECT_LT(hingeDistance(path.hinges[k], expected), 5e-9) << path.config.method << " at time " << times[k];
+      EXPECT_LT(hingeDistance(path.hinges[k], expected), 5e-9)
+          << nameOf(path.config->method) << " at time " << times[k];
     }
   }
 }
@@ -64,7 +68,7 @@ TEST(ReferencePath, MatchesTheShippedGenericReference) {
 TEST(StartsAtThePole, TheThroughPoleStartReachesThePoleAtTimeFive) {
   const NamedStart start = shippedStart("through-pole");
   RunConfig check;  // a method other than the ambient one that built the start
-  check.method = "embedded";
+  check.method = Method::Embedded;
   check.tolerance = 1e-12;
   Trajectory run(start.chain, start.state, check);
   const auto atPole = run.sampleAt(5.0);
@@ -76,7 +80,7 @@ TEST(StartsAtThePole, TheThroughPoleStartReachesThePoleAtTimeFive) {
 TEST(StartsAtThePole, TheNearPoleStartIsClosestToThePoleAtTimeFive) {
   const NamedStart start = shippedStart("near-pole");
   RunConfig check;
-  check.method = "embedded";
+  check.method = Method::Embedded;
   check.tolerance = 1e-12;
   Trajectory run(start.chain, start.state, check);
   std::vector<double> heights;
@@ -89,9 +93,9 @@ TEST(MeasureRun, TheDefaultMethodIsAccurateOnTheGenericStart) {
   const NamedStart start = shippedStart("generic");
   const RunConfig config;  // the default method, integrator and tolerance
   const ReferencePath reference =
-      computeReferencePath(start.chain, start.state, gridTimes(20, 0.1), referenceConfig(config.method));
+      computeReferencePath(start.chain, start.state, gridTimesThrough(20, 0.1), referenceConfig(config.method));
   const Measurement m = measureRun(start.chain, start.state, config, reference);
-  EXPECT_EQ(m.status, "ok");
+  EXPECT_EQ(m.status, RunStatus(Verdict::Ok));
   EXPECT_LT(m.maxError, 1e-7);
   EXPECT_LE(m.finalError, m.maxError);
   EXPECT_LT(m.maxEnergyDrift, 1e-7);
@@ -128,11 +132,11 @@ TEST(ShippedStarts, LNearTwoAmplifiesPerturbationsOfTheStartAMillionfold) {
 TEST(MeasureRun, WithoutAReferenceTheInvariantsCoverEveryStep) {
   const NamedStart start = shippedStart("generic");
   RunConfig config;
-  config.integrator = "rk4";
+  config.integrator = Integrator::Rk4;
   config.step = 0.02;
-  const Measurement ends = measureRun(start.chain, start.state, config, noReference(gridTimes(20, 20)));
-  const Measurement dense = measureRun(start.chain, start.state, config, noReference(gridTimes(20, 0.02)));
-  EXPECT_EQ(ends.status, "ok");
+  const Measurement ends = measureRun(start.chain, start.state, config, noReference(gridTimesThrough(20, 20)));
+  const Measurement dense = measureRun(start.chain, start.state, config, noReference(gridTimesThrough(20, 0.02)));
+  EXPECT_EQ(ends.status, RunStatus(Verdict::Ok));
   EXPECT_GT(dense.maxEnergyDrift, 1e-10);
   EXPECT_EQ(ends.maxEnergyDrift, dense.maxEnergyDrift);  // every sample of `dense` is a step end
   EXPECT_EQ(ends.maxRodLengthError, dense.maxRodLengthError);
@@ -143,15 +147,17 @@ TEST(MeasureRun, WithoutAReferenceTheInvariantsCoverEveryStep) {
 // pole, the published method is stopped there; exactly through the pole its fields are singular.
 TEST(MeasureRun, ThePublishedMethodFailsAtThePole) {
   RunConfig config;
-  config.method = "christoffel-fd";
-  config.integrator = "rk4";
+  config.method = Method::ChristoffelFd;
+  config.integrator = Integrator::Rk4;
   config.step = 0.01;
   for (const std::string name : {"near-pole", "through-pole"}) {
     const NamedStart start = shippedStart(name);
     const ReferencePath reference =
-        computeReferencePath(start.chain, start.state, gridTimes(20, 0.1), referenceConfig(config.method));
+        computeReferencePath(start.chain, start.state, gridTimesThrough(20, 0.1), referenceConfig(config.method));
     const Measurement m = measureRun(start.chain, start.state, config, reference);
-    if (name == "near-pole") EXPECT_EQ(m.status, "pole-fold-back") << m.stopDetail;
+    if (name == "near-pole") {
+      EXPECT_EQ(m.status, RunStatus(StopReason::PoleFoldBack)) << m.stopDetail;
+    }
     EXPECT_TRUE(m.failed()) << name;
     EXPECT_GT(m.stopTime, 4.0) << name;
     EXPECT_LE(m.stopTime, 5.0) << name;
@@ -164,10 +170,31 @@ TEST(MeasureRun, AFarOffReferenceMakesAWrongPath) {
   const NamedStart other = shippedStart("seam-crossing");
   const RunConfig config;
   const ReferencePath elsewhere =
-      computeReferencePath(other.chain, other.state, gridTimes(2, 0.1), referenceConfig(config.method));
+      computeReferencePath(other.chain, other.state, gridTimesThrough(2, 0.1), referenceConfig(config.method));
   const Measurement m = measureRun(start.chain, start.state, config, elsewhere);
-  EXPECT_EQ(m.status, "wrong-path");
+  EXPECT_EQ(m.status, RunStatus(Verdict::WrongPath));
   EXPECT_GT(m.maxError, kWrongPathError);
+}
+
+// Statuses are written by name into the CSVs and read back from them.
+TEST(RunStatus, NamesRoundTripForEveryVerdictAndStopReason) {
+  std::vector<RunStatus> all;
+  for (const auto& verdict : kVerdicts) all.push_back(verdict.kind);
+  for (const auto& reason : kStopReasons) all.push_back(reason.kind);
+  for (const RunStatus& status : all) EXPECT_EQ(parseStatus(statusName(status)), status) << statusName(status);
+  EXPECT_EQ(statusName(Verdict::Ok), "ok");
+  EXPECT_EQ(statusName(Verdict::WrongPath), "wrong-path");
+  EXPECT_EQ(statusName(Verdict::ReferenceStopped), "reference-stopped");
+  EXPECT_EQ(statusName(StopReason::MaxSteps), "max-steps");
+  EXPECT_FALSE(parseStatus("other"));
+  EXPECT_FALSE(Measurement{}.failed());
+}
+
+TEST(ReferencePath, NoReferenceHasNoRunAndIsWrittenAsNone) {
+  const ReferencePath none = noReference(gridTimesThrough(1, 0.5));
+  EXPECT_FALSE(none.config);
+  EXPECT_EQ(none.times.size(), 3u);
+  EXPECT_EQ(referenceMethodName(none), "none");
 }
 
 }  // namespace

@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include "analysis/measurement.hpp"
 #include "analysis/stability_sweep.hpp"
+#include "contracts/registry.hpp"
 #include "test_paths.hpp"
 
 namespace sl {
@@ -17,7 +19,7 @@ StabilityOptions tinySweep(const std::string& kind) {
   options.kind = kind;
   options.grid = 4;
   options.duration = 2;
-  options.methods = {"christoffel-fd", "ambient"};
+  options.methods = {Method::ChristoffelFd, Method::Ambient};
   // Each method's sweep default: rk4 with step 0.01 for christoffel-fd, the default run's integrator for ambient.
   options.threads = 2;
   return options;
@@ -35,7 +37,7 @@ TEST(StabilitySweep, HasOneRowPerCellAndMethodInCellOrder) {
   ASSERT_EQ(rows.rows.size(), 4u * 4u * 2u);
   for (size_t r = 0; r < rows.rows.size(); ++r) {
     EXPECT_EQ(std::stol(rows.text(r, "cell")), static_cast<long>(r / 2));
-    EXPECT_EQ(rows.text(r, "method"), r % 2 == 0 ? "christoffel-fd" : "ambient");
+    EXPECT_EQ(rows.text(r, "method"), nameOf(r % 2 == 0 ? Method::ChristoffelFd : Method::Ambient));
   }
 }
 
@@ -67,7 +69,7 @@ TEST(StabilitySweep, MergedShardsEqualASingleRunByteForByte) {
 TEST(StabilitySweep, MergingShardsOfDifferentGridsIsRefused) {
   const std::string folder = sl::testing::freshTestFolder("mixed");
   StabilityOptions options = tinySweep("seam");
-  options.methods = {"ambient"};
+  options.methods = {Method::Ambient};
   options.duration = 0.2;
   options.shard = {1, 2};
   writeFileAtomically(stabilityShardPath(folder, "seam", options.shard), csvText(runStabilitySweep(options)));
@@ -88,19 +90,23 @@ TEST(StabilitySweep, ThePublishedMethodFoldsBackNearThePole) {
   int foldBacks = 0;
   for (size_t r = 0; r < rows.rows.size(); ++r) {
     const int column = std::stoi(rows.text(r, "i"));
-    if (rows.text(r, "method") == "christoffel-fd") {
-      EXPECT_EQ(rows.text(r, "integrator"), "rk4");
+    if (rows.text(r, "method") == nameOf(Method::ChristoffelFd)) {
+      EXPECT_EQ(rows.text(r, "integrator"), nameOf(Integrator::Rk4));
       if (column == 1 || column == 2) {
         const std::string status = rows.text(r, "status");
-        EXPECT_TRUE(status == "pole-fold-back" || status == "non-finite")
+        EXPECT_TRUE(status == nameOf(StopReason::PoleFoldBack) || status == nameOf(StopReason::NonFinite))
             << status << ": " << rows.text(r, "stop_detail");
-        foldBacks += status == "pole-fold-back";
+        foldBacks += status == nameOf(StopReason::PoleFoldBack);
       }
-      if (column < 3) EXPECT_LE(rows.number(r, "stop_time"), 1.0);
-      if (column == 0) EXPECT_NE(rows.text(r, "status"), "ok");
+      if (column < 3) {
+        EXPECT_LE(rows.number(r, "stop_time"), 1.0);
+      }
+      if (column == 0) {
+        EXPECT_NE(rows.text(r, "status"), nameOf(Verdict::Ok));
+      }
     }
-    if (rows.text(r, "method") == "ambient") {
-      EXPECT_EQ(rows.text(r, "status"), "ok");
+    if (rows.text(r, "method") == nameOf(Method::Ambient)) {
+      EXPECT_EQ(rows.text(r, "status"), nameOf(Verdict::Ok));
       EXPECT_LT(rows.number(r, "max_error"), 1e-7);
     }
   }
@@ -110,12 +116,12 @@ TEST(StabilitySweep, ThePublishedMethodFoldsBackNearThePole) {
 TEST(StabilitySweep, WithoutAReferenceOnlyFateAndInvariantsAreMeasured) {
   StabilityOptions options = tinySweep("launch");
   options.grid = 2;
-  options.methods = {"ambient"};
+  options.methods = {Method::Ambient};
   options.checkAgainstReference = false;
   const CsvTable rows = runStabilitySweep(options);
   ASSERT_EQ(rows.rows.size(), 4u);
   for (size_t r = 0; r < rows.rows.size(); ++r) {
-    EXPECT_EQ(rows.text(r, "status"), "ok");
+    EXPECT_EQ(rows.text(r, "status"), nameOf(Verdict::Ok));
     EXPECT_EQ(rows.text(r, "reference_method"), "none");
     EXPECT_EQ(rows.text(r, "max_error"), "nan");
     EXPECT_LT(rows.number(r, "max_energy_drift"), 1e-8);
@@ -125,19 +131,19 @@ TEST(StabilitySweep, WithoutAReferenceOnlyFateAndInvariantsAreMeasured) {
 
 TEST(StabilitySummary, CountsFractionsAndFailureModes) {
   CsvTable rows{stabilityColumns(), {}};
-  auto add = [&](const std::string& method, const std::string& status, double error) {
+  auto add = [&](Method method, const RunStatus& status, double error) {
     std::vector<std::string> row(rows.columns.size(), "0");
-    row[rows.column("method")] = method;
-    row[rows.column("integrator")] = "dopri5";
-    row[rows.column("status")] = status;
+    row[rows.column("method")] = nameOf(method);
+    row[rows.column("integrator")] = nameOf(Integrator::Dopri5);
+    row[rows.column("status")] = statusName(status);
     row[rows.column("max_error")] = formatNumber(error);
     rows.rows.push_back(row);
   };
-  add("embedded", "ok", 1e-12);
-  add("embedded", "ok", 1e-7);
-  add("embedded", "ok", 1e-3);
-  add("embedded", "non-finite", 1e-13);  // failed: never counted as accurate
-  add("ambient", "ok", 1e-11);
+  add(Method::Embedded, Verdict::Ok, 1e-12);
+  add(Method::Embedded, Verdict::Ok, 1e-7);
+  add(Method::Embedded, Verdict::Ok, 1e-3);
+  add(Method::Embedded, StopReason::NonFinite, 1e-13);  // failed: never counted as accurate
+  add(Method::Ambient, Verdict::Ok, 1e-11);
   const CsvTable summary = stabilitySummary(rows);
   ASSERT_EQ(summary.rows.size(), 2u);
   EXPECT_EQ(summary.text(0, "method"), "embedded");
@@ -172,6 +178,32 @@ TEST(Shard, ParsesKOfNAndRefusesNonsense) {
   EXPECT_EQ(parseShard("2/5").count, 5);
   for (const char* bad : {"0/3", "4/3", "1", "a/b", "1/0", "-1/2"})
     EXPECT_THROW(parseShard(bad), std::invalid_argument) << bad;
+}
+
+// The summary's columns and the maps' colour codes follow this order: it must not move.
+TEST(StabilityStatus, NamesKeepTheirOrderAndCodes) {
+  const std::vector<std::string> expected = {"ok",
+                                             "wrong-path",
+                                             "pole-fold-back",
+                                             "pole-singularity",
+                                             "non-finite",
+                                             "energy-blow-up",
+                                             "step-size-collapse",
+                                             "rod-length",
+                                             "max-steps",
+                                             "reference-stopped",
+                                             "other"};
+  EXPECT_EQ(stabilityStatusNames(), expected);
+  for (const auto& reason : kStopReasons) EXPECT_LT(stabilityStatusCode(std::string(reason.name)), 9) << reason.name;
+  EXPECT_EQ(stabilityStatusCode("reference-stopped"), 9);
+  EXPECT_EQ(stabilityStatusCode("no such status"), 10);
+}
+
+TEST(StabilitySweep, ThePublishedMethodsAreSweptWithRk4AndTheOthersWithTheDefaultIntegrator) {
+  EXPECT_EQ(sweepIntegratorFor(Method::ChristoffelFd), Integrator::Rk4);
+  EXPECT_EQ(sweepIntegratorFor(Method::EmbeddedFd), Integrator::Rk4);
+  for (const Method method : {Method::Christoffel, Method::Embedded, Method::Ambient})
+    EXPECT_EQ(sweepIntegratorFor(method), RunConfig().integrator) << nameOf(method);
 }
 
 }  // namespace

@@ -3,13 +3,14 @@
 #include <gtest/gtest.h>
 
 #include "analysis/work_precision.hpp"
+#include "contracts/registry.hpp"
 
 namespace sl {
 namespace {
 
-WorkPrecisionPoint point(const std::string& start, const std::string& integrator, double setting, double error,
-                         long evaluations, const std::string& status = "ok") {
-  WorkPrecisionPoint p{start, "embedded", integrator, setting, "ambient", {}};
+WorkPrecisionPoint point(const std::string& start, Integrator integrator, double setting, double error,
+                         long evaluations, const RunStatus& status = Verdict::Ok) {
+  WorkPrecisionPoint p{start, Method::Embedded, integrator, setting, Method::Ambient, {}};
   p.measurement.status = status;
   p.measurement.maxError = error;
   p.measurement.finalError = error / 2;
@@ -20,9 +21,9 @@ WorkPrecisionPoint point(const std::string& start, const std::string& integrator
 
 TEST(CheapestSettings, PicksTheFewestEvaluationsReachingTheTargetOnEveryStart) {
   const std::vector<WorkPrecisionPoint> points = {
-      point("a", "dopri5", 1e-6, 1e-7, 100),   point("b", "dopri5", 1e-6, 3e-6, 120),
-      point("a", "dopri5", 1e-9, 1e-10, 300),  point("b", "dopri5", 1e-9, 5e-10, 350),
-      point("a", "dopri5", 1e-12, 1e-13, 900), point("b", "dopri5", 1e-12, 2e-13, 800)};
+      point("a", Integrator::Dopri5, 1e-6, 1e-7, 100),   point("b", Integrator::Dopri5, 1e-6, 3e-6, 120),
+      point("a", Integrator::Dopri5, 1e-9, 1e-10, 300),  point("b", Integrator::Dopri5, 1e-9, 5e-10, 350),
+      point("a", Integrator::Dopri5, 1e-12, 1e-13, 900), point("b", Integrator::Dopri5, 1e-12, 2e-13, 800)};
   const auto cheapest = cheapestSettings(points, {1e-6, 1e-9, 1e-12, 1e-14});
   ASSERT_EQ(cheapest.size(), 4u);
   // 1e-6: tol 1e-6 fails on start b (3e-6), so tol 1e-9 is the cheapest that holds everywhere.
@@ -39,9 +40,10 @@ TEST(CheapestSettings, PicksTheFewestEvaluationsReachingTheTargetOnEveryStart) {
 
 TEST(CheapestSettings, AFailedOrMissingStartDisqualifiesASetting) {
   const std::vector<WorkPrecisionPoint> points = {
-      point("a", "rk4", 0.01, 1e-11, 8000), point("b", "rk4", 0.01, 1e-12, 8000, "pole-fold-back"),
-      point("a", "rk4", 0.001, 1e-12, 80000), point("b", "rk4", 0.001, 1e-13, 80000),
-      point("a", "rk4", 0.1, 1e-13, 800)};  // start b never ran at 0.1
+      point("a", Integrator::Rk4, 0.01, 1e-11, 8000),
+      point("b", Integrator::Rk4, 0.01, 1e-12, 8000, StopReason::PoleFoldBack),
+      point("a", Integrator::Rk4, 0.001, 1e-12, 80000), point("b", Integrator::Rk4, 0.001, 1e-13, 80000),
+      point("a", Integrator::Rk4, 0.1, 1e-13, 800)};  // start b never ran at 0.1
   const auto cheapest = cheapestSettings(points, {1e-9});
   ASSERT_EQ(cheapest.size(), 1u);
   EXPECT_TRUE(cheapest[0].reached);
@@ -49,13 +51,14 @@ TEST(CheapestSettings, AFailedOrMissingStartDisqualifiesASetting) {
 }
 
 TEST(CheapestSettings, ANonFiniteErrorNeverQualifies) {
-  const std::vector<WorkPrecisionPoint> points = {point("a", "dopri5", 1e-8, std::nan(""), 10)};
+  const std::vector<WorkPrecisionPoint> points = {point("a", Integrator::Dopri5, 1e-8, std::nan(""), 10)};
   EXPECT_FALSE(cheapestSettings(points, {1e-3})[0].reached);
 }
 
 TEST(WorkPrecisionCsv, HasNamedColumnsAndRoundTrips) {
-  const std::vector<WorkPrecisionPoint> points = {point("generic", "rk4", 0.01, 1.25e-7, 8004),
-                                                  point("through-pole", "dopri5", 1e-10, 3e-11, 1234, "non-finite")};
+  const std::vector<WorkPrecisionPoint> points = {
+      point("generic", Integrator::Rk4, 0.01, 1.25e-7, 8004),
+      point("through-pole", Integrator::Dopri5, 1e-10, 3e-11, 1234, StopReason::NonFinite)};
   const CsvTable table = workPrecisionTable(points);
   const std::vector<std::string> expected = {"start",
                                              "method",
@@ -81,10 +84,31 @@ TEST(WorkPrecisionCsv, HasNamedColumnsAndRoundTrips) {
   EXPECT_EQ(table.text(0, "max_error"), "1.25e-07");
   const auto back = workPrecisionPointsFromTable(table);
   ASSERT_EQ(back.size(), 2u);
-  EXPECT_EQ(back[1].measurement.status, "non-finite");
+  EXPECT_EQ(back[1].measurement.status, RunStatus(StopReason::NonFinite));
   EXPECT_EQ(back[0].measurement.maxError, 1.25e-7);
   EXPECT_EQ(back[0].measurement.evaluations, 8004);
   EXPECT_EQ(back[1].setting, 1e-10);
+}
+
+TEST(WorkPrecisionCsv, WritesNamesAndReadsThemBackAsKinds) {
+  const CsvTable table = workPrecisionTable({point("generic", Integrator::BulirschStoer, 1e-9, 1e-10, 500)});
+  EXPECT_EQ(table.text(0, "method"), "embedded");
+  EXPECT_EQ(table.text(0, "integrator"), "bulirsch-stoer");
+  EXPECT_EQ(table.text(0, "reference_method"), "ambient");
+  EXPECT_EQ(table.text(0, "status"), "ok");
+  const auto back = workPrecisionPointsFromTable(table);
+  ASSERT_EQ(back.size(), 1u);
+  EXPECT_EQ(back[0].method, Method::Embedded);
+  EXPECT_EQ(back[0].integrator, Integrator::BulirschStoer);
+  EXPECT_EQ(back[0].referenceMethod, Method::Ambient);
+  EXPECT_FALSE(back[0].measurement.failed());
+
+  CsvTable unknown = table;
+  unknown.rows[0][unknown.column("method")] = "euler";
+  EXPECT_THROW(workPrecisionPointsFromTable(unknown), std::invalid_argument);
+  unknown = table;
+  unknown.rows[0][unknown.column("status")] = "pole-singularity";
+  EXPECT_THROW(workPrecisionPointsFromTable(unknown), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,8 +1,6 @@
 #include "fault_scenes.hpp"
 
-#include <fstream>
 #include <sstream>
-#include <stdexcept>
 
 namespace sl::faults {
 
@@ -60,7 +58,7 @@ std::vector<FaultScene> numericalFaultScenes() {
                               R"([{ "name": "big-steps", "method": "christoffel-fd", "integrator": "rk4", "step": 1e4 },
                                   { "name": "bounded", "method": "ambient", "integrator": "dopri5", "watchdog": { "max_steps": 3000 } }])")},
   };
-  // n = 12 is the scene format's largest chain (SceneLimits::maxRods); n = 200 is covered through the
+  // n = 12 is the scene format's largest chain (limits::kMaxRods); n = 200 is covered through the
   // simulation API in numerical_faults_test.cpp.
   scenes.push_back(
       {"twelve-rods", scene("twelve-rods", 12, "10.5",
@@ -79,19 +77,6 @@ std::string smallRenderScene(int frames, const std::string& folder) {
   "output": { "fps": 10, "width": 160, "height": 90, "folder": ")"
        << folder << R"(" },
   "view": { "panels": ["sphere", "linkage"], "trails": [2] } })";
-  return text.str();
-}
-
-void writeText(const std::string& path, const std::string& text) {
-  std::ofstream stream(path, std::ios::binary);
-  stream << text;
-  if (!stream) throw std::runtime_error("cannot write " + path);
-}
-
-std::string readText(const std::string& path) {
-  std::ifstream stream(path, std::ios::binary);
-  std::ostringstream text;
-  text << stream.rdbuf();
   return text.str();
 }
 

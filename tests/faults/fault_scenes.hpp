@@ -18,8 +18,4 @@ std::vector<FaultScene> numericalFaultScenes();
 // A plain scene of `frames` frames at 160x90 (fps 10), for the process-fault tests.
 std::string smallRenderScene(int frames, const std::string& folder);
 
-// Writes text to path (throws on failure).
-void writeText(const std::string& path, const std::string& text);
-std::string readText(const std::string& path);
-
 }  // namespace sl::faults

@@ -5,12 +5,12 @@
 // no sample ever holds a non-finite number.
 #include <cmath>
 #include <numbers>
-#include <set>
 #include <stdexcept>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "contracts/registry.hpp"
 #include "simulation/initial_state.hpp"
 #include "simulation/trajectory.hpp"
 
@@ -37,7 +37,7 @@ Eigen::VectorXd vec(std::initializer_list<double> values) {
   return v;
 }
 
-RunConfig config(const std::string& method, const std::string& integrator, long maxSteps) {
+RunConfig config(Method method, Integrator integrator, long maxSteps) {
   RunConfig c;
   c.method = method;
   c.integrator = integrator;
@@ -46,10 +46,6 @@ RunConfig config(const std::string& method, const std::string& integrator, long 
   c.maxSteps = maxSteps;
   return c;
 }
-
-const std::set<std::string> kStopReasons = {"non-finite",     "pole-fold-back",     "pole-singularity",
-                                            "energy-blow-up", "step-size-collapse", "rod-length",
-                                            "max-steps"};
 
 // What one run did, for the tests that pin a particular outcome.
 struct Outcome {
@@ -60,7 +56,7 @@ struct Outcome {
 
 // Samples the run at `count` evenly spaced times and checks every sample and the stop, if any.
 Outcome runAndCheck(const FaultCase& fault, const RunConfig& runConfig, int count = 40) {
-  SCOPED_TRACE(runConfig.method + " / " + runConfig.integrator);
+  SCOPED_TRACE(nameOf(runConfig.method) + " / " + nameOf(runConfig.integrator));
   Trajectory run(fault.chain, fault.start, runConfig);
   // The energy of the start by an independent route: g(v, v) through the chart's Jacobian.
   const double startEnergy = 0.5 * speedSquared(fault.chain, fault.start);
@@ -88,18 +84,20 @@ Outcome runAndCheck(const FaultCase& fault, const RunConfig& runConfig, int coun
   outcome.stop = run.stop();
   outcome.completed = !outcome.stop || outcome.stop->time >= fault.duration;
   if (outcome.stop) {
-    EXPECT_TRUE(kStopReasons.count(outcome.stop->reason)) << "unknown stop reason " << outcome.stop->reason;
+    const auto reason = static_cast<size_t>(outcome.stop->reason);
+    EXPECT_LT(reason, kStopReasons.size()) << "unknown stop reason " << reason;
     EXPECT_TRUE(std::isfinite(outcome.stop->time));
-    EXPECT_FALSE(outcome.stop->detail.empty()) << outcome.stop->reason;
+    EXPECT_FALSE(outcome.stop->detail.empty()) << nameOf(outcome.stop->reason);
   }
   return outcome;
 }
 
 // Every method with a fixed-step and an adaptive integrator: each either keeps its invariants or stops.
 void runEveryMethod(const FaultCase& fault, long maxSteps) {
-  for (const std::string& method : methodNames()) {
-    if (fault.chain.rods != 4 && method.ends_with("-fd")) continue;  // the published methods are 4-rod only
-    for (const char* integrator : {"rk4", "dopri5"}) runAndCheck(fault, config(method, integrator, maxSteps));
+  for (const MethodTraits& method : kMethods) {
+    if (fault.chain.rods != 4 && method.published) continue;  // the published methods are 4-rod only
+    for (const Integrator integrator : {Integrator::Rk4, Integrator::Dopri5})
+      runAndCheck(fault, config(method.kind, integrator, maxSteps));
   }
 }
 
@@ -107,7 +105,7 @@ TEST(NumericalFaults, StartExactlyAtThePole) {
   const FaultCase fault = chartStart(4, 3.0, vec({kHalfPi, 0.0}), vec({0.3, 0.5}), 5.0);
   runEveryMethod(fault, 20000);
   // The ambient method has no chart: the pole is an ordinary point for it.
-  EXPECT_TRUE(runAndCheck(fault, config("ambient", "rkf78", 20000)).completed);
+  EXPECT_TRUE(runAndCheck(fault, config(Method::Ambient, Integrator::Rkf78, 20000)).completed);
 }
 
 TEST(NumericalFaults, StartExactlyOnTheSeam) {
@@ -115,17 +113,17 @@ TEST(NumericalFaults, StartExactlyOnTheSeam) {
     SCOPED_TRACE(t);
     const FaultCase fault = chartStart(4, 3.0, vec({0.3, t}), vec({0.2, 0.7}), 5.0);
     runEveryMethod(fault, 20000);
-    EXPECT_TRUE(runAndCheck(fault, config("christoffel", "rkf78", 20000)).completed);
+    EXPECT_TRUE(runAndCheck(fault, config(Method::Christoffel, Integrator::Rkf78, 20000)).completed);
   }
 }
 
 TEST(NumericalFaults, ZeroVelocityIsRefusedWithAReason) {
   const Chain chain = Chain::uniform(4, 3.0);
   const InitialState start = initialStateFromChart(chain, vec({0.3, 0.2}), vec({0.0, 0.0}));
-  for (const std::string& method : methodNames()) {
+  for (const MethodTraits& method : kMethods) {
     try {
-      Trajectory run(chain, start, config(method, "dopri5", 1000));
-      ADD_FAILURE() << method << ": a start at rest was accepted";
+      Trajectory run(chain, start, config(method.kind, Integrator::Dopri5, 1000));
+      ADD_FAILURE() << method.name << ": a start at rest was accepted";
     } catch (const std::invalid_argument& error) {
       EXPECT_NE(std::string(error.what()).find("zero"), std::string::npos) << error.what();
     }
@@ -138,8 +136,8 @@ TEST(NumericalFaults, HugeVelocityFollowsTheSamePath) {
   const Eigen::VectorXd coords = vec({0.3, 0.2}), rates = vec({0.5, 0.7});
   const FaultCase slow = chartStart(4, 3.0, coords, rates, 10.0);
   const FaultCase fast = chartStart(4, 3.0, coords, 1e6 * rates, 1e-5);
-  const Outcome reference = runAndCheck(slow, config("ambient", "rkf78", 200000));
-  const Outcome huge = runAndCheck(fast, config("ambient", "rkf78", 200000));
+  const Outcome reference = runAndCheck(slow, config(Method::Ambient, Integrator::Rkf78, 200000));
+  const Outcome huge = runAndCheck(fast, config(Method::Ambient, Integrator::Rkf78, 200000));
   ASSERT_TRUE(reference.completed && huge.completed);
   EXPECT_LT((huge.last->hinges - reference.last->hinges).norm(), 1e-6);
   runEveryMethod(fast, 20000);
@@ -148,9 +146,9 @@ TEST(NumericalFaults, HugeVelocityFollowsTheSamePath) {
 // Fixed steps far too large for the speed: the run must stop (bounded), not produce garbage.
 TEST(NumericalFaults, HugeVelocityWithHugeStepsStops) {
   const FaultCase fault = chartStart(4, 3.0, vec({0.3, 0.2}), vec({5e5, 7e5}), 1.0);
-  for (const std::string& method : methodNames()) {
-    const Outcome outcome = runAndCheck(fault, config(method, "rk4", 20000));
-    EXPECT_FALSE(outcome.completed) << method << " claims to have integrated speed 1e6 with steps of 0.01";
+  for (const MethodTraits& method : kMethods) {
+    const Outcome outcome = runAndCheck(fault, config(method.kind, Integrator::Rk4, 20000));
+    EXPECT_FALSE(outcome.completed) << method.name << " claims to have integrated speed 1e6 with steps of 0.01";
   }
 }
 
@@ -168,7 +166,7 @@ TEST(NumericalFaults, BaseLengthAtTheEdgesOfTheSphereRange) {
 TEST(NumericalFaults, ThreeRods) {
   const FaultCase fault = chartStart(3, 1.5, vec({0.4}), vec({1.0}), 10.0);
   runEveryMethod(fault, 20000);
-  EXPECT_TRUE(runAndCheck(fault, config("ambient", "rkf78", 20000)).completed);
+  EXPECT_TRUE(runAndCheck(fault, config(Method::Ambient, Integrator::Rkf78, 20000)).completed);
 }
 
 // n = 200: the ambient method is O(n) per step; the chart methods are allowed to stop at maxSteps
@@ -178,19 +176,19 @@ TEST(NumericalFaults, TwoHundredRods) {
   const Eigen::VectorXd coords = Eigen::VectorXd::LinSpaced(rods - 2, 0.1, 0.4);
   const Eigen::VectorXd rates = Eigen::VectorXd::LinSpaced(rods - 2, 0.05, -0.05);
   const FaultCase fault = chartStart(rods, rods - 1.0, coords, rates, 0.5);
-  EXPECT_TRUE(runAndCheck(fault, config("ambient", "dopri5", 2000), 5).completed);
-  runAndCheck(fault, config("ambient", "rk4", 200), 5);
+  EXPECT_TRUE(runAndCheck(fault, config(Method::Ambient, Integrator::Dopri5, 2000), 5).completed);
+  runAndCheck(fault, config(Method::Ambient, Integrator::Rk4, 200), 5);
 }
 
 // T = 1e5: a fixed step of 1e4 (ten steps) must fail cleanly; an adaptive run must end at maxSteps.
 TEST(NumericalFaults, VeryLongDurationIsBounded) {
   const FaultCase fault = chartStart(4, 3.0, vec({0.3, 0.2}), vec({0.5, 0.7}), 1e5);
-  for (const std::string& method : methodNames()) {
-    RunConfig huge = config(method, "rk4", 1000);
+  for (const MethodTraits& method : kMethods) {
+    RunConfig huge = config(method.kind, Integrator::Rk4, 1000);
     huge.step = 1e4;
-    EXPECT_FALSE(runAndCheck(fault, huge).completed) << method;
-    const Outcome adaptive = runAndCheck(fault, config(method, "dopri5", 3000));
-    ASSERT_TRUE(adaptive.stop.has_value()) << method << " integrated T = 1e5 in 3000 steps";
+    EXPECT_FALSE(runAndCheck(fault, huge).completed) << method.name;
+    const Outcome adaptive = runAndCheck(fault, config(method.kind, Integrator::Dopri5, 3000));
+    ASSERT_TRUE(adaptive.stop.has_value()) << method.name << " integrated T = 1e5 in 3000 steps";
   }
 }
 

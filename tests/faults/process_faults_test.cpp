@@ -12,17 +12,21 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "child_process.hpp"
 #include "fault_scenes.hpp"
-#include "temp_folder.hpp"
+#include "support/child_process.hpp"
+#include "support/files.hpp"
+#include "support/linkage_binary.hpp"
+#include "support/temp_folder.hpp"
 
 namespace sl {
 namespace {
 
 namespace fs = std::filesystem;
-using faults::ChildProcess;
-using faults::ExitStatus;
-using faults::TempFolder;
+using testing::ChildProcess;
+using testing::linkageBinary;
+using testing::ProcessResult;
+using testing::readFile;
+using testing::TempFolder;
 
 constexpr int kFrames = 40;
 
@@ -35,7 +39,7 @@ std::map<std::string, std::string> renderFiles(const fs::path& folder) {
   std::map<std::string, std::string> files;
   for (const auto& entry : fs::directory_iterator(folder)) {
     const std::string name = entry.path().filename().string();
-    if (isFrameFile(entry.path()) || name == "manifest.json") files[name] = faults::readText(entry.path().string());
+    if (isFrameFile(entry.path()) || name == "manifest.json") files[name] = readFile(entry.path());
   }
   return files;
 }
@@ -61,25 +65,24 @@ int frameFileCount(const fs::path& folder) {
 class ProcessFaults : public ::testing::Test {
  protected:
   void SetUp() override {
-    faults::writeText(folder_ / "small.json", faults::smallRenderScene(kFrames, "reference"));
-    std::string errors;
-    ASSERT_EQ(render({"--quiet"}, &errors).code, 0) << errors;
+    testing::writeFile(folder_ / "small.json", faults::smallRenderScene(kFrames, "reference"));
+    const ProcessResult reference = render({"--quiet"});
+    ASSERT_EQ(reference.code, 0) << reference.err;
     reference_ = renderFiles(folder_.path() / "reference");
     ASSERT_EQ(reference_.size(), kFrames + 1u);  // the frames and the manifest
   }
 
-  ExitStatus render(std::vector<std::string> options, std::string* errors = nullptr) {
+  ProcessResult render(std::vector<std::string> options) {
     options.insert(options.begin(), {"render", "small.json"});
-    return faults::runLinkage(options, folder_.path().string(), 300, errors);
+    return testing::runLinkage(options, folder_.path(), 300);
   }
 
   // Starts a render into `out`, waits until it has written `frame` frames, then sends `signal`.
   // Starts a resumed render and signals it once `frame` frame files exist and it has written at least one
   // of them itself (so the signal lands during rendering, not while the process is still starting up).
-  ExitStatus interruptAt(const std::string& out, int frame, int signal, pid_t* pid = nullptr) {
+  ProcessResult interruptAt(const std::string& out, int frame, int signal, pid_t* pid = nullptr) {
     const int before = fs::exists(folder_.path() / out) ? frameFileCount(folder_.path() / out) : 0;
-    ChildProcess child(faults::linkageBinary(), {"render", "small.json", "--quiet", "--resume", "--out", out},
-                       folder_.path().string(), out);
+    ChildProcess child(linkageBinary(), {"render", "small.json", "--quiet", "--resume", "--out", out}, folder_.path());
     if (pid != nullptr) *pid = child.pid();
     const int target = std::max(frame, before + 1);
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
@@ -99,7 +102,7 @@ class ProcessFaults : public ::testing::Test {
       EXPECT_TRUE(bytes == reference_.at(name)) << name << " is not the complete frame";
     }
     if (!fs::exists(folder / "manifest.json")) return;
-    const auto manifest = nlohmann::json::parse(faults::readText((folder / "manifest.json").string()));
+    const auto manifest = nlohmann::json::parse(readFile(folder / "manifest.json"));
     const auto complete = nlohmann::json::parse(reference_.at("manifest.json"));
     ASSERT_TRUE(manifest.contains("frames")) << manifest.dump();
     for (const auto& entry : manifest["frames"]) {
@@ -126,7 +129,7 @@ TEST_F(ProcessFaults, SignalsAtRandomFramesThenResumeGivesIdenticalBytes) {
       frame = std::max(frame + 1, pick(random));
       SCOPED_TRACE(out + ": signal " + std::to_string(signal) + " after " + std::to_string(frame) + " frames");
       pid_t pid = 0;
-      const ExitStatus status = interruptAt(out, frame, signal, &pid);
+      const ProcessResult status = interruptAt(out, frame, signal, &pid);
       EXPECT_FALSE(status.timedOut);
       if (signal == SIGTERM) {
         EXPECT_TRUE(status.code == 130 || status.code == 0) << "exit " << status.code << ", signal " << status.signal;
@@ -137,8 +140,8 @@ TEST_F(ProcessFaults, SignalsAtRandomFramesThenResumeGivesIdenticalBytes) {
       }
       expectOnlyCompleteFrames(out);
     }
-    std::string errors;
-    ASSERT_EQ(render({"--quiet", "--resume", "--out", out}, &errors).code, 0) << errors;
+    const ProcessResult resumed = render({"--quiet", "--resume", "--out", out});
+    ASSERT_EQ(resumed.code, 0) << resumed.err;
     EXPECT_TRUE(renderFiles(folder_.path() / out) == reference_) << out << ": resumed render differs";
     EXPECT_TRUE(temporaries(folder_.path() / out).empty()) << out << ": the resume left a killed render's temporaries";
   }
@@ -177,8 +180,7 @@ void fillDisk(const fs::path& path) {
 TEST_F(ProcessFaults, FullDiskGivesAClearErrorAndKeepsCompletedFrames) {
   Mount disk(folder_.path() / "disk", "size=8m");
   if (!disk.mounted()) GTEST_SKIP() << "mounting a tmpfs is not permitted here (needs root)";
-  ChildProcess child(faults::linkageBinary(), {"render", "small.json", "--quiet", "--out", "disk/frames"},
-                     folder_.path().string(), "full-disk");
+  ChildProcess child(linkageBinary(), {"render", "small.json", "--quiet", "--out", "disk/frames"}, folder_.path());
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
   while (child.running() && frameFileCount(folder_.path() / "disk/frames") < 5 &&
          std::chrono::steady_clock::now() < deadline) {
@@ -187,8 +189,8 @@ TEST_F(ProcessFaults, FullDiskGivesAClearErrorAndKeepsCompletedFrames) {
   child.sendSignal(SIGSTOP);
   fillDisk(folder_.path() / "disk/filler");
   child.sendSignal(SIGCONT);
-  const ExitStatus status = child.wait(120);
-  const std::string errors = child.standardError();
+  const ProcessResult status = child.wait(120);
+  const std::string& errors = status.err;
   ASSERT_FALSE(status.timedOut);
   EXPECT_EQ(status.code, 3) << errors;  // the work failed: cannot write
   EXPECT_NE(errors.find("No space left"), std::string::npos) << errors;
@@ -204,8 +206,8 @@ TEST_F(ProcessFaults, RenderThatCannotFitIsRefusedUpFront) {
   if (!disk.mounted()) GTEST_SKIP() << "mounting a tmpfs is not permitted here (needs root)";
   ASSERT_GT(kFrames * reference_.at("frame_00000.png").size(), 64u * 1024u)
       << "the test needs frames that do not fit into 64 kB";
-  std::string errors;
-  const ExitStatus status = render({"--quiet", "--out", "small-disk/frames"}, &errors);
+  const ProcessResult status = render({"--quiet", "--out", "small-disk/frames"});
+  const std::string& errors = status.err;
   EXPECT_EQ(status.code, 2) << errors;
   EXPECT_NE(errors.find("small-disk/frames: " + std::to_string(kFrames) + " frames of 160x90 need about"),
             std::string::npos)
@@ -221,8 +223,8 @@ TEST_F(ProcessFaults, ReadOnlyFolderGivesAClearErrorAndKeepsItsFrames) {
   ASSERT_EQ(render({"--quiet", "--frames", "0:5", "--out", "ro/frames"}).code, 0);
   const auto before = renderFiles(folder_.path() / "ro/frames");
   ASSERT_TRUE(disk.remountReadOnly());
-  std::string errors;
-  const ExitStatus status = render({"--quiet", "--resume", "--out", "ro/frames"}, &errors);
+  const ProcessResult status = render({"--quiet", "--resume", "--out", "ro/frames"});
+  const std::string& errors = status.err;
   EXPECT_EQ(status.code, 2) << errors;  // refused up front, nothing attempted
   EXPECT_NE(errors.find("ro/frames"), std::string::npos) << errors;
   EXPECT_TRUE(renderFiles(folder_.path() / "ro/frames") == before);

@@ -6,19 +6,24 @@
 
 #include <gtest/gtest.h>
 
-#include "child_process.hpp"
+#include "cli/scene_input.hpp"
+#include "contracts/registry.hpp"
 #include "fault_scenes.hpp"
 #include "frames/frame_builder.hpp"
-#include "frames/scene_start.hpp"
 #include "scene/scene_loader.hpp"
-#include "temp_folder.hpp"
+#include "support/files.hpp"
+#include "support/linkage_binary.hpp"
+#include "support/temp_folder.hpp"
 
 namespace sl {
 namespace {
 
 using faults::numericalFaultScenes;
-
-SceneLimits simulationLimits() { return simulationSceneLimits(); }
+using testing::ProcessResult;
+using testing::readFile;
+using testing::runLinkage;
+using testing::TempFolder;
+using testing::writeFile;
 
 bool finite(const Vec2& p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 bool finite(const Vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
@@ -62,9 +67,21 @@ std::vector<int> framesToBuild(int count) {
 TEST(SceneFaults, NoFrameIsBuiltFromANonFiniteState) {
   for (const faults::FaultScene& fault : numericalFaultScenes()) {
     SCOPED_TRACE(fault.name);
-    const Scene scene = parseScene(fault.json, fault.name + ".json", simulationLimits());
-    FrameBuilder builder(scene, makeTrajectories(scene));
+    const Scene scene = parseScene(fault.json, fault.name + ".json");
+    // The start and runs as the commands set them up.
+    const InitialState start = sceneStart(scene);
+    FrameBuilder builder(scene, start, startRuns(scene, start));
     for (const int k : framesToBuild(builder.frameCount())) expectDrawable(builder.frame(k));
+  }
+}
+
+// The scenes run every method the program has (on 4 rods; the generic ones on other chains too).
+TEST(FaultScenes, RunEveryMethod) {
+  for (const MethodTraits& method : kMethods) {
+    bool used = false;
+    for (const faults::FaultScene& fault : numericalFaultScenes())
+      used = used || fault.json.find("\"method\": \"" + std::string(method.name) + "\"") != std::string::npos;
+    EXPECT_TRUE(used) << method.name << " is in no fault scene (tests/faults/fault_scenes.cpp)";
   }
 }
 
@@ -78,15 +95,14 @@ std::vector<std::string> fields(const std::string& line) {
 }
 
 TEST(SceneFaults, SimulateWritesNoNonFiniteNumber) {
-  faults::TempFolder folder;
+  TempFolder folder;
   for (const faults::FaultScene& fault : numericalFaultScenes()) {
     SCOPED_TRACE(fault.name);
-    faults::writeText(folder / (fault.name + ".json"), fault.json);
-    std::string errors;
-    const faults::ExitStatus status = faults::runLinkage(
-        {"simulate", fault.name + ".json", "--csv", fault.name + ".csv"}, folder.path(), 300, &errors);
-    ASSERT_EQ(status.code, 0) << errors;
-    std::stringstream csv(faults::readText(folder / (fault.name + ".csv")));
+    writeFile(folder / (fault.name + ".json"), fault.json);
+    const ProcessResult simulate =
+        runLinkage({"simulate", fault.name + ".json", "--csv", fault.name + ".csv"}, folder.path(), 300);
+    ASSERT_EQ(simulate.code, 0) << simulate.err;
+    std::stringstream csv(readFile(folder / (fault.name + ".csv")));
     std::string line;
     std::getline(csv, line);
     const size_t columns = fields(line).size();
@@ -107,15 +123,13 @@ TEST(SceneFaults, SimulateWritesNoNonFiniteNumber) {
 
 // A short render of each fault scene: every run stopping is a result (exit 0), and frames are written.
 TEST(SceneFaults, RenderDrawsStoppedRuns) {
-  faults::TempFolder folder;
+  TempFolder folder;
   for (const faults::FaultScene& fault : numericalFaultScenes()) {
     SCOPED_TRACE(fault.name);
-    faults::writeText(folder / (fault.name + ".json"), fault.json);
-    std::string errors;
-    const faults::ExitStatus status =
-        faults::runLinkage({"render", fault.name + ".json", "--quiet", "--frames", "0:3", "--out", fault.name},
-                           folder.path(), 300, &errors);
-    ASSERT_EQ(status.code, 0) << errors;
+    writeFile(folder / (fault.name + ".json"), fault.json);
+    const ProcessResult render = runLinkage(
+        {"render", fault.name + ".json", "--quiet", "--frames", "0:3", "--out", fault.name}, folder.path(), 300);
+    ASSERT_EQ(render.code, 0) << render.err;
     for (int k = 0; k < 3; ++k) {
       EXPECT_TRUE(std::filesystem::exists(folder.path() / fault.name / ("frame_0000" + std::to_string(k) + ".png")));
     }

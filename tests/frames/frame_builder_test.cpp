@@ -3,14 +3,14 @@
 
 #include <gtest/gtest.h>
 
+#include "contracts/registry.hpp"
 #include "frames/frame_builder.hpp"
-#include "frames/scene_start.hpp"
+#include "linkage/chain.hpp"
 #include "scene/scene_loader.hpp"
+#include "simulation/initial_state.hpp"
 
 namespace sl {
 namespace {
-
-SceneLimits limits() { return simulationSceneLimits(); }
 
 // Two runs from the generic reference start, short so the suite stays fast.
 Scene twoRunScene(const std::string& extraView = "") {
@@ -22,8 +22,20 @@ Scene twoRunScene(const std::string& extraView = "") {
     "view": {"panels": ["sphere", "linkage", {"panel": "plot", "plot": "divergence"},
                         {"panel": "plot", "plot": "energy"}], "trails": [1, 3])" +
                         extraView + "}}",
-                    "t.json", limits());
+                    "t.json");
 }
+
+InitialState startOf(const Scene& scene) { return initialStateFromSpec(scene.chain, scene.initial); }
+
+// One fresh Trajectory per scene run, from the scene's start, in the scene's order.
+std::vector<Trajectory> runsOf(const Scene& scene) {
+  const InitialState start = startOf(scene);
+  std::vector<Trajectory> runs;
+  for (const RunSpec& run : scene.runs) runs.emplace_back(scene.chain, start, run.config);
+  return runs;
+}
+
+FrameBuilder builderFor(const Scene& scene) { return FrameBuilder(scene, startOf(scene), runsOf(scene)); }
 
 void expectSameVec(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
   ASSERT_EQ(a.size(), b.size());
@@ -62,7 +74,7 @@ void expectSameFrame(const FrameState& a, const FrameState& b) {
 
 TEST(FrameBuilder, FrameTimesAndCount) {
   const Scene scene = twoRunScene();
-  FrameBuilder builder(scene, makeTrajectories(scene));
+  FrameBuilder builder = builderFor(scene);
   EXPECT_EQ(builder.frameCount(), 11);
   const FrameState last = builder.frame(10);
   EXPECT_DOUBLE_EQ(last.time, 1.0);
@@ -80,14 +92,14 @@ TEST(FrameBuilder, FrameTimesAndCount) {
 // Shards: frame k built after skipping straight to it equals frame k of a full walk.
 TEST(FrameBuilder, ShardStartEqualsFullWalk) {
   const Scene scene = twoRunScene();
-  FrameBuilder full(scene, makeTrajectories(scene));
+  FrameBuilder full = builderFor(scene);
   std::vector<FrameState> all;
   for (int k = 0; k < full.frameCount(); ++k) all.push_back(full.frame(k));
   for (int start : {3, 7, 10}) {
     SCOPED_TRACE(start);
-    FrameBuilder shard(scene, makeTrajectories(scene));
+    FrameBuilder shard = builderFor(scene);
     expectSameFrame(shard.frame(start), all[size_t(start)]);
-    FrameBuilder walked(scene, makeTrajectories(scene));  // the render command's walk: advanceTo, then frame
+    FrameBuilder walked = builderFor(scene);  // the render command's walk: advanceTo, then frame
     for (int k = 0; k < start; ++k) walked.advanceTo(k);
     EXPECT_EQ(walked.lastSampledFrame(), start - 1);
     expectSameFrame(walked.frame(start), all[size_t(start)]);
@@ -97,22 +109,18 @@ TEST(FrameBuilder, ShardStartEqualsFullWalk) {
 // Hinges, sphere points, divergence and energy error against fresh runs sampled at the frame times.
 TEST(FrameBuilder, ValuesMatchDirectSampling) {
   const Scene scene = twoRunScene();
-  FrameBuilder builder(scene, makeTrajectories(scene));
-  std::vector<Trajectory> direct = makeTrajectories(scene);
+  FrameBuilder builder = builderFor(scene);
+  std::vector<Trajectory> direct = runsOf(scene);
   for (int k = 0; k < builder.frameCount(); ++k) {
     const FrameState state = builder.frame(k);
     const Sample a = *direct[0].sampleAt(scene.frameTime(k));
     const Sample b = *direct[1].sampleAt(scene.frameTime(k));
-    double worst = 0;
-    for (int h = 0; h < 3; ++h) {
-      EXPECT_NEAR(state.runs[0].hinges[size_t(h)].x, a.hinges(0, h), 1e-14);
-      worst = std::max(worst, (a.hinges.col(h) - b.hinges.col(h)).norm());
-    }
+    for (int h = 0; h < 3; ++h) EXPECT_NEAR(state.runs[0].hinges[size_t(h)].x, a.hinges(0, h), 1e-14);
     // The sphere panel shows x = (cos phi cos t, cos phi sin t, sin phi) from the sample's chart coordinates.
     const double phi = a.coords(0), t = a.coords(1);
     EXPECT_NEAR(state.runs[0].current.x, std::cos(phi) * std::cos(t), 1e-12);
     EXPECT_NEAR(state.runs[0].current.z, std::sin(phi), 1e-12);
-    EXPECT_NEAR(state.plots[0].series[0].values.back(), worst, 1e-14);
+    EXPECT_NEAR(state.plots[0].series[0].values.back(), hingeDistance(a.hinges, b.hinges), 1e-14);
     EXPECT_EQ(state.plots[1].series[1].values.back(), std::abs(b.relativeEnergyDrift));
     EXPECT_EQ(state.plots[0].series[0].times.back(), scene.frameTime(k));
   }
@@ -120,7 +128,7 @@ TEST(FrameBuilder, ValuesMatchDirectSampling) {
 
 TEST(FrameBuilder, TrailsFollowTheirHingesAndFade) {
   const Scene scene = twoRunScene(R"(, "trail_fade_seconds": 0.3)");
-  FrameBuilder builder(scene, makeTrajectories(scene));
+  FrameBuilder builder = builderFor(scene);
   const FrameState state = builder.frame(10);
   ASSERT_EQ(state.runs[0].trails.size(), 2u);
   EXPECT_EQ(state.runs[0].trails[0].size(), 4u);  // ceil(0.3 * 10) + 1 frames kept
@@ -129,7 +137,7 @@ TEST(FrameBuilder, TrailsFollowTheirHingesAndFade) {
 
 TEST(FrameBuilder, PathFadeKeepsOnlyRecentPoints) {
   const Scene scene = twoRunScene(R"(, "path_fade_seconds": 0.25)");
-  FrameBuilder builder(scene, makeTrajectories(scene));
+  FrameBuilder builder = builderFor(scene);
   const FrameState state = builder.frame(10);
   EXPECT_GE(state.runs[0].pathTimes.front(), 0.75);
   EXPECT_LT(state.runs[0].path.size(), 12u);
@@ -139,12 +147,12 @@ TEST(FrameBuilder, PathFadeKeepsOnlyRecentPoints) {
 TEST(FrameBuilder, StoppedRunIsFrozenWithItsReason) {
   Scene scene = twoRunScene();
   scene.runs[1].config.maxRelativeEnergyDrift = 1e-14;  // rk4 at step 0.05 drifts beyond this at once
-  FrameBuilder builder(scene, makeTrajectories(scene));
+  FrameBuilder builder = builderFor(scene);
   const FrameState early = builder.frame(2);
   const FrameState late = builder.frame(10);
   ASSERT_TRUE(late.runs[1].stopped);
   EXPECT_FALSE(late.runs[0].stopped);
-  EXPECT_FALSE(late.runs[1].stopReason.empty());
+  EXPECT_EQ(late.runs[1].stopReason, nameOf(StopReason::EnergyBlowUp));
   EXPECT_LT(late.runs[1].stopTime, 0.2);
   EXPECT_EQ(late.runs[1].hinges[0].x, early.runs[1].hinges[0].x);
   EXPECT_TRUE(std::isnan(late.plots[0].series[0].values.back()));  // no divergence once one side stopped
@@ -152,7 +160,7 @@ TEST(FrameBuilder, StoppedRunIsFrozenWithItsReason) {
 
 TEST(FrameBuilder, RefusesFramesOutOfOrder) {
   const Scene scene = twoRunScene();
-  FrameBuilder builder(scene, makeTrajectories(scene));
+  FrameBuilder builder = builderFor(scene);
   builder.frame(5);
   EXPECT_THROW(builder.frame(4), std::out_of_range);
   EXPECT_THROW(builder.frame(11), std::out_of_range);

@@ -4,25 +4,21 @@
 
 #include <atomic>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
+#include <string>
 #include <thread>
 
 #include "output/atomic_file.hpp"
-#include "test_folder.hpp"
+#include "support/files.hpp"
+#include "support/temp_folder.hpp"
 
 namespace sl::output {
 namespace {
 
-std::vector<std::uint8_t> readAll(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
 TEST(AtomicFile, ReadersSeeOnlyWholeFiles) {
-  const std::string folder = testing::freshFolder();
-  const std::string path = folder + "/frame.png";
+  const testing::TempFolder folder;
+  const std::string path = folder / "frame.png";
   const std::vector<std::uint8_t> a(3 << 20, 'a'), b(1 << 20, 'b');  // 3 MiB and 1 MiB
+  const std::string aBytes(a.begin(), a.end()), bBytes(b.begin(), b.end());
   writeFileAtomically(path, a);
   std::atomic<bool> done{false};
   std::thread writer([&] {
@@ -31,13 +27,13 @@ TEST(AtomicFile, ReadersSeeOnlyWholeFiles) {
   });
   int reads = 0;
   while (!done) {
-    const auto seen = readAll(path);
-    ASSERT_TRUE(seen == a || seen == b) << "a reader saw " << seen.size() << " bytes";
+    const std::string seen = testing::readFile(path);
+    ASSERT_TRUE(seen == aBytes || seen == bBytes) << "a reader saw " << seen.size() << " bytes";
     ++reads;
   }
   writer.join();
   EXPECT_GT(reads, 0);
-  for (const auto& entry : std::filesystem::directory_iterator(folder))
+  for (const auto& entry : std::filesystem::directory_iterator(folder.path()))
     EXPECT_EQ(entry.path().filename(), "frame.png") << "left behind: " << entry.path();
 }
 

@@ -6,24 +6,22 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <fstream>
-#include <iterator>
+#include <string>
 #include <thread>
 
 #include "output/atomic_file.hpp"
 #include "output/frame_manifest.hpp"
 #include "output/sha256.hpp"
-#include "test_folder.hpp"
+#include "support/files.hpp"
+#include "support/temp_folder.hpp"
 
 namespace sl::output {
 namespace {
 
-const nlohmann::json kInfo{{"scene", "test"}, {"size", "32x24"}};
+using testing::readFile;
+using testing::TempFolder;
 
-std::string readText(const std::string& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
+const nlohmann::json kInfo{{"scene", "test"}, {"size", "32x24"}};
 
 // Writes a small "frame file" for frame k and records it, as a sink does.
 void writeFrame(FrameManifest& manifest, const std::string& folder, int k) {
@@ -35,14 +33,15 @@ void writeFrame(FrameManifest& manifest, const std::string& folder, int k) {
 }
 
 TEST(FrameManifest, EntriesSortedAndCheckedAgainstFiles) {
-  const std::string folder = testing::freshFolder();
+  const TempFolder temp;
+  const std::string folder = temp.path();
   {
     FrameManifest manifest(folder, kInfo);
     manifest.addRenderer("llvmpipe", "4.5");
     for (int k : {7, 2, 5}) writeFrame(manifest, folder, k);
     manifest.flush();
   }
-  const auto json = nlohmann::json::parse(readText(folder + "/manifest.json"));
+  const auto json = nlohmann::json::parse(readFile(folder + "/manifest.json"));
   ASSERT_EQ(json.at("frames").size(), 3u);
   EXPECT_EQ(json["frames"][0]["frame"], 2);
   EXPECT_EQ(json["frames"][2]["frame"], 7);
@@ -59,7 +58,8 @@ TEST(FrameManifest, EntriesSortedAndCheckedAgainstFiles) {
 }
 
 TEST(FrameManifest, RefusesAFolderOfAnotherRender) {
-  const std::string folder = testing::freshFolder();
+  const TempFolder temp;
+  const std::string folder = temp.path();
   {
     FrameManifest manifest(folder, kInfo);
     writeFrame(manifest, folder, 0);
@@ -73,7 +73,8 @@ TEST(FrameManifest, RefusesAFolderOfAnotherRender) {
 }
 
 TEST(FrameManifest, MalformedManifestIsNamed) {
-  const std::string folder = testing::freshFolder();
+  const TempFolder temp;
+  const std::string folder = temp.path();
   writeFileAtomically(folder + "/manifest.json", std::string("{ not json"));
   try {
     FrameManifest manifest(folder, kInfo);
@@ -86,8 +87,9 @@ TEST(FrameManifest, MalformedManifestIsNamed) {
 // Shards rendered concurrently (two processes, plus two threads in this one) give the same bytes as
 // one process writing every frame.
 TEST(FrameManifest, ConcurrentShardsEqualASingleRun) {
-  const std::string sharded = testing::freshFolder() + "/sharded";
-  const std::string single = testing::freshFolder() + "/single";
+  const TempFolder temp;
+  const std::string sharded = temp / "sharded";
+  const std::string single = temp / "single";
   std::vector<pid_t> children;
   for (int shard = 0; shard < 2; ++shard) {
     const pid_t pid = ::fork();
@@ -124,12 +126,13 @@ TEST(FrameManifest, ConcurrentShardsEqualASingleRun) {
     FrameManifest manifest(single, kInfo);
     for (int k = 0; k < 120; ++k) writeFrame(manifest, single, k);
   }
-  EXPECT_EQ(readText(sharded + "/manifest.json"), readText(single + "/manifest.json"));
+  EXPECT_EQ(readFile(sharded + "/manifest.json"), readFile(single + "/manifest.json"));
 }
 
 // reload() (folder lock, then the object's mutex) racing record() (mutex, then folder lock) must not deadlock.
 TEST(FrameManifest, ReloadWhileRecording) {
-  const std::string folder = testing::freshFolder();
+  const TempFolder temp;
+  const std::string folder = temp.path();
   FrameManifest manifest(folder, kInfo);
   manifest.setFlushInterval(std::chrono::milliseconds(0));
   std::thread reader([&] {
@@ -143,7 +146,8 @@ TEST(FrameManifest, ReloadWhileRecording) {
 
 // A writer killed with SIGKILL at an arbitrary moment leaves a valid manifest whose every entry is complete.
 TEST(FrameManifest, SurvivesSigkill) {
-  const std::string folder = testing::freshFolder();
+  const TempFolder temp;
+  const std::string folder = temp.path();
   const pid_t pid = ::fork();
   ASSERT_GE(pid, 0);
   if (pid == 0) {
@@ -155,7 +159,7 @@ TEST(FrameManifest, SurvivesSigkill) {
   ::kill(pid, SIGKILL);
   ::waitpid(pid, nullptr, 0);
   FrameManifest resumed(folder, kInfo);  // parses, or this throws
-  const auto json = nlohmann::json::parse(readText(folder + "/manifest.json"));
+  const auto json = nlohmann::json::parse(readFile(folder + "/manifest.json"));
   EXPECT_GT(json.at("frames").size(), 0u);
   for (const auto& entry : json.at("frames")) EXPECT_TRUE(resumed.isFrameComplete(entry.at("frame").get<int>()));
 }

@@ -9,7 +9,7 @@
 #include "output/png_sequence_sink.hpp"
 #include "output/sha256.hpp"
 #include "output/video_sink.hpp"
-#include "test_folder.hpp"
+#include "support/temp_folder.hpp"
 
 namespace sl::output {
 namespace {
@@ -30,7 +30,8 @@ std::string run(const std::string& command) {
 }
 
 TEST(PngSequenceSink, WritesFramesAndRecordsTheirChecksums) {
-  const std::string folder = testing::freshFolder();
+  const testing::TempFolder temp;
+  const std::string folder = temp.path();
   FrameManifest manifest(folder, {{"test", "png"}});
   {
     PngSequenceSink sink(folder, manifest, 2);
@@ -50,7 +51,8 @@ TEST(PngSequenceSink, WritesFramesAndRecordsTheirChecksums) {
 }
 
 TEST(VideoSink, ProducesAPlayableMp4WithEveryFrame) {
-  const std::string folder = testing::freshFolder();
+  const testing::TempFolder temp;
+  const std::string folder = temp.path();
   const std::string path = folder + "/clip.mp4";
   FrameManifest manifest(folder, {{"test", "video"}}, "clip.mp4.manifest.json");
   {
@@ -76,7 +78,8 @@ std::vector<std::string> folderNames(const std::string& folder) {
 
 // An unfinished video (interrupted, failed) never takes the final name, leaves no temporary, and is not listed.
 TEST(VideoSink, AnUnfinishedVideoLeavesTheEarlierOneUntouched) {
-  const std::string folder = testing::freshFolder();
+  const testing::TempFolder temp;
+  const std::string folder = temp.path();
   const std::string path = folder + "/clip.mp4";
   {
     FrameManifest manifest(folder, {{"test", "first"}}, "clip.mp4.manifest.json", FrameManifest::Existing::replace);
@@ -99,7 +102,8 @@ TEST(VideoSink, AnUnfinishedVideoLeavesTheEarlierOneUntouched) {
 
 // A finished video replaces an earlier one and its manifest, even one written for another render.
 TEST(VideoSink, AFinishedVideoReplacesTheEarlierOneAndItsManifest) {
-  const std::string folder = testing::freshFolder();
+  const testing::TempFolder temp;
+  const std::string folder = temp.path();
   const std::string path = folder + "/take:2.mp4";  // a colon: ffmpeg must not read "take" as a protocol
   for (const int frames : {4, 2}) {
     FrameManifest manifest(folder, {{"frames", frames}}, "take:2.mp4.manifest.json", FrameManifest::Existing::replace);
@@ -117,7 +121,8 @@ TEST(VideoSink, AFinishedVideoReplacesTheEarlierOneAndItsManifest) {
 }
 
 TEST(VideoSink, RejectsOddSizesAndMissingFfmpeg) {
-  const std::string folder = testing::freshFolder();
+  const testing::TempFolder temp;
+  const std::string folder = temp.path();
   FrameManifest manifest(folder, {{"test", "video"}}, "v.manifest.json");
   EXPECT_THROW(VideoSink({folder + "/a.mp4", 63, 48, 30}, manifest), std::invalid_argument);
   VideoSettings missing{folder + "/b.mp4", 64, 48, 30};
@@ -126,7 +131,8 @@ TEST(VideoSink, RejectsOddSizesAndMissingFfmpeg) {
 }
 
 TEST(VideoSink, FfmpegFailureIsReported) {
-  const std::string folder = testing::freshFolder();
+  const testing::TempFolder temp;
+  const std::string folder = temp.path();
   FrameManifest manifest(folder, {{"test", "video"}}, "v.manifest.json");
   VideoSink sink({folder + "/no/such/dir/c.mp4", 64, 48, 30}, manifest);  // ffmpeg cannot open the output
   EXPECT_THROW(

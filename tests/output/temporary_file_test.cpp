@@ -9,7 +9,7 @@
 #include <fstream>
 
 #include "output/temporary_file.hpp"
-#include "test_folder.hpp"
+#include "support/temp_folder.hpp"
 
 namespace sl::output {
 namespace {
@@ -45,7 +45,8 @@ TEST(TemporaryFile, KeepsTheFolderHidesTheExtensionAndIsUnique) {
 }
 
 TEST(TemporaryFile, SweepRemovesOnlyLeftoversOfEndedLocalWriters) {
-  const fs::path folder = testing::freshFolder();
+  const testing::TempFolder temp;
+  const fs::path& folder = temp.path();
   const std::string mine = temporaryPathFor((folder / "frame_00001.png").string());
   const std::string dead = withWriter(temporaryPathFor((folder / "frame_00002.png").string()), endedProcess());
   const std::string deadVideo = withWriter(temporaryPathFor((folder / "clip.mp4").string()) + ".mp4", endedProcess());

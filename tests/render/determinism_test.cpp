@@ -4,13 +4,13 @@
 #include <gtest/gtest.h>
 
 #include "reference_frames.hpp"
-#include "render/synthetic_frame.hpp"
+#include "fixtures/synthetic_frame.hpp"
 
 namespace sl {
 namespace {
 
 TEST(Determinism, SameFrameTwiceGivesSameBytes) {
-  Renderer renderer(testing::smallSettings());
+  Renderer renderer(testing::smallSettings(), testing::kSmallSize);
   const FrameState frame = syntheticFrame(2.5, 150);
   const Image first = renderer.render(frame);
   const Image second = renderer.render(frame);
@@ -19,24 +19,24 @@ TEST(Determinism, SameFrameTwiceGivesSameBytes) {
 
 TEST(Determinism, FrameAloneEqualsFrameInSequence) {
   for (double orbit : {0.0, 20.0}) {
-    RenderSettings settings = testing::smallSettings();
+    ViewSettings settings = testing::smallSettings();
     settings.camera.orbitDegreesPerSecond = orbit;
     const FrameState target = syntheticFrame(5.0, 300);
-    Renderer sequence(settings);
+    Renderer sequence(settings, testing::kSmallSize);
     for (double t : {0.5, 1.5, 3.0}) sequence.render(syntheticFrame(t, int(t * 60)));
     SyntheticOptions ball;
     ball.viewSpace = ViewSpace::Ball;  // a different sphere look in between
     sequence.render(syntheticFrame(4.0, 240, ball));
     const Image inSequence = sequence.render(target);
-    Renderer alone(settings);
+    Renderer alone(settings, testing::kSmallSize);
     EXPECT_EQ(alone.render(target).rgb, inSequence.rgb) << "orbit " << orbit;
   }
 }
 
 TEST(Determinism, OrbitingCameraMovesTheSphere) {
-  RenderSettings settings = testing::smallSettings();
+  ViewSettings settings = testing::smallSettings();
   settings.camera.orbitDegreesPerSecond = 30;
-  Renderer renderer(settings);
+  Renderer renderer(settings, testing::kSmallSize);
   FrameState frame = syntheticFrame(2.0, 120);
   const Image before = renderer.render(frame);
   frame.time = 3.0;  // same paths, camera 30 degrees further round

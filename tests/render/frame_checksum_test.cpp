@@ -67,7 +67,7 @@ void regenerate(Renderer& renderer) {
 }
 
 TEST(FrameChecksum, ReferenceFramesMatch) {
-  Renderer renderer(testing::smallSettings());
+  Renderer renderer(testing::smallSettings(), testing::kSmallSize);
   if (std::getenv("SL_REGENERATE_FRAMES")) {
     regenerate(renderer);
     GTEST_SKIP() << "regenerated the reference frames in " << kFolder;

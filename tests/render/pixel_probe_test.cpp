@@ -9,7 +9,7 @@
 #include "render/panel_layout.hpp"
 #include "render/plane_view.hpp"
 #include "render/sphere_camera.hpp"
-#include "render/synthetic_frame.hpp"
+#include "fixtures/synthetic_frame.hpp"
 
 namespace sl {
 namespace {
@@ -24,15 +24,15 @@ Vec3 onSphere(double phi, double t) {
 }
 
 // A camera looking at the middle of a grid cell (phi = t = 7.5 deg), so the panel centre shows bare sphere.
-RenderSettings probeSettings() {
-  RenderSettings s = testing::smallSettings();
+ViewSettings probeSettings() {
+  ViewSettings s = testing::smallSettings();
   const Vec3 view = onSphere(7.5 * kDeg, 7.5 * kDeg);
   s.camera.viewDirection = view;
   return s;
 }
 
-render::PixelRect panelRect(const RenderSettings& s, PanelKind kind) {
-  const auto rects = render::layoutPanels(s.panels, s.width, s.height);
+render::PixelRect panelRect(const ViewSettings& s, PanelKind kind) {
+  const auto rects = render::layoutPanels(s.panels, testing::kWidth, testing::kHeight);
   for (std::size_t i = 0; i < s.panels.size(); ++i)
     if (s.panels[i].kind == kind) return rects[i];
   return {};
@@ -59,8 +59,8 @@ bool isRunRed(Rgb8 c) { return c.r > c.g + 40 && c.r > c.b + 25; }  // the first
 
 class PixelProbe : public ::testing::Test {
  protected:
-  RenderSettings settings = probeSettings();
-  Renderer renderer{settings};
+  ViewSettings settings = probeSettings();
+  Renderer renderer{settings, testing::kSmallSize};
   FrameState frame = probeFrame();
   Image image = renderer.render(frame);
   render::SphereCamera camera{settings.camera, frame.time, panelRect(settings, PanelKind::Sphere)};
@@ -104,9 +104,9 @@ TEST_F(PixelProbe, PinsAreCharcoal) {
 }
 
 TEST_F(PixelProbe, NoAntialiasingStillDrawsTheSameScene) {
-  RenderSettings aliased = settings;
+  ViewSettings aliased = settings;
   aliased.antialias = false;
-  Renderer plain(aliased);
+  Renderer plain(aliased, testing::kSmallSize);
   const Image hard = plain.render(frame);
   const render::P2 centre = camera.project({0, 0, 0});
   EXPECT_TRUE(isCream(pixel(hard, int(centre.x), int(centre.y) - 6)));

@@ -1,14 +1,11 @@
 #include "reference_frames.hpp"
 
-#include "render/synthetic_frame.hpp"
+#include "fixtures/synthetic_frame.hpp"
 
 namespace sl::testing {
 
-RenderSettings smallSettings() {
-  RenderSettings s;
-  s.width = kWidth;
-  s.height = kHeight;
-  s.resourceDir = SL_SOURCE_DIR;
+ViewSettings smallSettings() {
+  ViewSettings s;
   s.pathFadeSeconds = 4;
   PanelSpec text{PanelKind::Text, std::array<double, 4>{0, 0, 1, 0.15}, 0};
   PanelSpec sphere{PanelKind::Sphere, std::array<double, 4>{0, 0.15, 0.5, 0.85}, 0};

@@ -9,9 +9,10 @@
 namespace sl::testing {
 
 constexpr int kWidth = 320, kHeight = 180;
+constexpr ImageSize kSmallSize{kWidth, kHeight};
 
-// 320x180, text band on top, sphere left, linkage and plot stacked on the right.
-RenderSettings smallSettings();
+// For 320x180: text band on top, sphere left, linkage and plot stacked on the right.
+ViewSettings smallSettings();
 
 struct NamedFrame {
   std::string name;

@@ -3,46 +3,54 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 
+#include "contracts/limits.hpp"
 #include "reference_frames.hpp"
-#include "render/synthetic_frame.hpp"
+#include "fixtures/synthetic_frame.hpp"
 
 namespace sl {
 namespace {
 
-std::string messageOf(const RenderSettings& settings) {
+std::string messageOf(const ViewSettings& settings, ImageSize size = testing::kSmallSize) {
   try {
-    Renderer renderer(settings);
+    Renderer renderer(settings, size);
   } catch (const std::exception& e) {
     return e.what();
   }
   return "";
 }
 
+// The shaders are built into the program; SL_SHADER_DIR reads them from a folder instead (shader work).
 TEST(RenderErrors, MissingShaderFolderIsNamed) {
-  RenderSettings settings = testing::smallSettings();
-  settings.resourceDir = "/nonexistent/resources";
-  EXPECT_NE(messageOf(settings).find("/nonexistent/resources/shaders/"), std::string::npos) << messageOf(settings);
+  ::setenv("SL_SHADER_DIR", "/nonexistent/shaders", 1);
+  const std::string message = messageOf(testing::smallSettings());
+  ::unsetenv("SL_SHADER_DIR");
+  EXPECT_NE(message.find("/nonexistent/shaders/"), std::string::npos) << message;
+}
+
+TEST(RenderErrors, ShadersNeedNoSourceTree) {
+  ::unsetenv("SL_SHADER_DIR");
+  EXPECT_EQ(messageOf(testing::smallSettings()), "");
 }
 
 TEST(RenderErrors, FrameSizeOutOfRange) {
-  RenderSettings settings = testing::smallSettings();
-  settings.width = Renderer::maxSize() + 1;
-  EXPECT_NE(messageOf(settings).find("frame size"), std::string::npos);
-  settings.width = 0;
-  EXPECT_NE(messageOf(settings).find("frame size"), std::string::npos);
+  const ViewSettings settings = testing::smallSettings();
+  EXPECT_NE(messageOf(settings, {limits::kMaxImageSide + 1, 100}).find("frame size"), std::string::npos);
+  EXPECT_NE(messageOf(settings, {0, 100}).find("frame size"), std::string::npos);
+  EXPECT_NE(messageOf(settings, {100, limits::kMinImageSide - 1}).find("frame size"), std::string::npos);
 }
 
 TEST(RenderErrors, ReportsTheGlRenderer) {
-  Renderer renderer(testing::smallSettings());
+  Renderer renderer(testing::smallSettings(), testing::kSmallSize);
   EXPECT_FALSE(renderer.glRenderer().empty());
   EXPECT_NE(renderer.glVersion().find("Core"), std::string::npos) << renderer.glVersion();
 }
 
 // Non-finite and non-positive plot values, empty runs and a NaN path point render without trouble.
 TEST(RenderErrors, HostileFrameContentsStillRender) {
-  Renderer renderer(testing::smallSettings());
+  Renderer renderer(testing::smallSettings(), testing::kSmallSize);
   FrameState frame = syntheticFrame(3.0, 180);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (auto& plot : frame.plots)

@@ -1,14 +1,18 @@
 // Loading good scenes: every key lands where the rest of the program reads it.
+#include <string>
+#include <vector>
+
 #include <gtest/gtest.h>
 
+#include "contracts/limits.hpp"
+#include "contracts/registry.hpp"
 #include "scene/scene_loader.hpp"
-#include "scene_test_support.hpp"
+#include "support/scene_files.hpp"
 
 namespace sl {
 namespace {
 
 using testing::shippedScene;
-using testing::testLimits;
 
 const char* kFullScene = R"({
   "name": "full", "title": "All keys",
@@ -28,7 +32,7 @@ const char* kFullScene = R"({
 })";
 
 TEST(SceneLoader, EveryKeyIsRead) {
-  const Scene scene = parseScene(kFullScene, "full.json", testLimits());
+  const Scene scene = parseScene(kFullScene, "full.json");
   EXPECT_EQ(scene.name, "full");
   EXPECT_EQ(scene.title, "All keys");
   EXPECT_EQ(scene.chain.rods, 5);
@@ -39,55 +43,104 @@ TEST(SceneLoader, EveryKeyIsRead) {
   EXPECT_DOUBLE_EQ(scene.initial.velocity(2), 3);
   EXPECT_DOUBLE_EQ(scene.duration, 2.5);
   ASSERT_EQ(scene.runs.size(), 2u);
-  EXPECT_EQ(scene.runs[0].config.method, "embedded");
+  EXPECT_EQ(scene.runs[0].config.method, Method::Embedded);
+  EXPECT_EQ(scene.runs[0].config.integrator, Integrator::Dopri5);
   EXPECT_DOUBLE_EQ(scene.runs[0].config.tolerance, 1e-9);
   EXPECT_DOUBLE_EQ(scene.runs[0].config.maxRelativeEnergyDrift, 0.1);
   EXPECT_DOUBLE_EQ(scene.runs[0].config.maxRodLengthError, 1e-4);
   EXPECT_EQ(scene.runs[0].config.maxSteps, 1000);
   EXPECT_FLOAT_EQ(scene.runs[0].color->b, 0.5f);
   EXPECT_DOUBLE_EQ(scene.runs[1].config.step, 0.05);
+  EXPECT_EQ(scene.runs[1].config.method, Method::Ambient);
+  EXPECT_EQ(scene.runs[1].config.integrator, Integrator::Rk4);
   EXPECT_EQ(scene.output.fps, 24);
   EXPECT_EQ(scene.output.folder, "somewhere");
   EXPECT_FALSE(scene.output.png);
   EXPECT_EQ(scene.output.video, "v.mp4");
-  const RenderSettings& render = scene.view.render;
-  EXPECT_EQ(render.width, 640);
-  EXPECT_EQ(render.height, 360);
-  ASSERT_EQ(render.panels.size(), 3u);
-  EXPECT_EQ(render.panels[1].kind, PanelKind::Plot);
-  EXPECT_EQ(render.panels[2].plotIndex, 1);
-  ASSERT_TRUE(render.panels[1].rect.has_value());
-  EXPECT_DOUBLE_EQ((*render.panels[1].rect)[1], 0.5);
-  ASSERT_EQ(scene.view.plots.size(), 2u);
-  EXPECT_EQ(scene.view.plots[0].kind, PlotKind::EnergyError);
-  EXPECT_FALSE(scene.view.plots[0].logY);
-  EXPECT_EQ(scene.view.plots[1].kind, PlotKind::Divergence);  // two runs: divergence by default
-  EXPECT_DOUBLE_EQ(render.camera.viewDirection.z, 1);
-  EXPECT_DOUBLE_EQ(render.camera.orbitDegreesPerSecond, 5);
-  EXPECT_DOUBLE_EQ(render.camera.fieldOfViewDegrees, 40);
-  EXPECT_EQ(render.linkageLayout, LinkageLayout::SideBySide);
-  EXPECT_EQ(render.linkageRun, 1);
-  EXPECT_EQ(scene.view.trailHinges, (std::vector<int>{1, 4}));
-  EXPECT_DOUBLE_EQ(render.trailFadeSeconds, 3);
-  EXPECT_DOUBLE_EQ(render.pathFadeSeconds, 4);
-  EXPECT_EQ(scene.view.pathSamplesPerFrame, 2);
-  EXPECT_FLOAT_EQ(render.background.r, 0);
-  EXPECT_FALSE(render.antialias);
+  EXPECT_EQ(scene.output.size.width, 640);
+  EXPECT_EQ(scene.output.size.height, 360);
+  const ViewSettings& view = scene.view;
+  ASSERT_EQ(view.panels.size(), 3u);
+  EXPECT_EQ(view.panels[1].kind, PanelKind::Plot);
+  EXPECT_EQ(view.panels[2].plotIndex, 1);
+  ASSERT_TRUE(view.panels[1].rect.has_value());
+  EXPECT_DOUBLE_EQ((*view.panels[1].rect)[1], 0.5);
+  ASSERT_EQ(view.plots.size(), 2u);
+  EXPECT_EQ(view.plots[0].kind, PlotKind::EnergyError);
+  EXPECT_FALSE(view.plots[0].logY);
+  EXPECT_EQ(view.plots[1].kind, PlotKind::Divergence);  // two runs: divergence by default
+  EXPECT_DOUBLE_EQ(view.camera.viewDirection.z, 1);
+  EXPECT_DOUBLE_EQ(view.camera.orbitDegreesPerSecond, 5);
+  EXPECT_DOUBLE_EQ(view.camera.fieldOfViewDegrees, 40);
+  EXPECT_EQ(view.linkageLayout, LinkageLayout::SideBySide);
+  EXPECT_EQ(view.linkageRun, 1);
+  EXPECT_EQ(view.trailHinges, (std::vector<int>{1, 4}));
+  EXPECT_DOUBLE_EQ(view.trailFadeSeconds, 3);
+  EXPECT_DOUBLE_EQ(view.pathFadeSeconds, 4);
+  EXPECT_EQ(view.pathSamplesPerFrame, 2);
+  EXPECT_FLOAT_EQ(view.background.r, 0);
+  EXPECT_FALSE(view.antialias);
 }
 
 TEST(SceneLoader, DefaultsFillWhatIsLeftOut) {
   const Scene scene = parseScene(R"({"name": "d", "linkage": {"rods": 4, "L": 3},
       "initial": {"coords": [0, 0], "velocity": [1, 0]}, "duration": 1, "runs": [{"name": "r"}]})",
-                                 "d.json", testLimits());
+                                 "d.json");
   EXPECT_EQ(scene.chain.hingeMasses, Eigen::VectorXd::Ones(3));
   EXPECT_EQ(scene.chain.rodMasses, Eigen::VectorXd::Zero(4));
   EXPECT_EQ(scene.runs[0].config.method, RunConfig{}.method);
   EXPECT_EQ(scene.output.folder, "renders/d");
   EXPECT_EQ(scene.output.fps, 30);
-  EXPECT_EQ(scene.view.render.width, 1280);
-  ASSERT_EQ(scene.view.render.panels.size(), 2u);
-  EXPECT_EQ(scene.view.render.panels[0].kind, PanelKind::Sphere);
-  EXPECT_EQ(scene.view.render.panels[1].kind, PanelKind::Linkage);
+  EXPECT_EQ(scene.output.size.width, 1280);
+  ASSERT_EQ(scene.view.panels.size(), 2u);
+  EXPECT_EQ(scene.view.panels[0].kind, PanelKind::Sphere);
+  EXPECT_EQ(scene.view.panels[1].kind, PanelKind::Linkage);
+}
+
+// Every method and integrator of the registry is accepted under its name, with the accuracy key its
+// integrator takes (the published methods need 4 rods, as here).
+TEST(SceneLoader, AcceptsEveryRegisteredMethodAndIntegrator) {
+  std::string runs;
+  for (const MethodTraits& method : kMethods) {
+    for (const IntegratorTraits& integrator : kIntegrators) {
+      runs += std::string(runs.empty() ? "" : ", ") + "{\"name\": \"" + std::string(method.name) + " " +
+              std::string(integrator.name) + "\", \"method\": \"" + std::string(method.name) +
+              "\", \"integrator\": \"" + std::string(integrator.name) + "\", " +
+              (integrator.adaptive ? "\"tolerance\": 1e-9}" : "\"step\": 0.01}");
+    }
+  }
+  const Scene scene = parseScene(R"({"name": "every", "linkage": {"rods": 4, "L": 3},
+      "initial": {"coords": [0, 0], "velocity": [1, 0]}, "duration": 1, "runs": [)" +
+                                     runs + "]}",
+                                 "every.json");
+  ASSERT_EQ(scene.runs.size(), kMethods.size() * kIntegrators.size());
+  size_t i = 0;
+  for (const MethodTraits& method : kMethods) {
+    for (const IntegratorTraits& integrator : kIntegrators) {
+      SCOPED_TRACE(scene.runs[i].name);
+      EXPECT_EQ(scene.runs[i].config.method, method.kind);
+      EXPECT_EQ(scene.runs[i].config.integrator, integrator.kind);
+      ++i;
+    }
+  }
+}
+
+// One bound on the frame size for scenes and --size: limits::kMaxImageSide, inclusive.
+TEST(SceneLoader, ImageSizeBounds) {
+  EXPECT_TRUE(checkImageSize({limits::kMaxImageSide, limits::kMaxImageSide}, true, "output").empty());
+  EXPECT_TRUE(checkImageSize({limits::kMinImageSide, limits::kMinImageSide}, false, "output").empty());
+  const std::vector<SceneProblem> wide = checkImageSize({limits::kMaxImageSide + 1, 90}, false, "output");
+  ASSERT_EQ(wide.size(), 1u);
+  EXPECT_EQ(wide[0].jsonPath, "output.width");
+  EXPECT_NE(wide[0].message.find("found " + std::to_string(limits::kMaxImageSide + 1)), std::string::npos)
+      << wide[0].message;
+  const std::vector<SceneProblem> low = checkImageSize({160, limits::kMinImageSide - 1}, false, "output");
+  ASSERT_EQ(low.size(), 1u);
+  EXPECT_EQ(low[0].jsonPath, "output.height");
+  const std::vector<SceneProblem> odd = checkImageSize({161, 90}, true, "output");
+  ASSERT_EQ(odd.size(), 1u);
+  EXPECT_EQ(odd[0].jsonPath, "output.width");
+  EXPECT_TRUE(checkImageSize({161, 90}, false, "output").empty()) << "odd sizes are fine without a video";
 }
 
 TEST(SceneLoader, FrameCountCoversTheDurationWithBothEnds) {
@@ -105,23 +158,23 @@ TEST(SceneLoader, ShippedScenesLoad) {
   for (const char* name :
        {"default.json", "comparison.json", "pole-passage.json", "seam.json", "massive-rods.json", "five-rods.json"}) {
     SCOPED_TRACE(name);
-    EXPECT_NO_THROW(loadScene(shippedScene(name), testLimits()));
+    EXPECT_NO_THROW(loadScene(shippedScene(name)));
   }
 }
 
 TEST(SceneLoader, ShippedDefaultIsTheSpecsDemo) {
-  const Scene scene = loadScene(shippedScene("default.json"), testLimits());
+  const Scene scene = loadScene(shippedScene("default.json"));
   EXPECT_EQ(scene.chain.rods, 4);
   EXPECT_DOUBLE_EQ(scene.chain.baseLength, 3.0);
   EXPECT_EQ(scene.initial.kind, InitialSpec::Kind::Drag);
   EXPECT_TRUE(scene.initial.unitSpeed);
   EXPECT_EQ(scene.frameCount(), 601);
-  EXPECT_EQ(scene.output.width, 1280);
+  EXPECT_EQ(scene.output.size.width, 1280);
 }
 
 TEST(SceneLoader, MissingFileIsAProblemNotACrash) {
   try {
-    loadScene("/nonexistent/scene.json", testLimits());
+    loadScene("/nonexistent/scene.json");
     FAIL() << "no error";
   } catch (const SceneError& error) {
     EXPECT_NE(std::string(error.what()).find("/nonexistent/scene.json: cannot open"), std::string::npos);

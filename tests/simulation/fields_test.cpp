@@ -43,8 +43,8 @@ TEST(ExactFields, ChristoffelAndEmbeddedAgreeForAnyChainChartAndMasses) {
           const Eigen::VectorXd c = randomCoords(rng, rods - 2);
           Eigen::VectorXd v(rods - 2);
           for (Eigen::Index i = 0; i < v.size(); ++i) v(i) = normal(rng);
-          const Eigen::VectorXd a = christoffelAcceleration(chain, axes, c, v);
-          const Eigen::VectorXd b = embeddedAcceleration(chain, axes, c, v);
+          const Eigen::VectorXd a = christoffelAcceleration(ChainConstants(chain), axes, c, v);
+          const Eigen::VectorXd b = embeddedAcceleration(ChainConstants(chain), axes, c, v);
           EXPECT_LT((a - b).norm(), 1e-10 * (1 + a.norm())) << "n = " << rods << ", chart " << chart;
         }
 }
@@ -63,7 +63,7 @@ TEST(ExactFields, ChristoffelSymbolsMatchFiniteDifferencesOfTheMetric) {
             (12 * h);
   }
   const Eigen::MatrixXd inverse = kineticMetricPullback(chain, axes, c).inverse();
-  const std::vector<Eigen::MatrixXd> gamma = christoffelSymbols(chain, axes, c);
+  const std::vector<Eigen::MatrixXd> gamma = christoffelSymbols(ChainConstants(chain), axes, c);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
       for (int k = 0; k < 3; ++k) {
@@ -80,7 +80,7 @@ TEST(ExactFields, AccelerationIsNormalToTheConfigurationSpace) {
   const Chain chain = massiveChain(4, 3.2);
   const std::vector<int> axes = sphereChartAxes(3, 0);
   const Eigen::Vector2d c(0.3, 1.1), v(0.8, -0.5);
-  const Eigen::VectorXd a = christoffelAcceleration(chain, axes, c, v);
+  const Eigen::VectorXd a = christoffelAcceleration(ChainConstants(chain), axes, c, v);
   const double s = 1e-4;
   auto q = [&](double tau) {
     const Eigen::VectorXd at = c + tau * v + 0.5 * tau * tau * a;
@@ -117,10 +117,10 @@ TEST(PublishedFields, AgreeWithTheExactFieldToTheirDifferenceError) {
   for (double phi : {-1.2, -0.5, 0.3, 1.0})
     for (double t : {-2.5, -0.4, 0.2, 1.3, 2.9}) {
       const Eigen::Vector2d c(phi, t), v(0.6, -0.9);
-      const Eigen::VectorXd exact = christoffelAcceleration(chain, axes, c, v);
+      const Eigen::VectorXd exact = christoffelAcceleration(ChainConstants(chain), axes, c, v);
       worstChristoffel =
-          std::max(worstChristoffel, (christoffelFdAcceleration(3.0, c, v) - exact).norm() / exact.norm());
-      worstEmbedded = std::max(worstEmbedded, (embeddedFdAcceleration(3.0, c, v) - exact).norm() / exact.norm());
+          std::max(worstChristoffel, (christoffelFdAcceleration(PublishedChain(3.0), c, v) - exact).norm() / exact.norm());
+      worstEmbedded = std::max(worstEmbedded, (embeddedFdAcceleration(PublishedChain(3.0), c, v) - exact).norm() / exact.norm());
     }
   // Central differences: eps^2 truncation plus rounding / eps (1e-5 and 1e-4 steps, second differences).
   EXPECT_LT(worstChristoffel, 1e-7);
@@ -131,12 +131,12 @@ TEST(PublishedFields, AgreeWithTheExactFieldToTheirDifferenceError) {
 TEST(PublishedFields, ChristoffelFdFailsOnTheSeamWhereThePublishedMetricDoes) {
   // At t = pi/2 the published metric4 divides by nu_in ~ cos t; its t-differences straddle the seam.
   const Eigen::Vector2d onSeam(0.3, M_PI / 2), v(0.5, 0.7);
-  const Eigen::Vector2d published = christoffelFdAcceleration(3.0, onSeam, v);
-  const Eigen::VectorXd exact = christoffelAcceleration(Chain::uniform(4, 3.0), sphereChartAxes(3, 0), onSeam, v);
+  const Eigen::Vector2d published = christoffelFdAcceleration(PublishedChain(3.0), onSeam, v);
+  const Eigen::VectorXd exact = christoffelAcceleration(ChainConstants(Chain::uniform(4, 3.0)), sphereChartAxes(3, 0), onSeam, v);
   const bool broken = !published.allFinite() || (published - exact).norm() > 1e-3 * exact.norm();
   EXPECT_TRUE(broken) << "published " << published.transpose() << " exact " << exact.transpose();
   // The embedded-fd route never touches nu_in's division: fine on the seam.
-  EXPECT_LT((embeddedFdAcceleration(3.0, onSeam, v) - exact).norm(), 1e-6 * exact.norm());
+  EXPECT_LT((embeddedFdAcceleration(PublishedChain(3.0), onSeam, v) - exact).norm(), 1e-6 * exact.norm());
 }
 
 // ---- The shared-work -fd fields against the same stencils evaluated point by point ----------------------
@@ -177,11 +177,11 @@ TEST(PublishedFields, SharedStencilMatchesStencilByStencilAwayFromSeamAndPoles) 
       for (double t : stateGrid(-3.1, 3.1, 0.1)) {
         if (std::abs(std::cos(t)) < 0.2) continue;  // the seam band has its own test
         const Eigen::Vector2d c(phi, t);
-        EXPECT_LT(scaledDifference(christoffelFdAcceleration(L, c, gridRates),
+        EXPECT_LT(scaledDifference(christoffelFdAcceleration(PublishedChain(L), c, gridRates),
                                    christoffelFdAccelerationStencilByStencil(L, c, gridRates)),
                   1e-7)
             << "L " << L << " phi " << phi << " t " << t;
-        EXPECT_LT(scaledDifference(embeddedFdAcceleration(L, c, gridRates),
+        EXPECT_LT(scaledDifference(embeddedFdAcceleration(PublishedChain(L), c, gridRates),
                                    embeddedFdAccelerationStencilByStencil(L, c, gridRates)),
                   3e-7)
             << "L " << L << " phi " << phi << " t " << t;
@@ -198,13 +198,13 @@ TEST(PublishedFields, SharedStencilMatchesStencilByStencilNearAndOnTheSeam) {
     for (double phi : stateGrid(-1.4, 1.4, 0.2))
       for (double t : ts) {
         const Eigen::Vector2d c(phi, t);
-        EXPECT_LT(scaledDifference(embeddedFdAcceleration(L, c, gridRates),
+        EXPECT_LT(scaledDifference(embeddedFdAcceleration(PublishedChain(L), c, gridRates),
                                    embeddedFdAccelerationStencilByStencil(L, c, gridRates)),
                   3e-7)
             << "L " << L << " phi " << phi << " t " << t;
         const double cosT = std::abs(std::cos(t));
         if (cosT < 5e-3) continue;
-        EXPECT_LT(scaledDifference(christoffelFdAcceleration(L, c, gridRates),
+        EXPECT_LT(scaledDifference(christoffelFdAcceleration(PublishedChain(L), c, gridRates),
                                    christoffelFdAccelerationStencilByStencil(L, c, gridRates)),
                   1e-8 / (cosT * cosT))
             << "L " << L << " phi " << phi << " t " << t;
@@ -221,12 +221,12 @@ TEST(PublishedFields, SharedStencilMatchesStencilByStencilNearThePoles) {
         if (std::abs(std::cos(phi)) > 1 || std::abs(std::cos(t)) < 0.2) continue;
         const Eigen::Vector2d c(phi, t);
         const double cosPhi2 = std::cos(phi) * std::cos(phi);
-        EXPECT_LT(scaledDifference(embeddedFdAcceleration(L, c, gridRates),
+        EXPECT_LT(scaledDifference(embeddedFdAcceleration(PublishedChain(L), c, gridRates),
                                    embeddedFdAccelerationStencilByStencil(L, c, gridRates)),
                   1e-8 / cosPhi2)
             << "L " << L << " phi " << phi << " t " << t;
         if (std::abs(std::cos(phi)) < 1e-3) continue;
-        EXPECT_LT(scaledDifference(christoffelFdAcceleration(L, c, gridRates),
+        EXPECT_LT(scaledDifference(christoffelFdAcceleration(PublishedChain(L), c, gridRates),
                                    christoffelFdAccelerationStencilByStencil(L, c, gridRates)),
                   1e-5 / cosPhi2)
             << "L " << L << " phi " << phi << " t " << t;
@@ -240,9 +240,9 @@ TEST(PublishedFields, SharedStencilIsStillAnApproximationNotACopy) {
   for (double phi : stateGrid(-1.0, 1.0, 0.5))
     for (double t : stateGrid(-2.0, 2.0, 0.5)) {
       const Eigen::Vector2d c(phi, t);
-      largest = std::max(largest, scaledDifference(christoffelFdAcceleration(3.3, c, gridRates),
+      largest = std::max(largest, scaledDifference(christoffelFdAcceleration(PublishedChain(3.3), c, gridRates),
                                                    christoffelFdAccelerationStencilByStencil(3.3, c, gridRates)));
-      largest = std::max(largest, scaledDifference(embeddedFdAcceleration(3.3, c, gridRates),
+      largest = std::max(largest, scaledDifference(embeddedFdAcceleration(PublishedChain(3.3), c, gridRates),
                                                    embeddedFdAccelerationStencilByStencil(3.3, c, gridRates)));
     }
   EXPECT_GT(largest, 0.0);

@@ -15,7 +15,7 @@ double maxErrorAgainstReference(Trajectory& run, const std::string& file) {
   double worst = 0;
   for (const testing::ReferenceRow& row : testing::loadReference(file)) {
     const auto s = run.sampleAt(row.time);
-    if (!s) throw std::runtime_error("stopped: " + run.stop()->reason + " " + run.stop()->detail);
+    if (!s) throw std::runtime_error("stopped: " + nameOf(run.stop()->reason) + " " + run.stop()->detail);
     worst = std::max(worst, (s->hinges - row.hinges).cwiseAbs().maxCoeff());
   }
   return worst;
@@ -44,7 +44,7 @@ TEST(PublishedMethods, ChristoffelFdCannotCrossTheSeamAtTightTolerance) {
   Trajectory published(specChain, testing::seamStart(specChain), testing::config("christoffel-fd", "dopri5", 1e-11));
   EXPECT_FALSE(published.sampleAt(1.0));
   ASSERT_TRUE(published.stop());
-  EXPECT_EQ(published.stop()->reason, "step-size-collapse");
+  EXPECT_EQ(published.stop()->reason, StopReason::StepSizeCollapse);
   EXPECT_NEAR(published.stop()->time, 0.475, 0.01);
   Trajectory embedded(specChain, testing::seamStart(specChain), testing::config("embedded-fd", "dopri5", 1e-11));
   EXPECT_TRUE(embedded.sampleAt(1.0));
@@ -80,12 +80,12 @@ TEST(PublishedMethods, StopWithPoleFoldBackOnAPolePassage) {
         else
           break;
       ASSERT_TRUE(run.stop()) << method << "/" << integrator << " ran through the pole";
-      std::cout << method << "/" << integrator << ": " << run.stop()->reason << " at t = " << run.stop()->time << " ("
+      std::cout << method << "/" << integrator << ": " << nameOf(run.stop()->reason) << " at t = " << run.stop()->time << " ("
                 << run.stop()->detail << ")\n";
       // Pinned: all stop at the pole; christoffel-fd under dopri5 first sees its difference quotients turn to
       // noise at |cos phi| ~ 1.5e-3 and collapses its step there.
       const bool collapses = method == "christoffel-fd" && integrator == "dopri5";
-      EXPECT_EQ(run.stop()->reason, collapses ? "step-size-collapse" : "pole-fold-back");
+      EXPECT_EQ(run.stop()->reason, collapses ? StopReason::StepSizeCollapse : StopReason::PoleFoldBack);
       EXPECT_NEAR(run.stop()->time, 2.0, 0.015);
       ASSERT_TRUE(last);
       EXPECT_TRUE(last->coords.allFinite() && last->rates.allFinite());
@@ -101,7 +101,7 @@ TEST(PublishedMethods, StartOnTheSeamWherePublishedMetricFails) {
   Trajectory adaptive(specChain, start, testing::config("christoffel-fd", "dopri5", 1e-10));
   EXPECT_FALSE(adaptive.sampleAt(1.0));
   ASSERT_TRUE(adaptive.stop());
-  EXPECT_EQ(adaptive.stop()->reason, "step-size-collapse");
+  EXPECT_EQ(adaptive.stop()->reason, StopReason::StepSizeCollapse);
   EXPECT_EQ(adaptive.stop()->time, 0.0);
 
   RunConfig rk4 = testing::config("christoffel-fd", "rk4");
@@ -109,7 +109,7 @@ TEST(PublishedMethods, StartOnTheSeamWherePublishedMetricFails) {
   Trajectory demo(specChain, start, rk4);
   EXPECT_FALSE(demo.sampleAt(1.0));
   ASSERT_TRUE(demo.stop());
-  EXPECT_EQ(demo.stop()->reason, "energy-blow-up");  // the first RK4 step multiplies the energy ~3000-fold
+  EXPECT_EQ(demo.stop()->reason, StopReason::EnergyBlowUp);  // the first RK4 step multiplies the energy ~3000-fold
   EXPECT_EQ(demo.stop()->time, 0.0);
 
   // The same start is harmless for the exact method and for embedded-fd.

@@ -15,14 +15,14 @@
 
 namespace sl::testing {
 
-// One row of /work/shared/reference/*.csv: time, phi, t, phidot, tdot, speed2, p1..p3.
+// One row of tests/data/reference/*.csv: time, phi, t, phidot, tdot, speed2, p1..p3.
 struct ReferenceRow {
   double time, phi, t, phidot, tdot, speed2;
   Eigen::Matrix<double, 2, 3> hinges;
 };
 
 inline std::vector<ReferenceRow> loadReference(const std::string& name) {
-  const std::string path = std::string(SL_SHARED_DIR) + "/reference/" + name;
+  const std::string path = std::string(SL_SOURCE_DIR) + "/tests/data/reference/" + name;
   std::ifstream in(path);
   if (!in) throw std::runtime_error("cannot open " + path);
   std::string line;
@@ -39,7 +39,7 @@ inline std::vector<ReferenceRow> loadReference(const std::string& name) {
   return rows;
 }
 
-// The reference starts (README of shared/reference): L = 3, chart-0 coordinates and rates.
+// The reference starts (tests/data/reference/README.md): L = 3, chart-0 coordinates and rates.
 inline InitialState genericStart(const Chain& chain) {
   return initialStateFromChart(chain, Eigen::Vector2d(0.3, 0.2), Eigen::Vector2d(0.5, 0.7));
 }
@@ -47,10 +47,16 @@ inline InitialState seamStart(const Chain& chain) {
   return initialStateFromChart(chain, Eigen::Vector2d(-0.2, 1.0), Eigen::Vector2d(0.1, 1.0));
 }
 
+// A run configuration by the names a scene uses (parsed through the registry, as the scene loader does);
+// unknown names throw std::invalid_argument.
 inline RunConfig config(const std::string& method, const std::string& integrator = "dopri5", double tolerance = 1e-12) {
   RunConfig c;
-  c.method = method;
-  c.integrator = integrator;
+  const auto m = parseKind(kMethods, method);
+  const auto i = parseKind(kIntegrators, integrator);
+  if (!m) throw std::invalid_argument("unknown method '" + method + "'");
+  if (!i) throw std::invalid_argument("unknown integrator '" + integrator + "'");
+  c.method = *m;
+  c.integrator = *i;
   c.tolerance = tolerance;
   return c;
 }

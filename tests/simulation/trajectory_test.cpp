@@ -54,7 +54,7 @@ TEST(Trajectory, Rk4IsFourthOrder) {
       c.step = h;
       Trajectory run(specChain, testing::genericStart(specChain), c);
       const std::optional<Sample> s = run.sampleAt(4.0);
-      ASSERT_TRUE(s) << run.stop()->reason;
+      ASSERT_TRUE(s) << nameOf(run.stop()->reason);
       errors.push_back((s->hinges - target).cwiseAbs().maxCoeff());
     }
     const double ratio1 = errors[0] / errors[1], ratio2 = errors[1] / errors[2];
@@ -85,7 +85,7 @@ TEST(Trajectory, StopsCleanlyAndSaysWhy) {
   EXPECT_TRUE(run.sampleAt(0.0));
   EXPECT_FALSE(run.sampleAt(15.0));
   ASSERT_TRUE(run.stop());
-  EXPECT_EQ(run.stop()->reason, "max-steps");
+  EXPECT_EQ(run.stop()->reason, StopReason::MaxSteps);
   EXPECT_GT(run.stop()->time, 0.0);
   EXPECT_EQ(run.steps(), 10);
   EXPECT_FALSE(run.sampleAt(16.0));
@@ -103,7 +103,7 @@ TEST(Trajectory, EnergyWatchdogCatchesAnUnstableStepSize) {
     last = s;
   }
   ASSERT_TRUE(run.stop());
-  EXPECT_EQ(run.stop()->reason, "energy-blow-up");
+  EXPECT_EQ(run.stop()->reason, StopReason::EnergyBlowUp);
   EXPECT_LE(last->relativeEnergyDrift, c.maxRelativeEnergyDrift);
 }
 
@@ -117,7 +117,7 @@ TEST(Trajectory, InvariantExtremesAreTheWorstOverTheStepEnds) {
   double drift = 0, rodLength = 0;
   for (int k = 1; k <= 200; ++k) {
     const std::optional<Sample> s = run.sampleAt(k * 0.02);
-    ASSERT_TRUE(s) << run.stop()->reason;
+    ASSERT_TRUE(s) << nameOf(run.stop()->reason);
     drift = std::max(drift, s->relativeEnergyDrift);
     rodLength = std::max(rodLength, s->rodLengthError);
   }

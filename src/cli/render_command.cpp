@@ -1,0 +1,229 @@
+// `linkage render SCENE.json`: frames (PNG + manifest) and/or a video. The frame range, the folder and
+// the size may be overridden; --frames A:B renders a shard, --resume skips frames already complete.
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/disk_space.hpp"
+#include "cli/exit_codes.hpp"
+#include "cli/frame_range.hpp"
+#include "cli/interrupt.hpp"
+#include "cli/progress.hpp"
+#include "cli/run_report.hpp"
+#include "cli/scene_input.hpp"
+#include "frames/frame_builder.hpp"
+#include "output/png_encoder.hpp"
+#include "output/png_sequence_sink.hpp"
+#include "output/sha256.hpp"
+#include "output/temporary_file.hpp"
+#include "output/video_sink.hpp"
+#include "render/renderer.hpp"
+#include "scene/output_folder.hpp"
+
+namespace sl {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RenderArguments {
+  std::string scene, out, frames, video, size;
+  bool png = false, noPng = false, quiet = false, resume = false;
+};
+
+// What a render will do, after the scene's choices and the options are combined and checked.
+struct RenderPlan {
+  Scene scene;
+  FrameRange range;
+  std::string folder;
+  bool png = true;
+  std::string video;
+  bool quiet = false, resume = false;
+};
+
+// The folder a video goes into ("." for a bare file name).
+std::string videoFolder(const std::string& video) {
+  const fs::path parent = fs::path(video).parent_path();
+  return parent.empty() ? "." : parent.string();
+}
+
+void applySize(const RenderArguments& args, Scene& scene) {
+  if (args.size.empty()) return;
+  const auto [width, height] = parseImageSize(args.size);
+  scene.output.size = {width, height};
+}
+
+RenderPlan planRender(const RenderArguments& args) {
+  RenderPlan plan;
+  plan.scene = loadSceneForCommand(args.scene);
+  Scene& scene = plan.scene;
+  applySize(args, scene);
+  plan.folder = args.out.empty() ? scene.output.folder : args.out;
+  plan.png = args.noPng ? false : (args.png || scene.output.png);
+  plan.video = args.video.empty() ? scene.output.video : args.video;
+  plan.quiet = args.quiet;
+  plan.resume = args.resume;
+  if (!plan.png && plan.video.empty()) {
+    throw CommandExit(kExitBadInput,
+                      "nothing to write: PNG frames are off (--no-png or output.png) and no video is asked for");
+  }
+  if (plan.resume && !plan.video.empty()) {
+    throw CommandExit(kExitBadInput,
+                      "--resume completes PNG frames; a video is always encoded whole (drop --video or --resume)");
+  }
+  std::vector<SceneProblem> problems =
+      checkImageSize(scene.output.size, !plan.video.empty(), args.size.empty() ? "output" : "--size");
+  for (SceneProblem& problem : checkOutputFolder(plan.folder, args.out.empty() ? "output.folder" : "--out")) {
+    problems.push_back(problem);
+  }
+  if (!plan.video.empty()) {
+    for (SceneProblem& problem :
+         checkOutputFolder(videoFolder(plan.video), args.video.empty() ? "output.video" : "--video")) {
+      problems.push_back(problem);
+    }
+  }
+  failOnProblems(args.scene, problems);
+  plan.range = parseFrameRange(args.frames.empty() ? ":" : args.frames, scene.frameCount());
+  return plan;
+}
+
+// Identifies the render in its manifest, so shards and resumes only ever join the same render.
+nlohmann::json manifestInfo(const RenderPlan& plan) {
+  const Scene& scene = plan.scene;
+  return {{"scene", scene.name},         {"sceneSha256", output::sha256OfFile(scene.file)},
+          {"width", scene.output.size.width}, {"height", scene.output.size.height},
+          {"fps", scene.output.fps},     {"frames", scene.frameCount()}};
+}
+
+// Samples the history up to (not including) frame k, one frame at a time so that a signal is noticed even while
+// a late shard walks up to its first frame; false if interrupted.
+bool sampleUpTo(FrameBuilder& builder, int k) {
+  for (int next = builder.lastSampledFrame() + 1; next < k && !interruptRequested(); ++next) builder.advanceTo(next);
+  return !interruptRequested();
+}
+
+// Before anything is written or created: do the PNG frames still to write fit? The range's first frame is drawn
+// and encoded to measure one (the render loop draws it again: a few milliseconds).
+void checkSpaceForFrames(const RenderPlan& plan, Renderer& renderer, FrameBuilder& builder) {
+  if (!plan.png) return;  // x264's output size depends on the motion; a full disk shows up as ffmpeg's error
+  const int first = plan.range.first;
+  const Image image = renderer.render(builder.frame(first));
+  FrameSpaceNeed need{plan.folder, 0, first, output::PngEncoder().encode(image).size(), image.width, image.height};
+  for (int frame = first; frame < plan.range.end; ++frame)
+    need.framesToWrite += !fs::exists(fs::path(plan.folder) / output::frameFileName(frame));
+  refuseIfFramesCannotFit(need);
+}
+
+// The frames of the plan's range into the sinks; returns false if interrupted.
+bool renderFrames(const RenderPlan& plan, output::FrameManifest* pngManifest,
+                  const std::vector<output::FrameSink*>& sinks, Renderer& renderer, FrameBuilder& builder) {
+  Progress progress(plan.range.end - plan.range.first, plan.quiet);
+  for (int k = plan.range.first; k < plan.range.end; ++k) {
+    const bool complete = plan.resume && pngManifest && pngManifest->isFrameComplete(k);
+    if (complete) {
+      progress.update(k - plan.range.first + 1);
+      continue;
+    }
+    // Frames before k are sampled (not rendered) for the path and plot history.
+    if (!sampleUpTo(builder, k)) return false;
+    Image image = renderer.render(builder.frame(k));
+    for (size_t i = 0; i + 1 < sinks.size(); ++i) sinks[i]->consume(k, image);
+    sinks.back()->consume(k, std::move(image));
+    progress.update(k - plan.range.first + 1);
+  }
+  return true;
+}
+
+// Temporaries a killed render left in the output folders (its frames in flight, its video) go first.
+void sweepOutputFolders(const RenderPlan& plan) {
+  std::vector<std::string> folders;
+  if (plan.png) folders.push_back(plan.folder);
+  if (!plan.video.empty()) folders.push_back(videoFolder(plan.video));
+  for (const std::string& folder : folders) {
+    const std::vector<std::string> removed = output::removeStaleTemporaries(folder);
+    if (!removed.empty() && !plan.quiet)
+      std::cerr << "removed " << removed.size() << " temporary file(s) an interrupted render left in " << folder
+                << "\n";
+  }
+}
+
+void runRender(const RenderArguments& args) {
+  installInterruptHandlers();  // first: a signal during planning still ends the render cleanly
+  const RenderPlan plan = planRender(args);
+  const Scene& scene = plan.scene;
+  Renderer renderer(scene.view, scene.output.size);
+  const nlohmann::json info = manifestInfo(plan);
+  sweepOutputFolders(plan);  // first: a killed render's leftovers must not count against the free space
+  const InitialState start = sceneStart(scene);
+  FrameBuilder builder(scene, start, startRuns(scene, start));
+  if (!sampleUpTo(builder, plan.range.first)) stopIfInterrupted("nothing was written yet");
+  checkSpaceForFrames(plan, renderer, builder);
+
+  std::unique_ptr<output::FrameManifest> pngManifest, videoManifest;
+  std::unique_ptr<output::PngSequenceSink> pngSink;
+  std::unique_ptr<output::VideoSink> videoSink;
+  std::vector<output::FrameSink*> sinks;
+  if (plan.png) {
+    pngManifest = std::make_unique<output::FrameManifest>(plan.folder, info);
+    pngManifest->addRenderer(renderer.glRenderer(), renderer.glVersion());
+    pngSink = std::make_unique<output::PngSequenceSink>(plan.folder, *pngManifest);
+    sinks.push_back(pngSink.get());
+  }
+  if (!plan.video.empty()) {
+    videoManifest = std::make_unique<output::FrameManifest>(videoFolder(plan.video), info,
+                                                            fs::path(plan.video).filename().string() + ".manifest.json",
+                                                            output::FrameManifest::Existing::replace);
+    videoManifest->addRenderer(renderer.glRenderer(), renderer.glVersion());
+    output::VideoSettings settings{plan.video, scene.output.size.width, scene.output.size.height,
+                                   double(scene.output.fps)};
+    videoSink = std::make_unique<output::VideoSink>(settings, *videoManifest);
+    sinks.push_back(videoSink.get());
+  }
+
+  const bool finished = renderFrames(plan, pngManifest.get(), sinks, renderer, builder);
+  if (pngSink) pngSink->finish();  // every frame handed over is written whole, interrupted or not
+  if (videoSink && finished) videoSink->finish();
+  videoSink.reset();  // unfinished: reaps ffmpeg and removes its temporary, so the video never gets its name
+  reportStops(scene, builder.runs());  // results, not progress: shown even with --quiet
+  if (!finished) {
+    stopIfInterrupted(plan.video.empty()
+                          ? "frames written so far are complete; rerun the same command with --resume to finish"
+                          : "the unfinished video was discarded (an earlier video of that name is untouched); rerun to "
+                            "encode it");
+  }
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& app) {
+  auto args = std::make_shared<RenderArguments>();
+  CLI::App* command =
+      app.add_subcommand("render", "Render a scene to PNG frames (with a checksum manifest) and/or a video");
+  command->add_option("scene", args->scene, "scene file (JSON, see scenes/README.md)")->required();
+  command->add_option("--out", args->out, "frame folder (default: the scene's output.folder, renders/<name>)");
+  command->add_option("--frames", args->frames,
+                      "half-open range A:B of frames to render (A: or :B allowed); shards of one "
+                      "animation give byte-identical files");
+  command->add_option("--video", args->video, "also encode a video with ffmpeg (H.264, yuv420p), e.g. out.mp4");
+  command->add_flag("--png", args->png, "write PNG frames (the default unless the scene says output.png: false)");
+  command->add_flag("--no-png", args->noPng, "no PNG frames (with --video: the video only)");
+  command->add_option("--size", args->size, "override the frame size, WIDTHxHEIGHT, e.g. 640x360");
+  command->add_flag("--quiet", args->quiet, "no progress display on stderr");
+  command->add_flag("--resume", args->resume, "skip frames whose file and manifest entry are complete (PNG only)");
+  command->footer(
+      "Frames go to DIR/frame_00000.png ... with DIR/manifest.json (SHA-256 of pixels and files).\n"
+      "Examples:\n"
+      "  linkage render scenes/default.json\n"
+      "  linkage render scenes/comparison.json --size 640x360 --video comparison.mp4 --no-png\n"
+      "  parallel linkage render scenes/default.json --quiet --frames {} ::: 0:200 200:400 400:601\n"
+      "  linkage render scenes/default.json --resume      # after an interruption\n"
+      "SIGINT/SIGTERM stop after the frames in flight are written; exit status 130; --resume finishes.");
+  command->callback([args] { runRender(*args); });
+}
+
+}  // namespace sl

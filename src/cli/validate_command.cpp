@@ -1,0 +1,38 @@
+// `linkage validate SCENE.json`: every check a render makes before working, and nothing else.
+
+#include <iostream>
+#include <memory>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/scene_input.hpp"
+#include "scene/output_folder.hpp"
+
+namespace sl {
+
+namespace {
+
+void runValidate(const std::string& file) {
+  const Scene scene = loadSceneForCommand(file);
+  failOnProblems(file, checkOutputFolder(scene.output.folder, "output.folder"));
+  startRuns(scene, sceneStart(scene));  // the start and every run, as render and simulate set them up
+  std::cout << file << ": ok: \"" << scene.name << "\", " << scene.chain.rods << " rods, L = " << scene.chain.baseLength
+            << ", " << scene.frameCount() << " frames of " << scene.output.size.width << "x" << scene.output.size.height << " at "
+            << scene.output.fps << " fps, runs:";
+  for (const RunSpec& run : scene.runs)
+    std::cout << " \"" << run.name << "\" (" << nameOf(run.config.method) << ", " << nameOf(run.config.integrator) << ")";
+  std::cout << '\n';
+}
+
+}  // namespace
+
+void addValidateCommand(CLI::App& app) {
+  auto file = std::make_shared<std::string>();
+  CLI::App* command = app.add_subcommand("validate", "Check a scene file and report every problem; writes nothing");
+  command->add_option("scene", *file, "scene file (JSON, see scenes/README.md)")->required();
+  command->footer("Example: linkage validate scenes/default.json\nExit status 0 when the scene is valid, 2 when not.");
+  command->callback([file] { runValidate(*file); });
+}
+
+}  // namespace sl

@@ -1,0 +1,71 @@
+#pragma once
+// FrameState: everything the renderer needs to draw one frame, and nothing about how it was computed.
+// Produced by the frames stage (scene + runs sampled at frame times), consumed by render/.
+// Units: linkage positions in rod lengths (plane coordinates, pins at (0,0) and (L,0));
+// sphere-panel points are 3D points of the view (unit sphere for 4 rods, see ViewSpace).
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "contracts/values.hpp"
+
+namespace sl {
+
+// How configuration-space points are shown in the sphere panel.
+enum class ViewSpace {
+  Sphere,  // 4 rods: the point (cos phi cos t, cos phi sin t, sin phi) on S^2
+  Ball,    // 5+ rods: S^(n-2) mapped into the unit ball, the start at the centre (frames/configuration_view.hpp)
+  Circle   // 3 rods: (cos t, sin t, 0) on the equator
+};
+
+// One run's state at this frame.
+struct RunFrame {
+  std::string name;        // run name from the scene
+  // Labels as shown (the frames stage writes the registry's names; the renderer only displays them).
+  std::string method;      // e.g. "christoffel-fd"
+  ColorRGB color;          // the run's colour in every panel
+  bool stopped = false;    // the run stopped at or before this frame's time
+  double stopTime = 0;     // when it stopped (valid if stopped)
+  std::string stopReason;  // why, e.g. "pole-fold-back" (valid if stopped)
+
+  // Linkage panel: the n-1 interior hinges at the last valid time (frozen once stopped).
+  std::vector<Vec2> hinges;
+  // Fading trails of chosen hinges: trails[k] = past positions of hinge trailHinges[k], oldest first.
+  std::vector<std::vector<Vec2>> trails;
+
+  // Sphere panel: the path so far (oldest first) with the time of each point, and the current point.
+  std::vector<Vec3> path;
+  std::vector<double> pathTimes;
+  Vec3 current;
+};
+
+// A time series for the plot panel.
+struct PlotSeries {
+  std::string label;
+  ColorRGB color;
+  std::vector<double> times;
+  std::vector<double> values;  // non-finite or non-positive values on a log axis are skipped, never drawn
+};
+
+struct PlotFrame {
+  std::string title;  // e.g. "divergence |p_a - p_b|" or "relative energy error"
+  bool logY = true;
+  double timeMin = 0, timeMax = 1;  // the x axis spans the whole animation, so it does not jump
+  std::vector<PlotSeries> series;
+};
+
+struct FrameState {
+  int index = 0;          // frame number in the whole animation
+  double time = 0;        // simulation time of this frame
+  double duration = 0;    // total simulated time
+  std::string title;      // scene title
+  int rods = 4;           // n
+  double baseLength = 3;  // L
+  ViewSpace viewSpace = ViewSpace::Sphere;
+  std::vector<RunFrame> runs;
+  std::vector<PlotFrame> plots;  // one per plot panel, in layout order
+};
+
+}  // namespace sl

@@ -1,0 +1,19 @@
+#pragma once
+// What the program accepts, each bound written once: the scene loader, the command-line options and the
+// stages that allocate check against these.
+
+namespace sl::limits {
+
+inline constexpr int kMinImageSide = 16;
+// llvmpipe allows 16384; 8192 keeps one RGBA frame under 256 MiB.
+inline constexpr int kMaxImageSide = 8192;
+// About 9 hours at 30 fps: anything longer is a typo.
+inline constexpr long kMaxFrames = 1'000'000;
+inline constexpr int kMinRods = 3;
+inline constexpr int kMaxRods = 12;
+inline constexpr int kMaxFps = 1000;
+inline constexpr int kMaxPathSamplesPerFrame = 100;
+inline constexpr double kMinFieldOfViewDegrees = 5;
+inline constexpr double kMaxFieldOfViewDegrees = 120;
+
+}  // namespace sl::limits

@@ -1,0 +1,143 @@
+#pragma once
+// The kinds the program knows, each with its name (as written in scene files, CSVs and messages) and its
+// properties, written once. Names are parsed into enums at the boundary (scene loader, command-line options);
+// everything downstream switches on the enum. Tests, the fuzzer's dictionary and the docs read these tables.
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+namespace sl {
+
+// A kind with its name; the tables below are arrays of these, in the order help texts list them.
+template <class Kind>
+struct Named {
+  Kind kind;
+  std::string_view name;
+};
+
+// === Geodesic methods (docs/methods.md)
+
+enum class Method { ChristoffelFd, EmbeddedFd, Christoffel, Embedded, Ambient };
+
+struct MethodTraits {
+  Method kind;
+  std::string_view name;
+  // The spec's formulas as published (sections 4 and 5): 4 rods, unit hinge masses, massless rods only.
+  bool published;
+  // Integrated in chart coordinates (the others: chart-free, hinge positions under rod constraints).
+  bool chartBased;
+  // Switches to another chart of the atlas near a pole (the published methods stay in the spec's chart).
+  bool usesAtlas;
+};
+
+inline constexpr std::array<MethodTraits, 5> kMethods{{
+    {Method::ChristoffelFd, "christoffel-fd", true, true, false},
+    {Method::EmbeddedFd, "embedded-fd", true, true, false},
+    {Method::Christoffel, "christoffel", false, true, true},
+    {Method::Embedded, "embedded", false, true, true},
+    {Method::Ambient, "ambient", false, false, false},
+}};
+
+// === Integrators (Boost.Odeint; simulation/steppers.hpp)
+
+enum class Integrator { Rk4, Dopri5, Rkf78, BulirschStoer };
+
+struct IntegratorTraits {
+  Integrator kind;
+  std::string_view name;
+  bool adaptive;  // takes "tolerance"; a fixed-step integrator takes "step"
+};
+
+inline constexpr std::array<IntegratorTraits, 4> kIntegrators{{
+    {Integrator::Rk4, "rk4", false},
+    {Integrator::Dopri5, "dopri5", true},
+    {Integrator::Rkf78, "rkf78", true},
+    {Integrator::BulirschStoer, "bulirsch-stoer", true},
+}};
+
+// === Why a run stops (the watchdogs of simulation/trajectory.cpp, and a method's own failure)
+
+enum class StopReason { NonFinite, PoleFoldBack, EnergyBlowUp, StepSizeCollapse, RodLength, MaxSteps };
+
+struct StopReasonTraits {
+  StopReason kind;
+  std::string_view name;     // in CSV status rows, the text panel and stderr
+  std::string_view meaning;  // one line for docs and help texts
+};
+
+inline constexpr std::array<StopReasonTraits, 6> kStopReasons{{
+    {StopReason::NonFinite, "non-finite", "the state became NaN or infinite"},
+    {StopReason::PoleFoldBack, "pole-fold-back", "a single-chart method crossed a pole of its chart"},
+    {StopReason::EnergyBlowUp, "energy-blow-up", "the relative energy drift passed the watchdog's limit"},
+    {StopReason::StepSizeCollapse, "step-size-collapse", "the integrator's step shrank to nothing"},
+    {StopReason::RodLength, "rod-length", "a rod's length drifted past the watchdog's limit"},
+    {StopReason::MaxSteps, "max-steps", "the run used up its step budget"},
+}};
+
+// === Scene view kinds (scenes/README.md)
+
+enum class PanelKind { Linkage, Sphere, Plot, Text };
+inline constexpr std::array<Named<PanelKind>, 4> kPanelKinds{{
+    {PanelKind::Sphere, "sphere"},
+    {PanelKind::Linkage, "linkage"},
+    {PanelKind::Plot, "plot"},
+    {PanelKind::Text, "text"},
+}};
+
+enum class PlotKind { Divergence, EnergyError };
+inline constexpr std::array<Named<PlotKind>, 2> kPlotKinds{{
+    {PlotKind::Divergence, "divergence"},
+    {PlotKind::EnergyError, "energy"},
+}};
+
+enum class LinkageLayout { SingleRun, SideBySide, Overlay };
+inline constexpr std::array<Named<LinkageLayout>, 3> kLinkageLayouts{{
+    {LinkageLayout::SingleRun, "single"},
+    {LinkageLayout::SideBySide, "side-by-side"},
+    {LinkageLayout::Overlay, "overlay"},
+}};
+
+// === Look-ups, the same for every table
+
+template <class Table>
+constexpr const auto& traitsOf(const Table& table, decltype(table[0].kind) kind) {
+  for (const auto& entry : table)
+    if (entry.kind == kind) return entry;
+  return table[0];  // unreachable for a complete table (tests/contracts check completeness)
+}
+
+template <class Table>
+constexpr std::optional<decltype(std::declval<Table>()[0].kind)> parseKind(const Table& table, std::string_view name) {
+  for (const auto& entry : table)
+    if (entry.name == name) return entry.kind;
+  return std::nullopt;
+}
+
+template <class Table>
+std::vector<std::string> namesOf(const Table& table) {
+  std::vector<std::string> names;
+  for (const auto& entry : table) names.emplace_back(entry.name);
+  return names;
+}
+
+// Every kind of a table, in the table's order (e.g. a sweep's default: all methods).
+template <class Table>
+auto kindsOf(const Table& table) {
+  std::vector<std::remove_cvref_t<decltype(table[0].kind)>> kinds;
+  for (const auto& entry : table) kinds.push_back(entry.kind);
+  return kinds;
+}
+
+inline const MethodTraits& traits(Method m) { return traitsOf(kMethods, m); }
+inline const IntegratorTraits& traits(Integrator i) { return traitsOf(kIntegrators, i); }
+inline const StopReasonTraits& traits(StopReason r) { return traitsOf(kStopReasons, r); }
+
+inline std::string nameOf(Method m) { return std::string(traits(m).name); }
+inline std::string nameOf(Integrator i) { return std::string(traits(i).name); }
+inline std::string nameOf(StopReason r) { return std::string(traits(r).name); }
+
+}  // namespace sl

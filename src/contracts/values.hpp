@@ -1,0 +1,16 @@
+#pragma once
+// The value vocabulary every stage shares: plane and space points, colours. Plain aggregates, no behaviour.
+
+namespace sl {
+
+struct Vec2 {
+  double x = 0, y = 0;
+};
+struct Vec3 {
+  double x = 0, y = 0, z = 0;
+};
+struct ColorRGB {
+  float r = 0, g = 0, b = 0;  // each 0..1
+};
+
+}  // namespace sl

@@ -1,0 +1,49 @@
+#pragma once
+// What a scene says about the picture: panels, camera, linkage layout, fades, plots. Read by the scene
+// loader, used by the frame builder (plots, trails, path sampling) and by the renderer (everything else).
+// The frame size is the output's (output_settings.hpp).
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "contracts/registry.hpp"
+#include "contracts/values.hpp"
+
+namespace sl {
+
+struct PanelSpec {
+  PanelKind kind = PanelKind::Sphere;
+  // Placement in the frame as fractions [x, y, width, height] from the top-left; empty = automatic layout.
+  std::optional<std::array<double, 4>> rect;
+  int plotIndex = 0;  // for Plot panels: which FrameState::plots entry to draw
+};
+
+struct CameraSpec {
+  Vec3 viewDirection{1.0, 0.6, 0.5};  // from the sphere's centre towards the eye
+  double orbitDegreesPerSecond = 0;   // slow orbit about the vertical axis; 0 = fixed camera
+  double fieldOfViewDegrees = 30;
+};
+
+// One plot panel: what it shows and how.
+struct PlotSpec {
+  PlotKind kind = PlotKind::Divergence;
+  bool logY = true;
+};
+
+struct ViewSettings {
+  std::vector<PanelSpec> panels;  // layout order; empty = sphere + linkage + text
+  CameraSpec camera;
+  LinkageLayout linkageLayout = LinkageLayout::SingleRun;
+  int linkageRun = 0;  // for SingleRun
+  double pathFadeSeconds = 0;  // 0 = the path never fades
+  double trailFadeSeconds = 2;
+  ColorRGB background{0.96f, 0.95f, 0.92f};
+  bool antialias = true;
+
+  std::vector<PlotSpec> plots;      // one per Plot panel, in layout order (PanelSpec::plotIndex)
+  std::vector<int> trailHinges;     // 1-based hinge numbers with fading trails
+  int pathSamplesPerFrame = 4;      // sphere-path points recorded per frame interval
+};
+
+}  // namespace sl

@@ -1,0 +1,70 @@
+#include "render/frame_composer.hpp"
+
+#include <algorithm>
+#include <array>
+#include <stdexcept>
+#include <string>
+
+#include "contracts/limits.hpp"
+#include "render/panel_layout.hpp"
+#include "render/panels.hpp"
+
+namespace sl::render {
+namespace {
+
+constexpr const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";  // Debian's fonts-dejavu-core
+
+ImageSize checkedSize(ImageSize size) {
+  const auto inside = [](int side) { return side >= limits::kMinImageSide && side <= limits::kMaxImageSide; };
+  if (!inside(size.width) || !inside(size.height))
+    throw std::invalid_argument("frame size " + std::to_string(size.width) + "x" + std::to_string(size.height) +
+                                " outside " + std::to_string(limits::kMinImageSide) + ".." +
+                                std::to_string(limits::kMaxImageSide));
+  return size;
+}
+
+// Small, Normal and Title text scale with the frame height (15, 18 and 24 px at 720p).
+std::array<float, 3> textHeights(int height) {
+  return {std::max(10.0f, 0.021f * height), std::max(10.0f, 0.025f * height), std::max(11.0f, 0.034f * height)};
+}
+
+}  // namespace
+
+FrameComposer::FrameComposer(const ViewSettings& view, ImageSize size)
+    : view_(view),
+      size_(checkedSize(size)),
+      panels_(effectivePanels(view)),
+      rects_(layoutPanels(panels_, size_.width, size_.height)),
+      font_(kFontPath, textHeights(size_.height)) {}
+
+DrawList FrameComposer::compose(const FrameState& frame) const {
+  DrawList list;
+  list.size = size_;
+  list.background = view_.background;
+  list.antialias = view_.antialias;
+  list.sphereIsStatic = view_.camera.orbitDegreesPerSecond == 0;
+  list.viewSpace = frame.viewSpace;
+  for (std::size_t i = 0; i < panels_.size(); ++i) {
+    PanelDrawing drawing;
+    drawing.rect = rects_[i];
+    const PanelContext context{frame, view_, font_, rects_[i]};
+    switch (panels_[i].kind) {
+      case PanelKind::Linkage:
+        drawLinkagePanel(context, drawing.shapes);
+        break;
+      case PanelKind::Sphere:
+        drawing.sphere = drawSpherePanel(context, drawing.shapes);
+        break;
+      case PanelKind::Plot:
+        drawPlotPanel(context, panels_[i].plotIndex, drawing.shapes);
+        break;
+      case PanelKind::Text:
+        drawTextPanel(context, drawing.shapes);
+        break;
+    }
+    list.panels.push_back(std::move(drawing));
+  }
+  return list;
+}
+
+}  // namespace sl::render

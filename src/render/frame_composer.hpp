@@ -1,0 +1,35 @@
+#pragma once
+// The CPU part of the renderer: lays out the panels once, keeps the glyph atlas, and turns each FrameState
+// into a DrawList. No OpenGL here.
+
+#include <vector>
+
+#include "contracts/frame_state.hpp"
+#include "contracts/image.hpp"
+#include "contracts/view_settings.hpp"
+#include "render/draw_list.hpp"
+#include "render/font_atlas.hpp"
+
+namespace sl::render {
+
+class FrameComposer {
+ public:
+  // Throws std::invalid_argument for a size outside contracts/limits.hpp, std::runtime_error if the font
+  // cannot be read.
+  FrameComposer(const ViewSettings& view, ImageSize size);
+
+  DrawList compose(const FrameState& frame) const;
+
+  const FontAtlas& font() const { return font_; }
+  const std::vector<PanelSpec>& panels() const { return panels_; }
+  const std::vector<PixelRect>& rects() const { return rects_; }
+
+ private:
+  ViewSettings view_;
+  ImageSize size_;
+  std::vector<PanelSpec> panels_;
+  std::vector<PixelRect> rects_;
+  FontAtlas font_;
+};
+
+}  // namespace sl::render

@@ -1,0 +1,204 @@
+// The renderer: the CPU part (FrameComposer) turns a FrameState into a DrawList; this GL part draws it with
+// four programs (flat, glyph and lit shapes, and the sphere impostor). All anti-aliasing is analytic, so the
+// frame is a plain RGBA8 framebuffer: no MSAA resolve, no depth buffer. With a fixed camera the sphere is
+// drawn once into a cached layer and copied into each frame (the same bytes as drawing it, at the cost of a
+// copy).
+
+#include "render/renderer.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+
+#include "render/draw_list.hpp"
+#include "render/frame_composer.hpp"
+#include "render/gl/gl.hpp"
+#include "render/gl/gl_context.hpp"
+#include "render/gl/shader_program.hpp"
+#include "render/palette.hpp"
+
+namespace sl {
+namespace {
+
+using namespace sl::render;
+
+// Each program: common.glsl (version line, shared functions) before its own stage files.
+std::vector<std::string> stage(const char* file) { return {"common.glsl", file}; }
+
+}  // namespace
+
+struct Renderer::Impl {
+  FrameComposer composer;
+  ImageSize size;
+  GlContext context;
+  ShaderProgram flat, glyph, lit, sphere;
+  GLuint vertexArray = 0, vertexBuffer = 0, glyphTexture = 0;
+  std::unique_ptr<GlLayer> sphereLayer;
+  ViewSpace cachedSpace = ViewSpace::Sphere;
+
+  Impl(const ViewSettings& view, ImageSize frameSize)
+      : composer(view, frameSize),
+        size(frameSize),
+        context(size.width, size.height),
+        flat(stage("shapes.vert"), stage("flat.frag")),
+        glyph(stage("shapes.vert"), stage("glyph.frag")),
+        lit(stage("shapes.vert"), stage("lit.frag")),
+        sphere(stage("shapes.vert"), stage("sphere.frag")) {
+    createVertexArray();
+    createGlyphTexture();
+  }
+
+  ~Impl() {
+    glDeleteTextures(1, &glyphTexture);
+    glDeleteBuffers(1, &vertexBuffer);
+    glDeleteVertexArrays(1, &vertexArray);
+  }
+
+  void createVertexArray() {
+    glGenVertexArrays(1, &vertexArray);
+    glGenBuffers(1, &vertexBuffer);
+    glBindVertexArray(vertexArray);
+    glBindBuffer(GL_ARRAY_BUFFER, vertexBuffer);
+    const GLsizei stride = sizeof(ShapeVertex);
+    auto attribute = [&](GLuint index, GLint count, std::size_t offset) {
+      glEnableVertexAttribArray(index);
+      glVertexAttribPointer(index, count, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offset));
+    };
+    attribute(0, 2, offsetof(ShapeVertex, x));
+    attribute(1, 2, offsetof(ShapeVertex, localX));
+    attribute(2, 4, offsetof(ShapeVertex, kind));
+    attribute(3, 4, offsetof(ShapeVertex, r));
+    attribute(4, 2, offsetof(ShapeVertex, axisX));
+    attribute(5, 4, offsetof(ShapeVertex, wx));
+  }
+
+  void createGlyphTexture() {
+    glGenTextures(1, &glyphTexture);
+    glBindTexture(GL_TEXTURE_2D, glyphTexture);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, composer.font().atlasSize(), composer.font().atlasSize(), 0, GL_RED,
+                 GL_UNSIGNED_BYTE, composer.font().bitmap().data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
+
+  // Uniforms every program shares (shaders/common.glsl); without a camera they are inert.
+  void setCommonUniforms(const ShaderProgram& program, const SphereCamera* camera, bool antialias) const {
+    program.use();
+    glUniform2f(program.uniform("uViewport"), float(size.width), float(size.height));
+    glUniform1f(program.uniform("uAntialias"), antialias ? 1.0f : 0.0f);
+    if (!camera) return;
+    const auto set3 = [&](const char* name, const V3& v, double scale) {
+      glUniform3f(program.uniform(name), float(v.x * scale), float(v.y * scale), float(v.z * scale));
+    };
+    set3("uEye", camera->eye(), 1);
+    set3("uForward", camera->forward(), camera->focal());
+    set3("uRight", camera->right(), 1);
+    set3("uUp", camera->up(), 1);
+    glUniform2f(program.uniform("uCentre"), camera->centre().x, camera->centre().y);
+  }
+
+  void upload(const ShapeBatch& shapes) const {
+    const auto& vertices = shapes.vertices();
+    glBindVertexArray(vertexArray);
+    glBindBuffer(GL_ARRAY_BUFFER, vertexBuffer);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(ShapeVertex)), vertices.data(), GL_STREAM_DRAW);
+  }
+
+  void drawShapes(const DrawList& list, const ShapeBatch& shapes, const SphereCamera* camera) {
+    if (shapes.vertices().empty()) return;
+    upload(shapes);
+    for (const ShaderProgram* program : {&flat, &glyph, &lit}) setCommonUniforms(*program, camera, list.antialias);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, glyphTexture);
+    glUniform1i(glyph.uniform("uGlyphs"), 0);
+    for (const ShapeSegment& segment : shapes.segments()) {
+      const ShaderProgram& program = segment.program == ShapeProgram::Flat    ? flat
+                                     : segment.program == ShapeProgram::Glyph ? glyph
+                                                                              : lit;
+      program.use();
+      glDrawArrays(GL_TRIANGLES, GLint(segment.first), GLsizei(segment.count));
+    }
+  }
+
+  void drawSphere(const DrawList& list, const SphereImpostor& view) {
+    setCommonUniforms(sphere, &view.camera, list.antialias);
+    const auto color = [&](const char* name, Rgba c) { glUniform3f(sphere.uniform(name), c.r, c.g, c.b); };
+    color("uSphereColor", palette::sphereCream);
+    color("uGridColor", view.look == SphereLook::Opaque ? palette::sphereGrid : palette::glass);
+    color("uPoleColor", palette::poleMark);
+    glUniform1i(sphere.uniform("uMode"), int(view.look));
+    // The camera looks at the sphere's centre, so its outline is a circle of radius f / sqrt(D^2 - 1)
+    // about the panel centre: a quad just around it saves the shader a quarter of the panel's pixels.
+    const V3 eye = view.camera.eye();
+    const double outline =
+        view.camera.focal() / std::sqrt(std::max(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z - 1, 1e-6));
+    const float half = float(outline) + 2.0f;
+    const P2 centre = view.camera.centre();
+    ShapeBatch quad;
+    quad.rect(centre.x - half, centre.y - half, centre.x + half, centre.y + half, {});
+    upload(quad);
+    glDrawArrays(GL_TRIANGLES, 0, GLsizei(quad.vertices().size()));
+  }
+
+  // The sphere of a fixed camera does not change between frames: draw it once into `sphereLayer`
+  // (on the background colour, as in the frame) and copy that rectangle into every frame.
+  void drawSphereCached(const DrawList& list, const SphereImpostor& view, const PixelRect& rect) {
+    if (!list.sphereIsStatic) return drawSphere(list, view);
+    if (!sphereLayer || cachedSpace != list.viewSpace) {
+      if (!sphereLayer) sphereLayer = std::make_unique<GlLayer>(size.width, size.height);
+      sphereLayer->bind();
+      clearToBackground(list);
+      drawSphere(list, view);
+      cachedSpace = list.viewSpace;
+      context.bindFramebuffer();
+    }
+    sphereLayer->copyTo(context.framebuffer(), rect);
+  }
+
+  void drawPanel(const DrawList& list, const PanelDrawing& panel) {
+    const PixelRect& rect = panel.rect;
+    glScissor(GLint(rect.x), GLint(rect.y), GLsizei(rect.width), GLsizei(rect.height));
+    if (panel.sphere) drawSphereCached(list, *panel.sphere, rect);
+    drawShapes(list, panel.shapes, panel.sphere ? &panel.sphere->camera : nullptr);
+  }
+
+  void clearToBackground(const DrawList& list) const {
+    glDisable(GL_SCISSOR_TEST);
+    glClearColor(list.background.r, list.background.g, list.background.b, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glEnable(GL_SCISSOR_TEST);
+  }
+
+  Image draw(const DrawList& list) {
+    context.bindFramebuffer();
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied alpha
+    clearToBackground(list);
+    for (const PanelDrawing& panel : list.panels) drawPanel(list, panel);
+    Image image{size.width, size.height, {}};
+    context.readRgb(image.rgb);
+    return image;
+  }
+};
+
+// Mesa (libOSMesa and its llvmpipe driver) keeps ~1.5 kB of allocations alive at exit, which
+// LeakSanitizer reports in every sanitizer build of a program that renders. Not ours to fix: suppress
+// exactly those libraries. (Lives here so that every binary using the Renderer gets it.)
+#if defined(__SANITIZE_ADDRESS__)
+extern "C" const char* __lsan_default_suppressions() { return "leak:libOSMesa.so\nleak:libgallium\nleak:libLLVM\n"; }
+#endif
+
+Renderer::Renderer(const ViewSettings& view, ImageSize size) : impl_(std::make_unique<Impl>(view, size)) {}
+Renderer::~Renderer() = default;
+
+Image Renderer::render(const FrameState& frame) { return impl_->draw(impl_->composer.compose(frame)); }
+std::string Renderer::glRenderer() const { return impl_->context.rendererName(); }
+std::string Renderer::glVersion() const { return impl_->context.version(); }
+
+}  // namespace sl

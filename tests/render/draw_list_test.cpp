@@ -1,0 +1,93 @@
+// The CPU part of the renderer, without any GL context: what each panel puts into the draw list.
+
+#include <gtest/gtest.h>
+
+#include "fixtures/synthetic_frame.hpp"
+#include "render/frame_composer.hpp"
+#include "render/shape_batch.hpp"
+
+namespace sl::render {
+namespace {
+
+ViewSettings fourPanels() {
+  ViewSettings view;
+  view.panels = {{PanelKind::Text, std::array<double, 4>{0, 0, 1, 0.15}, 0},
+                 {PanelKind::Sphere, std::array<double, 4>{0, 0.15, 0.5, 0.85}, 0},
+                 {PanelKind::Linkage, std::array<double, 4>{0.5, 0.15, 0.5, 0.4}, 0},
+                 {PanelKind::Plot, std::array<double, 4>{0.5, 0.55, 0.5, 0.45}, 1}};
+  view.linkageLayout = LinkageLayout::SideBySide;
+  return view;
+}
+
+bool hasProgram(const ShapeBatch& shapes, ShapeProgram program) {
+  for (const ShapeSegment& segment : shapes.segments())
+    if (segment.program == program && segment.count > 0) return true;
+  return false;
+}
+
+TEST(DrawList, OnePanelDrawingPerPanelInLayoutOrder) {
+  const FrameComposer composer(fourPanels(), {640, 360});
+  const DrawList list = composer.compose(syntheticFrame(2.0, 120));
+  ASSERT_EQ(list.panels.size(), 4u);
+  EXPECT_EQ(list.size.width, 640);
+  EXPECT_TRUE(list.sphereIsStatic);
+  // Only the sphere panel carries an impostor sphere; the text panel is text, the sphere panel lit tubes.
+  EXPECT_FALSE(list.panels[0].sphere);
+  ASSERT_TRUE(list.panels[1].sphere);
+  EXPECT_EQ(list.panels[1].sphere->look, SphereLook::Opaque);
+  EXPECT_TRUE(hasProgram(list.panels[0].shapes, ShapeProgram::Glyph));
+  EXPECT_TRUE(hasProgram(list.panels[1].shapes, ShapeProgram::Lit));
+  EXPECT_FALSE(list.panels[3].shapes.vertices().empty());
+}
+
+TEST(DrawList, ShapesStayNearTheirPanel) {
+  const FrameComposer composer(fourPanels(), {640, 360});
+  const DrawList list = composer.compose(syntheticFrame(5.0, 300));
+  for (const PanelDrawing& panel : list.panels) {
+    // Anti-aliasing fringes reach a few pixels past a shape; the scissor clips to the panel when drawn.
+    const float margin = 8;
+    for (const ShapeVertex& v : panel.shapes.vertices()) {
+      EXPECT_GE(v.x, panel.rect.x - margin);
+      EXPECT_LE(v.x, panel.rect.x + panel.rect.width + margin);
+      EXPECT_GE(v.y, panel.rect.y - margin);
+      EXPECT_LE(v.y, panel.rect.y + panel.rect.height + margin);
+    }
+  }
+}
+
+TEST(DrawList, GlassSphereForTheBallAndAnOrbitIsNotStatic) {
+  ViewSettings view = fourPanels();
+  view.camera.orbitDegreesPerSecond = 10;
+  const FrameComposer composer(view, {320, 180});
+  SyntheticOptions ball;
+  ball.viewSpace = ViewSpace::Ball;
+  const DrawList list = composer.compose(syntheticFrame(4.0, 240, ball));
+  EXPECT_FALSE(list.sphereIsStatic);
+  EXPECT_EQ(list.viewSpace, ViewSpace::Ball);
+  ASSERT_TRUE(list.panels[1].sphere);
+  EXPECT_EQ(list.panels[1].sphere->look, SphereLook::Glass);
+}
+
+TEST(DrawList, SameFrameSameDrawList) {
+  const FrameComposer composer(fourPanels(), {320, 180});
+  const DrawList a = composer.compose(syntheticFrame(3.0, 180));
+  const DrawList b = composer.compose(syntheticFrame(3.0, 180));
+  ASSERT_EQ(a.panels.size(), b.panels.size());
+  for (std::size_t i = 0; i < a.panels.size(); ++i) {
+    const auto& va = a.panels[i].shapes.vertices();
+    const auto& vb = b.panels[i].shapes.vertices();
+    ASSERT_EQ(va.size(), vb.size());
+    for (std::size_t k = 0; k < va.size(); ++k) {
+      EXPECT_EQ(va[k].x, vb[k].x);
+      EXPECT_EQ(va[k].y, vb[k].y);
+    }
+  }
+}
+
+TEST(DrawList, SizeOutsideTheLimitsIsRefusedBeforeAnyGl) {
+  EXPECT_THROW(FrameComposer(fourPanels(), {8, 100}), std::invalid_argument);
+  EXPECT_THROW(FrameComposer(fourPanels(), {100, 100000}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace sl::render
