@@ -90,6 +90,31 @@ TEST(Curvature, GaussEquationInTheOrthonormalFrame) {
     }
 }
 
+TEST(Curvature, StiffnessFrameIsBuiltFromDPhiOnTheSideOfDtInEveryChart) {
+  // e1 = d/dphi / |d/dphi|_g and e2 on the side of d/dt: the same tangent vectors (in R^3) whichever chart the
+  // derivatives were taken in, so the stiffness angle is a property of the point and of chart 0's d/dphi.
+  for (const auto& setting : testing::massSettings(3.0)) {
+    const ConfigurationSurface surface(setting.chain);
+    for (double phi : {-0.6, -0.1, 0.3, 0.7})
+      for (double t : {-2.9, -1.3, 0.2, 1.5, 2.6}) {
+        const Eigen::Vector3d x = chartZeroPoint(phi, t);
+        const SecondFundamentalForm form0 = surface.secondFundamentalForm(0, Eigen::Vector2d(phi, t));
+        const Eigen::VectorXd c1 = coordinatesInChart(sphereChartAxes(3, 1), x);
+        const SecondFundamentalForm form1 = surface.secondFundamentalForm(1, Eigen::Vector2d(c1(0), c1(1)));
+        const OrthonormalFrameForm frame0 = orthonormalFrameForm(form0, chartZeroPhiDirection(phi, t));
+        const OrthonormalFrameForm frame1 = orthonormalFrameForm(form1, chartZeroPhiDirection(phi, t));
+        // In chart 0's own rates: e1 along (1, 0), e2 with a positive dt component.
+        EXPECT_GT(frame0.e1(0), 0.0);
+        EXPECT_NEAR(frame0.e1(1), 0.0, 1e-15);
+        EXPECT_GT(frame0.e2(1), 0.0);
+        // As vectors of R^3, the same in chart 1.
+        EXPECT_LE((form0.sphereTangent * frame0.e1 - form1.sphereTangent * frame1.e1).norm(), 1e-12);
+        EXPECT_LE((form0.sphereTangent * frame0.e2 - form1.sphereTangent * frame1.e2).norm(), 1e-12);
+        EXPECT_LE((frame0.gram - frame1.gram).norm(), 1e-11 * frame0.gram.norm()) << setting.name;
+      }
+  }
+}
+
 TEST(Curvature, MirrorSymmetryOfTheChartIsTheAntipodalMap) {
   // Reflecting the whole linkage in the base line (y -> -y) is an isometry of the ambient mass metric for any
   // masses; it sends the sphere point x to -x, i.e. (phi, t) to (-phi, t + pi). It reverses orientation, so the
