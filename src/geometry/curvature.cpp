@@ -21,13 +21,13 @@ const std::vector<int>& chartAxes(int chart) {
 }
 
 // bestSphereChart and coordinatesInChart for S^2, on fixed-size vectors (the grid calls them 65,536 times per
-// map); tested equal to them.
+// map); tested equal to them (Curvature.ChartChoiceIsTheAtlasBestChart).
 int bestChart(const Eigen::Vector3d& x) {
   int best = 0;
   double bestRegularity = -1.0;
   for (int chart = 0; chart < 2; ++chart) {
     const std::vector<int>& axes = chartAxes(chart);
-    const double regularity = std::hypot(x(axes[0]), x(axes[1]));
+    const double regularity = x(axes[0]) * x(axes[0]) + x(axes[1]) * x(axes[1]);  // squared: same order
     if (regularity > bestRegularity) best = chart, bestRegularity = regularity;
   }
   return best;
@@ -35,7 +35,7 @@ int bestChart(const Eigen::Vector3d& x) {
 Eigen::Vector2d coordinatesIn(int chart, const Eigen::Vector3d& x) {
   const std::vector<int>& axes = chartAxes(chart);
   const double s0 = x(axes[0]), s1 = x(axes[1]), s2 = x(axes[2]);
-  return {std::atan2(s2, std::hypot(s0, s1)), std::atan2(s1, s0)};
+  return {std::atan2(s2, std::sqrt(s0 * s0 + s1 * s1)), std::atan2(s1, s0)};
 }
 
 double determinant3(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
@@ -126,9 +126,13 @@ OrthonormalFrameForm orthonormalFrameForm(const SecondFundamentalForm& form, con
   return out;
 }
 
-CurvatureSample ConfigurationSurface::sample(const Eigen::Vector3d& x, double phi, double t) const {
-  const SecondFundamentalForm form = secondFundamentalFormAt(x);
-  const OrthonormalFrameForm frame = orthonormalFrameForm(form, chartZeroPhiDirection(phi, t));
+CurvatureSample ConfigurationSurface::sample(const Eigen::Vector3d& x, double phi, double t,
+                                             const Eigen::Vector3d& phiDirection) const {
+  // x is a unit vector, (phi, t) its chart 0 coordinates and phiDirection chart 0's d/dphi there.
+  const int chart = bestChart(x);
+  const SecondFundamentalForm form =
+      secondFundamentalForm(chart, chart == 0 ? Eigen::Vector2d(phi, t) : coordinatesIn(chart, x));
+  const OrthonormalFrameForm frame = orthonormalFrameForm(form, phiDirection);
   CurvatureSample s;
   s.spherePoint = form.spherePoint;
   s.phi = phi;
@@ -148,12 +152,13 @@ CurvatureSample ConfigurationSurface::sample(const Eigen::Vector3d& x, double ph
 CurvatureSample ConfigurationSurface::curvatureAt(const Eigen::Vector3d& spherePoint) const {
   const Eigen::Vector3d x = spherePoint.normalized();
   const Eigen::Vector2d c = coordinatesIn(0, x);
-  return sample(x, c(0), c(1));
+  return sample(x, c(0), c(1), chartZeroPhiDirection(c(0), c(1)));
 }
 
 CurvatureSample ConfigurationSurface::curvatureAtCoordinates(double phi, double t) const {
-  const double cosPhi = std::cos(phi);
-  return sample(Eigen::Vector3d(cosPhi * std::cos(t), cosPhi * std::sin(t), std::sin(phi)), phi, t);
+  const double cosPhi = std::cos(phi), sinPhi = std::sin(phi), cosT = std::cos(t), sinT = std::sin(t);
+  return sample(Eigen::Vector3d(cosPhi * cosT, cosPhi * sinT, sinPhi), phi, t,
+                Eigen::Vector3d(-sinPhi * cosT, -sinPhi * sinT, cosPhi));
 }
 
 double ConfigurationSurface::gaussianCurvature(const Eigen::Vector3d& spherePoint) const {

@@ -86,7 +86,7 @@ class ConfigurationSurface {
   double bending(const Eigen::Vector3d& spherePoint) const;
 
  private:
-  CurvatureSample sample(const Eigen::Vector3d& x, double phi, double t) const;
+  CurvatureSample sample(const Eigen::Vector3d& x, double phi, double t, const Eigen::Vector3d& phiDirection) const;
 
   Chain chain_;
   Eigen::Matrix<double, 6, 6> mass_;

@@ -19,20 +19,21 @@ struct SecularRoot {
   bool done;
 
   SecularRoot(double n, double f, double g)
-      : near(n), far(f), gap(g), lo(std::max(std::abs(n), std::abs(f) - g)), hi(std::hypot(n, f)), mu(lo) {
+      : near(n), far(f), gap(g), lo(std::max(std::abs(n), std::abs(f) - g)), hi(std::sqrt(n * n + f * f)), mu(lo) {
     done = !(lo > 0.0);
     if (done) mu = 0.0;
   }
   void step() {
-    const double a = near / mu, b = far / (mu + gap);
+    const double r1 = 1.0 / mu, r2 = 1.0 / (mu + gap);
+    const double a = near * r1, b = far * r2;
     const double F = a * a + b * b;
     if (std::abs(F - 1.0) <= 4e-16) {  // F is only good to a few units in the last place
       done = true;
       return;
     }
     (F > 1.0 ? lo : hi) = mu;
-    const double slope = -2.0 * (a * a / mu + b * b / (mu + gap));  // F'
-    const double newton = 2.0 * F * (1.0 - std::sqrt(F)) / slope;   // -psi / psi' = 2 F (1 - sqrt F) / F'
+    const double slope = -2.0 * (a * a * r1 + b * b * r2);         // F'
+    const double newton = 2.0 * F * (1.0 - std::sqrt(F)) / slope;  // -psi / psi' = 2 F (1 - sqrt F) / F'
     if (std::abs(newton) <= 4e-16 * mu) {
       done = true;
       return;
@@ -57,7 +58,7 @@ StiffnessExtremes stiffnessExtremes(const Eigen::Matrix3d& gram) {
   // G = [[QQ, QR], [QR, RR]] = g1 u1 u1^T + g2 u2 u2^T with g1 - g2 = gap >= 0.
   // u1 = (cos psi, sin psi) with (cos 2psi, sin 2psi) = (QQ - RR, 2 QR) / gap, by half-angle formulas taken on
   // the side that does not cancel.
-  const double gap = std::hypot(QQ - RR, 2.0 * QR);
+  const double gap = std::sqrt((QQ - RR) * (QQ - RR) + 4.0 * QR * QR);
   Eigen::Vector2d u1(1.0, 0.0);
   if (gap > 0.0) {
     const double c2 = (QQ - RR) / gap, s2 = 2.0 * QR / gap;

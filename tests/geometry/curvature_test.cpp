@@ -56,6 +56,18 @@ TEST(Curvature, RoutesAgreeInBothChartsWhereBothAreRegular) {
   }
 }
 
+TEST(Curvature, ChartChoiceIsTheAtlasBestChart) {
+  const ConfigurationSurface surface(Chain::uniform(4, 3.0));
+  for (const Eigen::Vector3d& x : testing::testPoints(200)) {
+    const SecondFundamentalForm form = surface.secondFundamentalFormAt(x);
+    ASSERT_EQ(form.chart, bestSphereChart(x));
+    const Eigen::VectorXd c = coordinatesInChart(sphereChartAxes(3, form.chart), x);
+    EXPECT_NEAR(form.coords(0), c(0), 1e-15);
+    EXPECT_NEAR(std::remainder(form.coords(1) - c(1), 2 * M_PI), 0.0, 1e-15);
+    EXPECT_LE((form.spherePoint - x).norm(), 1e-15);
+  }
+}
+
 TEST(Curvature, GaussEquationInTheOrthonormalFrame) {
   // K = <A, C> - |B|^2 and |II|^2 = |A|^2 + 2|B|^2 + |C|^2 in any g-orthonormal frame.
   for (double L : testing::issueBaseLengths())
