@@ -53,6 +53,7 @@ ConfigurationSurface::ConfigurationSurface(const Chain& chain) : chain_(chain) {
 }
 
 SecondFundamentalForm ConfigurationSurface::secondFundamentalForm(int chart, const Eigen::Vector2d& coords) const {
+  if (chart < 0 || chart > 1) throw std::invalid_argument("S^2 has charts 0 and 1, got " + std::to_string(chart));
   using Jet = SecondOrderJet;
   VectorX<Jet> c(2);
   c(0) = Jet::variable(coords(0), 0);
@@ -145,6 +146,8 @@ CurvatureSample ConfigurationSurface::sample(const Eigen::Vector3d& x, double ph
   s.stiffnessMax = stiffness.max;
   s.stiffnessMin = stiffness.min;
   s.stiffnessAngle = stiffness.angleOfMax;
+  s.stiffnessDirection =
+      form.sphereTangent * (std::cos(s.stiffnessAngle) * frame.e1 + std::sin(s.stiffnessAngle) * frame.e2);
   s.areaDensity = sl::areaDensity(form);
   return s;
 }

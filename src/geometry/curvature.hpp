@@ -58,9 +58,10 @@ struct CurvatureSample {
   double gaussianCurvature = 0.0;
   double bending = 0.0;  // |II|^2
   double stiffnessMax = 0.0, stiffnessMin = 0.0;
-  double stiffnessAngle = 0.0;  // see the header comment
-  double areaDensity = 0.0;     // dA / dOmega: kinetic area per unit round area of S^2
-  Eigen::Matrix3d frameGram;    // Gram matrix of (A, B, C) in the frame of stiffnessAngle
+  double stiffnessAngle = 0.0;                                   // see the header comment
+  Eigen::Vector3d stiffnessDirection = Eigen::Vector3d::Zero();  // that direction, g-unit, as a tangent vector in R^3
+  double areaDensity = 0.0;                                      // dA / dOmega: kinetic area per unit round area of S^2
+  Eigen::Matrix3d frameGram;  // Gram matrix of (A, B, C) in the frame of stiffnessAngle
 };
 
 // The configuration sphere of one chain as a surface in the ambient mass metric. Holds what every point

@@ -3,6 +3,10 @@
 // derivatives come from the generic third-order Taylor jet (the metric needs q_a, its second derivatives need
 // q_abc), not from the second-order jet, and no normal space or projection appears.
 #include "geometry/curvature.hpp"
+
+#include <stdexcept>
+#include <string>
+
 #include "geometry/taylor_jet.hpp"
 #include "linkage/chart.hpp"
 #include "linkage/kinetic_metric.hpp"
@@ -11,6 +15,8 @@
 namespace sl {
 
 MetricJet kineticMetricJet(const Chain& chain, int chart, const Eigen::Vector2d& coords) {
+  if (chain.rods != 4) throw std::invalid_argument("Brioschi's formula is for surfaces: 4 rods");
+  if (chart < 0 || chart > 1) throw std::invalid_argument("S^2 has charts 0 and 1, got " + std::to_string(chart));
   using Jet = TaylorJet<3>;
   const std::vector<int> axes = sphereChartAxes(3, chart);
   VectorX<Jet> c(2);

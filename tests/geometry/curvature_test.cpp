@@ -123,6 +123,15 @@ TEST(Curvature, StiffnessFrameIsBuiltFromDPhiOnTheSideOfDtInEveryChart) {
         EXPECT_LE((form0.sphereTangent * frame0.e1 - form1.sphereTangent * frame1.e1).norm(), 1e-12);
         EXPECT_LE((form0.sphereTangent * frame0.e2 - form1.sphereTangent * frame1.e2).norm(), 1e-12);
         EXPECT_LE((frame0.gram - frame1.gram).norm(), 1e-11 * frame0.gram.norm()) << setting.name;
+        // The maximising direction as a vector: g-unit, tangent, and S there is the maximum.
+        const CurvatureSample s = surface.curvatureAtCoordinates(phi, t);
+        const Eigen::Vector2d rates(
+            form0.sphereTangent.col(0).dot(s.stiffnessDirection) / form0.sphereTangent.col(0).squaredNorm(),
+            form0.sphereTangent.col(1).dot(s.stiffnessDirection) / form0.sphereTangent.col(1).squaredNorm());
+        EXPECT_NEAR(s.stiffnessDirection.dot(x), 0.0, 1e-14);
+        EXPECT_NEAR(rates.dot(form0.metric * rates), 1.0, 1e-12);
+        const Eigen::Vector3d coefficients(rates(0) * rates(0), 2 * rates(0) * rates(1), rates(1) * rates(1));
+        EXPECT_NEAR(coefficients.dot(form0.gram * coefficients), s.stiffnessMax, 1e-11 * s.bending);
       }
   }
 }
@@ -270,6 +279,9 @@ TEST(Curvature, RejectsChainsThatAreNotFourRods) {
   Chain massless = Chain::uniform(4, 3.0);
   massless.hingeMasses.setZero();
   EXPECT_THROW(ConfigurationSurface{massless}, std::invalid_argument);
+  EXPECT_THROW(ConfigurationSurface(Chain::uniform(4, 3.0)).secondFundamentalForm(2, Eigen::Vector2d(0, 0)),
+               std::invalid_argument);
+  EXPECT_THROW(kineticMetricJet(Chain::uniform(5, 4.0), 0, Eigen::Vector2d(0, 0)), std::invalid_argument);
 }
 
 }  // namespace
