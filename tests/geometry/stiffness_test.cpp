@@ -74,6 +74,25 @@ TEST(Stiffness, ExactExtremesMatchDenseSamplingForRandomNormalVectors) {
   }
 }
 
+TEST(Stiffness, SecularIterationsStayFewOnRandomGramMatrices) {
+  // Cases where rounding makes F - 1 alternate in sign between neighbouring doubles once ran into the cap.
+  std::mt19937 rng(1);
+  std::normal_distribution<double> normal;
+  int worst = 0;
+  for (int k = 0; k < 100000; ++k) {
+    Eigen::Matrix<double, 4, 3> X;
+    for (int i = 0; i < 12; ++i) X.data()[i] = normal(rng);
+    const Eigen::Matrix3d gram = X.transpose() * X;
+    const StiffnessExtremes e = stiffnessExtremes(gram);
+    worst = std::max(worst, e.iterations);
+    ASSERT_LE(e.iterations, 20) << "case " << k;
+    ASSERT_GE(e.max, e.min);
+    ASSERT_NEAR(directionalStiffness(gram, e.angleOfMax), e.max, 1e-12 * gram.trace());
+    ASSERT_NEAR(directionalStiffness(gram, e.angleOfMin), e.min, 1e-12 * gram.trace());
+  }
+  RecordProperty("worst_iterations", std::to_string(worst));
+}
+
 TEST(Stiffness, DegenerateCases) {
   Eigen::MatrixXd X = Eigen::MatrixXd::Zero(4, 3);
   // A = C, B = 0: II(v, v) = A for every v, S constant.
