@@ -79,31 +79,26 @@ void gaussLegendre(int n, std::vector<double>& nodes, std::vector<double>& weigh
   if (n < 1) throw std::invalid_argument("Gauss-Legendre needs at least one node");
   nodes.assign(static_cast<size_t>(n), 0.0);
   weights.assign(static_cast<size_t>(n), 0.0);
+  // P_n(x) by the three-term recurrence and P_n'(x) = n (x P_n - P_(n-1)) / (x^2 - 1).
+  const auto legendre = [n](double x, double& derivative) {
+    double previous = 1.0, current = x;
+    for (int k = 2; k <= n; ++k) {
+      const double next = ((2.0 * k - 1.0) * x * current - (k - 1.0) * previous) / k;
+      previous = current;
+      current = next;
+    }
+    derivative = n * (x * current - previous) / (x * x - 1.0);
+    return current;
+  };
   for (int i = 0; i < (n + 1) / 2; ++i) {
-    // Newton on P_n from the asymptotic guess; P_n and P_n' by the three-term recurrence.
+    // Newton from the asymptotic guess for the i-th largest root.
     double x = std::cos(M_PI * (i + 0.75) / (n + 0.5)), derivative = 1.0;
     for (int iteration = 0; iteration < 100; ++iteration) {
-      double p0 = 1.0, p1 = x;
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      if (n == 1) p0 = 1.0, p1 = x;
-      derivative = n * (x * p1 - p0) / (x * x - 1.0);
-      const double step = p1 / derivative;
+      const double step = legendre(x, derivative) / derivative;
       x -= step;
       if (std::abs(step) <= 1e-16) break;
     }
-    {  // derivative at the converged node
-      double p0 = 1.0, p1 = x;
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      derivative = n == 1 ? 1.0 : n * (x * p1 - p0) / (x * x - 1.0);
-    }
+    legendre(x, derivative);
     const double w = 2.0 / ((1.0 - x * x) * derivative * derivative);
     nodes[static_cast<size_t>(i)] = -x;
     nodes[static_cast<size_t>(n - 1 - i)] = x;
