@@ -2,6 +2,7 @@
 #
 #   contracts   plain types, the registry of kinds, limits, time grids (uses nothing of ours)
 #   linkage     the chain model: chart, kinetic metric (spec sections 1-3)
+#   geometry    the shape of the configuration sphere: curvature, bending, stiffness (docs/geometry.md)
 #   scene       scene files -> Scene
 #   simulation  geodesic methods, integrators, runs
 #   analysis    work-precision and stability sweeps
@@ -13,16 +14,17 @@
 # Each stage is a static library sl_<stage> whose include path holds only its own folder and, through
 # linking, the folders of the stages it may use. An include of any other stage does not compile, and the
 # layer test (tests/architecture) checks every #include against this table as well.
-set(SL_STAGES contracts linkage scene simulation analysis frames render output cli)
+set(SL_STAGES contracts linkage geometry scene simulation analysis frames render output cli)
 set(SL_USES_contracts "")
 set(SL_USES_linkage contracts)
+set(SL_USES_geometry contracts linkage)
 set(SL_USES_scene contracts linkage)
 set(SL_USES_simulation contracts linkage)
 set(SL_USES_analysis contracts linkage simulation)
-set(SL_USES_frames contracts linkage scene simulation)
+set(SL_USES_frames contracts linkage geometry scene simulation)
 set(SL_USES_render contracts)
 set(SL_USES_output contracts)
-set(SL_USES_cli contracts linkage scene simulation analysis frames render output)
+set(SL_USES_cli contracts linkage geometry scene simulation analysis frames render output)
 
 # The table as a file for the layer test: one line per stage, "stage: used used ...".
 set(_layers "")
