@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contracts/limits.hpp"
+
 namespace sl::render {
 namespace {
 
@@ -24,7 +26,9 @@ SphereCamera::SphereCamera(const CameraSpec& spec, double time, const PixelRect&
   direction = {c * direction.x - s * direction.y, s * direction.x + c * direction.y, direction.z};
 
   const double shortSide = std::min(panel.width, panel.height);
-  const double fov = std::clamp(spec.fieldOfViewDegrees, 5.0, 120.0) * pi / 180.0;
+  // The scene loader refuses other angles; the clamp keeps a hand-built ViewSettings drawable.
+  const double fov =
+      std::clamp(spec.fieldOfViewDegrees, limits::kMinFieldOfViewDegrees, limits::kMaxFieldOfViewDegrees) * pi / 180.0;
   focal_ = 0.5 * shortSide / std::tan(0.5 * fov);
   // Silhouette radius in pixels of a sphere of radius R at distance D is f R / sqrt(D^2 - R^2):
   // choose D so the sphere fills 88% of the short side.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "contracts/limits.hpp"
 #include "scene/did_you_mean.hpp"
@@ -93,8 +94,12 @@ void readCamera(const JsonObject& view, CameraSpec& camera, std::vector<ScenePro
     camera.viewDirection = {(*direction)(0), (*direction)(1), (*direction)(2)};
   }
   if (const auto orbit = object.number("orbit_degrees_per_second")) camera.orbitDegreesPerSecond = *orbit;
+  std::ostringstream fovRange;
+  fovRange << "an angle from " << limits::kMinFieldOfViewDegrees << " to " << limits::kMaxFieldOfViewDegrees
+           << " degrees";
   if (const auto fov = object.number("field_of_view");
-      fov && object.checkRange("field_of_view", *fov, 1, 120, "an angle from 1 to 120 degrees")) {
+      fov && object.checkRange("field_of_view", *fov, limits::kMinFieldOfViewDegrees,
+                               limits::kMaxFieldOfViewDegrees, fovRange.str())) {
     camera.fieldOfViewDegrees = *fov;
   }
 }
