@@ -11,7 +11,13 @@ namespace sl {
 
 InitialState stateArrivingAt(const Chain& chain, const InitialState& arrival, double arrivalTime) {
   const InitialState reversed{arrival.spherePoint, -arrival.sphereVelocity};
-  Trajectory backwards(chain, reversed, referenceConfig(Method::Ambient));
+  // The chart-free method at the reference setting: the starts are then checked by the chart-based methods,
+  // independent of the method that built them.
+  RunConfig chartFree;
+  chartFree.method = Method::Ambient;
+  chartFree.integrator = tightestIntegrator();
+  chartFree.tolerance = kReferenceTolerance;
+  Trajectory backwards(chain, reversed, chartFree);
   const auto end = backwards.sampleAt(arrivalTime);
   if (!end)
     throw std::runtime_error("the backward reference run stopped (" + nameOf(backwards.stop()->reason) + " at time " +
