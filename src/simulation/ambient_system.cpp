@@ -103,7 +103,7 @@ void AmbientSystem::projectVelocities(const Eigen::Matrix2Xd& q, Eigen::Map<Eige
   v += acceleration_;
 }
 
-bool AmbientSystem::adjust(State& y) {
+bool AmbientSystem::settleBetweenSteps(State& y) {
   const Eigen::Index hinges = chain_.hingeCount();
   Eigen::Map<Eigen::Matrix2Xd> q(y.data(), 2, hinges), v(y.data() + 2 * hinges, 2, hinges);
   if (rodLengthError(chain_, q) <= projectBeyond_) return false;
@@ -113,9 +113,9 @@ bool AmbientSystem::adjust(State& y) {
   return true;
 }
 
-Observation AmbientSystem::observe(const State& y) const {
+PhysicalState AmbientSystem::physicalState(const State& y) const {
   const Eigen::Index hinges = chain_.hingeCount();
-  Observation o;
+  PhysicalState o;
   o.hinges = Eigen::Map<const Eigen::Matrix2Xd>(y.data(), 2, hinges);
   o.hingeVelocities = Eigen::Map<const Eigen::Matrix2Xd>(y.data() + 2 * hinges, 2, hinges);
   o.spherePoint = spherePointFromHinges(chain_, o.hinges);
@@ -136,10 +136,10 @@ std::string AmbientSystem::describe(const State& y) const {
 
 namespace sl {
 
-StepSummary AmbientSystem::summarize(const State& y, double previousT) const {
+StepInvariants AmbientSystem::stepInvariants(const State& y, double previousT) const {
   const Eigen::Index hinges = chain_.hingeCount();
   const Eigen::Map<const Eigen::Matrix2Xd> q(y.data(), 2, hinges), v(y.data() + 2 * hinges, 2, hinges);
-  StepSummary summary;
+  StepInvariants summary;
   summary.energy = kineticEnergy(mass_, v);
   summary.rodLengthError = rodLengthError(chain_, q);
   summary.chartZeroT = chartZeroAngleForUnwrapping(chain_, q, previousT);

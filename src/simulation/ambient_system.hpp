@@ -5,10 +5,10 @@
 // lengths have drifted past projectBeyond, positions are projected back (Newton, M-orthogonal) and then
 // velocities onto the tangent space. No chart: it passes straight through the poles.
 
+#include "contracts/run_config.hpp"
 #include "linkage/chain.hpp"
 #include "simulation/constraint_solver.hpp"
 #include "simulation/geodesic_system.hpp"
-#include "contracts/run_config.hpp"
 
 namespace sl {
 
@@ -18,9 +18,9 @@ class AmbientSystem : public GeodesicSystem {
 
   State initialState() const override { return start_; }
   void derivative(const State& y, State& dydt) const override;
-  bool adjust(State& y) override;
-  Observation observe(const State& y) const override;
-  StepSummary summarize(const State& y, double previousT) const override;
+  bool settleBetweenSteps(State& y) override;
+  PhysicalState physicalState(const State& y) const override;
+  StepInvariants stepInvariants(const State& y, double previousT) const override;
   std::string describe(const State& y) const override;
 
   long projections() const { return projections_; }

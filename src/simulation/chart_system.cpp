@@ -103,7 +103,7 @@ void ChartSystem::derivative(const State& y, State& dydt) const {
   Eigen::Map<Eigen::VectorXd>(dydt.data() + k, k) = method_.acceleration(axes_, c, v);
 }
 
-bool ChartSystem::adjust(State& y) {
+bool ChartSystem::settleBetweenSteps(State& y) {
   if (!method_.usesAtlas) return false;
   const Eigen::Index k = static_cast<Eigen::Index>(y.size() / 2);
   const Eigen::VectorXd c = Eigen::Map<const Eigen::VectorXd>(y.data(), k);
@@ -114,7 +114,7 @@ bool ChartSystem::adjust(State& y) {
   return true;
 }
 
-std::optional<MethodFailure> ChartSystem::inspect(const State& y) const {
+std::optional<MethodFailure> ChartSystem::methodFailureAt(const State& y) const {
   if (method_.usesAtlas) return std::nullopt;
   // Chart 0's latitudes live in [-pi/2, pi/2]; at the pole the chart folds back over itself and a run
   // continues on the mirror image, silently retracing its path (spec section 4's caveat). Stop on reaching
@@ -138,11 +138,11 @@ std::optional<MethodFailure> ChartSystem::inspect(const State& y) const {
   return std::nullopt;
 }
 
-Observation ChartSystem::observe(const State& y) const {
+PhysicalState ChartSystem::physicalState(const State& y) const {
   const Eigen::Index k = static_cast<Eigen::Index>(y.size() / 2);
   const Eigen::VectorXd c = Eigen::Map<const Eigen::VectorXd>(y.data(), k);
   const Eigen::VectorXd v = Eigen::Map<const Eigen::VectorXd>(y.data() + k, k);
-  Observation o;
+  PhysicalState o;
   o.spherePoint = spherePointInChart<double>(axes_, c);
   o.sphereVelocity = sphereVelocityInChart(axes_, c, v);
   o.hinges = hingePositionsInChart<double>(bound_, axes_, c);
@@ -170,14 +170,14 @@ std::string ChartSystem::describe(const State& y) const {
 
 namespace sl {
 
-StepSummary ChartSystem::summarize(const State& y, double previousT) const {
+StepInvariants ChartSystem::stepInvariants(const State& y, double previousT) const {
   const Eigen::Index k = static_cast<Eigen::Index>(y.size() / 2);
   const Eigen::VectorXd c = Eigen::Map<const Eigen::VectorXd>(y.data(), k);
   const Eigen::VectorXd v = Eigen::Map<const Eigen::VectorXd>(y.data() + k, k);
   const Eigen::VectorXd stacked = chartJacobian(bound_, axes_, c) * v;
-  StepSummary summary;
-  summary.energy = kineticEnergy(bound_.mass,
-                                 Eigen::Map<const Eigen::Matrix2Xd>(stacked.data(), 2, bound_.chain.hingeCount()));
+  StepInvariants summary;
+  summary.energy =
+      kineticEnergy(bound_.mass, Eigen::Map<const Eigen::Matrix2Xd>(stacked.data(), 2, bound_.chain.hingeCount()));
   summary.rodLengthError = rodLengthError(bound_.chain, hingePositionsInChart<double>(bound_, axes_, c));
   summary.chartZeroT =
       chart_ == 0 ? c(k - 1) : coordinatesFromSpherePoint(spherePointInChart<double>(axes_, c), previousT)(k - 1);

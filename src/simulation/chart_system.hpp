@@ -8,10 +8,10 @@
 #include <functional>
 #include <memory>
 
-#include "linkage/chain_constants.hpp"
-#include "simulation/geodesic_system.hpp"
 #include "contracts/registry.hpp"
 #include "contracts/run_config.hpp"
+#include "linkage/chain_constants.hpp"
+#include "simulation/geodesic_system.hpp"
 
 namespace sl {
 
@@ -34,10 +34,10 @@ class ChartSystem : public GeodesicSystem {
 
   State initialState() const override { return start_; }
   void derivative(const State& y, State& dydt) const override;
-  bool adjust(State& y) override;
-  std::optional<MethodFailure> inspect(const State& y) const override;
-  Observation observe(const State& y) const override;
-  StepSummary summarize(const State& y, double previousT) const override;
+  bool settleBetweenSteps(State& y) override;
+  std::optional<MethodFailure> methodFailureAt(const State& y) const override;
+  PhysicalState physicalState(const State& y) const override;
+  StepInvariants stepInvariants(const State& y, double previousT) const override;
   std::string describe(const State& y) const override;
 
   int chart() const { return chart_; }

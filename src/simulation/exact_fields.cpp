@@ -56,8 +56,9 @@ struct NestedJacobian {
   }
 
   // h_bc with inner derivatives d_a h_bc: the metric differentiated exactly.
-  static void metricAndDerivatives(const ChainConstants& bound, const std::vector<int>& axes, const Eigen::VectorXd& coords,
-                                   Eigen::MatrixXd& h, std::vector<Eigen::MatrixXd>& dh) {
+  static void metricAndDerivatives(const ChainConstants& bound, const std::vector<int>& axes,
+                                   const Eigen::VectorXd& coords, Eigen::MatrixXd& h,
+                                   std::vector<Eigen::MatrixXd>& dh) {
     const Eigen::Index k = coords.size();
     const std::vector<VectorX<Inner>> q = jacobianColumns(bound, axes, coords);
     const AmbientMassMatrix& mass = bound.mass;
@@ -89,7 +90,8 @@ struct NestedJacobian {
 };
 
 template <int K>
-std::vector<Eigen::MatrixXd> symbols(const ChainConstants& bound, const std::vector<int>& axes, const Eigen::VectorXd& coords) {
+std::vector<Eigen::MatrixXd> symbols(const ChainConstants& bound, const std::vector<int>& axes,
+                                     const Eigen::VectorXd& coords) {
   Eigen::MatrixXd h;
   std::vector<Eigen::MatrixXd> dh;
   NestedJacobian<K>::metricAndDerivatives(bound, axes, coords, h, dh);
@@ -145,16 +147,16 @@ std::vector<Eigen::MatrixXd> christoffelSymbols(const ChainConstants& bound, con
   return symbols<Eigen::Dynamic>(bound, axes, coords);
 }
 
-Eigen::VectorXd christoffelAcceleration(const ChainConstants& bound, const std::vector<int>& axes, const Eigen::VectorXd& coords,
-                                        const Eigen::VectorXd& rates) {
+Eigen::VectorXd christoffelAcceleration(const ChainConstants& bound, const std::vector<int>& axes,
+                                        const Eigen::VectorXd& coords, const Eigen::VectorXd& rates) {
   const std::vector<Eigen::MatrixXd> gamma = christoffelSymbols(bound, axes, coords);
   Eigen::VectorXd a(coords.size());
   for (Eigen::Index i = 0; i < a.size(); ++i) a(i) = -rates.dot(gamma[static_cast<size_t>(i)] * rates);
   return a;
 }
 
-Eigen::VectorXd embeddedAcceleration(const ChainConstants& bound, const std::vector<int>& axes, const Eigen::VectorXd& coords,
-                                     const Eigen::VectorXd& rates) {
+Eigen::VectorXd embeddedAcceleration(const ChainConstants& bound, const std::vector<int>& axes,
+                                     const Eigen::VectorXd& coords, const Eigen::VectorXd& rates) {
   const Eigen::MatrixXd J = chartJacobian(bound, axes, coords);
   const Eigen::MatrixXd MJ = bound.stackedMass * J;
   const Eigen::VectorXd w = secondDirectionalDerivative(bound, axes, coords, rates);

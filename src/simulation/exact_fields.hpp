@@ -12,11 +12,11 @@
 
 namespace sl {
 
-Eigen::VectorXd christoffelAcceleration(const ChainConstants& bound, const std::vector<int>& axes, const Eigen::VectorXd& coords,
-                                        const Eigen::VectorXd& rates);
+Eigen::VectorXd christoffelAcceleration(const ChainConstants& bound, const std::vector<int>& axes,
+                                        const Eigen::VectorXd& coords, const Eigen::VectorXd& rates);
 
-Eigen::VectorXd embeddedAcceleration(const ChainConstants& bound, const std::vector<int>& axes, const Eigen::VectorXd& coords,
-                                     const Eigen::VectorXd& rates);
+Eigen::VectorXd embeddedAcceleration(const ChainConstants& bound, const std::vector<int>& axes,
+                                     const Eigen::VectorXd& coords, const Eigen::VectorXd& rates);
 
 // The Christoffel symbols themselves, Gamma[i](j, k) = Gamma^i_jk, for tests.
 std::vector<Eigen::MatrixXd> christoffelSymbols(const ChainConstants& bound, const std::vector<int>& axes,

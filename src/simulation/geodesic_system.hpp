@@ -16,7 +16,7 @@ namespace sl {
 using State = std::vector<double>;
 
 // Where a state sits physically; the run derives energy, rod-length error and chart-0 coordinates.
-struct Observation {
+struct PhysicalState {
   Eigen::VectorXd spherePoint;
   Eigen::VectorXd sphereVelocity;
   Eigen::Matrix2Xd hinges;
@@ -26,7 +26,7 @@ struct Observation {
 };
 
 // What the run watches after every step.
-struct StepSummary {
+struct StepInvariants {
   double energy = 0;          // (1/2) g(v, v)
   double rodLengthError = 0;  // max_k | |p_k - p_(k-1)| - 1 |
   double chartZeroT = 0;      // chart 0's last coordinate, unwrapped near the previous one
@@ -44,11 +44,13 @@ class GeodesicSystem {
   virtual void derivative(const State& y, State& dydt) const = 0;
   // Between steps (never inside one): change chart or project onto the constraints. True when y changed,
   // which restarts the integrator from y.
-  virtual bool adjust(State& y) { return false; }
+  virtual bool settleBetweenSteps(State& y) { return false; }
   // A failure the method itself can see in a state (the single chart folding back over a pole).
-  virtual std::optional<MethodFailure> inspect(const State& y) const { return std::nullopt; }
-  virtual Observation observe(const State& y) const = 0;
-  virtual StepSummary summarize(const State& y, double previousT) const = 0;
+  virtual std::optional<MethodFailure> methodFailureAt(const State& y) const { return std::nullopt; }
+  // Hinges, sphere point and velocities of a state.
+  virtual PhysicalState physicalState(const State& y) const = 0;
+  // What the watchdogs check after a step (previousT: chart 0's last coordinate before it, for unwrapping).
+  virtual StepInvariants stepInvariants(const State& y, double previousT) const = 0;
   // A short description of the state for failure reports ("chart 1, coords (..)").
   virtual std::string describe(const State& y) const = 0;
 };

@@ -3,8 +3,8 @@
 
 #include <Eigen/Dense>
 
-#include "linkage/chain.hpp"
 #include "contracts/run_config.hpp"
+#include "linkage/chain.hpp"
 
 namespace sl {
 

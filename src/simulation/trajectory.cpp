@@ -28,10 +28,12 @@ class CountingSystem : public GeodesicSystem {
     ++evaluations;
     inner_->derivative(y, dydt);
   }
-  bool adjust(State& y) override { return inner_->adjust(y); }
-  std::optional<MethodFailure> inspect(const State& y) const override { return inner_->inspect(y); }
-  Observation observe(const State& y) const override { return inner_->observe(y); }
-  StepSummary summarize(const State& y, double previousT) const override { return inner_->summarize(y, previousT); }
+  bool settleBetweenSteps(State& y) override { return inner_->settleBetweenSteps(y); }
+  std::optional<MethodFailure> methodFailureAt(const State& y) const override { return inner_->methodFailureAt(y); }
+  PhysicalState physicalState(const State& y) const override { return inner_->physicalState(y); }
+  StepInvariants stepInvariants(const State& y, double previousT) const override {
+    return inner_->stepInvariants(y, previousT);
+  }
   std::string describe(const State& y) const override { return inner_->describe(y); }
   mutable long evaluations = 0;
 
@@ -86,16 +88,15 @@ struct Trajectory::Impl {
   std::optional<StopInfo> stop;
   InvariantExtremes extremes;
 
-  void halt(StopReason reason, double time, const std::string& detail) {
-    stop = StopInfo{reason, time, detail};
-  }
+  void halt(StopReason reason, double time, const std::string& detail) { stop = StopInfo{reason, time, detail}; }
 
   // One integration step with every watchdog; on failure the run stops at the step's start time.
   void advance() {
     const double t0 = stepper->endTime();
-    if (steps >= config.maxSteps) return halt(StopReason::MaxSteps, t0, "reached maxSteps = " + std::to_string(config.maxSteps));
+    if (steps >= config.maxSteps)
+      return halt(StopReason::MaxSteps, t0, "reached maxSteps = " + std::to_string(config.maxSteps));
     State y = stepper->endState();
-    if (system->adjust(y)) stepper->initialize(*system, y, t0);
+    if (system->settleBetweenSteps(y)) stepper->initialize(*system, y, t0);
     // A failed step is rolled back: the run ends on its last good state, which stays sampleable at the
     // stop time (never the failed step's non-finite data).
     auto haltAtLastGoodState = [&](StopReason reason, const std::string& detail) {
@@ -111,21 +112,22 @@ struct Trajectory::Impl {
     const State& end = stepper->endState();
     const double t1 = stepper->endTime();
     if (!allFinite(end) || !std::isfinite(t1))
-      return haltAtLastGoodState(StopReason::NonFinite, "state became non-finite in the step from t = " + formatTime(t0) +
-                                                   "; last good state " + system->describe(y));
+      return haltAtLastGoodState(StopReason::NonFinite,
+                                 "state became non-finite in the step from t = " + formatTime(t0) +
+                                     "; last good state " + system->describe(y));
     if (!(t1 - t0 > minimumRelativeStep * std::max(1.0, std::abs(t0))))
       return haltAtLastGoodState(StopReason::StepSizeCollapse,
                                  "step size " + formatTime(t1 - t0) + " at t = " + formatTime(t0));
-    if (const auto failure = system->inspect(end))
+    if (const auto failure = system->methodFailureAt(end))
       return haltAtLastGoodState(failure->reason, failure->detail + " at t = " + formatTime(t1));
-    const StepSummary summary = system->summarize(end, chartZeroTAtEnd);
+    const StepInvariants summary = system->stepInvariants(end, chartZeroTAtEnd);
     const double drift = std::abs(summary.energy - initialEnergy) / initialEnergy;
     if (!(drift <= config.maxRelativeEnergyDrift))
       return haltAtLastGoodState(StopReason::EnergyBlowUp,
                                  "relative energy drift " + formatTime(drift) + " at t = " + formatTime(t1));
     if (!(summary.rodLengthError <= config.maxRodLengthError))
-      return haltAtLastGoodState(
-          StopReason::RodLength, "rod-length error " + formatTime(summary.rodLengthError) + " at t = " + formatTime(t1));
+      return haltAtLastGoodState(StopReason::RodLength, "rod-length error " + formatTime(summary.rodLengthError) +
+                                                            " at t = " + formatTime(t1));
     extremes.maxRelativeEnergyDrift = std::max(extremes.maxRelativeEnergyDrift, drift);
     extremes.maxRodLengthError = std::max(extremes.maxRodLengthError, summary.rodLengthError);
     chartZeroTAtStart = chartZeroTAtEnd;
@@ -133,7 +135,7 @@ struct Trajectory::Impl {
   }
 
   Sample sample(double t, const State& y) const {
-    const Observation o = system->observe(y);
+    const PhysicalState o = system->physicalState(y);
     Sample s;
     s.time = t;
     s.spherePoint = o.spherePoint;
@@ -159,7 +161,7 @@ Trajectory::Trajectory(const Chain& chain, const InitialState& start, const RunC
   run.system = std::make_unique<CountingSystem>(makeSystem(run.bound, start, config));
   run.stepper = makeStepper(config.integrator, config.tolerance, config.step);
   run.start = run.system->initialState();
-  const StepSummary summary = run.system->summarize(
+  const StepInvariants summary = run.system->stepInvariants(
       run.start, start.spherePoint.size() >= 2 ? std::atan2(start.spherePoint(1), start.spherePoint(0)) : 0.0);
   run.initialEnergy = summary.energy;
   if (!(run.initialEnergy > 0)) throw std::invalid_argument("the initial velocity is zero: nothing moves");
