@@ -129,17 +129,4 @@ CsvTable readCsvFile(const std::string& path) {
   return readCsv(in, path);
 }
 
-void writeFileAtomically(const std::string& path, const std::string& text) {
-  const std::string temporary = path + ".partial";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error(path + ": cannot open for writing");
-    out << text;
-    if (!out) throw std::runtime_error(path + ": write failed");
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) throw std::runtime_error(path + ": cannot rename from " + temporary + ": " + error.message());
-}
-
 }  // namespace sl

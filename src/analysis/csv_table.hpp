@@ -32,7 +32,4 @@ std::string csvText(const CsvTable& table);
 CsvTable readCsv(std::istream& in, const std::string& source);
 CsvTable readCsvFile(const std::string& path);
 
-// Writes text to path through a temporary file and a rename, so readers never see a partial file.
-void writeFileAtomically(const std::string& path, const std::string& text);
-
 }  // namespace sl

@@ -16,6 +16,7 @@
 #include "analysis/work_precision_charts.hpp"
 #include "cli/commands.hpp"
 #include "contracts/registry.hpp"
+#include "output/atomic_file.hpp"
 
 namespace sl {
 
@@ -76,9 +77,9 @@ void runBench(BenchArguments& args) {
   if (showProgress) std::fprintf(stderr, "\n");
 
   const std::string csvPath = (std::filesystem::path(args.out) / "work-precision.csv").string();
-  writeFileAtomically(csvPath, csvText(workPrecisionTable(points)));
+  output::writeFileAtomically(csvPath, csvText(workPrecisionTable(points)));
   const std::string table = cheapestSettingsText(cheapestSettings(points, args.targets), args.targets);
-  writeFileAtomically((std::filesystem::path(args.out) / "cheapest-settings.txt").string(), table);
+  output::writeFileAtomically((std::filesystem::path(args.out) / "cheapest-settings.txt").string(), table);
   std::cout << "Cheapest setting reaching each max position error on every start (worst-start median wall time):\n"
             << table << "wrote " << csvPath << "\n";
   if (args.charts)

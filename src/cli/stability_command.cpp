@@ -15,6 +15,7 @@
 #include "analysis/stability_sweep.hpp"
 #include "cli/commands.hpp"
 #include "contracts/registry.hpp"
+#include "output/atomic_file.hpp"
 
 namespace sl {
 
@@ -36,10 +37,11 @@ struct StabilityArguments {
 void writeSweepOutputs(const CsvTable& rows, const StabilityArguments& args) {
   const std::string& kind = args.options.kind;
   const std::string csvPath = stabilityCsvPath(args.out, kind);
-  writeFileAtomically(csvPath, csvText(rows));
+  output::writeFileAtomically(csvPath, csvText(rows));
   const CsvTable summary = stabilitySummary(rows);
   const std::string summaryText = csvText(summary);
-  writeFileAtomically((std::filesystem::path(args.out) / ("stability-" + kind + "-summary.csv")).string(), summaryText);
+  output::writeFileAtomically((std::filesystem::path(args.out) / ("stability-" + kind + "-summary.csv")).string(),
+                              summaryText);
   std::cout << summaryText << "wrote " << csvPath << "\n";
   if (args.charts)
     for (const auto& png : writeStabilityCharts(rows, kind, args.out)) std::cout << "wrote " << png << "\n";
@@ -92,7 +94,7 @@ void runStability(StabilityArguments& args) {
     return;
   }
   const std::string shardPath = stabilityShardPath(args.out, options.kind, options.shard);
-  writeFileAtomically(shardPath, csvText(rows));
+  output::writeFileAtomically(shardPath, csvText(rows));
   std::cout << "wrote " << shardPath << "\n";
   CsvTable merged;  // the last shard to finish merges them all
   if (mergeStabilityShards(args.out, options.kind, options.shard.count, merged)) writeSweepOutputs(merged, args);

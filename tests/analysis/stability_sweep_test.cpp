@@ -9,6 +9,7 @@
 #include "analysis/measurement.hpp"
 #include "analysis/stability_sweep.hpp"
 #include "contracts/registry.hpp"
+#include "output/atomic_file.hpp"
 #include "test_paths.hpp"
 
 namespace sl {
@@ -59,7 +60,8 @@ TEST(StabilitySweep, MergedShardsEqualASingleRunByteForByte) {
     StabilityOptions shard = options;
     shard.shard = {k, 3};
     shard.threads = 1;
-    writeFileAtomically(stabilityShardPath(folder, options.kind, shard.shard), csvText(runStabilitySweep(shard)));
+    output::writeFileAtomically(stabilityShardPath(folder, options.kind, shard.shard),
+                                csvText(runStabilitySweep(shard)));
   }
   EXPECT_EQ(stabilityShardCounts(folder, options.kind), std::vector<int>{3});
   ASSERT_TRUE(mergeStabilityShards(folder, options.kind, 3, merged));
@@ -72,10 +74,10 @@ TEST(StabilitySweep, MergingShardsOfDifferentGridsIsRefused) {
   options.methods = {Method::Ambient};
   options.duration = 0.2;
   options.shard = {1, 2};
-  writeFileAtomically(stabilityShardPath(folder, "seam", options.shard), csvText(runStabilitySweep(options)));
+  output::writeFileAtomically(stabilityShardPath(folder, "seam", options.shard), csvText(runStabilitySweep(options)));
   options.grid = 3;
   options.shard = {2, 2};
-  writeFileAtomically(stabilityShardPath(folder, "seam", options.shard), csvText(runStabilitySweep(options)));
+  output::writeFileAtomically(stabilityShardPath(folder, "seam", options.shard), csvText(runStabilitySweep(options)));
   CsvTable merged;
   EXPECT_THROW(mergeStabilityShards(folder, "seam", 2, merged), std::runtime_error);
 }
