@@ -6,8 +6,8 @@
 //            (the inverse of the exponential map there): the start sits at the centre, a point at angle theta
 //            from it lands at distance theta / pi in its direction, so the great sphere orthogonal to the
 //            start is the sphere of radius 1/2 and the antipode is the boundary. For n = 5 this is one-to-one
-//            on S^3 minus the antipode, and every path stays inside the ball. (A stereographic projection,
-//            used before, sends the neighbourhood of the antipode to infinity: paths left the panel.)
+//            on S^3 minus the antipode, and every path stays inside the ball. (A stereographic projection
+//            would send the neighbourhood of the antipode to infinity, and paths off the panel.)
 //            A path through the antipode reappears on the opposite side of the boundary; the renderer
 //            leaves a gap there. For n > 5 the first three of the n-2 directions are shown.
 

@@ -1,7 +1,7 @@
 #pragma once
 // Anti-aliased 2D shapes in pixel coordinates (y down), collected on the CPU and drawn in one call.
 // Every shape carries its own analytic coverage (the fragment shader knows the distance to its edge in
-// pixels), so the frame needs no multisampling: see shaders/shapes.frag.
+// pixels), so the frame needs no multisampling: see shaders/flat.frag and shaders/lit.frag.
 
 #include <cstddef>
 #include <vector>
@@ -20,7 +20,7 @@ struct Occludable {
   float x = 0, y = 0, z = 0, w = 0;
 };
 
-// Shape kinds, mirrored in shaders/shapes.frag.
+// Shape kinds, mirrored in shaders/flat.frag and shaders/lit.frag (vKind).
 enum class ShapeKind { Capsule = 0, Disc = 1, Glyph = 3, Rect = 4 };
 
 struct ShapeVertex {

@@ -19,7 +19,10 @@ V3 normalized(const V3& v) { return (1.0 / std::sqrt(dot(v, v))) * v; }
 SphereCamera::SphereCamera(const CameraSpec& spec, double time, const PixelRect& panel, double fitRadius) {
   const double pi = std::acos(-1.0);
   V3 direction{spec.viewDirection.x, spec.viewDirection.y, spec.viewDirection.z};
-  if (!(dot(direction, direction) > 1e-12)) direction = {1, 0.6, 0.5};
+  if (!(dot(direction, direction) > 1e-12)) {  // a hand-built zero direction: the default view
+    const Vec3 fallback = CameraSpec{}.viewDirection;
+    direction = {fallback.x, fallback.y, fallback.z};
+  }
   direction = normalized(direction);
   const double orbit = spec.orbitDegreesPerSecond * time * pi / 180.0;
   const double c = std::cos(orbit), s = std::sin(orbit);
