@@ -17,12 +17,12 @@
 #include <string>
 #include <vector>
 
+#include "fixtures/synthetic_frame.hpp"
 #include "output/frame_manifest.hpp"
 #include "output/png_encoder.hpp"
 #include "output/png_sequence_sink.hpp"
 #include "output/video_sink.hpp"
 #include "render/renderer.hpp"
-#include "fixtures/synthetic_frame.hpp"
 
 namespace {
 

@@ -95,9 +95,12 @@ RenderPlan planRender(const RenderArguments& args) {
 // Identifies the render in its manifest, so shards and resumes only ever join the same render.
 nlohmann::json manifestInfo(const RenderPlan& plan) {
   const Scene& scene = plan.scene;
-  return {{"scene", scene.name},         {"sceneSha256", output::sha256OfFile(scene.file)},
-          {"width", scene.output.size.width}, {"height", scene.output.size.height},
-          {"fps", scene.output.fps},     {"frames", scene.frameCount()}};
+  return {{"scene", scene.name},
+          {"sceneSha256", output::sha256OfFile(scene.file)},
+          {"width", scene.output.size.width},
+          {"height", scene.output.size.height},
+          {"fps", scene.output.fps},
+          {"frames", scene.frameCount()}};
 }
 
 // Samples the history up to (not including) frame k, one frame at a time so that a signal is noticed even while

@@ -18,10 +18,11 @@ void runValidate(const std::string& file) {
   failOnProblems(file, checkOutputFolder(scene.output.folder, "output.folder"));
   startRuns(scene, sceneStart(scene));  // the start and every run, as render and simulate set them up
   std::cout << file << ": ok: \"" << scene.name << "\", " << scene.chain.rods << " rods, L = " << scene.chain.baseLength
-            << ", " << scene.frameCount() << " frames of " << scene.output.size.width << "x" << scene.output.size.height << " at "
-            << scene.output.fps << " fps, runs:";
+            << ", " << scene.frameCount() << " frames of " << scene.output.size.width << "x" << scene.output.size.height
+            << " at " << scene.output.fps << " fps, runs:";
   for (const RunSpec& run : scene.runs)
-    std::cout << " \"" << run.name << "\" (" << nameOf(run.config.method) << ", " << nameOf(run.config.integrator) << ")";
+    std::cout << " \"" << run.name << "\" (" << nameOf(run.config.method) << ", " << nameOf(run.config.integrator)
+              << ")";
   std::cout << '\n';
 }
 

@@ -22,7 +22,7 @@ enum class ViewSpace {
 
 // One run's state at this frame.
 struct RunFrame {
-  std::string name;        // run name from the scene
+  std::string name;  // run name from the scene
   // Labels as shown (the frames stage writes the registry's names; the renderer only displays them).
   std::string method;      // e.g. "christoffel-fd"
   ColorRGB color;          // the run's colour in every panel

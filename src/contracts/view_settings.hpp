@@ -35,15 +35,15 @@ struct ViewSettings {
   std::vector<PanelSpec> panels;  // layout order; empty = sphere + linkage + text
   CameraSpec camera;
   LinkageLayout linkageLayout = LinkageLayout::SingleRun;
-  int linkageRun = 0;  // for SingleRun
+  int linkageRun = 0;          // for SingleRun
   double pathFadeSeconds = 0;  // 0 = the path never fades
   double trailFadeSeconds = 2;
   ColorRGB background{0.96f, 0.95f, 0.92f};
   bool antialias = true;
 
-  std::vector<PlotSpec> plots;      // one per Plot panel, in layout order (PanelSpec::plotIndex)
-  std::vector<int> trailHinges;     // 1-based hinge numbers with fading trails
-  int pathSamplesPerFrame = 4;      // sphere-path points recorded per frame interval
+  std::vector<PlotSpec> plots;   // one per Plot panel, in layout order (PanelSpec::plotIndex)
+  std::vector<int> trailHinges;  // 1-based hinge numbers with fading trails
+  int pathSamplesPerFrame = 4;   // sphere-path points recorded per frame interval
 };
 
 }  // namespace sl

@@ -5,7 +5,6 @@
 #include <limits>
 #include <stdexcept>
 
-
 namespace sl {
 
 namespace {
@@ -115,8 +114,7 @@ void FrameBuilder::recordPlots(int k) {
   const Eigen::Matrix2Xd& reference = history_[0].hingesAtFrame;
   for (size_t run = 1; run < runs_.size(); ++run) {
     const Eigen::Matrix2Xd& other = history_[run].hingesAtFrame;
-    divergence_[run - 1].push_back(reference.size() == 0 || other.size() == 0 ? kNaN
-                                                                             : hingeDistance(reference, other));
+    divergence_[run - 1].push_back(reference.size() == 0 || other.size() == 0 ? kNaN : hingeDistance(reference, other));
   }
   for (RunHistory& history : history_) {
     if (history.energyErrors.size() < plotTimes_.size()) history.energyErrors.push_back(kNaN);

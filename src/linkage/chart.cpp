@@ -83,7 +83,8 @@ Eigen::MatrixXd chartJacobian(const Chain& chain, const std::vector<int>& axes, 
       2 * chain.hingeCount());
 }
 
-Eigen::MatrixXd chartJacobian(const ChainConstants& bound, const std::vector<int>& axes, const Eigen::VectorXd& coords) {
+Eigen::MatrixXd chartJacobian(const ChainConstants& bound, const std::vector<int>& axes,
+                              const Eigen::VectorXd& coords) {
   using Dual = Eigen::AutoDiffScalar<Eigen::VectorXd>;
   return forwardJacobian(
       coords, [&](const VectorX<Dual>& c) { return hingePositionsInChart<Dual>(bound, axes, c); },

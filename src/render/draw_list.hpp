@@ -26,8 +26,8 @@ struct SphereImpostor {
 
 struct PanelDrawing {
   PixelRect rect;
-  ShapeBatch shapes;                      // drawn in order, after the sphere
-  std::optional<SphereImpostor> sphere;   // sphere panels only
+  ShapeBatch shapes;                     // drawn in order, after the sphere
+  std::optional<SphereImpostor> sphere;  // sphere panels only
 };
 
 struct DrawList {
@@ -37,7 +37,7 @@ struct DrawList {
   // The sphere looks the same in every frame (fixed camera): a backend may draw it once and reuse it.
   bool sphereIsStatic = true;
   ViewSpace viewSpace = ViewSpace::Sphere;  // the sphere's look follows it
-  std::vector<PanelDrawing> panels;          // in layout order
+  std::vector<PanelDrawing> panels;         // in layout order
 };
 
 }  // namespace sl::render

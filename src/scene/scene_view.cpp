@@ -13,9 +13,7 @@ namespace sl::detail {
 
 using nlohmann::json;
 
-namespace {
-
-}  // namespace
+namespace {}  // namespace
 
 void reportUnknownName(const std::string& path, const std::string& word, const std::vector<std::string>& names,
                        std::vector<SceneProblem>& problems) {
@@ -98,8 +96,8 @@ void readCamera(const JsonObject& view, CameraSpec& camera, std::vector<ScenePro
   fovRange << "an angle from " << limits::kMinFieldOfViewDegrees << " to " << limits::kMaxFieldOfViewDegrees
            << " degrees";
   if (const auto fov = object.number("field_of_view");
-      fov && object.checkRange("field_of_view", *fov, limits::kMinFieldOfViewDegrees,
-                               limits::kMaxFieldOfViewDegrees, fovRange.str())) {
+      fov && object.checkRange("field_of_view", *fov, limits::kMinFieldOfViewDegrees, limits::kMaxFieldOfViewDegrees,
+                               fovRange.str())) {
     camera.fieldOfViewDegrees = *fov;
   }
 }

@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include "reference_frames.hpp"
 #include "fixtures/synthetic_frame.hpp"
+#include "reference_frames.hpp"
 
 namespace sl {
 namespace {

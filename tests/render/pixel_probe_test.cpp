@@ -5,11 +5,11 @@
 
 #include <cmath>
 
+#include "fixtures/synthetic_frame.hpp"
 #include "reference_frames.hpp"
 #include "render/panel_layout.hpp"
 #include "render/plane_view.hpp"
 #include "render/sphere_camera.hpp"
-#include "fixtures/synthetic_frame.hpp"
 
 namespace sl {
 namespace {

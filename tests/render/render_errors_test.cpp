@@ -7,8 +7,8 @@
 #include <limits>
 
 #include "contracts/limits.hpp"
-#include "reference_frames.hpp"
 #include "fixtures/synthetic_frame.hpp"
+#include "reference_frames.hpp"
 
 namespace sl {
 namespace {

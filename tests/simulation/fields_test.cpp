@@ -118,9 +118,10 @@ TEST(PublishedFields, AgreeWithTheExactFieldToTheirDifferenceError) {
     for (double t : {-2.5, -0.4, 0.2, 1.3, 2.9}) {
       const Eigen::Vector2d c(phi, t), v(0.6, -0.9);
       const Eigen::VectorXd exact = christoffelAcceleration(ChainConstants(chain), axes, c, v);
-      worstChristoffel =
-          std::max(worstChristoffel, (christoffelFdAcceleration(PublishedChain(3.0), c, v) - exact).norm() / exact.norm());
-      worstEmbedded = std::max(worstEmbedded, (embeddedFdAcceleration(PublishedChain(3.0), c, v) - exact).norm() / exact.norm());
+      worstChristoffel = std::max(worstChristoffel,
+                                  (christoffelFdAcceleration(PublishedChain(3.0), c, v) - exact).norm() / exact.norm());
+      worstEmbedded =
+          std::max(worstEmbedded, (embeddedFdAcceleration(PublishedChain(3.0), c, v) - exact).norm() / exact.norm());
     }
   // Central differences: eps^2 truncation plus rounding / eps (1e-5 and 1e-4 steps, second differences).
   EXPECT_LT(worstChristoffel, 1e-7);
@@ -132,7 +133,8 @@ TEST(PublishedFields, ChristoffelFdFailsOnTheSeamWhereThePublishedMetricDoes) {
   // At t = pi/2 the published metric4 divides by nu_in ~ cos t; its t-differences straddle the seam.
   const Eigen::Vector2d onSeam(0.3, M_PI / 2), v(0.5, 0.7);
   const Eigen::Vector2d published = christoffelFdAcceleration(PublishedChain(3.0), onSeam, v);
-  const Eigen::VectorXd exact = christoffelAcceleration(ChainConstants(Chain::uniform(4, 3.0)), sphereChartAxes(3, 0), onSeam, v);
+  const Eigen::VectorXd exact =
+      christoffelAcceleration(ChainConstants(Chain::uniform(4, 3.0)), sphereChartAxes(3, 0), onSeam, v);
   const bool broken = !published.allFinite() || (published - exact).norm() > 1e-3 * exact.norm();
   EXPECT_TRUE(broken) << "published " << published.transpose() << " exact " << exact.transpose();
   // The embedded-fd route never touches nu_in's division: fine on the seam.

@@ -80,8 +80,8 @@ TEST(PublishedMethods, StopWithPoleFoldBackOnAPolePassage) {
         else
           break;
       ASSERT_TRUE(run.stop()) << method << "/" << integrator << " ran through the pole";
-      std::cout << method << "/" << integrator << ": " << nameOf(run.stop()->reason) << " at t = " << run.stop()->time << " ("
-                << run.stop()->detail << ")\n";
+      std::cout << method << "/" << integrator << ": " << nameOf(run.stop()->reason) << " at t = " << run.stop()->time
+                << " (" << run.stop()->detail << ")\n";
       // Pinned: all stop at the pole; christoffel-fd under dopri5 first sees its difference quotients turn to
       // noise at |cos phi| ~ 1.5e-3 and collapses its step there.
       const bool collapses = method == "christoffel-fd" && integrator == "dopri5";
