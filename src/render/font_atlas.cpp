@@ -69,30 +69,40 @@ FontAtlas::FontAtlas(const std::string& ttfPath, const std::array<float, 3>& pix
     throw std::runtime_error("not a TrueType font: " + ttfPath);
   }
   packed_->codepoints = charset();
-  bitmap_.assign(static_cast<std::size_t>(atlasSize_) * atlasSize_, 0);
-  stbtt_pack_context context{};
-  stbtt_PackBegin(&context, bitmap_.data(), atlasSize_, atlasSize_, 0, 1, nullptr);
-  stbtt_PackSetOversampling(&context, 2, 2);
   int ascent, descent, gap;
   stbtt_GetFontVMetrics(&packed_->info, &ascent, &descent, &gap);
   for (int s = 0; s < 3; ++s) {
     packed_->heights[s] = pixelHeights[s];
-    packed_->chars[s].resize(packed_->codepoints.size());
+    const float scale = stbtt_ScaleForPixelHeight(&packed_->info, pixelHeights[s]);
+    packed_->ascent[s] = scale * ascent;
+    packed_->lineHeight[s] = scale * (ascent - descent + gap);
+  }
+  // The atlas grows with the text: 1024 px holds the three sizes up to frames about 1250 px tall; taller
+  // frames (up to limits::kMaxImageSide) need up to 8192 px, still below llvmpipe's largest texture.
+  for (atlasSize_ = 1024; atlasSize_ <= kMaxAtlasSize; atlasSize_ *= 2)
+    if (pack(pixelHeights)) return;
+  delete packed_;
+  throw std::runtime_error("font atlas of " + std::to_string(kMaxAtlasSize) + " px too small for text of " +
+                           std::to_string(pixelHeights[2]) + " px");
+}
+
+bool FontAtlas::pack(const std::array<float, 3>& pixelHeights) {
+  bitmap_.assign(static_cast<std::size_t>(atlasSize_) * atlasSize_, 0);
+  stbtt_pack_context context{};
+  stbtt_PackBegin(&context, bitmap_.data(), atlasSize_, atlasSize_, 0, 1, nullptr);
+  stbtt_PackSetOversampling(&context, 2, 2);
+  bool packed = true;
+  for (int s = 0; s < 3 && packed; ++s) {
+    packed_->chars[s].assign(packed_->codepoints.size(), stbtt_packedchar{});
     stbtt_pack_range range{};
     range.font_size = pixelHeights[s];
     range.array_of_unicode_codepoints = packed_->codepoints.data();
     range.num_chars = static_cast<int>(packed_->codepoints.size());
     range.chardata_for_range = packed_->chars[s].data();
-    if (!stbtt_PackFontRanges(&context, fontData_.data(), 0, &range, 1)) {
-      stbtt_PackEnd(&context);
-      delete packed_;
-      throw std::runtime_error("font atlas too small for text of " + std::to_string(pixelHeights[s]) + " px");
-    }
-    const float scale = stbtt_ScaleForPixelHeight(&packed_->info, pixelHeights[s]);
-    packed_->ascent[s] = scale * ascent;
-    packed_->lineHeight[s] = scale * (ascent - descent + gap);
+    packed = stbtt_PackFontRanges(&context, fontData_.data(), 0, &range, 1) != 0;
   }
   stbtt_PackEnd(&context);
+  return packed;
 }
 
 FontAtlas::~FontAtlas() { delete packed_; }

@@ -33,7 +33,9 @@ class FontAtlas {
 
  private:
   struct Packed;
+  static constexpr int kMaxAtlasSize = 8192;
   int glyphIndex(std::uint32_t codepoint) const;
+  bool pack(const std::array<float, 3>& pixelHeights);  // into an atlas of atlasSize_; false if it does not fit
   int atlasSize_ = 1024;
   std::vector<std::uint8_t> bitmap_;
   std::vector<std::uint8_t> fontData_;
