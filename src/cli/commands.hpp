@@ -17,5 +17,7 @@ void addListMethodsCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
 // `linkage stability`: stability maps over grids of starts, sharded and merged.
 void addStabilityCommand(CLI::App& app);
+// `linkage geometry`: curvature, bending and stiffness of the configuration sphere.
+void addGeometryCommand(CLI::App& app);
 
 }  // namespace sl

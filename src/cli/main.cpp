@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   sl::addListMethodsCommand(app);
   sl::addBenchCommand(app);
   sl::addStabilityCommand(app);
+  sl::addGeometryCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {

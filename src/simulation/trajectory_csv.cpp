@@ -6,15 +6,11 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "contracts/csv_format.hpp"
+
 namespace sl {
 
 namespace {
-
-void appendNumber(std::string& line, double value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  line.append(buffer, result.ptr);
-}
 
 std::vector<std::string> splitFields(const std::string& line) {
   std::vector<std::string> fields;
@@ -55,7 +51,7 @@ std::string trajectoryCsvRow(const std::string& run, const Sample& s, const std:
   std::string line = run;
   auto add = [&line](double v) {
     line += ',';
-    appendNumber(line, v);
+    appendShortest(line, v);
   };
   add(s.time);
   for (Eigen::Index i = 0; i < s.coords.size(); ++i) add(s.coords(i));

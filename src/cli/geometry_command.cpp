@@ -1,0 +1,298 @@
+// `linkage geometry SCENE.json`: the shape of the scene's configuration sphere (4 rods, the scene's L and masses):
+// exact Gaussian curvature, bending and stiffness on a grid or at given points, a summary with the Gauss-Bonnet
+// integral and the extrema, and a sweep over L (docs/geometry.md).
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <numbers>
+#include <sstream>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "analysis/gnuplot.hpp"
+#include "cli/commands.hpp"
+#include "cli/exit_codes.hpp"
+#include "cli/scene_input.hpp"
+#include "contracts/csv_format.hpp"
+#include "geometry/curvature_grid.hpp"
+#include "output/atomic_file.hpp"
+
+namespace sl {
+
+namespace {
+
+constexpr int kMaxGrid = 4096;  // 16.7 million samples, about 20 s on 2 cores
+constexpr int kMaxSweepCount = 1000;
+constexpr int kDefaultMapGrid = 181;  // one degree of phi per row
+
+struct GeometryArguments {
+  std::string scene;
+  int grid = 0;
+  std::string points;
+  bool summary = false;
+  std::string sweep;  // A:B:N
+  std::string csv;    // empty: stdout
+  std::string chart;  // sweep chart PNG
+  std::string maps;   // folder for PNG maps of K, bending, stiffness
+  bool quiet = false;
+};
+
+const char* kSampleColumns = "phi,t,K,bending,stiffness_max,stiffness_min,stiffness_angle";
+
+std::string sampleRow(const CurvatureSample& s) {
+  std::string row;
+  for (double v : {s.phi, s.t, s.gaussianCurvature, s.bending, s.stiffnessMax, s.stiffnessMin, s.stiffnessAngle}) {
+    if (!row.empty()) row += ',';
+    appendShortest(row, v);
+  }
+  return row;
+}
+
+std::string samplesCsv(const std::vector<CurvatureSample>& samples) {
+  std::string text = std::string(kSampleColumns) + "\n";
+  for (const CurvatureSample& s : samples) text += sampleRow(s) + "\n";
+  return text;
+}
+
+// Rows "phi,t" after a header line; names the file, line and field of the first problem.
+std::vector<Eigen::Vector2d> readPoints(const std::string& file) {
+  std::ifstream in(file);
+  if (!in) throw CommandExit(kExitBadInput, file + ": cannot open for reading");
+  std::vector<Eigen::Vector2d> points;
+  std::string line;
+  if (!std::getline(in, line) || line.rfind("phi,t", 0) != 0)
+    throw CommandExit(kExitBadInput, file + ":1: expected the header 'phi,t'");
+  for (long number = 2; std::getline(in, line); ++number) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty()) continue;
+    std::istringstream fields(line);
+    std::string phi, t;
+    std::getline(fields, phi, ',');
+    std::getline(fields, t, ',');
+    try {
+      std::size_t usedPhi = 0, usedT = 0;
+      const Eigen::Vector2d p(std::stod(phi, &usedPhi), std::stod(t, &usedT));
+      if (usedPhi != phi.size() || usedT != t.size() || !p.allFinite()) throw std::invalid_argument("");
+      points.push_back(p);
+    } catch (const std::exception&) {
+      throw CommandExit(kExitBadInput, file + ":" + std::to_string(number) +
+                                           ": expected two finite numbers phi,t, got '" + line + "'");
+    }
+  }
+  return points;
+}
+
+void writeOrPrint(const std::string& file, const std::string& text) {
+  if (file.empty()) {
+    std::cout << text << std::flush;
+    if (!std::cout) throw CommandExit(kExitFailure, "linkage geometry: cannot write to standard output");
+  } else {
+    output::writeFileAtomically(file, text);
+  }
+}
+
+nlohmann::json extremumJson(const SurfaceExtremum& e) { return {{"value", e.value}, {"phi", e.phi}, {"t", e.t}}; }
+
+nlohmann::json summaryJson(const CurvatureSummary& s) {
+  return {{"L", s.baseLength},
+          {"area", s.area},
+          {"total_curvature", s.totalCurvature},
+          {"gauss_bonnet_error", s.gaussBonnetError},
+          {"K_min", extremumJson(s.curvatureMin)},
+          {"K_max", extremumJson(s.curvatureMax)},
+          {"bending_max", extremumJson(s.bendingMax)}};
+}
+
+struct SweepRange {
+  double first = 0, last = 0;
+  int count = 0;
+};
+
+SweepRange parseSweep(const std::string& text, const Chain& chain) {
+  const std::string expected = "expected --sweep-L A:B:N with " + std::to_string(chain.rods - 2) + " < A <= B < " +
+                               std::to_string(chain.rods) + " and N from 1 to " + std::to_string(kMaxSweepCount);
+  std::istringstream in(text);
+  std::string a, b, n;
+  std::getline(in, a, ':');
+  std::getline(in, b, ':');
+  std::getline(in, n);
+  SweepRange range;
+  try {
+    std::size_t ua = 0, ub = 0, un = 0;
+    range.first = std::stod(a, &ua);
+    range.last = std::stod(b, &ub);
+    range.count = std::stoi(n, &un);
+    if (ua != a.size() || ub != b.size() || un != n.size()) throw std::invalid_argument("");
+  } catch (const std::exception&) {
+    throw CommandExit(kExitBadInput, "--sweep-L: found '" + text + "'; " + expected);
+  }
+  const double lo = chain.rods - 2, hi = chain.rods;
+  if (!(range.first > lo && range.last < hi && range.first <= range.last) || range.count < 1 ||
+      range.count > kMaxSweepCount || (range.count == 1 && range.first != range.last))
+    throw CommandExit(kExitBadInput, "--sweep-L: found '" + text + "'; " + expected);
+  return range;
+}
+
+std::string sweepCsv(const std::vector<CurvatureSummary>& sweep) {
+  std::string text = "L,area,total_curvature,K_min,K_min_phi,K_min_t,K_max,K_max_phi,K_max_t,bending_max\n";
+  for (const CurvatureSummary& s : sweep) {
+    std::string row;
+    for (double v : {s.baseLength, s.area, s.totalCurvature, s.curvatureMin.value, s.curvatureMin.phi, s.curvatureMin.t,
+                     s.curvatureMax.value, s.curvatureMax.phi, s.curvatureMax.t, s.bendingMax.value}) {
+      if (!row.empty()) row += ',';
+      appendShortest(row, v);
+    }
+    text += row + "\n";
+  }
+  return text;
+}
+
+// min K and max K (left axis, symmetric log-free linear) and the area (right axis) against L; the L where
+// min K crosses zero, if it does in the range, marked.
+void renderSweepChart(const std::vector<CurvatureSummary>& sweep, const std::string& png) {
+  std::vector<std::string> lines;
+  for (const CurvatureSummary& s : sweep)
+    lines.push_back(shortest(s.baseLength) + " " + shortest(s.curvatureMin.value) + " " +
+                    shortest(s.curvatureMax.value) + " " + shortest(s.area));
+  std::string script = gnuplotPngPreamble(png, 1200, 700) + gnuplotDatablock("sweep", lines);
+  script +=
+      "set title 'Curvature of the configuration sphere against L' noenhanced\n"
+      "set xlabel 'L (distance between the pins)'\nset ylabel 'Gaussian curvature K'\n"
+      "set y2label 'area'\nset ytics nomirror\nset y2tics\nset grid\nset key top center horizontal\n"
+      "set logscale y2\nset xzeroaxis lt -1\n";
+  for (std::size_t i = 1; i < sweep.size(); ++i) {
+    const double a = sweep[i - 1].curvatureMin.value, b = sweep[i].curvatureMin.value;
+    if (a < 0 && b >= 0) {
+      const double l = sweep[i - 1].baseLength + (sweep[i].baseLength - sweep[i - 1].baseLength) * (-a) / (b - a);
+      script += "set arrow from " + shortest(l) + ", graph 0 to " + shortest(l) +
+                ", graph 1 nohead dt 2 lc rgb '#555555'\n" + "set label " +
+                gnuplotQuote("K > 0 everywhere for L > " + shortest(std::round(l * 1000) / 1000)) + " at " +
+                shortest(l) + ", graph 0.93 offset 1,0\n";
+    }
+  }
+  script +=
+      "plot $sweep using 1:2 with linespoints lw 2 pt 7 ps 0.6 lc rgb '#0072b2' title 'min K', "
+      "$sweep using 1:3 with linespoints lw 2 pt 5 ps 0.6 lc rgb '#d55e00' title 'max K', "
+      "$sweep using 1:4 axes x1y2 with lines lw 2 dt 3 lc rgb '#009e73' title 'area (right axis)'\n";
+  renderGnuplotChart(script, png);
+}
+
+// An equirectangular map (t across, phi up) of one column of a grid, with its colour bar. K gets a diverging
+// palette with white at zero and each sign stretched over its own range, so small negative regions stay visible
+// beside large positive ones (the bar gives the values); the others a sequential, colour-blind-safe palette.
+void renderMap(const ChartGrid& grid, const std::vector<CurvatureSample>& samples, int column, const std::string& title,
+               const std::string& png) {
+  std::vector<std::string> lines;
+  double lo = INFINITY, hi = -INFINITY;
+  for (std::size_t i = 0; i < grid.phis.size(); ++i) {
+    for (std::size_t j = 0; j < grid.ts.size(); ++j) {
+      const CurvatureSample& s = samples[i * grid.ts.size() + j];
+      const double v = column == 0 ? s.gaussianCurvature : column == 1 ? s.bending : s.stiffnessMax;
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+      lines.push_back(shortest(grid.ts[j]) + " " + shortest(grid.phis[i]) + " " + shortest(v));
+    }
+    lines.emplace_back();  // a blank line ends a scan line for gnuplot's image style
+  }
+  std::string palette;
+  if (column == 0 && lo < 0 && hi > 0) {
+    palette = "set palette defined (" + shortest(lo) + " '#2166ac', " + shortest(lo / 2) + " '#92c5de', 0 '#f7f7f7', " +
+              shortest(hi / 2) + " '#f4a582', " + shortest(hi) + " '#b2182b')\nset cbrange [" + shortest(lo) + ":" +
+              shortest(hi) + "]\nset cbtics add ('0' 0)\n";
+  } else {  // viridis: sequential and colour-blind safe
+    palette = "set palette defined (0 '#440154', 1 '#3b528b', 2 '#21918c', 3 '#5ec962', 4 '#fde725')\n";
+  }
+  std::string script = gnuplotPngPreamble(png, 1200, 640) + gnuplotDatablock("map", lines);
+  script += "set title " + gnuplotQuote(title) +
+            " noenhanced\nset xlabel 't'\nset ylabel 'phi'\nset xrange [-pi:pi]\nset yrange [-pi/2:pi/2]\n"
+            "set xtics ('-pi' -pi, '-pi/2' -pi/2, '0' 0, 'pi/2' pi/2, 'pi' pi)\n"
+            "set ytics ('-pi/2' -pi/2, '-pi/4' -pi/4, '0' 0, 'pi/4' pi/4, 'pi/2' pi/2)\n" +
+            palette + "plot $map using 1:2:3 with image notitle\n";
+  renderGnuplotChart(script, png);
+}
+
+void runGeometry(const GeometryArguments& args) {
+  const auto started = std::chrono::steady_clock::now();
+  const int modes = (args.grid > 0 || !args.maps.empty()) + !args.points.empty() + args.summary + !args.sweep.empty();
+  if (modes != 1)
+    throw CommandExit(kExitBadInput,
+                      "linkage geometry: expected exactly one of --grid N (with --csv and/or --maps DIR), "
+                      "--points FILE, --summary, --sweep-L A:B:N");
+  if (!args.chart.empty() && args.sweep.empty())
+    throw CommandExit(kExitBadInput, "--chart: draws the L sweep; expected --sweep-L A:B:N with it");
+  const Scene scene = loadSceneForCommand(args.scene);
+  if (scene.chain.rods != 4)
+    throw CommandExit(kExitBadInput, args.scene + ": linkage.rods: found " + std::to_string(scene.chain.rods) +
+                                         "; the curvature of the configuration space is computed for 4 rods "
+                                         "(a surface, S^2) only");
+  const ConfigurationSurface surface(scene.chain);
+  std::string done;
+  if (args.grid > 0 || !args.maps.empty()) {
+    const int n = args.grid > 0 ? args.grid : kDefaultMapGrid;
+    const ChartGrid grid = uniformChartGrid(n, n);
+    const std::vector<CurvatureSample> samples = curvatureGrid(surface, grid.phis, grid.ts);
+    if (!args.csv.empty() || args.maps.empty()) writeOrPrint(args.csv, samplesCsv(samples));
+    if (!args.maps.empty()) {
+      std::filesystem::create_directories(args.maps);
+      const std::string where = " (L = " + shortest(scene.chain.baseLength) + ", \"" + scene.name + "\")";
+      renderMap(grid, samples, 0, "Gaussian curvature K" + where, args.maps + "/curvature.png");
+      renderMap(grid, samples, 1, "bending |II|^2" + where, args.maps + "/bending.png");
+      renderMap(grid, samples, 2, "largest directional stiffness" + where, args.maps + "/stiffness.png");
+    }
+    done =
+        std::to_string(n) + " x " + std::to_string(n) + " grid" + (args.maps.empty() ? "" : ", maps in " + args.maps);
+  } else if (!args.points.empty()) {
+    const std::vector<Eigen::Vector2d> points = readPoints(args.points);
+    writeOrPrint(args.csv, samplesCsv(curvatureSamples(surface, points)));
+    done = std::to_string(points.size()) + " points";
+  } else if (args.summary) {
+    writeOrPrint(args.csv, summaryJson(curvatureSummary(scene.chain)).dump(2) + "\n");
+    done = "summary";
+  } else {
+    const SweepRange range = parseSweep(args.sweep, scene.chain);
+    const std::vector<CurvatureSummary> sweep = curvatureSweep(scene.chain, range.first, range.last, range.count);
+    writeOrPrint(args.csv, sweepCsv(sweep));
+    if (!args.chart.empty()) renderSweepChart(sweep, args.chart);
+    done = "L sweep of " + std::to_string(range.count) + " values";
+  }
+  if (!args.quiet) {
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    std::ostringstream line;
+    line.precision(3);
+    line << "geometry: " << done << " of \"" << scene.name << "\" (L = " << scene.chain.baseLength << ") in " << seconds
+         << " s" << (args.csv.empty() ? "" : " -> " + args.csv);
+    std::cerr << line.str() << '\n';
+  }
+}
+
+}  // namespace
+
+void addGeometryCommand(CLI::App& app) {
+  auto args = std::make_shared<GeometryArguments>();
+  CLI::App* command = app.add_subcommand(
+      "geometry", "Curvature, bending and stiffness of the scene's configuration sphere (4 rods), exact");
+  command->add_option("scene", args->scene, "scene file (JSON, see scenes/README.md): its linkage is used")->required();
+  command->add_option("--grid", args->grid, "N x N chart grid (phi from pole to pole, t periodic): CSV")
+      ->check(CLI::Range(2, kMaxGrid));
+  command->add_option("--points", args->points, "CSV file of chart points (header phi,t): the same columns there");
+  command->add_flag("--summary", args->summary,
+                    "JSON: area, total curvature (4 pi by Gauss-Bonnet), min and max K, max bending");
+  command->add_option("--sweep-L", args->sweep, "A:B:N: the summary for N values of L from A to B, as CSV");
+  command->add_option("--csv", args->csv, "write here instead of standard output (written whole or not at all)");
+  command->add_option("--chart", args->chart, "with --sweep-L: a PNG chart of min K, max K and area against L");
+  command->add_option("--maps", args->maps, "folder for PNG maps of K, bending and stiffness over (phi, t)");
+  command->add_flag("--quiet", args->quiet, "no summary line");
+  command->footer(
+      "Columns of --grid and --points: phi,t,K,bending,stiffness_max,stiffness_min,stiffness_angle\n"
+      "Examples:\n  linkage geometry scenes/default.json --summary\n"
+      "  linkage geometry scenes/default.json --grid 256 --csv renders/curvature.csv\n"
+      "  linkage geometry scenes/default.json --sweep-L 2.1:3.9:37 --csv renders/sweep.csv --chart renders/sweep.png");
+  command->callback([args] { runGeometry(*args); });
+}
+
+}  // namespace sl
