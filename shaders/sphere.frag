@@ -1,10 +1,12 @@
 // The configuration sphere as a ray-traced impostor on a panel-sized quad: exact silhouette coverage,
 // per-pixel normals, and the (phi, t) chart grid drawn analytically (lines of constant pixel width).
-// Mode 0: the opaque cream sphere with grid and poles. Mode 1: a faint glassy reference sphere.
+// Mode 0: the opaque cream sphere with grid and poles. Mode 1: a faint glassy reference sphere. Mode 2: mode 0
+// with the colours of a scalar field (uField: a texture over (t, phi), render/color_map.hpp) under a fainter grid.
 uniform vec3 uSphereColor;
 uniform vec3 uGridColor;
 uniform vec3 uPoleColor;
 uniform int uMode;
+uniform sampler2D uField;
 out vec4 fragColor;
 
 const float PI = 3.14159265358979;
@@ -42,7 +44,14 @@ void main() {
     fragColor = vec4(uGridColor * glass * cover, glass * cover);
     return;
   }
-  vec3 base = mix(uSphereColor, uGridColor, 0.75 * gridCoverage(p));
+  vec3 base;
+  if (uMode == 2) {
+    vec2 chart = vec2(atan(p.y, p.x), asin(clamp(p.z, -1.0, 1.0)));  // (t, phi)
+    vec3 field = texture(uField, vec2(chart.x / (2.0 * PI) + 0.5, chart.y / PI + 0.5)).rgb;
+    base = mix(field, uGridColor, 0.3 * gridCoverage(p));
+  } else {
+    base = mix(uSphereColor, uGridColor, 0.75 * gridCoverage(p));
+  }
   // The chart's poles phi = +-90deg (x1 = x2 = 0), where t is undefined: small dark caps.
   float poleDistance = length(p.xy) / max(length(vec2(length(dFdx(p.xy)), length(dFdy(p.xy)))), 1e-6);
   float poleRadius = 0.035 / max(length(vec2(length(dFdx(p.xy)), length(dFdy(p.xy)))), 1e-6);

@@ -5,6 +5,7 @@
 // sphere-panel points are 3D points of the view (unit sphere for 4 rods, see ViewSpace).
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -56,6 +57,29 @@ struct PlotFrame {
   std::vector<PlotSeries> series;
 };
 
+// A scalar field over the sphere of ViewSpace::Sphere, sampled at the cell centres of an equirectangular grid:
+// value(i, j) at phi = -pi/2 + (i + 1/2) pi / phiCount, t = -pi + (j + 1/2) 2 pi / tCount, the point
+// (cos phi cos t, cos phi sin t, sin phi). The renderer colours the sphere with it and draws its colour bar.
+struct SphereField {
+  std::string label;       // what the colour bar says, e.g. "Gaussian curvature K"
+  bool diverging = false;  // signed: a diverging map centred at zero, each sign stretched over its own range
+  int phiCount = 0, tCount = 0;
+  std::vector<float> values;  // row-major [phi][t]
+  double min = 0, max = 0;    // over the grid
+};
+
+// A stiffness ellipse on the sphere: the curve centre + cos(a) major + sin(a) minor, tangent at centre.
+struct SphereEllipse {
+  Vec3 centre, major, minor;
+};
+
+// What the sphere panel draws on and over the sphere, the same in every frame (shared, never copied).
+struct SphereDecoration {
+  std::optional<SphereField> field;
+  std::vector<SphereEllipse> ellipses;
+  std::string ellipseCaption;  // a line explaining the ellipses
+};
+
 struct FrameState {
   int index = 0;          // frame number in the whole animation
   double time = 0;        // simulation time of this frame
@@ -66,6 +90,7 @@ struct FrameState {
   ViewSpace viewSpace = ViewSpace::Sphere;
   std::vector<RunFrame> runs;
   std::vector<PlotFrame> plots;  // one per plot panel, in layout order
+  std::shared_ptr<const SphereDecoration> sphereDecoration;  // null: the plain sphere
 };
 
 }  // namespace sl

@@ -101,6 +101,14 @@ inline constexpr std::array<Named<LinkageLayout>, 3> kLinkageLayouts{{
     {LinkageLayout::Overlay, "overlay"},
 }};
 
+// What colours the sphere panel's sphere (4 rods; geometry/curvature.hpp computes the values).
+enum class SphereColoring { None, Curvature, Bending };
+inline constexpr std::array<Named<SphereColoring>, 3> kSphereColorings{{
+    {SphereColoring::None, "none"},
+    {SphereColoring::Curvature, "curvature"},
+    {SphereColoring::Bending, "bending"},
+}};
+
 // === Look-ups, the same for every table
 
 template <class Table>

@@ -31,9 +31,17 @@ struct PlotSpec {
   bool logY = true;
 };
 
+// The sphere panel's surface (4 rods only): colour by a geometric quantity, stiffness ellipses on top.
+struct SphereSurfaceSpec {
+  SphereColoring colorBy = SphereColoring::None;
+  bool stiffness = false;
+  bool decorated() const { return colorBy != SphereColoring::None || stiffness; }
+};
+
 struct ViewSettings {
   std::vector<PanelSpec> panels;  // layout order; empty = sphere + linkage + text
   CameraSpec camera;
+  SphereSurfaceSpec sphereSurface;
   LinkageLayout linkageLayout = LinkageLayout::SingleRun;
   int linkageRun = 0;          // for SingleRun
   double pathFadeSeconds = 0;  // 0 = the path never fades

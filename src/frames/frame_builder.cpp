@@ -5,6 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "frames/sphere_decoration.hpp"
+
 namespace sl {
 
 namespace {
@@ -43,7 +45,8 @@ FrameBuilder::FrameBuilder(const Scene& scene, const InitialState& start, std::v
       view_(scene.chain.rods, start.spherePoint),
       frameCount_(scene.frameCount()),
       history_(runs_.size()),
-      divergence_(runs_.empty() ? 0 : runs_.size() - 1) {
+      divergence_(runs_.empty() ? 0 : runs_.size() - 1),
+      sphereDecoration_(makeSphereDecoration(scene.chain, scene.view.sphereSurface)) {
   for (size_t i = 0; i < runs_.size(); ++i) {
     RunFrame& frame = history_[i].frame;
     frame.name = scene.runs[i].name;
@@ -130,6 +133,7 @@ FrameState FrameBuilder::snapshot(int k) const {
   state.rods = scene_.chain.rods;
   state.baseLength = scene_.chain.baseLength;
   state.viewSpace = view_.space();
+  state.sphereDecoration = sphereDecoration_;
   for (const RunHistory& history : history_) state.runs.push_back(history.frame);
   for (const PlotSpec& spec : scene_.view.plots) {
     PlotFrame plot;

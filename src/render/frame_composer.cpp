@@ -44,6 +44,7 @@ DrawList FrameComposer::compose(const FrameState& frame) const {
   list.antialias = view_.antialias;
   list.sphereIsStatic = view_.camera.orbitDegreesPerSecond == 0;
   list.viewSpace = frame.viewSpace;
+  list.sphereDecoration = frame.sphereDecoration;
   for (std::size_t i = 0; i < panels_.size(); ++i) {
     PanelDrawing drawing;
     drawing.rect = rects_[i];

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/color_map.hpp"
 #include "render/palette.hpp"
 #include "render/panels.hpp"
 
@@ -93,17 +94,70 @@ void drawEquator(const SphereCamera& camera, ShapeBatch& batch) {
   batch.polyline(points);
 }
 
+// Stiffness ellipses as thin dark rings riding on the sphere, hidden where the sphere is in front of them.
+void drawEllipses(const std::vector<SphereEllipse>& ellipses, const SphereCamera& camera, const Placement& placement,
+                  const PixelRect& rect, ShapeBatch& batch) {
+  constexpr int kSegments = 40;
+  const float halfWidth = std::max(0.6f, 0.0011f * rect.height);
+  const V3 eye = camera.eye();
+  const double eyeDistance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
+  for (const SphereEllipse& e : ellipses) {
+    // Seen edge-on near the outline an ellipse is a meaningless dash: fade it out there.
+    const double facing = (e.centre.x * eye.x + e.centre.y * eye.y + e.centre.z * eye.z) / eyeDistance;
+    const float alpha = float(0.85 * std::clamp((facing - 0.2) / 0.25, 0.0, 1.0));
+    if (alpha <= 0) continue;
+    const Rgba color = palette::withAlpha(palette::ink, alpha);
+    std::vector<PolylinePoint> points;
+    bool visible = true;
+    for (int k = 0; k <= kSegments && visible; ++k) {
+      const double a = 2 * std::acos(-1.0) * k / kSegments;
+      const Vec3 p{e.centre.x + std::cos(a) * e.major.x + std::sin(a) * e.minor.x,
+                   e.centre.y + std::cos(a) * e.major.y + std::sin(a) * e.minor.y,
+                   e.centre.z + std::cos(a) * e.major.z + std::sin(a) * e.minor.z};
+      const V3 placed = placement.place(p);
+      visible = camera.inFront(placed);
+      points.push_back({camera.project(placed), halfWidth, color, placement.world(placed)});
+    }
+    if (visible) batch.polyline(points);
+  }
+}
+
+// The strip at the panel's right kept for the colour bar (the sphere is framed in the rest).
+float colorBarStrip(const PixelRect& rect) { return std::min(0.24f * rect.width, 0.45f * rect.height); }
+
 }  // namespace
 
 SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   const ViewSpace space = context.frame.viewSpace;
-  SphereCamera camera(context.settings.camera, context.frame.time, context.rect);
+  const SphereDecoration* decoration =
+      space == ViewSpace::Sphere ? context.frame.sphereDecoration.get() : nullptr;  // 4 rods only
+  const bool colored = decoration && decoration->field;
+  PixelRect sphereRect = context.rect;
+  if (colored) sphereRect.width -= colorBarStrip(context.rect);
+  SphereCamera camera(context.settings.camera, context.frame.time, sphereRect);
   const Placement placement{space == ViewSpace::Sphere, kTubeRadius};
   if (space == ViewSpace::Circle) drawEquator(camera, batch);
+  if (decoration) {
+    const float pad = 0.02f * context.rect.height;
+    const Placement onSurface{true, 0.004};
+    drawEllipses(decoration->ellipses, camera, onSurface, context.rect, batch);
+    if (!decoration->ellipseCaption.empty()) {
+      context.font.draw(batch, decoration->ellipseCaption, TextSize::Small, context.rect.x + pad,
+                        context.rect.y + context.rect.height - pad, palette::softInk);
+    }
+    if (colored) {
+      const SphereField& field = *decoration->field;
+      const PixelRect bar{context.rect.x + context.rect.width - colorBarStrip(context.rect), context.rect.y + pad,
+                          colorBarStrip(context.rect) - pad, 0.8f * context.rect.height};
+      drawColorBar(scaleOf(field), field.label, field.diverging ? "each sign on its own scale" : "", bar,
+                   context.font, batch);
+    }
+  }
   for (const RunFrame& run : context.frame.runs)
     drawPath(run, context, camera, placement, space == ViewSpace::Ball, batch);
   for (const RunFrame& run : context.frame.runs) drawBall(run, camera, placement, batch);
-  return {camera, space == ViewSpace::Sphere ? SphereLook::Opaque : SphereLook::Glass};
+  const SphereLook look = colored ? SphereLook::Colored : space == ViewSpace::Sphere ? SphereLook::Opaque : SphereLook::Glass;
+  return {camera, look};
 }
 
 }  // namespace sl::render

@@ -53,7 +53,7 @@ void readLinkage(const json& value, Scene& scene, std::vector<SceneProblem>& pro
   chain.rodMasses = Eigen::VectorXd::Zero(n);
   if (const auto masses = linkage.numbers("hinge_masses")) {
     if (linkage.checkSize("hinge_masses", *masses, n - 1, "one per interior hinge, n-1")) {
-      if (masses->minCoeff() <= 0) linkage.report("hinge_masses", "expected positive masses");
+      if (masses->minCoeff() < 0) linkage.report("hinge_masses", "expected non-negative masses");
       chain.hingeMasses = *masses;
     }
   }
@@ -61,6 +61,15 @@ void readLinkage(const json& value, Scene& scene, std::vector<SceneProblem>& pro
     if (linkage.checkSize("rod_masses", *masses, n, "one per rod, n")) {
       if (masses->minCoeff() < 0) linkage.report("rod_masses", "expected non-negative masses");
       chain.rodMasses = *masses;
+    }
+  }
+  // A hinge may carry no point mass when a rod beside it has mass: the kinetic energy still sees it move.
+  for (Eigen::Index j = 0; j < chain.hingeMasses.size() && j + 1 < chain.rodMasses.size(); ++j) {
+    if (chain.hingeMasses(j) == 0 && chain.rodMasses(j) == 0 && chain.rodMasses(j + 1) == 0) {
+      linkage.report("hinge_masses", "hinge " + std::to_string(j + 1) +
+                                         " carries no mass, and neither do the rods beside it; expected a positive "
+                                         "hinge mass or a massive rod next to it");
+      break;
     }
   }
 }

@@ -151,16 +151,38 @@ void readFades(const JsonObject& view, Scene& scene) {
   }
 }
 
+// "sphere": how the sphere panel's surface is coloured and decorated. The geometry behind it (curvature,
+// bending, stiffness; docs/geometry.md) is that of a surface, so 4 rods only.
+void readSphereSurface(const JsonObject& view, Scene& scene, std::vector<SceneProblem>& problems) {
+  const JsonObject object(*view.member("sphere"), view.pathOf("sphere"), problems, {"color_by", "stiffness"});
+  if (!object.isObject()) return;
+  SphereSurfaceSpec& surface = scene.view.sphereSurface;
+  if (const auto name = object.string("color_by")) {
+    if (const auto kind = pickKind(object.pathOf("color_by"), *name, kSphereColorings, problems))
+      surface.colorBy = *kind;
+  }
+  surface.stiffness = object.boolean("stiffness").value_or(false);
+  if (scene.chain.rods != 4 && surface.decorated()) {
+    const std::string why = "found " + std::to_string(scene.chain.rods) +
+                            " rods; curvature, bending and stiffness are drawn for 4 rods only (the configuration "
+                            "space is then a surface, S^2)";
+    if (surface.colorBy != SphereColoring::None) object.report("color_by", why);
+    if (surface.stiffness) object.report("stiffness", why);
+    surface = {};
+  }
+}
+
 }  // namespace
 
 void readView(const json& value, Scene& scene, std::vector<SceneProblem>& problems) {
   const JsonObject view(value, "view", problems,
                         {"panels", "camera", "linkage_layout", "linkage_run", "trails", "trail_fade_seconds",
-                         "path_fade_seconds", "path_samples_per_frame", "background", "antialias"});
+                         "path_fade_seconds", "path_samples_per_frame", "background", "antialias", "sphere"});
   if (!view.isObject()) return;
   ViewSettings& render = scene.view;
   readPanels(view, scene, problems);
   if (view.has("camera")) readCamera(view, render.camera, problems);
+  if (view.has("sphere")) readSphereSurface(view, scene, problems);
   readLinkageChoice(view, scene, problems);
   readTrails(view, scene);
   readFades(view, scene);

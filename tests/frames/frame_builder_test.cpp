@@ -168,3 +168,48 @@ TEST(FrameBuilder, RefusesFramesOutOfOrder) {
 
 }  // namespace
 }  // namespace sl
+
+// view.sphere: the decoration is computed once from the exact geometry and shared by every frame.
+#include "frames/sphere_decoration.hpp"
+#include "geometry/curvature.hpp"
+
+namespace sl {
+namespace {
+
+TEST(SphereDecoration, CurvatureFieldMatchesTheGeometryAndEllipsesAreTangent) {
+  const Chain chain = Chain::uniform(4, 3.0);
+  EXPECT_EQ(makeSphereDecoration(chain, {}), nullptr);
+  const auto decoration = makeSphereDecoration(chain, {SphereColoring::Curvature, true});
+  ASSERT_NE(decoration, nullptr);
+  ASSERT_TRUE(decoration->field);
+  const SphereField& field = *decoration->field;
+  EXPECT_TRUE(field.diverging);
+  ASSERT_EQ(field.values.size(), std::size_t(field.phiCount * field.tCount));
+  // The range: K from about -0.272 to 4.15 at L = 3 (docs/geometry.md); the grid's cell centres come close.
+  EXPECT_NEAR(field.min, -0.2718, 2e-3);
+  EXPECT_NEAR(field.max, 4.15, 0.1);
+  // A value at its cell centre is the surface's K there.
+  const ConfigurationSurface surface(chain);
+  const double pi = std::acos(-1.0);
+  const int i = 83, j = 177;
+  const double phi = -pi / 2 + (i + 0.5) * pi / field.phiCount, t = -pi + (j + 0.5) * 2 * pi / field.tCount;
+  EXPECT_NEAR(field.values[i * field.tCount + j], surface.curvatureAtCoordinates(phi, t).gaussianCurvature, 1e-6);
+
+  ASSERT_EQ(decoration->ellipses.size(), std::size_t(kStiffnessEllipses));
+  for (const SphereEllipse& e : decoration->ellipses) {
+    const Eigen::Vector3d c(e.centre.x, e.centre.y, e.centre.z), major(e.major.x, e.major.y, e.major.z),
+        minor(e.minor.x, e.minor.y, e.minor.z);
+    EXPECT_NEAR(c.norm(), 1.0, 1e-12);
+    EXPECT_NEAR(c.dot(major), 0.0, 1e-12);
+    EXPECT_NEAR(c.dot(minor), 0.0, 1e-12);
+    EXPECT_GE(major.norm(), minor.norm() - 1e-15);
+    EXPECT_GT(major.norm(), 0.0);
+  }
+  const auto bending = makeSphereDecoration(chain, {SphereColoring::Bending, false});
+  EXPECT_FALSE(bending->field->diverging);
+  EXPECT_GT(bending->field->min, 0.0);
+  EXPECT_TRUE(bending->ellipses.empty());
+}
+
+}  // namespace
+}  // namespace sl

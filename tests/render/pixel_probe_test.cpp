@@ -137,5 +137,36 @@ TEST_F(PixelProbe, BallViewLeavesAGapWhereThePathJumpsThroughTheAntipode) {
   EXPECT_FALSE(isRunRed(gap)) << "a line crosses the ball: " << gap.r << " " << gap.g << " " << gap.b;
 }
 
+// view.sphere.color_by: the sphere carries the field's colours where the field says. A field that is positive on
+// the northern hemisphere and negative on the southern one, seen from the equator: red above, blue below.
+TEST_F(PixelProbe, ColouredSphereShowsTheFieldWhereItIs) {
+  auto decoration = std::make_shared<SphereDecoration>();
+  SphereField field{"K", true, 32, 64, {}, -1.0, 2.0};
+  for (int i = 0; i < field.phiCount; ++i)
+    for (int j = 0; j < field.tCount; ++j) field.values.push_back(i < field.phiCount / 2 ? -1.0f : 2.0f);
+  decoration->field = field;
+  FrameState colored = probeFrame();
+  colored.runs.clear();
+  colored.sphereDecoration = decoration;
+  ViewSettings side = settings;
+  side.camera.viewDirection = {1, 0, 0};
+  Renderer sideRenderer(side, testing::kSmallSize);
+  const Image picture = sideRenderer.render(colored);
+  render::PixelRect rect = panelRect(side, PanelKind::Sphere);
+  // The sphere is framed left of the colour bar: find its centre through the same camera the panel uses.
+  rect.width -= std::min(0.24f * rect.width, 0.45f * rect.height);
+  const render::SphereCamera sideCamera(side.camera, colored.time, rect);
+  const render::P2 north = sideCamera.project({std::cos(40 * kDeg), 0, std::sin(40 * kDeg)});
+  const render::P2 south = sideCamera.project({std::cos(40 * kDeg), 0, -std::sin(40 * kDeg)});
+  const Rgb8 up = pixel(picture, int(north.x) + 2, int(north.y) + 2);
+  const Rgb8 down = pixel(picture, int(south.x) + 2, int(south.y) - 2);
+  EXPECT_GT(up.r, up.b + 60) << up.r << " " << up.g << " " << up.b;
+  EXPECT_GT(down.b, down.r + 40) << down.r << " " << down.g << " " << down.b;
+  // The same frame without the decoration is the cream sphere.
+  colored.sphereDecoration = nullptr;
+  const Rgb8 plain = pixel(sideRenderer.render(colored), int(north.x) + 2, int(north.y) + 2);
+  EXPECT_TRUE(isCream(plain)) << plain.r << " " << plain.g << " " << plain.b;
+}
+
 }  // namespace
 }  // namespace sl

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <stdexcept>
 
+#include "render/color_map.hpp"
 #include "render/draw_list.hpp"
 #include "render/frame_composer.hpp"
 #include "render/gl/gl.hpp"
@@ -34,9 +35,11 @@ struct Renderer::Impl {
   ImageSize size;
   GlContext context;
   ShaderProgram flat, glyph, lit, sphere;
-  GLuint vertexArray = 0, vertexBuffer = 0, glyphTexture = 0;
+  GLuint vertexArray = 0, vertexBuffer = 0, glyphTexture = 0, fieldTexture = 0;
   std::unique_ptr<GlLayer> sphereLayer;
   ViewSpace cachedSpace = ViewSpace::Sphere;
+  const SphereDecoration* uploadedDecoration = nullptr;
+  const SphereDecoration* cachedDecoration = nullptr;  // the decoration the cached sphere layer shows  // the field in fieldTexture (and in the cached layer)
 
   Impl(const ViewSettings& view, ImageSize frameSize)
       : composer(view, frameSize),
@@ -52,6 +55,7 @@ struct Renderer::Impl {
 
   ~Impl() {
     glDeleteTextures(1, &glyphTexture);
+    if (fieldTexture) glDeleteTextures(1, &fieldTexture);
     glDeleteBuffers(1, &vertexBuffer);
     glDeleteVertexArrays(1, &vertexArray);
   }
@@ -83,6 +87,21 @@ struct Renderer::Impl {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
+
+  // The colours of a sphere field as a texture over (t, phi): repeated in t (periodic), clamped in phi, filtered
+  // linearly between the cell-centre samples (frame_state.hpp's SphereField).
+  void uploadField(const SphereField& field) {
+    if (!fieldTexture) glGenTextures(1, &fieldTexture);
+    glBindTexture(GL_TEXTURE_2D, fieldTexture);
+    const std::vector<std::uint8_t> texels = fieldTexels(field);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, field.tCount, field.phiCount, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 texels.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   }
 
@@ -132,6 +151,16 @@ struct Renderer::Impl {
     color("uGridColor", view.look == SphereLook::Opaque ? palette::sphereGrid : palette::glass);
     color("uPoleColor", palette::poleMark);
     glUniform1i(sphere.uniform("uMode"), int(view.look));
+    if (view.look == SphereLook::Colored && list.sphereDecoration && list.sphereDecoration->field) {
+      if (uploadedDecoration != list.sphereDecoration.get()) {
+        uploadField(*list.sphereDecoration->field);
+        uploadedDecoration = list.sphereDecoration.get();
+      }
+      glActiveTexture(GL_TEXTURE1);
+      glBindTexture(GL_TEXTURE_2D, fieldTexture);
+      glUniform1i(sphere.uniform("uField"), 1);
+      glActiveTexture(GL_TEXTURE0);
+    }
     // The camera looks at the sphere's centre, so its outline is a circle of radius f / sqrt(D^2 - 1)
     // about the panel centre: a quad just around it saves the shader a quarter of the panel's pixels.
     const V3 eye = view.camera.eye();
@@ -149,12 +178,13 @@ struct Renderer::Impl {
   // (on the background colour, as in the frame) and copy that rectangle into every frame.
   void drawSphereCached(const DrawList& list, const SphereImpostor& view, const PixelRect& rect) {
     if (!list.sphereIsStatic) return drawSphere(list, view);
-    if (!sphereLayer || cachedSpace != list.viewSpace) {
+    if (!sphereLayer || cachedSpace != list.viewSpace || cachedDecoration != list.sphereDecoration.get()) {
       if (!sphereLayer) sphereLayer = std::make_unique<GlLayer>(size.width, size.height);
       sphereLayer->bind();
       clearToBackground(list);
       drawSphere(list, view);
       cachedSpace = list.viewSpace;
+      cachedDecoration = list.sphereDecoration.get();
       context.bindFramebuffer();
     }
     sphereLayer->copyTo(context.framebuffer(), rect);

@@ -1,0 +1,110 @@
+// Colour scales and colour bars (render/color_map.hpp), and the sphere panel's decoration, without GL.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "fixtures/synthetic_frame.hpp"
+#include "render/color_map.hpp"
+#include "render/frame_composer.hpp"
+
+namespace sl::render {
+namespace {
+
+float lightness(Rgba c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+TEST(ColorScale, DivergingIsCentredAtZeroWithEachSignOnItsOwnRange) {
+  const ColorScale scale{-0.25, 4.0, true};
+  EXPECT_DOUBLE_EQ(scale.position(0.0), 0.5);
+  EXPECT_DOUBLE_EQ(scale.position(-0.25), 0.0);
+  EXPECT_DOUBLE_EQ(scale.position(4.0), 1.0);
+  EXPECT_DOUBLE_EQ(scale.position(-0.125), 0.25);  // half the negative range: a quarter of the map
+  EXPECT_DOUBLE_EQ(scale.position(2.0), 0.75);
+  for (double v : {-0.25, -0.1, 0.0, 0.3, 4.0}) EXPECT_NEAR(scale.valueAt(scale.position(v)), v, 1e-12) << v;
+  // White in the middle, blue below, red above.
+  const Rgba zero = scale.colorAt(0.5), low = scale.colorAt(0.0), high = scale.colorAt(1.0);
+  EXPECT_GT(std::min({zero.r, zero.g, zero.b}), 0.95f);
+  EXPECT_GT(low.b, low.r + 0.3f);
+  EXPECT_GT(high.r, high.b + 0.3f);
+  // Positive-only data: the map's lower half is never used.
+  const ColorScale positive{0.5, 4.0, true};
+  EXPECT_GT(positive.lowest(), 0.5);
+  EXPECT_DOUBLE_EQ(positive.highest(), 1.0);
+}
+
+TEST(ColorScale, SequentialIsMonotoneInLightness) {
+  const ColorScale scale{0.7, 18.4, false};
+  EXPECT_DOUBLE_EQ(scale.position(0.7), 0.0);
+  EXPECT_DOUBLE_EQ(scale.position(18.4), 1.0);
+  EXPECT_DOUBLE_EQ(scale.position(100.0), 1.0);  // clamped
+  float previous = -1;
+  for (int k = 0; k <= 64; ++k) {
+    const float l = lightness(scale.colorAt(k / 64.0));
+    EXPECT_GT(l, previous) << k;
+    previous = l;
+  }
+  EXPECT_DOUBLE_EQ(ColorScale({1, 1, false}).position(1), 0.5);  // a constant field: no division by zero
+}
+
+TEST(ColorScale, FieldTexelsFollowTheScale) {
+  SphereField field;
+  field.diverging = true;
+  field.phiCount = 2;
+  field.tCount = 3;
+  field.values = {-1, 0, 2, 2, 0, -1};
+  field.min = -1;
+  field.max = 2;
+  const std::vector<std::uint8_t> texels = fieldTexels(field);
+  ASSERT_EQ(texels.size(), 6u * 4);
+  EXPECT_GT(texels[2], texels[0]);      // the first value is blue
+  EXPECT_GT(texels[8], texels[10]);     // the third is red
+  EXPECT_EQ(texels[12], texels[8]);     // equal values, equal colours
+  for (int i = 0; i < 6; ++i) EXPECT_EQ(texels[4 * i + 3], 255);
+}
+
+// Every shape of a colour bar lies inside its area, and the label and ticks are drawn (glyphs exist).
+TEST(ColorBar, StaysInsideItsArea) {
+  const FrameComposer composer(ViewSettings{}, {640, 360});
+  ShapeBatch batch;
+  const PixelRect area{500, 20, 120, 300};
+  drawColorBar({-0.27, 4.15, true}, "Gaussian curvature K", "each sign on its own scale", area, composer.font(), batch);
+  ASSERT_GT(batch.vertices().size(), 96u * 6);
+  for (const ShapeVertex& v : batch.vertices()) {
+    EXPECT_GE(v.x, area.x - 1);
+    EXPECT_LE(v.x, area.x + area.width + 2);
+    EXPECT_GE(v.y, area.y - 1);
+    EXPECT_LE(v.y, area.y + area.height + 1);
+  }
+  // Too small to read: nothing rather than an illegible bar.
+  ShapeBatch tiny;
+  drawColorBar({-1, 1, true}, "K", "", {0, 0, 40, 30}, composer.font(), tiny);
+  EXPECT_TRUE(tiny.vertices().empty());
+}
+
+// A decorated frame: the sphere is coloured, framed left of the colour bar, and ellipses are drawn.
+TEST(SpherePanel, DecorationColoursTheSphereAndMakesRoomForTheBar) {
+  ViewSettings settings;
+  settings.panels = {{PanelKind::Sphere, std::nullopt, 0}};
+  const FrameComposer composer(settings, {640, 360});
+  FrameState frame = syntheticFrame(1.0, 30);
+  const DrawList plain = composer.compose(frame);
+  ASSERT_TRUE(plain.panels[0].sphere);
+  EXPECT_EQ(plain.panels[0].sphere->look, SphereLook::Opaque);
+
+  auto decoration = std::make_shared<SphereDecoration>();
+  decoration->field = SphereField{"K", true, 2, 4, std::vector<float>(8, 1.0f), -1.0, 1.0};
+  decoration->ellipses.push_back({{0.6, 0.4, 0.7}, {0.0, 0.05, 0.0}, {0.02, 0.0, 0.0}});
+  frame.sphereDecoration = decoration;
+  const DrawList colored = composer.compose(frame);
+  ASSERT_TRUE(colored.panels[0].sphere);
+  EXPECT_EQ(colored.panels[0].sphere->look, SphereLook::Colored);
+  EXPECT_EQ(colored.sphereDecoration.get(), decoration.get());
+  EXPECT_LT(colored.panels[0].sphere->camera.centre().x, plain.panels[0].sphere->camera.centre().x);
+  EXPECT_GT(colored.panels[0].shapes.vertices().size(), plain.panels[0].shapes.vertices().size() + 96 * 6);
+
+  // 5+ rods: a decoration is never drawn into the ball view.
+  frame.viewSpace = ViewSpace::Ball;
+  EXPECT_EQ(composer.compose(frame).panels[0].sphere->look, SphereLook::Glass);
+}
+
+}  // namespace
+}  // namespace sl::render
