@@ -172,7 +172,16 @@ void runRender(const RenderArguments& args) {
   std::unique_ptr<output::VideoSink> videoSink;
   std::vector<output::FrameSink*> sinks;
   if (plan.png) {
-    pngManifest = std::make_unique<output::FrameManifest>(plan.folder, info);
+    // A whole render replaces what the folder held (the edit-render loop); shards and --resume only join.
+    const bool whole = args.frames.empty() && !plan.resume;
+    pngManifest = std::make_unique<output::FrameManifest>(
+        plan.folder, info, "manifest.json", output::FrameManifest::Existing::merge,
+        whole ? output::FrameManifest::Claim::supersede : output::FrameManifest::Claim::join);
+    if (const auto earlier = pngManifest->supersededInfo(); earlier && !plan.quiet) {
+      std::cerr << "replacing the earlier render in " << plan.folder << " ("
+                << earlier->value("scene", std::string("unknown scene")) << ", " << pngManifest->supersededFrames()
+                << " frames removed)\n";
+    }
     pngManifest->addRenderer(renderer.glRenderer(), renderer.glVersion());
     pngSink = std::make_unique<output::PngSequenceSink>(plan.folder, *pngManifest);
     sinks.push_back(pngSink.get());

@@ -15,5 +15,8 @@ inline constexpr int kMaxFps = 1000;
 inline constexpr int kMaxPathSamplesPerFrame = 100;
 inline constexpr double kMinFieldOfViewDegrees = 5;
 inline constexpr double kMaxFieldOfViewDegrees = 120;
+// How long a render waits for a lock another process holds on its output folder before giving up (a process
+// stopped with SIGSTOP, or hung, holds it for ever); it says what it waits for after the first second.
+inline constexpr double kMaxLockWaitSeconds = 60;
 
 }  // namespace sl::limits

@@ -6,12 +6,17 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <set>
 #include <stdexcept>
+#include <thread>
 
+#include "contracts/limits.hpp"
 #include "output/atomic_file.hpp"
 #include "output/sha256.hpp"
 
@@ -20,16 +25,57 @@ namespace {
 
 constexpr const char* kFormat = "sphere-linkages frame manifest 1";
 
+// flock(2) with a bounded wait: polls, says once (after a second) what it waits for, and gives up after
+// limits::kMaxLockWaitSeconds naming the file. A process stopped while holding a lock must not hang the others.
+// The environment variable LINKAGE_LOCK_WAIT (seconds) overrides the bound, e.g. for a cluster whose shared file
+// system is slow to answer.
+double maxLockWaitSeconds() {
+  if (const char* text = std::getenv("LINKAGE_LOCK_WAIT")) {
+    char* end = nullptr;
+    const double seconds = std::strtod(text, &end);
+    if (end != text && *end == '\0' && std::isfinite(seconds) && seconds >= 0) return seconds;
+  }
+  return limits::kMaxLockWaitSeconds;
+}
+
+void lockWithTimeout(int fd, int operation, const std::string& path) {
+  using Clock = std::chrono::steady_clock;
+  const double maxWait = maxLockWaitSeconds();
+  const auto start = Clock::now();
+  bool announced = false;
+  while (::flock(fd, operation | LOCK_NB) != 0) {
+    if (errno != EWOULDBLOCK && errno != EINTR) throw std::runtime_error("cannot lock " + path + ": " + std::strerror(errno));
+    const double waited = std::chrono::duration<double>(Clock::now() - start).count();
+    if (waited > maxWait)
+      throw std::runtime_error("gave up after " + std::to_string(int(maxWait)) + " s waiting for " +
+                               path + ": another process holds it (a render stopped or hung in this folder?)");
+    if (!announced && waited > 1.0) {
+      std::cerr << "waiting for " << path << ", held by another process (at most " << int(maxWait)
+                << " s; LINKAGE_LOCK_WAIT sets the bound)\n";
+      announced = true;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+}
+
+int openLockFile(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd < 0) throw std::runtime_error("cannot open lock file " + path + ": " + std::strerror(errno));
+  return fd;
+}
+
 // flock(2) on <folder>/.<manifest name>.lock for the lifetime of the object: serialises merges between
 // processes. The manifest itself cannot carry the lock: each write replaces it with a new file.
 class ManifestLock {
  public:
   ManifestLock(const std::string& folder, const std::string& manifestName) {
     const std::string path = folder + "/." + manifestName + ".lock";
-    fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd_ < 0) throw std::runtime_error("cannot open lock file " + path + ": " + std::strerror(errno));
-    while (::flock(fd_, LOCK_EX) != 0) {
-      if (errno != EINTR) throw std::runtime_error("cannot lock " + path + ": " + std::strerror(errno));
+    fd_ = openLockFile(path);
+    try {
+      lockWithTimeout(fd_, LOCK_EX, path);
+    } catch (...) {
+      ::close(fd_);
+      throw;
     }
   }
   ~ManifestLock() {
@@ -42,6 +88,12 @@ class ManifestLock {
  private:
   int fd_ = -1;
 };
+
+std::string describeRender(const nlohmann::json& info) {
+  if (info.is_object() && info.contains("scene") && info["scene"].is_string())
+    return "scene \"" + info["scene"].get<std::string>() + "\"";
+  return "info " + info.dump();
+}
 
 nlohmann::json toJson(const FrameEntry& e) {
   nlohmann::json j{{"frame", e.frame}, {"pixelSha256", e.pixelSha256}};
@@ -56,14 +108,29 @@ FrameEntry fromJson(const nlohmann::json& j) {
 
 }  // namespace
 
-FrameManifest::FrameManifest(std::string folder, nlohmann::json info, std::string fileName, Existing existing)
+FrameManifest::FrameManifest(std::string folder, nlohmann::json info, std::string fileName, Existing existing,
+                             Claim claim)
     : folder_(std::move(folder)),
       fileName_(std::move(fileName)),
       info_(std::move(info)),
       existing_(existing),
       lastFlush_(std::chrono::steady_clock::now()) {
   std::filesystem::create_directories(folder_);
-  if (existing_ == Existing::merge) reload();
+  if (existing_ != Existing::merge) return;
+  const std::string activePath = folder_ + "/." + fileName_ + ".active";
+  activeFd_ = openLockFile(activePath);
+  try {
+    lockWithTimeout(activeFd_, LOCK_SH, activePath);  // waits only while a render takes the folder over
+    if (claim == Claim::supersede) {
+      ManifestLock lock(folder_, fileName_);
+      const nlohmann::json manifest = readAnyLocked();
+      if (manifest.at("info") != info_) supersedeLocked(manifest);
+    }
+    reload();
+  } catch (...) {
+    ::close(activeFd_);
+    throw;
+  }
 }
 
 FrameManifest::~FrameManifest() {
@@ -72,6 +139,25 @@ FrameManifest::~FrameManifest() {
   } catch (...) {
     // A destructor must not throw; callers who care call flush() themselves and see the error.
   }
+  if (activeFd_ >= 0) ::close(activeFd_);  // releases the shared claim
+}
+
+void FrameManifest::supersedeLocked(const nlohmann::json& other) {
+  // Exclusive only if no other render (of any scene) holds its shared claim: never waited for.
+  if (::flock(activeFd_, LOCK_EX | LOCK_NB) != 0) {
+    throw std::runtime_error("the folder " + folder_ + " holds a render of " + describeRender(other.at("info")) +
+                             " that is still running; wait for it to finish, stop it, or render elsewhere (--out)");
+  }
+  for (const auto& j : other.at("frames")) {
+    const std::string file = j.value("file", "");
+    // Only names of this program's own pattern, inside the folder: a manifest is data, not a list of paths to trust.
+    if (file.rfind("frame_", 0) != 0 || file.find('/') != std::string::npos) continue;
+    std::error_code error;
+    if (std::filesystem::remove(std::filesystem::path(folder_) / file, error)) ++supersededFrames_;
+  }
+  writeFileAtomically(path(), emptyManifest().dump(1) + "\n", Sync::data);
+  supersededInfo_ = other.at("info");
+  ::flock(activeFd_, LOCK_SH);  // back to a shared claim, like every render in the folder
 }
 
 nlohmann::json FrameManifest::emptyManifest() const {
@@ -82,6 +168,17 @@ nlohmann::json FrameManifest::emptyManifest() const {
 }
 
 nlohmann::json FrameManifest::readLocked() const {
+  nlohmann::json manifest = readAnyLocked();
+  if (manifest.at("info") != info_)
+    throw std::runtime_error("the folder " + folder_ + " holds a render of " + describeRender(manifest.at("info")) +
+                             " (manifest " + path() + "), not of this one: " + manifest.at("info").dump() + " vs " +
+                             info_.dump() +
+                             ". Shards (--frames) and --resume only join the same render; a whole render (without "
+                             "--frames or --resume) replaces it, or use another --out");
+  return manifest;
+}
+
+nlohmann::json FrameManifest::readAnyLocked() const {
   std::ifstream in(path());
   if (!in) return emptyManifest();
   nlohmann::json manifest;
@@ -89,12 +186,10 @@ nlohmann::json FrameManifest::readLocked() const {
     manifest = nlohmann::json::parse(in);
     if (manifest.at("format") != kFormat) throw std::runtime_error("unknown format " + manifest.at("format").dump());
     manifest.at("frames").get_ref<const nlohmann::json::array_t&>();
+    manifest.at("info");
   } catch (const std::exception& e) {
     throw std::runtime_error("manifest " + path() + " is not a frame manifest: " + e.what());
   }
-  if (manifest.at("info") != info_)
-    throw std::runtime_error("manifest " + path() + " belongs to a different render: its info is " +
-                             manifest.at("info").dump() + ", this render's is " + info_.dump());
   return manifest;
 }
 

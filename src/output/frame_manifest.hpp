@@ -20,6 +20,13 @@
 // equals a single run byte for byte. After SIGKILL at most the last 0.5 s of entries are missing; their
 // frames are simply rendered again on resume. A video render records pixel hashes only (file empty).
 //
+// One folder, one render. Every merge-mode manifest holds a shared flock(2) on <folder>/.<name>.active for its
+// lifetime. Claim::join (shards, --resume) refuses a folder whose manifest belongs to another render.
+// Claim::supersede (a whole new render) takes that folder over instead: only when no other render is active
+// there (an exclusive lock on .active, never waited for), it deletes the frames the old manifest lists and
+// starts an empty manifest of its own, all under the manifest lock; so a render of another scene can neither
+// join nor replace it while it runs. Lock waits are bounded (limits::kMaxLockWaitSeconds) and announced.
+//
 // Existing::replace is for a file that is always written whole (a video): the manifest on disk, of any
 // earlier render, is neither read nor merged nor locked but replaced by this render's entries, written only
 // by flush() (record() does not flush part-way). A manifest with no entries recorded is never written.
@@ -47,8 +54,9 @@ struct FrameEntry {
 class FrameManifest {
  public:
   enum class Existing { merge, replace };
+  enum class Claim { join, supersede };
   FrameManifest(std::string folder, nlohmann::json info, std::string fileName = "manifest.json",
-                Existing existing = Existing::merge);
+                Existing existing = Existing::merge, Claim claim = Claim::join);
   ~FrameManifest();  // flushes; never throws
   FrameManifest(const FrameManifest&) = delete;
   FrameManifest& operator=(const FrameManifest&) = delete;
@@ -65,10 +73,15 @@ class FrameManifest {
   void reload();
 
   std::string path() const { return folder_ + "/" + fileName_; }
+  // What Claim::supersede replaced: the earlier render's info and how many of its frames were deleted.
+  std::optional<nlohmann::json> supersededInfo() const { return supersededInfo_; }
+  int supersededFrames() const { return supersededFrames_; }
 
  private:
   nlohmann::json emptyManifest() const;
-  nlohmann::json readLocked() const;  // the manifest on disk, or an empty one; throws if malformed
+  nlohmann::json readLocked() const;  // the manifest on disk, or an empty one; throws if malformed or another's
+  nlohmann::json readAnyLocked() const;  // the same, whoever's render it is
+  void supersedeLocked(const nlohmann::json& other);  // caller holds the manifest lock and the shared claim
   void flushLocked();                 // caller holds mutex_
 
   std::string folder_, fileName_;
@@ -79,6 +92,9 @@ class FrameManifest {
   std::set<std::string> renderers_;
   std::chrono::steady_clock::time_point lastFlush_;
   std::chrono::milliseconds flushInterval_{500};
+  int activeFd_ = -1;  // the shared claim on .<name>.active (merge mode)
+  std::optional<nlohmann::json> supersededInfo_;
+  int supersededFrames_ = 0;
 };
 
 }  // namespace sl::output

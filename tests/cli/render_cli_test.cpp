@@ -1,5 +1,6 @@
 // `linkage render` and `simulate` on shipped scenes: small renders, shards by the documented GNU
 // parallel recipe, an interrupted render finished by --resume.
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <filesystem>
@@ -23,8 +24,12 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(RenderCli, EveryShippedSceneValidatesAndRendersAFewSmallFrames) {
-  for (const char* name :
-       {"default.json", "comparison.json", "pole-passage.json", "seam.json", "massive-rods.json", "five-rods.json"}) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(sourcePath("scenes")))
+    if (entry.path().extension() == ".json") names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  ASSERT_GE(names.size(), 9u);
+  for (const std::string& name : names) {
     SCOPED_TRACE(name);
     TempFolder folder;
     const ProcessResult validate = runLinkage({"validate", shippedScene(name)}, folder.path());
@@ -39,6 +44,44 @@ TEST(RenderCli, EveryShippedSceneValidatesAndRendersAFewSmallFrames) {
     }
     EXPECT_FALSE(fs::exists(folder.path() / "out" / "frame_00003.png"));
   }
+}
+
+std::string replaceAll(std::string text, const std::string& from, const std::string& to) {
+  for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  return text;
+}
+
+// The everyday loop: render, edit the scene, render again into the same folder. A whole render replaces the
+// earlier one (its frames go, nothing is mixed); a shard or --resume of another render is refused with a hint.
+TEST(RenderCli, EditAndRenderAgainReplacesTheEarlierRender) {
+  TempFolder folder;
+  std::string scene = readFile(shippedScene("default.json"));
+  scene = replaceAll(scene, "\"duration\": 20.0", "\"duration\": 0.3");
+  scene = replaceAll(scene, "\"fps\": 30", "\"fps\": 10");
+  writeFile(folder / "scene.json", scene);
+  const std::vector<std::string> render{"render", "scene.json", "--size", "160x90", "--out", "out"};
+  const ProcessResult first = runLinkage(render, folder.path());
+  ASSERT_EQ(first.code, 0) << first.err;
+  const std::string firstFrame = readFile(folder.path() / "out" / "frame_00001.png");
+
+  writeFile(folder / "scene.json", replaceAll(scene, "\"L\": 3.0", "\"L\": 3.2"));
+  const ProcessResult second = runLinkage(render, folder.path());
+  ASSERT_EQ(second.code, 0) << second.err;
+  EXPECT_NE(second.err.find("replacing the earlier render in out"), std::string::npos) << second.err;
+  EXPECT_NE(readFile(folder.path() / "out" / "frame_00001.png"), firstFrame);
+  // The folder now holds the edited render only: its manifest checks out against every file.
+  const ProcessResult resume =
+      runLinkage({"render", "scene.json", "--size", "160x90", "--out", "out", "--resume"}, folder.path());
+  EXPECT_EQ(resume.code, 0) << resume.err;
+
+  // A shard of the scene as it was: refused, saying what to do.
+  writeFile(folder / "scene.json", scene);
+  const ProcessResult shard =
+      runLinkage({"render", "scene.json", "--size", "160x90", "--out", "out", "--frames", "0:1"}, folder.path());
+  EXPECT_EQ(shard.code, 3);
+  EXPECT_NE(shard.err.find("a whole render (without --frames or --resume) replaces it"), std::string::npos)
+      << shard.err;
 }
 
 TEST(RenderCli, DefaultFolderIsRendersSlashSceneName) {
@@ -57,12 +100,6 @@ std::string readmeParallelRecipe() {
     if (line.rfind("parallel linkage render scenes/default.json", 0) == 0) return line;
   }
   return "";
-}
-
-std::string replaceAll(std::string text, const std::string& from, const std::string& to) {
-  for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
-    text.replace(at, from.size(), to);
-  return text;
 }
 
 TEST(RenderCli, ShardsByTheReadmeRecipeEqualAWholeRenderByteForByte) {

@@ -3,9 +3,13 @@
 
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <fcntl.h>
+#include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
+#include <filesystem>
 #include <string>
 #include <thread>
 
@@ -68,8 +72,74 @@ TEST(FrameManifest, RefusesAFolderOfAnotherRender) {
     FrameManifest other(folder, {{"scene", "different"}});
     FAIL() << "no error";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("different render"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("not of this one"), std::string::npos) << e.what();
   }
+}
+
+// The edit-render loop: a whole render of another scene takes the folder over, deleting the frames the old
+// manifest lists (and nothing else); a render of the same scene merges as before.
+TEST(FrameManifest, SupersedeReplacesAnotherRenderAndKeepsTheSameOne) {
+  const TempFolder temp;
+  const std::string folder = temp.path();
+  {
+    FrameManifest manifest(folder, kInfo);
+    for (int k = 0; k < 3; ++k) writeFrame(manifest, folder, k);
+  }
+  writeFileAtomically(folder + "/notes.txt", std::string("mine"));
+  {
+    FrameManifest same(folder, kInfo, "manifest.json", FrameManifest::Existing::merge, FrameManifest::Claim::supersede);
+    EXPECT_FALSE(same.supersededInfo());
+    EXPECT_TRUE(same.isFrameComplete(2));
+  }
+  const nlohmann::json other{{"scene", "edited"}, {"size", "32x24"}};
+  FrameManifest replacing(folder, other, "manifest.json", FrameManifest::Existing::merge,
+                          FrameManifest::Claim::supersede);
+  ASSERT_TRUE(replacing.supersededInfo());
+  EXPECT_EQ(*replacing.supersededInfo(), kInfo);
+  EXPECT_EQ(replacing.supersededFrames(), 3);
+  for (int k = 0; k < 3; ++k) EXPECT_FALSE(std::filesystem::exists(folder + "/frame_" + std::to_string(k) + ".png"));
+  EXPECT_TRUE(std::filesystem::exists(folder + "/notes.txt"));
+  EXPECT_FALSE(replacing.isFrameComplete(0));
+  EXPECT_NE(readFile(folder + "/manifest.json").find("edited"), std::string::npos);
+  // While it runs, neither a shard of the old scene nor a whole render of a third one gets in.
+  EXPECT_THROW(FrameManifest(folder, kInfo), std::runtime_error);
+  try {
+    FrameManifest third(folder, {{"scene", "third"}}, "manifest.json", FrameManifest::Existing::merge,
+                        FrameManifest::Claim::supersede);
+    FAIL() << "a running render was replaced";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("still running"), std::string::npos) << e.what();
+  }
+}
+
+// A process holding the manifest lock for ever (stopped with SIGSTOP, hung) makes others give up after the
+// bound, naming the lock, rather than wait silently for ever.
+TEST(FrameManifest, LockWaitsAreBoundedAndNamed) {
+  const TempFolder temp;
+  const std::string folder = temp.path();
+  { FrameManifest manifest(folder, kInfo); }
+  const pid_t holder = fork();
+  if (holder == 0) {
+    const int fd = ::open((folder + "/.manifest.json.lock").c_str(), O_RDWR);
+    ::flock(fd, LOCK_EX);
+    ::raise(SIGSTOP);
+    _exit(0);
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(holder, &status, WUNTRACED), holder);
+  ASSERT_TRUE(WIFSTOPPED(status));
+  ::setenv("LINKAGE_LOCK_WAIT", "1.5", 1);
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    FrameManifest blocked(folder, kInfo);
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(".manifest.json.lock"), std::string::npos) << e.what();
+  }
+  ::unsetenv("LINKAGE_LOCK_WAIT");
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
+  ::kill(holder, SIGKILL);
+  waitpid(holder, &status, 0);
 }
 
 TEST(FrameManifest, MalformedManifestIsNamed) {
