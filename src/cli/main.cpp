@@ -6,13 +6,39 @@
 
 #include "cli/commands.hpp"
 #include "cli/exit_codes.hpp"
+#include "render/renderer.hpp"
+
+namespace sl {
+std::string buildCommit();  // generated at build time (cmake/VersionInfo.cmake)
+}
+
+namespace {
+
+// `linkage --version`: what a bug report needs. The GL renderer is asked for (a tiny offscreen context), since
+// frames depend on it (llvmpipe's version is recorded in every manifest too).
+void printVersion() {
+  std::string gl;
+  try {
+    const sl::Renderer renderer(sl::ViewSettings{}, {16, 16});
+    gl = renderer.glRenderer() + ", OpenGL " + renderer.glVersion();
+  } catch (const std::exception& error) {
+    gl = std::string("unavailable (") + error.what() + ")";
+  }
+  std::cout << "linkage " << SL_VERSION << " (commit " << sl::buildCommit() << ")\n"
+            << "compiler: " << SL_COMPILER << "\n"
+            << "GL renderer: " << gl << "\n";
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{
       "linkage: geodesics of planar linkages on their configuration spheres, rendered to frames and video.\n"
       "Write or copy a scene file (scenes/README.md), then run one command.",
       "linkage"};
-  app.require_subcommand(1, 1);
+  bool version = false;
+  app.add_flag("--version", version, "print the version, commit, compiler and GL renderer, then exit");
+  app.require_subcommand(0, 1);
   app.footer(std::string("Examples:\n  linkage validate scenes/default.json\n  linkage render scenes/default.json\n"
                          "  linkage render scenes/comparison.json --frames 0:100 --size 640x360\n\n") +
              sl::exitCodeHelp());
@@ -26,6 +52,14 @@ int main(int argc, char** argv) {
   sl::addGeometryCommand(app);
   try {
     app.parse(argc, argv);
+    if (version) {
+      printVersion();
+      return sl::kExitOk;
+    }
+    if (app.get_subcommands().empty()) {
+      std::cerr << "linkage: expected a command (render, simulate, validate, ...); see linkage --help\n";
+      return sl::kExitBadInput;
+    }
   } catch (const CLI::CallForHelp& help) {
     return app.exit(help);
   } catch (const CLI::CallForAllHelp& help) {

@@ -16,6 +16,7 @@
 #include "cli/progress.hpp"
 #include "cli/run_report.hpp"
 #include "cli/scene_input.hpp"
+#include "cli/summary.hpp"
 #include "frames/frame_builder.hpp"
 #include "output/png_encoder.hpp"
 #include "output/png_sequence_sink.hpp"
@@ -122,13 +123,16 @@ void checkSpaceForFrames(const RenderPlan& plan, Renderer& renderer, FrameBuilde
   refuseIfFramesCannotFit(need);
 }
 
-// The frames of the plan's range into the sinks; returns false if interrupted.
+// The frames of the plan's range into the sinks; returns false if interrupted. Counts what it drew and what
+// --resume found complete.
 bool renderFrames(const RenderPlan& plan, output::FrameManifest* pngManifest,
-                  const std::vector<output::FrameSink*>& sinks, Renderer& renderer, FrameBuilder& builder) {
+                  const std::vector<output::FrameSink*>& sinks, Renderer& renderer, FrameBuilder& builder,
+                  int& drawn, int& skipped) {
   Progress progress(plan.range.end - plan.range.first, plan.quiet);
   for (int k = plan.range.first; k < plan.range.end; ++k) {
     const bool complete = plan.resume && pngManifest && pngManifest->isFrameComplete(k);
     if (complete) {
+      ++skipped;
       progress.update(k - plan.range.first + 1);
       continue;
     }
@@ -137,6 +141,7 @@ bool renderFrames(const RenderPlan& plan, output::FrameManifest* pngManifest,
     Image image = renderer.render(builder.frame(k));
     for (size_t i = 0; i + 1 < sinks.size(); ++i) sinks[i]->consume(k, image);
     sinks.back()->consume(k, std::move(image));
+    ++drawn;
     progress.update(k - plan.range.first + 1);
   }
   return true;
@@ -155,8 +160,20 @@ void sweepOutputFolders(const RenderPlan& plan) {
   }
 }
 
+// "601 frames of 1280x720 -> renders/default/ (PNG + manifest.json) and default.mp4".
+std::string renderSummary(const RenderPlan& plan, int drawn, int skipped) {
+  std::string what = std::to_string(drawn) + " frame" + (drawn == 1 ? "" : "s") + " of " +
+                     std::to_string(plan.scene.output.size.width) + "x" +
+                     std::to_string(plan.scene.output.size.height) + " -> ";
+  if (plan.png) what += plan.folder + "/ (PNG + manifest.json)";
+  if (!plan.video.empty()) what += std::string(plan.png ? " and " : "") + plan.video;
+  if (skipped > 0) what += ", " + std::to_string(skipped) + " already complete";
+  return what;
+}
+
 void runRender(const RenderArguments& args) {
   installInterruptHandlers();  // first: a signal during planning still ends the render cleanly
+  const CommandSummary summary("render", args.quiet);
   const RenderPlan plan = planRender(args);
   const Scene& scene = plan.scene;
   Renderer renderer(scene.view, scene.output.size);
@@ -197,17 +214,23 @@ void runRender(const RenderArguments& args) {
     sinks.push_back(videoSink.get());
   }
 
-  const bool finished = renderFrames(plan, pngManifest.get(), sinks, renderer, builder);
+  int drawn = 0, skipped = 0;
+  const bool finished = renderFrames(plan, pngManifest.get(), sinks, renderer, builder, drawn, skipped);
   if (pngSink) pngSink->finish();  // every frame handed over is written whole, interrupted or not
   if (videoSink && finished) videoSink->finish();
   videoSink.reset();  // unfinished: reaps ffmpeg and removes its temporary, so the video never gets its name
-  reportStops(scene, builder.runs());  // results, not progress: shown even with --quiet
+  reportStops(scene, builder.runs(), plan.quiet);
   if (!finished) {
     stopIfInterrupted(plan.video.empty()
                           ? "frames written so far are complete; rerun the same command with --resume to finish"
                           : "the unfinished video was discarded (an earlier video of that name is untouched); rerun to "
                             "encode it");
   }
+  const double seconds = summary.seconds();
+  char rate[48];
+  std::snprintf(rate, sizeof rate, " (%.1f frames/s); ", seconds > 0 ? drawn / seconds : 0.0);
+  summary.print(renderSummary(plan, drawn, skipped),
+                rate + runOutcomes(scene, builder.runs(), scene.frameTime(plan.range.end - 1)));
 }
 
 }  // namespace
@@ -225,7 +248,7 @@ void addRenderCommand(CLI::App& app) {
   command->add_flag("--png", args->png, "write PNG frames (the default unless the scene says output.png: false)");
   command->add_flag("--no-png", args->noPng, "no PNG frames (with --video: the video only)");
   command->add_option("--size", args->size, "override the frame size, WIDTHxHEIGHT, e.g. 640x360");
-  command->add_flag("--quiet", args->quiet, "no progress display on stderr");
+  command->add_flag("--quiet", args->quiet, "errors only: no progress, run reports or summary line");
   command->add_flag("--resume", args->resume, "skip frames whose file and manifest entry are complete (PNG only)");
   command->footer(
       "Frames go to DIR/frame_00000.png ... with DIR/manifest.json (SHA-256 of pixels and files).\n"

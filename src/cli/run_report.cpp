@@ -4,7 +4,8 @@
 
 namespace sl {
 
-void reportStops(const Scene& scene, const std::vector<Trajectory>& runs) {
+void reportStops(const Scene& scene, const std::vector<Trajectory>& runs, bool quiet) {
+  if (quiet) return;
   for (size_t i = 0; i < runs.size(); ++i) {
     const std::optional<StopInfo>& stop = runs[i].stop();
     if (!stop) continue;

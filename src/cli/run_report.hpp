@@ -1,5 +1,5 @@
 #pragma once
-// Runs that stopped are results: say which, when and why, on stderr (also with --quiet).
+// Runs that stopped are results: say which, when and why, on stderr (not with --quiet: errors only).
 
 #include <vector>
 
@@ -8,6 +8,6 @@
 
 namespace sl {
 
-void reportStops(const Scene& scene, const std::vector<Trajectory>& runs);
+void reportStops(const Scene& scene, const std::vector<Trajectory>& runs, bool quiet = false);
 
 }  // namespace sl
