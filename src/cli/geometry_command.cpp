@@ -31,6 +31,7 @@ constexpr int kMaxSweepCount = 1000;
 constexpr int kDefaultMapGrid = 181;  // one degree of phi per row
 
 struct GeometryArguments {
+  std::vector<std::string> overrides;  // --set KEY=VALUE
   std::string scene;
   int grid = 0;
   std::string points;
@@ -225,7 +226,7 @@ void runGeometry(const GeometryArguments& args) {
                       "--points FILE, --summary, --sweep-L A:B:N");
   if (!args.chart.empty() && args.sweep.empty())
     throw CommandExit(kExitBadInput, "--chart: draws the L sweep; expected --sweep-L A:B:N with it");
-  const Scene scene = loadSceneForCommand(args.scene);
+  const Scene scene = loadSceneForCommand(args.scene, args.overrides);
   if (scene.chain.rods != 4)
     throw CommandExit(kExitBadInput, args.scene + ": linkage.rods: found " + std::to_string(scene.chain.rods) +
                                          "; the curvature of the configuration space is computed for 4 rods "
@@ -277,6 +278,7 @@ void addGeometryCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "geometry", "Curvature, bending and stiffness of the scene's configuration sphere (4 rods), exact");
   command->add_option("scene", args->scene, "scene file (JSON, see scenes/README.md): its linkage is used")->required();
+  addSceneOverrideOption(*command, args->overrides);
   command->add_option("--grid", args->grid, "N x N chart grid (phi from pole to pole, t periodic): CSV")
       ->check(CLI::Range(2, kMaxGrid));
   command->add_option("--points", args->points, "CSV file of chart points (header phi,t): the same columns there");

@@ -33,6 +33,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct RenderArguments {
+  std::vector<std::string> overrides;  // --set KEY=VALUE
   std::string scene, out, frames, video, size;
   bool png = false, noPng = false, quiet = false, resume = false;
 };
@@ -61,7 +62,7 @@ void applySize(const RenderArguments& args, Scene& scene) {
 
 RenderPlan planRender(const RenderArguments& args) {
   RenderPlan plan;
-  plan.scene = loadSceneForCommand(args.scene);
+  plan.scene = loadSceneForCommand(args.scene, args.overrides);
   Scene& scene = plan.scene;
   applySize(args, scene);
   plan.folder = args.out.empty() ? scene.output.folder : args.out;
@@ -97,7 +98,8 @@ RenderPlan planRender(const RenderArguments& args) {
 nlohmann::json manifestInfo(const RenderPlan& plan) {
   const Scene& scene = plan.scene;
   return {{"scene", scene.name},
-          {"sceneSha256", output::sha256OfFile(scene.file)},
+          {"sceneSha256", output::sha256Hex(reinterpret_cast<const std::uint8_t*>(scene.identity.data()),
+                                             scene.identity.size())},
           {"width", scene.output.size.width},
           {"height", scene.output.size.height},
           {"fps", scene.output.fps},
@@ -240,6 +242,7 @@ void addRenderCommand(CLI::App& app) {
   CLI::App* command =
       app.add_subcommand("render", "Render a scene to PNG frames (with a checksum manifest) and/or a video");
   command->add_option("scene", args->scene, "scene file (JSON, see scenes/README.md)")->required();
+  addSceneOverrideOption(*command, args->overrides);
   command->add_option("--out", args->out, "frame folder (default: the scene's output.folder, renders/<name>)");
   command->add_option("--frames", args->frames,
                       "half-open range A:B of frames to render (A: or :B allowed); shards of one "

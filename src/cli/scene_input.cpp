@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include <CLI/CLI.hpp>
+
 #include "cli/exit_codes.hpp"
 #include "simulation/initial_state.hpp"
 
@@ -11,12 +13,21 @@ void failOnProblems(const std::string& file, const std::vector<SceneProblem>& pr
   if (!problems.empty()) throw CommandExit(kExitBadInput, formatProblems(file, problems));
 }
 
-Scene loadSceneForCommand(const std::string& file) {
+Scene loadSceneForCommand(const std::string& file, const std::vector<std::string>& overrides) {
   try {
-    return loadScene(file);
+    return loadScene(file, overrides);
   } catch (const SceneError& error) {
     throw CommandExit(kExitBadInput, error.what());
   }
+}
+
+void addSceneOverrideOption(CLI::App& command, std::vector<std::string>& overrides) {
+  command
+      .add_option("--set", overrides,
+                  "override a scene key by its JSON path, e.g. --set linkage.L=3.2 --set output.fps=60 "
+                  "--set runs[0].method=ambient (repeatable; checked like the file)")
+      ->type_name("KEY=VALUE")
+      ->allow_extra_args(false);
 }
 
 InitialState sceneStart(const Scene& scene) {

@@ -10,10 +10,18 @@
 #include "scene/scene_loader.hpp"
 #include "simulation/trajectory.hpp"
 
+namespace CLI {
+class App;
+}
+
 namespace sl {
 
-// Loads and validates; on problems prints them all to stderr and throws CommandExit(kExitBadInput).
-Scene loadSceneForCommand(const std::string& file);
+// Loads and validates, with the command line's --set KEY=VALUE overrides; on problems throws
+// CommandExit(kExitBadInput) listing them all.
+Scene loadSceneForCommand(const std::string& file, const std::vector<std::string>& overrides = {});
+
+// Adds `--set KEY=VALUE` (repeatable) to a command that reads a scene.
+void addSceneOverrideOption(CLI::App& command, std::vector<std::string>& overrides);
 
 // Throws CommandExit(kExitBadInput) listing the problems, if any.
 void failOnProblems(const std::string& file, const std::vector<SceneProblem>& problems);

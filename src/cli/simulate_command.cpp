@@ -21,6 +21,7 @@ namespace sl {
 namespace {
 
 struct SimulateArguments {
+  std::vector<std::string> overrides;  // --set KEY=VALUE
   std::string scene;
   std::string csv;  // empty: stdout
   double dt = 0;    // 0: the frame times k / fps
@@ -44,7 +45,7 @@ void writeRun(std::ostream& out, const std::string& name, Trajectory& trajectory
 }
 
 void runSimulate(const SimulateArguments& args) {
-  const Scene scene = loadSceneForCommand(args.scene);
+  const Scene scene = loadSceneForCommand(args.scene, args.overrides);
   // The CSV for --csv is built in memory (then written atomically): keep it below about a gigabyte.
   if (args.dt > 0 && scene.duration / args.dt > 5e6) {
     throw CommandExit(kExitBadInput, "--dt " + std::to_string(args.dt) +
@@ -69,6 +70,7 @@ void addSimulateCommand(CLI::App& app) {
   CLI::App* command =
       app.add_subcommand("simulate", "Integrate the scene's runs and write trajectory CSV (no rendering)");
   command->add_option("scene", args->scene, "scene file (JSON, see scenes/README.md)")->required();
+  addSceneOverrideOption(*command, args->overrides);
   command->add_option("--csv", args->csv, "write the CSV here instead of stdout (written whole or not at all)");
   command->add_option("--dt", args->dt, "sample every DT time units (default: the frame times k / fps)")
       ->check(CLI::PositiveNumber);

@@ -13,8 +13,14 @@ namespace sl {
 
 namespace {
 
-void runValidate(const std::string& file) {
-  const Scene scene = loadSceneForCommand(file);
+struct ValidateArguments {
+  std::string file;
+  std::vector<std::string> overrides;
+};
+
+void runValidate(const ValidateArguments& args) {
+  const std::string& file = args.file;
+  const Scene scene = loadSceneForCommand(file, args.overrides);
   failOnProblems(file, checkOutputFolder(scene.output.folder, "output.folder"));
   startRuns(scene, sceneStart(scene));  // the start and every run, as render and simulate set them up
   std::cout << file << ": ok: \"" << scene.name << "\", " << scene.chain.rods << " rods, L = " << scene.chain.baseLength
@@ -29,11 +35,12 @@ void runValidate(const std::string& file) {
 }  // namespace
 
 void addValidateCommand(CLI::App& app) {
-  auto file = std::make_shared<std::string>();
+  auto args = std::make_shared<ValidateArguments>();
   CLI::App* command = app.add_subcommand("validate", "Check a scene file and report every problem; writes nothing");
-  command->add_option("scene", *file, "scene file (JSON, see scenes/README.md)")->required();
+  command->add_option("scene", args->file, "scene file (JSON, see scenes/README.md)")->required();
+  addSceneOverrideOption(*command, args->overrides);
   command->footer("Example: linkage validate scenes/default.json\nExit status 0 when the scene is valid, 2 when not.");
-  command->callback([file] { runValidate(*file); });
+  command->callback([args] { runValidate(*args); });
 }
 
 }  // namespace sl

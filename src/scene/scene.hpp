@@ -23,6 +23,9 @@ struct RunSpec {
 
 struct Scene {
   std::string file;  // where it was loaded from (for messages)
+  // What identifies the scene as given: the file's text as read (once: it may be a pipe) and the --set
+  // overrides. Renders record its hash, so shards and resumes join only the same scene.
+  std::string identity;
   std::string name;  // also the default output folder name
   std::string title;
   Chain chain;

@@ -1,4 +1,5 @@
 #include "scene/scene_loader.hpp"
+#include "scene/scene_overrides.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -287,7 +288,7 @@ std::vector<SceneProblem> checkFrameCount(double duration, int fps) {
   return {{"duration", message.str()}};
 }
 
-Scene parseScene(const std::string& text, const std::string& file) {
+Scene parseScene(const std::string& text, const std::string& file, const std::vector<std::string>& overrides) {
   json document;
   try {
     document = json::parse(text);
@@ -301,8 +302,11 @@ Scene parseScene(const std::string& text, const std::string& file) {
   }
 
   std::vector<SceneProblem> problems;
+  applySceneOverrides(document, overrides, problems);
   Scene scene;
   scene.file = file;
+  scene.identity = text;
+  for (const std::string& assignment : overrides) scene.identity += "\n--set " + assignment;
   const JsonObject top(document, "", problems,
                        {"name", "title", "linkage", "initial", "duration", "runs", "output", "view"});
   if (!top.isObject()) throw SceneError(file, problems);
@@ -334,13 +338,13 @@ Scene parseScene(const std::string& text, const std::string& file) {
   return scene;
 }
 
-Scene loadScene(const std::string& file) {
+Scene loadScene(const std::string& file, const std::vector<std::string>& overrides) {
   std::ifstream stream(file, std::ios::binary);
   if (!stream) throw SceneError(file, {{"", "cannot open the file for reading"}});
   std::ostringstream text;
   text << stream.rdbuf();
   if (stream.bad()) throw SceneError(file, {{"", "cannot read the file"}});
-  return parseScene(text.str(), file);
+  return parseScene(text.str(), file, overrides);
 }
 
 }  // namespace sl

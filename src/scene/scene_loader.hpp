@@ -10,9 +10,10 @@
 
 namespace sl {
 
-// Throws SceneError listing every problem; the file is not touched otherwise.
-Scene loadScene(const std::string& file);
-Scene parseScene(const std::string& text, const std::string& file);
+// Throws SceneError listing every problem; the file is not touched otherwise. The file is read once (it may be
+// a pipe); `overrides` are --set KEY=VALUE assignments (scene_overrides.hpp), checked like the file's own keys.
+Scene loadScene(const std::string& file, const std::vector<std::string>& overrides = {});
+Scene parseScene(const std::string& text, const std::string& file, const std::vector<std::string>& overrides = {});
 
 // The checks on an output size, shared by the scene's output.width/height and the --size option.
 std::vector<SceneProblem> checkImageSize(ImageSize size, bool forVideo, const std::string& path);

@@ -1,7 +1,15 @@
 // Command-line conventions: --version, the summary line every command ends with (also when stderr is a pipe,
 // as in a cluster job's log), --quiet meaning errors only.
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <sys/stat.h>
+
+#include <algorithm>
 #include <filesystem>
 #include <string>
+#include <thread>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -12,6 +20,10 @@
 
 namespace sl::testing {
 namespace {
+
+namespace fs = std::filesystem;
+
+namespace fs = std::filesystem;
 
 TEST(ConventionsCli, VersionNamesVersionCommitCompilerAndGlRenderer) {
   TempFolder folder;
@@ -48,6 +60,58 @@ TEST(ConventionsCli, SummaryLineOnAPipeAndQuietMeansErrorsOnly) {
 
   const ProcessResult geometry = runLinkage({"geometry", shippedScene("default.json"), "--summary"}, folder.path());
   EXPECT_NE(geometry.err.find("geometry: summary"), std::string::npos) << geometry.err;
+}
+
+// --set KEY=VALUE: any key by its JSON path, with the file's own checks and path-named messages.
+TEST(ConventionsCli, SetOverridesAnySceneKeyAndIsCheckedLikeTheFile) {
+  TempFolder folder;
+  const std::string scene = shippedScene("default.json");
+  const ProcessResult set = runLinkage(
+      {"validate", scene, "--set", "linkage.L=3.2", "--set", "output.fps=60", "--set", "view.sphere.color_by=curvature"},
+      folder.path());
+  ASSERT_EQ(set.code, 0) << set.err;
+  EXPECT_NE(set.out.find("L = 3.2, 1201 frames of 1280x720 at 60 fps"), std::string::npos) << set.out;
+  const ProcessResult range = runLinkage({"validate", scene, "--set", "linkage.L=5"}, folder.path());
+  EXPECT_EQ(range.code, 2);
+  EXPECT_NE(range.err.find("linkage.L: found 5"), std::string::npos) << range.err;
+  const ProcessResult typo = runLinkage({"validate", scene, "--set", "linkage.LL=3"}, folder.path());
+  EXPECT_NE(typo.err.find("linkage.LL: unknown key (did you mean \"L\"?)"), std::string::npos) << typo.err;
+  const ProcessResult element = runLinkage({"validate", scene, "--set", "runs[3].step=0.1"}, folder.path());
+  EXPECT_NE(element.err.find("--set runs[3].step: expected an existing array element"), std::string::npos)
+      << element.err;
+  EXPECT_EQ(runLinkage({"validate", scene, "--set", "noequals"}, folder.path()).code, 2);
+  // A plain word is a string: the method by name.
+  const ProcessResult method = runLinkage({"validate", scene, "--set", "runs[0].method=christoffel"}, folder.path());
+  EXPECT_NE(method.out.find("(christoffel, dopri5)"), std::string::npos) << method.out << method.err;
+  // Simulate takes it too.
+  const ProcessResult simulate =
+      runLinkage({"simulate", scene, "--set", "duration=0.5", "--set", "output.fps=4"}, folder.path());
+  ASSERT_EQ(simulate.code, 0) << simulate.err;
+  EXPECT_EQ(std::count(simulate.out.begin(), simulate.out.end(), '\n'), 1 + 3);
+}
+
+// A scene read through a pipe is read once: its identity is its text, so shards of two different piped scenes
+// never join one folder.
+TEST(ConventionsCli, PipedScenesAreReadOnceAndKeepTheirIdentity) {
+  TempFolder folder;
+  const auto renderThroughFifo = [&](const std::string& text, const std::string& frames) {
+    const fs::path fifo = folder.path() / "scene.fifo";
+    fs::remove(fifo);
+    EXPECT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    std::thread writer([&] { writeFile(fifo, text); });
+    const ProcessResult result = runLinkage(
+        {"render", fifo.string(), "--size", "160x90", "--out", "out", "--frames", frames, "--quiet"}, folder.path());
+    writer.join();
+    return result;
+  };
+  const std::string scene = readFile(shippedScene("default.json"));
+  ASSERT_EQ(renderThroughFifo(scene, "0:1").code, 0);
+  std::string edited = scene;
+  edited.replace(edited.find("\"L\": 3.0"), 8, "\"L\": 3.3");
+  const ProcessResult other = renderThroughFifo(edited, "1:2");
+  EXPECT_EQ(other.code, 3) << other.err;
+  EXPECT_NE(other.err.find("not of this one"), std::string::npos) << other.err;
+  EXPECT_EQ(renderThroughFifo(scene, "1:2").code, 0);  // the same piped scene joins
 }
 
 }  // namespace

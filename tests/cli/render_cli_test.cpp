@@ -115,7 +115,7 @@ TEST(RenderCli, ShardsByTheReadmeRecipeEqualAWholeRenderByteForByte) {
       {"render", shippedScene("default.json"), "--size", "160x90", "--out", "whole", "--quiet"}, folder.path());
   ASSERT_EQ(whole.code, 0) << whole.err;
   const auto a = folderContents(folder.path() / "shards"), b = folderContents(folder.path() / "whole");
-  EXPECT_EQ(a.size(), 601u + 2u);  // frames, manifest.json, .manifest.json.lock
+  EXPECT_EQ(a.size(), 601u + 3u);  // frames, manifest.json, .manifest.json.lock, .manifest.json.active
   EXPECT_TRUE(a == b) << "shard union differs from the whole render";
 }
 
