@@ -107,7 +107,7 @@ Split runOnce(const Options& o, sl::Renderer& renderer, const sl::SyntheticOptio
   std::unique_ptr<sl::output::FrameSink> sink;
   if (o.sink == "png") sink = std::make_unique<sl::output::PngSequenceSink>(o.out, manifest, o.encoders);
   if (o.sink == "mp4") {
-    sl::output::VideoSettings video{o.out + "/bench.mp4", o.width, o.height, fps};
+    sl::output::VideoSettings video{o.out + "/bench.mp4", sl::VideoFormat::Mp4, sl::VideoQuality::High, o.width, o.height, fps};
     sink = std::make_unique<sl::output::VideoSink>(video, manifest);
   }
   sl::output::PngEncoder encoder;

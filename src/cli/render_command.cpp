@@ -34,7 +34,7 @@ namespace fs = std::filesystem;
 
 struct RenderArguments {
   std::vector<std::string> overrides;  // --set KEY=VALUE
-  std::string scene, out, frames, video, size;
+  std::string scene, out, frames, video, size, videoQuality;
   bool png = false, noPng = false, quiet = false, resume = false;
 };
 
@@ -78,15 +78,21 @@ RenderPlan planRender(const RenderArguments& args) {
     throw CommandExit(kExitBadInput,
                       "--resume completes PNG frames; a video is always encoded whole (drop --video or --resume)");
   }
+  const std::string videoPath = args.video.empty() ? "output.video" : "--video";
+  const auto format = videoFormatOfPath(plan.video);
   std::vector<SceneProblem> problems =
-      checkImageSize(scene.output.size, !plan.video.empty(), args.size.empty() ? "output" : "--size");
+      checkImageSize(scene.output.size, format && traits(*format).needsEvenSize, args.size.empty() ? "output" : "--size");
   for (SceneProblem& problem : checkOutputFolder(plan.folder, args.out.empty() ? "output.folder" : "--out")) {
     problems.push_back(problem);
   }
   if (!plan.video.empty()) {
-    for (SceneProblem& problem :
-         checkOutputFolder(videoFolder(plan.video), args.video.empty() ? "output.video" : "--video")) {
-      problems.push_back(problem);
+    for (SceneProblem& problem : checkVideoPath(plan.video, videoPath)) problems.push_back(problem);
+  }
+  if (!args.videoQuality.empty()) {
+    if (const auto quality = parseKind(kVideoQualities, args.videoQuality)) {
+      scene.output.videoQuality = *quality;
+    } else {
+      problems.push_back({"--video-quality", "found \"" + args.videoQuality + "\"; expected high, medium or small"});
     }
   }
   failOnProblems(args.scene, problems);
@@ -210,8 +216,8 @@ void runRender(const RenderArguments& args) {
                                                             fs::path(plan.video).filename().string() + ".manifest.json",
                                                             output::FrameManifest::Existing::replace);
     videoManifest->addRenderer(renderer.glRenderer(), renderer.glVersion());
-    output::VideoSettings settings{plan.video, scene.output.size.width, scene.output.size.height,
-                                   double(scene.output.fps)};
+    output::VideoSettings settings{plan.video, *videoFormatOfPath(plan.video), scene.output.videoQuality,
+                                   scene.output.size.width, scene.output.size.height, double(scene.output.fps)};
     videoSink = std::make_unique<output::VideoSink>(settings, *videoManifest);
     sinks.push_back(videoSink.get());
   }
@@ -247,7 +253,10 @@ void addRenderCommand(CLI::App& app) {
   command->add_option("--frames", args->frames,
                       "half-open range A:B of frames to render (A: or :B allowed); shards of one "
                       "animation give byte-identical files");
-  command->add_option("--video", args->video, "also encode a video with ffmpeg (H.264, yuv420p), e.g. out.mp4");
+  command->add_option("--video", args->video,
+                      "also encode a video with ffmpeg, its format by the extension: .mp4 (H.264), .webm (VP9), "
+                      ".gif (palette-optimised), e.g. renders/default.mp4");
+  command->add_option("--video-quality", args->videoQuality, "high, medium or small (default: output.video_quality, high)");
   command->add_flag("--png", args->png, "write PNG frames (the default unless the scene says output.png: false)");
   command->add_flag("--no-png", args->noPng, "no PNG frames (with --video: the video only)");
   command->add_option("--size", args->size, "override the frame size, WIDTHxHEIGHT, e.g. 640x360");
@@ -257,7 +266,8 @@ void addRenderCommand(CLI::App& app) {
       "Frames go to DIR/frame_00000.png ... with DIR/manifest.json (SHA-256 of pixels and files).\n"
       "Examples:\n"
       "  linkage render scenes/default.json\n"
-      "  linkage render scenes/comparison.json --size 640x360 --video comparison.mp4 --no-png\n"
+      "  linkage render scenes/comparison.json --size 640x360 --video renders/comparison.mp4 --no-png\n"
+      "  linkage render scenes/default.json --size 480x270 --video renders/default.gif --no-png\n"
       "  parallel linkage render scenes/default.json --quiet --frames {} ::: 0:200 200:400 400:601\n"
       "  linkage render scenes/default.json --resume      # after an interruption\n"
       "SIGINT/SIGTERM stop after the frames in flight are written; exit status 130; --resume finishes.");

@@ -21,7 +21,10 @@ struct ValidateArguments {
 void runValidate(const ValidateArguments& args) {
   const std::string& file = args.file;
   const Scene scene = loadSceneForCommand(file, args.overrides);
-  failOnProblems(file, checkOutputFolder(scene.output.folder, "output.folder"));
+  std::vector<SceneProblem> problems = checkOutputFolder(scene.output.folder, "output.folder");
+  if (!scene.output.video.empty())
+    for (SceneProblem& problem : checkVideoPath(scene.output.video, "output.video")) problems.push_back(problem);
+  failOnProblems(file, problems);
   startRuns(scene, sceneStart(scene));  // the start and every run, as render and simulate set them up
   std::cout << file << ": ok: \"" << scene.name << "\", " << scene.chain.rods << " rods, L = " << scene.chain.baseLength
             << ", " << scene.frameCount() << " frames of " << scene.output.size.width << "x" << scene.output.size.height

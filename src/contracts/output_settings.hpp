@@ -4,6 +4,7 @@
 #include <string>
 
 #include "contracts/image.hpp"
+#include "contracts/registry.hpp"
 
 namespace sl {
 
@@ -12,7 +13,8 @@ struct OutputSettings {
   ImageSize size;      // the frame size, for the renderer and every sink
   std::string folder;  // default renders/<name>, relative to the working directory
   bool png = true;     // write PNG frames
-  std::string video;   // an mp4 path, empty = no video
+  std::string video;   // a .mp4, .webm or .gif path (the format by its extension), empty = no video
+  VideoQuality videoQuality = VideoQuality::High;
 };
 
 }  // namespace sl

@@ -109,6 +109,28 @@ inline constexpr std::array<Named<SphereColoring>, 3> kSphereColorings{{
     {SphereColoring::Bending, "bending"},
 }};
 
+// === Video formats (chosen by the video file's extension) and qualities
+
+enum class VideoFormat { Mp4, Webm, Gif };
+struct VideoFormatTraits {
+  VideoFormat kind;
+  std::string_view name;  // also the file extension, without the dot
+  bool needsEvenSize;     // yuv420p chroma subsampling halves both sides
+  std::string_view description;
+};
+inline constexpr std::array<VideoFormatTraits, 3> kVideoFormats{{
+    {VideoFormat::Mp4, "mp4", true, "H.264, yuv420p: plays everywhere"},
+    {VideoFormat::Webm, "webm", true, "VP9, yuv420p: smaller, for web pages"},
+    {VideoFormat::Gif, "gif", false, "palette-optimised GIF: for slides and web pages, no player needed"},
+}};
+
+enum class VideoQuality { High, Medium, Small };
+inline constexpr std::array<Named<VideoQuality>, 3> kVideoQualities{{
+    {VideoQuality::High, "high"},
+    {VideoQuality::Medium, "medium"},
+    {VideoQuality::Small, "small"},
+}};
+
 // === Look-ups, the same for every table
 
 template <class Table>
@@ -143,6 +165,18 @@ auto kindsOf(const Table& table) {
 inline const MethodTraits& traits(Method m) { return traitsOf(kMethods, m); }
 inline const IntegratorTraits& traits(Integrator i) { return traitsOf(kIntegrators, i); }
 inline const StopReasonTraits& traits(StopReason r) { return traitsOf(kStopReasons, r); }
+
+inline const VideoFormatTraits& traits(VideoFormat f) { return traitsOf(kVideoFormats, f); }
+
+// The format a video path asks for by its extension (".mp4", ".webm", ".gif"; case-insensitive), if any.
+inline std::optional<VideoFormat> videoFormatOfPath(std::string_view path) {
+  const std::size_t dot = path.rfind('.');
+  const std::size_t slash = path.rfind('/');
+  if (dot == std::string_view::npos || (slash != std::string_view::npos && dot < slash)) return std::nullopt;
+  std::string extension(path.substr(dot + 1));
+  for (char& c : extension) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+  return parseKind(kVideoFormats, extension);
+}
 
 inline std::string nameOf(Method m) { return std::string(traits(m).name); }
 inline std::string nameOf(Integrator i) { return std::string(traits(i).name); }

@@ -22,43 +22,6 @@ extern char** environ;
 namespace sl::output {
 namespace {
 
-// ffmpeg writes to `temporary`; "file:" keeps a name like "take:2.mp4" from being read as a protocol.
-std::vector<std::string> ffmpegArguments(const VideoSettings& s, const std::string& temporary) {
-  char rate[32];
-  std::snprintf(rate, sizeof rate, "%.6g", s.fps);
-  return {s.ffmpeg,
-          "-hide_banner",
-          "-loglevel",
-          "error",
-          "-nostdin",
-          "-y",
-          "-f",
-          "rawvideo",
-          "-pix_fmt",
-          "rgb24",
-          "-s",
-          std::to_string(s.width) + "x" + std::to_string(s.height),
-          "-framerate",
-          rate,
-          "-i",
-          "pipe:0",
-          "-c:v",
-          "libx264",
-          "-preset",
-          s.preset,
-          "-crf",
-          std::to_string(s.crf),
-          "-pix_fmt",
-          "yuv420p",
-          "-fflags",
-          "+bitexact",
-          "-flags:v",
-          "+bitexact",
-          "-movflags",
-          "+faststart",
-          "file:" + temporary};
-}
-
 void writeAll(int fd, const std::uint8_t* data, std::size_t size) {
   while (size > 0) {
     const ssize_t n = ::write(fd, data, size);
@@ -71,11 +34,46 @@ void writeAll(int fd, const std::uint8_t* data, std::size_t size) {
 
 }  // namespace
 
+// ffmpeg writes to `output`; "file:" keeps a name like "take:2.mp4" from being read as a protocol. Bit-exact
+// flags keep the same frames giving the same bytes (no encoder version strings or timestamps).
+std::vector<std::string> ffmpegArguments(const VideoSettings& s, const std::string& output) {
+  char rate[32];
+  std::snprintf(rate, sizeof rate, "%.6g", s.fps);
+  const int level = static_cast<int>(s.quality);  // 0 high, 1 medium, 2 small
+  std::vector<std::string> args{s.ffmpeg,  "-hide_banner", "-loglevel", "error",    "-nostdin", "-y",
+                                "-f",      "rawvideo",     "-pix_fmt",  "rgb24",    "-s",
+                                std::to_string(s.width) + "x" + std::to_string(s.height),
+                                "-framerate", rate,        "-i",        "pipe:0",   "-fflags", "+bitexact",
+                                "-flags:v", "+bitexact"};
+  const auto add = [&](std::initializer_list<std::string> more) { args.insert(args.end(), more); };
+  switch (s.format) {
+    case VideoFormat::Mp4:  // x264's constant quality: 18 is visually lossless for these flat-shaded frames
+      add({"-c:v", "libx264", "-preset", "veryfast", "-crf", std::to_string(18 + 5 * level), "-pix_fmt", "yuv420p",
+           "-movflags", "+faststart"});
+      break;
+    case VideoFormat::Webm:  // VP9 constant quality (-b:v 0), good deadline at a speed fit for long clips
+      add({"-c:v", "libvpx-vp9", "-crf", std::to_string(30 + 6 * level), "-b:v", "0", "-deadline", "good",
+           "-cpu-used", "4", "-row-mt", "1", "-pix_fmt", "yuv420p"});
+      break;
+    case VideoFormat::Gif: {  // one palette for the whole clip (stats of every frame), ordered dithering: no shimmer
+      const int colours = 256 >> level;
+      add({"-filter_complex",
+           "[0:v]split[a][b];[a]palettegen=max_colors=" + std::to_string(colours) +
+               ":stats_mode=full[p];[b][p]paletteuse=dither=bayer:bayer_scale=4",
+           "-loop", "0"});
+      break;
+    }
+  }
+  args.push_back("file:" + output);
+  return args;
+}
+
 VideoSink::VideoSink(const VideoSettings& settings, FrameManifest& manifest)
     : settings_(settings), manifest_(manifest) {
-  if (settings.width % 2 || settings.height % 2)
+  if (traits(settings.format).needsEvenSize && (settings.width % 2 || settings.height % 2))
     throw std::invalid_argument("video size " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
-                                " must be even in both directions (H.264 yuv420p)");
+                                " must be even in both directions (" + std::string(traits(settings.format).name) +
+                                ", yuv420p)");
   if (!(settings.fps > 0)) throw std::invalid_argument("video frame rate must be positive");
   ::signal(SIGPIPE, SIG_IGN);
   int fds[2];

@@ -1,5 +1,6 @@
 #pragma once
-// Frames piped as raw RGB into ffmpeg (H.264, yuv420p, the scene's frame rate), spawned with
+// Frames piped as raw RGB into ffmpeg (mp4: H.264 yuv420p; webm: VP9 yuv420p; gif: one pass through a palette
+// generated from the whole clip, with ordered dithering; all at the scene's frame rate), spawned with
 // posix_spawnp (no shell, so no quoting issues with paths) in a process group of its own. A writer thread
 // feeds the pipe so the caller can render the next frame meanwhile. ffmpeg writes a temporary next to the
 // video (output/temporary_file.hpp); finish() renames it into place, and a sink destroyed unfinished
@@ -12,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "contracts/registry.hpp"
 #include "output/frame_manifest.hpp"
 #include "output/frame_sink.hpp"
 #include "output/worker_pool.hpp"
@@ -20,12 +22,15 @@ namespace sl::output {
 
 struct VideoSettings {
   std::string path;  // e.g. "out/animation.mp4"
+  VideoFormat format = VideoFormat::Mp4;
+  VideoQuality quality = VideoQuality::High;
   int width = 1280, height = 720;
   double fps = 60;
-  int crf = 18;                     // x264 quality (lower = better)
-  std::string preset = "veryfast";  // x264 speed/size trade-off
-  std::string ffmpeg = "ffmpeg";    // program name or path
+  std::string ffmpeg = "ffmpeg";  // program name or path
 };
+
+// ffmpeg's arguments for a video written to `output` (exposed for tests).
+std::vector<std::string> ffmpegArguments(const VideoSettings& settings, const std::string& output);
 
 class VideoSink : public FrameSink {
  public:

@@ -1,5 +1,7 @@
 #include "scene/output_folder.hpp"
 
+#include "contracts/registry.hpp"
+
 #include <unistd.h>
 #include <cstdio>
 #include <filesystem>
@@ -40,6 +42,25 @@ std::vector<SceneProblem> checkOutputFolder(const std::string& folder, const std
     return {{jsonPath, "cannot write " + found + ": no permission to create files in " + existing.string()}};
   }
   return {};
+}
+
+std::vector<SceneProblem> checkVideoPath(const std::string& video, const std::string& jsonPath) {
+  const std::string found = "found \"" + video + "\"";
+  std::string formats;
+  for (const VideoFormatTraits& format : kVideoFormats) formats += (formats.empty() ? "." : ", .") + std::string(format.name);
+  if (video.empty() || video.back() == '/') return {{jsonPath, found + "; expected a video file name, not a folder"}};
+  std::error_code error;
+  if (fs::is_directory(video, error)) return {{jsonPath, found + ": that is a folder; expected a video file name in it"}};
+  if (!videoFormatOfPath(video))
+    return {{jsonPath, found + "; expected a file name ending in " + formats + " (the format follows the extension)"}};
+  const std::string name = fs::path(video).filename().string();
+  if (name.size() > kMaxOutputNameBytes)
+    return {{jsonPath, found + "; the file name has " + std::to_string(name.size()) + " bytes, at most " +
+                           std::to_string(kMaxOutputNameBytes) + " are allowed (room for the temporary beside it)"}};
+  if (fs::exists(video, error) && !fs::is_regular_file(video, error))
+    return {{jsonPath, found + ": it exists and is not a regular file; refusing to replace it"}};
+  const fs::path parent = fs::path(video).parent_path();
+  return checkOutputFolder(parent.empty() ? "." : parent.string(), jsonPath);
 }
 
 }  // namespace sl

@@ -1,6 +1,7 @@
 #pragma once
 // Can the frames be written? Checked before any work, without creating anything.
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -11,5 +12,13 @@ namespace sl {
 // The folder (or its nearest existing ancestor, if it does not exist yet) must be a directory in
 // which a file can be created: probed with a temporary file that is removed at once.
 std::vector<SceneProblem> checkOutputFolder(const std::string& folder, const std::string& jsonPath);
+
+// A video path that can work: a known extension (.mp4, .webm, .gif), a file name (not a folder, no trailing
+// '/') short enough to leave room for the temporary name beside it, in a folder where a file can be created.
+std::vector<SceneProblem> checkVideoPath(const std::string& video, const std::string& jsonPath);
+
+// The longest file name a frame, video or temporary of ours may have: 255 bytes (NAME_MAX) less the suffix
+// of a temporary (output/temporary_file.hpp).
+inline constexpr std::size_t kMaxOutputNameBytes = 200;
 
 }  // namespace sl

@@ -238,7 +238,7 @@ void readRuns(const json* value, Scene& scene, std::vector<SceneProblem>& proble
 }
 
 void readOutput(const json& value, Scene& scene, std::vector<SceneProblem>& problems) {
-  const JsonObject output(value, "output", problems, {"fps", "width", "height", "folder", "png", "video"});
+  const JsonObject output(value, "output", problems, {"fps", "width", "height", "folder", "png", "video", "video_quality"});
   OutputSettings& spec = scene.output;
   if (const auto fps = output.integer("fps")) {
     if (*fps < 1 || *fps > limits::kMaxFps) {
@@ -256,14 +256,19 @@ void readOutput(const json& value, Scene& scene, std::vector<SceneProblem>& prob
   if (spec.folder.empty()) output.report("folder", "is empty; expected a folder for the frames");
   spec.png = output.boolean("png").value_or(true);
   spec.video = output.string("video").value_or("");
-  for (SceneProblem& problem : checkImageSize(spec.size, !spec.video.empty(), "output")) {
+  if (const auto quality = output.string("video_quality")) {
+    if (const auto kind = detail::pickKind(output.pathOf("video_quality"), *quality, kVideoQualities, problems))
+      spec.videoQuality = *kind;
+  }
+  const auto format = videoFormatOfPath(spec.video);
+  for (SceneProblem& problem : checkImageSize(spec.size, format && traits(*format).needsEvenSize, "output")) {
     problems.push_back(std::move(problem));
   }
 }
 
 }  // namespace
 
-std::vector<SceneProblem> checkImageSize(ImageSize size, bool forVideo, const std::string& path) {
+std::vector<SceneProblem> checkImageSize(ImageSize size, bool evenForVideo, const std::string& path) {
   std::vector<SceneProblem> problems;
   const int minimum = limits::kMinImageSide;
   const std::string allowed = "from " + std::to_string(minimum) + " to " + std::to_string(limits::kMaxImageSide) +
@@ -272,8 +277,9 @@ std::vector<SceneProblem> checkImageSize(ImageSize size, bool forVideo, const st
     const std::string where = path + "." + key;
     if (value < minimum || value > limits::kMaxImageSide) {
       problems.push_back({where, "found " + std::to_string(value) + "; expected " + allowed});
-    } else if (forVideo && value % 2 != 0) {
-      problems.push_back({where, "found " + std::to_string(value) + "; a video (yuv420p) needs an even size"});
+    } else if (evenForVideo && value % 2 != 0) {
+      problems.push_back(
+          {where, "found " + std::to_string(value) + "; an mp4 or webm video (yuv420p) needs an even size"});
     }
   }
   return problems;

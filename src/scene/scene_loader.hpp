@@ -15,8 +15,9 @@ namespace sl {
 Scene loadScene(const std::string& file, const std::vector<std::string>& overrides = {});
 Scene parseScene(const std::string& text, const std::string& file, const std::vector<std::string>& overrides = {});
 
-// The checks on an output size, shared by the scene's output.width/height and the --size option.
-std::vector<SceneProblem> checkImageSize(ImageSize size, bool forVideo, const std::string& path);
+// The checks on an output size, shared by the scene's output.width/height and the --size option; even sides
+// when the video format needs them (VideoFormatTraits::needsEvenSize).
+std::vector<SceneProblem> checkImageSize(ImageSize size, bool evenForVideo, const std::string& path);
 // Refuses frame counts beyond limits::kMaxFrames, naming the numbers.
 std::vector<SceneProblem> checkFrameCount(double duration, int fps);
 

@@ -114,5 +114,38 @@ TEST(ConventionsCli, PipedScenesAreReadOnceAndKeepTheirIdentity) {
   EXPECT_EQ(renderThroughFifo(scene, "1:2").code, 0);  // the same piped scene joins
 }
 
+// Video formats by extension; a video path that cannot work is refused by validate and by render before any
+// frame is drawn.
+TEST(ConventionsCli, VideoPathsAreCheckedUpFrontAndTheFormatFollowsTheExtension) {
+  TempFolder folder;
+  const std::string scene = shippedScene("default.json");
+  fs::create_directories(folder.path() / "existing");
+  for (const std::string& bad : std::vector<std::string>{"out", "out.txt", "out/", "existing", "existing/", "/dev/null",
+                                 std::string(230, 'v') + ".mp4", "missing-parent/sub/x.mp4x"}) {
+    SCOPED_TRACE(bad);
+    const ProcessResult validate = runLinkage({"validate", scene, "--set", "output.video=\"" + bad + "\""}, folder.path());
+    EXPECT_EQ(validate.code, 2) << validate.out;
+    EXPECT_NE(validate.err.find("output.video: found"), std::string::npos) << validate.err;
+    const ProcessResult render =
+        runLinkage({"render", scene, "--size", "160x90", "--frames", "0:2", "--video", bad, "--out", "frames"},
+                   folder.path());
+    EXPECT_EQ(render.code, 2);
+    EXPECT_NE(render.err.find("--video: found"), std::string::npos) << render.err;
+    EXPECT_FALSE(fs::exists(folder.path() / "frames"));
+  }
+  const ProcessResult odd =
+      runLinkage({"render", scene, "--size", "161x91", "--frames", "0:2", "--video", "odd.webm", "--no-png"},
+                 folder.path());
+  EXPECT_EQ(odd.code, 2);
+  EXPECT_NE(odd.err.find("needs an even size"), std::string::npos) << odd.err;
+  const ProcessResult gif = runLinkage(
+      {"render", scene, "--size", "161x91", "--frames", "0:4", "--video", "clip.GIF", "--no-png", "--video-quality", "small"},
+      folder.path());
+  ASSERT_EQ(gif.code, 0) << gif.err;
+  EXPECT_EQ(readFile(folder.path() / "clip.GIF").substr(0, 6), "GIF89a");
+  EXPECT_EQ(runLinkage({"render", scene, "--video", "x.mp4", "--video-quality", "best", "--no-png"}, folder.path()).code,
+            2);
+}
+
 }  // namespace
 }  // namespace sl

@@ -56,7 +56,7 @@ TEST(VideoSink, ProducesAPlayableMp4WithEveryFrame) {
   const std::string path = folder + "/clip.mp4";
   FrameManifest manifest(folder, {{"test", "video"}}, "clip.mp4.manifest.json");
   {
-    VideoSink sink({path, 64, 48, 30}, manifest);
+    VideoSink sink({path, VideoFormat::Mp4, VideoQuality::High, 64, 48, 30}, manifest);
     for (int k = 0; k < 12; ++k) sink.consume(k, gradient(64, 48, k));
     sink.finish();
   }
@@ -67,6 +67,43 @@ TEST(VideoSink, ProducesAPlayableMp4WithEveryFrame) {
   EXPECT_EQ(frames, "h264,yuv420p,12\n");
   EXPECT_EQ(manifest.entry(11)->pixelSha256, sha256Hex(gradient(64, 48, 11).rgb));
   EXPECT_TRUE(manifest.entry(11)->file.empty());
+}
+
+// Every format the extension can ask for: the codec ffprobe sees, every frame, the same bytes twice, and odd
+// sizes allowed where the format has no chroma subsampling (GIF).
+TEST(VideoSink, WebmAndGifByExtensionWithEveryFrameDeterministically) {
+  const testing::TempFolder temp;
+  const std::string folder = temp.path();
+  struct Case {
+    VideoFormat format;
+    int width, height;
+    std::string probe;
+  };
+  for (const Case& c : {Case{VideoFormat::Webm, 64, 48, "vp9,yuv420p,12\n"}, Case{VideoFormat::Gif, 63, 47, "gif,bgra,12\n"}}) {
+    const std::string extension(traits(c.format).name);
+    SCOPED_TRACE(extension);
+    std::string first;
+    for (int take = 0; take < 2; ++take) {
+      const std::string path = folder + "/clip." + extension;
+      FrameManifest manifest(folder, {{"test", extension}}, "clip." + extension + ".manifest.json",
+                             FrameManifest::Existing::replace);
+      {
+        VideoSink sink({path, c.format, VideoQuality::Medium, c.width, c.height, 30}, manifest);
+        for (int k = 0; k < 12; ++k) sink.consume(k, gradient(c.width, c.height, k));
+        sink.finish();
+      }
+      EXPECT_EQ(run("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+                    "stream=codec_name,pix_fmt,nb_read_frames -of csv=p=0 '" + path + "'"),
+                c.probe);
+      const std::string bytes = sha256OfFile(path);
+      if (take == 0) first = bytes;
+      else EXPECT_EQ(bytes, first) << "the same frames gave different bytes";
+    }
+  }
+  EXPECT_THROW(VideoSink({folder + "/odd.webm", VideoFormat::Webm, VideoQuality::High, 63, 47, 30},
+                         *std::make_unique<FrameManifest>(folder, nlohmann::json{{"t", 1}}, "x.json",
+                                                         FrameManifest::Existing::replace)),
+               std::invalid_argument);
 }
 
 std::vector<std::string> folderNames(const std::string& folder) {
@@ -83,14 +120,14 @@ TEST(VideoSink, AnUnfinishedVideoLeavesTheEarlierOneUntouched) {
   const std::string path = folder + "/clip.mp4";
   {
     FrameManifest manifest(folder, {{"test", "first"}}, "clip.mp4.manifest.json", FrameManifest::Existing::replace);
-    VideoSink sink({path, 64, 48, 30}, manifest);
+    VideoSink sink({path, VideoFormat::Mp4, VideoQuality::High, 64, 48, 30}, manifest);
     for (int k = 0; k < 3; ++k) sink.consume(k, gradient(64, 48, k));
     sink.finish();
   }
   const std::string firstVideo = sha256OfFile(path), firstManifest = sha256OfFile(path + ".manifest.json");
   {
     FrameManifest manifest(folder, {{"test", "second"}}, "clip.mp4.manifest.json", FrameManifest::Existing::replace);
-    VideoSink sink({path, 64, 48, 30}, manifest);
+    VideoSink sink({path, VideoFormat::Mp4, VideoQuality::High, 64, 48, 30}, manifest);
     for (int k = 0; k < 5; ++k) sink.consume(k, gradient(64, 48, k + 1));
   }  // destroyed without finish()
   EXPECT_EQ(sha256OfFile(path), firstVideo);
@@ -107,7 +144,7 @@ TEST(VideoSink, AFinishedVideoReplacesTheEarlierOneAndItsManifest) {
   const std::string path = folder + "/take:2.mp4";  // a colon: ffmpeg must not read "take" as a protocol
   for (const int frames : {4, 2}) {
     FrameManifest manifest(folder, {{"frames", frames}}, "take:2.mp4.manifest.json", FrameManifest::Existing::replace);
-    VideoSink sink({path, 64, 48, 30}, manifest);
+    VideoSink sink({path, VideoFormat::Mp4, VideoQuality::High, 64, 48, 30}, manifest);
     for (int k = 0; k < frames; ++k) sink.consume(k, gradient(64, 48, k));
     sink.finish();
   }
@@ -124,8 +161,8 @@ TEST(VideoSink, RejectsOddSizesAndMissingFfmpeg) {
   const testing::TempFolder temp;
   const std::string folder = temp.path();
   FrameManifest manifest(folder, {{"test", "video"}}, "v.manifest.json");
-  EXPECT_THROW(VideoSink({folder + "/a.mp4", 63, 48, 30}, manifest), std::invalid_argument);
-  VideoSettings missing{folder + "/b.mp4", 64, 48, 30};
+  EXPECT_THROW(VideoSink({folder + "/a.mp4", VideoFormat::Mp4, VideoQuality::High, 63, 48, 30}, manifest), std::invalid_argument);
+  VideoSettings missing{folder + "/b.mp4", VideoFormat::Mp4, VideoQuality::High, 64, 48, 30};
   missing.ffmpeg = "/nonexistent/ffmpeg";
   EXPECT_THROW(VideoSink(missing, manifest), std::runtime_error);
 }
@@ -134,7 +171,7 @@ TEST(VideoSink, FfmpegFailureIsReported) {
   const testing::TempFolder temp;
   const std::string folder = temp.path();
   FrameManifest manifest(folder, {{"test", "video"}}, "v.manifest.json");
-  VideoSink sink({folder + "/no/such/dir/c.mp4", 64, 48, 30}, manifest);  // ffmpeg cannot open the output
+  VideoSink sink({folder + "/no/such/dir/c.mp4", VideoFormat::Mp4, VideoQuality::High, 64, 48, 30}, manifest);  // ffmpeg cannot open the output
   EXPECT_THROW(
       {
         for (int k = 0; k < 50; ++k) sink.consume(k, gradient(64, 48, k));
