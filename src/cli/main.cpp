@@ -6,6 +6,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/exit_codes.hpp"
+#include "cli/help_format.hpp"
 #include "render/renderer.hpp"
 
 namespace sl {
@@ -36,6 +37,7 @@ int main(int argc, char** argv) {
       "linkage: geodesics of planar linkages on their configuration spheres, rendered to frames and video.\n"
       "Write or copy a scene file (scenes/README.md), then run one command.",
       "linkage"};
+  app.formatter(std::make_shared<sl::HelpFormatter>());  // subcommands inherit it
   bool version = false;
   app.add_flag("--version", version, "print the version, commit, compiler and GL renderer, then exit");
   app.require_subcommand(0, 1);

@@ -147,5 +147,21 @@ TEST(ConventionsCli, VideoPathsAreCheckedUpFrontAndTheFormatFollowsTheExtension)
             2);
 }
 
+// Help texts read as documentation: no parser artefacts, defaults in words.
+TEST(ConventionsCli, HelpTextsHaveNoParserArtefacts) {
+  TempFolder folder;
+  for (const char* command : {"render", "simulate", "validate", "diff", "list-methods", "bench", "stability", "geometry"}) {
+    SCOPED_TRACE(command);
+    const ProcessResult help = runLinkage({command, "--help"}, folder.path());
+    EXPECT_EQ(help.code, 0) << help.err;
+    for (const char* artefact : {"{false}", "{true}", ":INT", ":FLOAT", ":POSITIVE", " in [", "TEXT="})
+      EXPECT_EQ(help.out.find(artefact), std::string::npos) << artefact << " in\n" << help.out;
+    EXPECT_NE(help.out.find("xample"), std::string::npos) << "no example in\n" << help.out;
+  }
+  const ProcessResult stability = runLinkage({"stability", "--help"}, folder.path());
+  EXPECT_NE(stability.out.find("--grid INT"), std::string::npos);
+  EXPECT_NE(stability.out.find("(default 64)"), std::string::npos) << stability.out;
+}
+
 }  // namespace
 }  // namespace sl
