@@ -19,5 +19,7 @@ void addBenchCommand(CLI::App& app);
 void addStabilityCommand(CLI::App& app);
 // `linkage geometry`: curvature, bending and stiffness of the configuration sphere.
 void addGeometryCommand(CLI::App& app);
+// `linkage schema`: the JSON Schema of scene files.
+void addSchemaCommand(CLI::App& app);
 
 }  // namespace sl

@@ -52,6 +52,7 @@ int main(int argc, char** argv) {
   sl::addBenchCommand(app);
   sl::addStabilityCommand(app);
   sl::addGeometryCommand(app);
+  sl::addSchemaCommand(app);
   try {
     app.parse(argc, argv);
     if (version) {

@@ -13,6 +13,9 @@ inline constexpr int kMinRods = 3;
 inline constexpr int kMaxRods = 12;
 inline constexpr int kMaxFps = 1000;
 inline constexpr int kMaxPathSamplesPerFrame = 100;
+// Adaptive integrators' relative and absolute tolerance (below 1e-16 is below double precision).
+inline constexpr double kMinTolerance = 1e-16;
+inline constexpr double kMaxTolerance = 1e-1;
 inline constexpr double kMinFieldOfViewDegrees = 5;
 inline constexpr double kMaxFieldOfViewDegrees = 120;
 // How long a render waits for a lock another process holds on its output folder before giving up (a process

@@ -189,7 +189,8 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
     knownIntegrator = kind.has_value();
   }
   if (const auto tolerance = run.number("tolerance")) {
-    if (run.checkRange("tolerance", *tolerance, 1e-16, 1e-1, "a tolerance from 1e-16 to 0.1")) {
+    if (run.checkRange("tolerance", *tolerance, limits::kMinTolerance, limits::kMaxTolerance,
+                       "a tolerance from 1e-16 to 0.1")) {
       spec.config.tolerance = *tolerance;
     }
   }
