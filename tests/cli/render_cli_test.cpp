@@ -26,7 +26,8 @@ namespace fs = std::filesystem;
 TEST(RenderCli, EveryShippedSceneValidatesAndRendersAFewSmallFrames) {
   std::vector<std::string> names;
   for (const auto& entry : fs::directory_iterator(sourcePath("scenes")))
-    if (entry.path().extension() == ".json") names.push_back(entry.path().filename().string());
+    if (entry.path().extension() == ".json" && entry.path().filename() != "scene.schema.json")
+      names.push_back(entry.path().filename().string());
   std::sort(names.begin(), names.end());
   ASSERT_GE(names.size(), 9u);
   for (const std::string& name : names) {
