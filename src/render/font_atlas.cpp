@@ -34,6 +34,21 @@ struct FontAtlas::Packed {
   float lineHeight[3];
 };
 
+std::string FontAtlas::fitted(const std::string& utf8, TextSize size, float maxWidth) const {
+  if (width(utf8, size) <= maxWidth) return utf8;
+  const std::string ellipsis = "\u2026";
+  std::string cut = utf8;
+  while (!cut.empty()) {
+    // Drop the last code point (and any trailing spaces), never half of one.
+    std::size_t end = cut.size() - 1;
+    while (end > 0 && (static_cast<unsigned char>(cut[end]) & 0xC0) == 0x80) --end;
+    cut.erase(end);
+    while (!cut.empty() && cut.back() == ' ') cut.pop_back();
+    if (width(cut + ellipsis, size) <= maxWidth) return cut + ellipsis;
+  }
+  return width(ellipsis, size) <= maxWidth ? ellipsis : "";
+}
+
 std::vector<std::uint32_t> decodeUtf8(const std::string& text) {
   std::vector<std::uint32_t> out;
   for (std::size_t i = 0; i < text.size();) {

@@ -23,6 +23,9 @@ class FontAtlas {
   FontAtlas& operator=(const FontAtlas&) = delete;
 
   float width(const std::string& utf8, TextSize size) const;
+  // The text as it fits in maxWidth pixels: whole, or cut at a code point with an ellipsis (U+2026) added;
+  // empty if not even the ellipsis fits.
+  std::string fitted(const std::string& utf8, TextSize size, float maxWidth) const;
   float ascent(TextSize size) const;  // pixels above the baseline
   float lineHeight(TextSize size) const;
   // Draws UTF-8 text with its baseline at y, starting at x; returns the x after the last glyph.

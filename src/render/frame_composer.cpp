@@ -23,9 +23,11 @@ ImageSize checkedSize(ImageSize size) {
   return size;
 }
 
-// Small, Normal and Title text scale with the frame height (15, 18 and 24 px at 720p).
-std::array<float, 3> textHeights(int height) {
-  return {std::max(10.0f, 0.021f * height), std::max(10.0f, 0.025f * height), std::max(11.0f, 0.034f * height)};
+// Small, Normal and Title text scale with the frame's shorter side (15, 18 and 24 px at 1280x720 and at
+// 720x1280), so portrait frames get the text of the landscape frame of the same width.
+std::array<float, 3> textHeights(ImageSize size) {
+  const float side = static_cast<float>(std::min(size.width, size.height));
+  return {std::max(10.0f, 0.021f * side), std::max(10.0f, 0.025f * side), std::max(11.0f, 0.034f * side)};
 }
 
 }  // namespace
@@ -35,7 +37,7 @@ FrameComposer::FrameComposer(const ViewSettings& view, ImageSize size)
       size_(checkedSize(size)),
       panels_(effectivePanels(view)),
       rects_(layoutPanels(panels_, size_.width, size_.height)),
-      font_(kFontPath, textHeights(size_.height)) {}
+      font_(kFontPath, textHeights(size_)) {}
 
 DrawList FrameComposer::compose(const FrameState& frame) const {
   DrawList list;

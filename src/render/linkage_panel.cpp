@@ -60,8 +60,9 @@ void drawRun(const PanelContext& context, const RunFrame* run, const PixelRect& 
   drawTrails(*run, view, rod, batch);
   drawChain(*run, view, frame.baseLength, rod, batch);
   if (label) {
-    const float width = context.font.width(run->name, TextSize::Small);
-    context.font.draw(batch, run->name, TextSize::Small, area.x + 0.5f * (area.width - width),
+    const std::string name = context.font.fitted(run->name, TextSize::Small, area.width);
+    const float width = context.font.width(name, TextSize::Small);
+    context.font.draw(batch, name, TextSize::Small, area.x + 0.5f * (area.width - width),
                       area.y + area.height - 0.4f * context.font.lineHeight(TextSize::Small), toRgba(run->color));
   }
 }

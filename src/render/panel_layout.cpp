@@ -1,5 +1,6 @@
 #include "render/panel_layout.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace sl::render {
@@ -29,7 +30,9 @@ std::vector<PixelRect> layoutPanels(const std::vector<PanelSpec>& panels, int wi
       others.push_back(i);
     }
   }
-  const float bandHeight = std::round(0.14f * h);
+  // Text scales with the shorter side (frame_composer.cpp), so its bands do too: a portrait frame is not a
+  // landscape one stretched.
+  const float bandHeight = std::round(0.14f * std::min(w, h));
   float top = 0;
   for (std::size_t i : bands) {
     rects[i] = {0, top, w, bandHeight};
@@ -37,6 +40,20 @@ std::vector<PixelRect> layoutPanels(const std::vector<PanelSpec>& panels, int wi
   }
   if (others.empty()) return rects;
   const float rest = h - top;
+  if (h > w && others.size() > 1) {
+    // Portrait: the first panel as a square (at most 55% of the height) across the top, the others in rows
+    // below it across the whole width.
+    const float mainHeight = std::round(std::min(w, 0.55f * rest));
+    rects[others[0]] = {0, top, w, mainHeight};
+    const float below = rest - mainHeight;
+    const float rowCount = static_cast<float>(others.size() - 1);
+    for (std::size_t k = 1; k < others.size(); ++k) {
+      const float y0 = std::round(top + mainHeight + below * float(k - 1) / rowCount);
+      const float y1 = std::round(top + mainHeight + below * float(k) / rowCount);
+      rects[others[k]] = {0, y0, w, y1 - y0};
+    }
+    return rects;
+  }
   const float mainWidth = others.size() == 1 ? w : std::round(0.56f * w);
   rects[others[0]] = {0, top, mainWidth, rest};
   const float columnCount = static_cast<float>(others.size() - 1);

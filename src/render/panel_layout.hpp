@@ -1,7 +1,8 @@
 #pragma once
 // Where each panel goes. Panels with a rect keep it (fractions of the frame from the top-left);
 // the others are laid out automatically: text panels as bands across the top, the first other panel
-// as the large left area, the rest stacked in a column on the right.
+// as the large left area, the rest stacked in a column on the right; in a portrait frame the first panel
+// across the top and the rest in rows below it.
 
 #include <vector>
 

@@ -158,7 +158,8 @@ void drawPlotPanel(const PanelContext& c, int plotIndex, ShapeBatch& batch) {
   const PlotArea area{c.rect.x + labelWidth + 14, c.rect.y + 1.9f * line, c.rect.x + c.rect.width - 16,
                       c.rect.y + c.rect.height - 2.4f * line};
   if (area.x1 - area.x0 < 10 || area.y1 - area.y0 < 10) return;  // too small to draw anything useful
-  c.font.draw(batch, plot.title, TextSize::Normal, area.x0, c.rect.y + 1.3f * line, palette::ink);
+  c.font.draw(batch, c.font.fitted(plot.title, TextSize::Normal, c.rect.x + c.rect.width - area.x0 - 4), TextSize::Normal,
+              area.x0, c.rect.y + 1.3f * line, palette::ink);
   c.font.draw(batch, "t", TextSize::Small, area.x1 - c.font.width("t", TextSize::Small),
               c.rect.y + c.rect.height - 0.35f * line, palette::softInk);
   drawAxes(c, area, x, y, batch);

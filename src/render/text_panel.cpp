@@ -27,10 +27,12 @@ void drawTextPanel(const PanelContext& c, ShapeBatch& batch) {
   const float titleLine = c.font.lineHeight(TextSize::Title);
   const float line = c.font.lineHeight(TextSize::Normal);
   float y = c.rect.y + 0.35f * line + c.font.ascent(TextSize::Title);
-  c.font.draw(batch, c.frame.title, TextSize::Title, c.rect.x + pad, y, palette::ink);
   const std::string time = "t = " + format("%.2f", c.frame.time) + " / " + format("%.2f", c.frame.duration);
-  c.font.draw(batch, time, TextSize::Normal, c.rect.x + c.rect.width - pad - c.font.width(time, TextSize::Normal), y,
-              palette::ink);
+  const float timeWidth = c.font.width(time, TextSize::Normal);
+  // The title gives way to the time: shortened with an ellipsis rather than running under it.
+  c.font.draw(batch, c.font.fitted(c.frame.title, TextSize::Title, c.rect.width - timeWidth - 4 * pad), TextSize::Title,
+              c.rect.x + pad, y, palette::ink);
+  c.font.draw(batch, time, TextSize::Normal, c.rect.x + c.rect.width - pad - timeWidth, y, palette::ink);
 
   // Runs flow left to right, wrapping to the next line.
   y += 0.15f * titleLine + line;

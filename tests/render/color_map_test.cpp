@@ -108,3 +108,28 @@ TEST(SpherePanel, DecorationColoursTheSphereAndMakesRoomForTheBar) {
 
 }  // namespace
 }  // namespace sl::render
+
+namespace sl::render {
+namespace {
+
+// Titles and captions give way rather than overflow: cut at a code point, with an ellipsis, within the width.
+TEST(FontAtlas, FittedTextStaysWithinItsWidth) {
+  const FrameComposer composer(ViewSettings{}, {640, 360});
+  const FontAtlas& font = composer.font();
+  const std::string title = "divergence from christoffel (published) (max hinge distance)";
+  EXPECT_EQ(font.fitted(title, TextSize::Normal, 1e6), title);
+  const float whole = font.width(title, TextSize::Normal);
+  for (float width : {0.8f * whole, 0.4f * whole, 40.0f}) {
+    const std::string cut = font.fitted(title, TextSize::Normal, width);
+    EXPECT_LE(font.width(cut, TextSize::Normal), width);
+    EXPECT_EQ(cut.substr(cut.size() - 3), "\u2026");
+    EXPECT_EQ(cut.rfind(title.substr(0, cut.size() - 3), 0), 0u) << cut;
+  }
+  EXPECT_EQ(font.fitted("\u03c6 = \u03c0/2 and more", TextSize::Normal, 1.0f), "");
+  const std::string greek = font.fitted("\u03c6\u03c6\u03c6\u03c6\u03c6\u03c6\u03c6\u03c6", TextSize::Normal, 40.0f);
+  EXPECT_EQ(decodeUtf8(greek).back(), 0x2026u);  // never half a code point
+  for (std::uint32_t cp : decodeUtf8(greek)) EXPECT_NE(cp, 0xFFFDu);
+}
+
+}  // namespace
+}  // namespace sl::render

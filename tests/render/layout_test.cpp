@@ -47,6 +47,31 @@ TEST(LinkageView, IsTightForFourRods) {
   EXPECT_NEAR(view(1.5, 0).x, 200, 1e-3);  // centred
 }
 
+// Portrait frames stack: the first panel across the top (square, at most 55% of the height below the text
+// band), the rest in full-width rows below; the text band scales with the shorter side.
+TEST(PanelLayout, PortraitFramesStackThePanels) {
+  std::vector<PanelSpec> panels(4);
+  panels[0].kind = PanelKind::Text;
+  panels[1].kind = PanelKind::Sphere;
+  panels[2].kind = PanelKind::Linkage;
+  panels[3].kind = PanelKind::Plot;
+  const auto rects = layoutPanels(panels, 1080, 1920);
+  EXPECT_FLOAT_EQ(rects[0].height, std::round(0.14f * 1080));
+  EXPECT_FLOAT_EQ(rects[1].width, 1080);
+  EXPECT_FLOAT_EQ(rects[1].height, std::round(0.55f * (1920 - rects[0].height)));
+  EXPECT_FLOAT_EQ(rects[1].y, rects[0].height);
+  for (int i : {2, 3}) {
+    EXPECT_FLOAT_EQ(rects[i].x, 0);
+    EXPECT_FLOAT_EQ(rects[i].width, 1080);
+  }
+  EXPECT_FLOAT_EQ(rects[2].y, rects[1].y + rects[1].height);
+  EXPECT_FLOAT_EQ(rects[3].y + rects[3].height, 1920);
+  // The same panels in landscape keep the side-by-side layout.
+  const auto wide = layoutPanels(panels, 1920, 1080);
+  EXPECT_LT(wide[1].width, 1920);
+  EXPECT_FLOAT_EQ(wide[2].x, wide[1].width);
+}
+
 TEST(PanelLayout, AutomaticLayoutTilesTheFrame) {
   std::vector<PanelSpec> panels(4);
   panels[0].kind = PanelKind::Text;
