@@ -18,6 +18,7 @@
 #include "cli/commands.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/scene_input.hpp"
+#include "cli/summary.hpp"
 #include "contracts/csv_format.hpp"
 #include "geometry/curvature_grid.hpp"
 #include "output/atomic_file.hpp"
@@ -218,7 +219,7 @@ void renderMap(const ChartGrid& grid, const std::vector<CurvatureSample>& sample
 }
 
 void runGeometry(const GeometryArguments& args) {
-  const auto started = std::chrono::steady_clock::now();
+  const CommandSummary summary("geometry", args.quiet);
   const int modes = (args.grid > 0 || !args.maps.empty()) + !args.points.empty() + args.summary + !args.sweep.empty();
   if (modes != 1)
     throw CommandExit(kExitBadInput,
@@ -261,14 +262,8 @@ void runGeometry(const GeometryArguments& args) {
     if (!args.chart.empty()) renderSweepChart(sweep, args.chart);
     done = "L sweep of " + std::to_string(range.count) + " values";
   }
-  if (!args.quiet) {
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    std::ostringstream line;
-    line.precision(3);
-    line << "geometry: " << done << " of \"" << scene.name << "\" (L = " << scene.chain.baseLength << ") in " << seconds
-         << " s" << (args.csv.empty() ? "" : " -> " + args.csv);
-    std::cerr << line.str() << '\n';
-  }
+  summary.print(done + " of \"" + scene.name + "\" (L = " + shortest(scene.chain.baseLength) + ")" +
+                (args.csv.empty() ? "" : " -> " + args.csv));
 }
 
 }  // namespace

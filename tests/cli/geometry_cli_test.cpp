@@ -37,7 +37,7 @@ TEST(GeometryCli, SummaryMatchesTheIndependentFiniteDifferenceFigures) {
   EXPECT_NEAR(summary["K_max"]["value"].get<double>(), 4.15, 1e-2);
   EXPECT_NEAR(summary["total_curvature"].get<double>(), 4 * M_PI, 1e-9);
   EXPECT_LT(std::abs(summary["gauss_bonnet_error"].get<double>()), 1e-9);
-  EXPECT_NE(result.err.find("geometry: summary"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("linkage geometry: summary of \"default\" (L = 3) in "), std::string::npos) << result.err;
 }
 
 TEST(GeometryCli, GridAndPointsAgree) {
