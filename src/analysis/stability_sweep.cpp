@@ -201,13 +201,13 @@ bool mergeStabilityShards(const std::string& outDir, const std::string& kind, in
 }
 
 std::vector<std::string> stabilityStatusNames() {
-  // The summary's columns and the maps' colours follow this order, so it is kept fixed: the chart's own
-  // failure (what these maps are about) before the other stop reasons, and "pole-singularity", which no run
-  // reports (its column is always 0) but whose column the summary CSVs carry.
+  // The summary's columns and the maps' colours follow this order, so it is kept fixed: the single chart's own
+  // failures (what these maps are about) before the other stop reasons.
   std::vector<std::string> names = {nameOf(Verdict::Ok), nameOf(Verdict::WrongPath), nameOf(StopReason::PoleFoldBack),
-                                    "pole-singularity"};
+                                    nameOf(StopReason::FieldBlowUp)};
   for (const StopReasonTraits& reason : kStopReasons)
-    if (reason.kind != StopReason::PoleFoldBack) names.emplace_back(reason.name);
+    if (reason.kind != StopReason::PoleFoldBack && reason.kind != StopReason::FieldBlowUp)
+      names.emplace_back(reason.name);
   names.push_back(nameOf(Verdict::ReferenceStopped));
   names.push_back("other");
   return names;

@@ -50,10 +50,18 @@ struct PlotSeries {
   std::vector<double> values;  // non-finite or non-positive values on a log axis are skipped, never drawn
 };
 
+// Where a plot's legend goes: the corner its data leaves emptiest over the whole animation.
+enum class LegendCorner { TopRight, TopLeft, BottomRight, BottomLeft };
+
 struct PlotFrame {
   std::string title;  // e.g. "divergence |p_a - p_b|" or "relative energy error"
   bool logY = true;
   double timeMin = 0, timeMax = 1;  // the x axis spans the whole animation, so it does not jump
+  // The y axis's data range over the whole animation (or the scene's y_range), so it does not jump either;
+  // empty when no value of the whole animation can be drawn.
+  std::optional<std::array<double, 2>> valueRange;
+  LegendCorner legendCorner = LegendCorner::TopRight;
+  std::string emptyNote;  // why the plot stays empty for the whole animation, if it does
   std::vector<PlotSeries> series;
 };
 

@@ -61,7 +61,7 @@ inline constexpr std::array<IntegratorTraits, 4> kIntegrators{{
 
 // === Why a run stops (the watchdogs of simulation/trajectory.cpp, and a method's own failure)
 
-enum class StopReason { NonFinite, PoleFoldBack, EnergyBlowUp, StepSizeCollapse, RodLength, MaxSteps };
+enum class StopReason { NonFinite, PoleFoldBack, FieldBlowUp, EnergyBlowUp, StepSizeCollapse, RodLength, MaxSteps };
 
 struct StopReasonTraits {
   StopReason kind;
@@ -69,9 +69,12 @@ struct StopReasonTraits {
   std::string_view meaning;  // one line for docs and help texts
 };
 
-inline constexpr std::array<StopReasonTraits, 6> kStopReasons{{
+inline constexpr std::array<StopReasonTraits, 7> kStopReasons{{
     {StopReason::NonFinite, "non-finite", "the state became NaN or infinite"},
     {StopReason::PoleFoldBack, "pole-fold-back", "a single-chart method crossed a pole of its chart"},
+    {StopReason::FieldBlowUp, "field-blow-up",
+     "one step moved a single-chart method's state further than any smooth motion can (its vector field blew up, "
+     "as the published metric does on the seam t = +-pi/2)"},
     {StopReason::EnergyBlowUp, "energy-blow-up", "the relative energy drift passed the watchdog's limit"},
     {StopReason::StepSizeCollapse, "step-size-collapse", "the integrator's step shrank to nothing"},
     {StopReason::RodLength, "rod-length", "a rod's length drifted past the watchdog's limit"},

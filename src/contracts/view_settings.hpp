@@ -29,6 +29,7 @@ struct CameraSpec {
 struct PlotSpec {
   PlotKind kind = PlotKind::Divergence;
   bool logY = true;
+  std::optional<std::array<double, 2>> yRange;  // by hand; default: the data of the whole animation
 };
 
 // The sphere panel's surface (4 rods only): colour by a geometric quantity, stiffness ellipses on top.

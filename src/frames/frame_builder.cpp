@@ -46,7 +46,8 @@ FrameBuilder::FrameBuilder(const Scene& scene, const InitialState& start, std::v
       frameCount_(scene.frameCount()),
       history_(runs_.size()),
       divergence_(runs_.empty() ? 0 : runs_.size() - 1),
-      sphereDecoration_(makeSphereDecoration(scene.chain, scene.view.sphereSurface)) {
+      sphereDecoration_(makeSphereDecoration(scene.chain, scene.view.sphereSurface)),
+      plotOverviews_(overviewPlots(scene, start)) {
   for (size_t i = 0; i < runs_.size(); ++i) {
     RunFrame& frame = history_[i].frame;
     frame.name = scene.runs[i].name;
@@ -135,10 +136,14 @@ FrameState FrameBuilder::snapshot(int k) const {
   state.viewSpace = view_.space();
   state.sphereDecoration = sphereDecoration_;
   for (const RunHistory& history : history_) state.runs.push_back(history.frame);
-  for (const PlotSpec& spec : scene_.view.plots) {
+  for (std::size_t p = 0; p < scene_.view.plots.size(); ++p) {
+    const PlotSpec& spec = scene_.view.plots[p];
     PlotFrame plot;
     plot.logY = spec.logY;
     plot.timeMax = scene_.duration;
+    plot.valueRange = plotOverviews_[p].valueRange;
+    plot.legendCorner = plotOverviews_[p].legendCorner;
+    plot.emptyNote = plotOverviews_[p].emptyNote;
     if (spec.kind == PlotKind::Divergence) {
       plot.title = "divergence from " + scene_.runs[0].name + " (max hinge distance)";
       for (size_t run = 1; run < runs_.size(); ++run) {

@@ -11,6 +11,7 @@
 #include "contracts/frame_state.hpp"
 #include "contracts/run_config.hpp"
 #include "frames/configuration_view.hpp"
+#include "frames/plot_overview.hpp"
 #include "scene/scene.hpp"
 #include "simulation/trajectory.hpp"
 
@@ -51,6 +52,7 @@ class FrameBuilder {
   std::vector<double> plotTimes_;
   std::vector<std::vector<double>> divergence_;  // [run - 1][frame]: run 0 against run
   std::shared_ptr<const SphereDecoration> sphereDecoration_;  // computed once, shared by every frame
+  std::vector<PlotOverview> plotOverviews_;                   // per plot: the whole animation's range, legend
 };
 
 // The default colour of run i (a colour-blind-safe palette), unless the scene gives one.

@@ -42,6 +42,16 @@ Axis linearAxis(double lo, double hi, int count) {
   return axis;
 }
 
+// Exactly [lo, hi] (the animation's time span), with ticks at nice steps inside it.
+Axis spanAxis(double lo, double hi, int count) {
+  if (!(hi > lo)) hi = lo + 1;
+  const double step = niceStep(hi - lo, count);
+  Axis axis{lo, hi, false, {}};
+  for (double t = std::ceil(lo / step - 1e-9) * step; t <= hi + 1e-9 * step; t += step)
+    axis.ticks.push_back(std::abs(t) < 1e-12 * step ? 0 : t);
+  return axis;
+}
+
 Axis logAxis(double lo, double hi) {
   double a = std::floor(std::log10(lo)), b = std::ceil(std::log10(hi));
   if (b <= a) b = a + 1;
@@ -71,6 +81,10 @@ std::string tickLabel(const Axis& axis, double v) {
 }
 
 Axis valueAxis(const PlotFrame& plot) {
+  if (plot.valueRange) {  // the whole animation's: the axis stays still from the first frame to the last
+    const auto [lo, hi] = *plot.valueRange;
+    if (plot.logY ? lo > 0 && hi >= lo : hi >= lo) return plot.logY ? logAxis(lo, hi) : linearAxis(lo, hi, 4);
+  }
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const auto& series : plot.series)
     for (double v : series.values)
@@ -123,18 +137,21 @@ void drawSeries(const PlotSeries& series, const Axis& x, const Axis& y, const Pl
   batch.polyline(points);
 }
 
-// Top right inside the plot, on a veil of the background colour: lines that run under it stay faintly
-// visible, and the labels stay readable.
+// In the corner the data leaves emptiest over the whole animation (PlotFrame::legendCorner), on a veil of the
+// background colour: lines that run under it stay faintly visible, and the labels stay readable.
 void drawLegend(const PanelContext& c, const PlotFrame& plot, const PlotArea& area, ShapeBatch& batch) {
   if (plot.series.empty()) return;
   const float line = c.font.lineHeight(TextSize::Small), ascent = c.font.ascent(TextSize::Small);
   float widest = 0;
   for (const auto& series : plot.series) widest = std::max(widest, c.font.width(series.label, TextSize::Small));
-  const float right = area.x1 - 8, left = right - widest - 22, top = area.y0 + 2;
+  const float height = line * float(plot.series.size()) + 0.35f * ascent;
+  const bool onRight = plot.legendCorner == LegendCorner::TopRight || plot.legendCorner == LegendCorner::BottomRight;
+  const bool onTop = plot.legendCorner == LegendCorner::TopRight || plot.legendCorner == LegendCorner::TopLeft;
+  const float right = onRight ? area.x1 - 8 : area.x0 + 8 + widest + 22 + 6, left = right - widest - 22;
+  const float top = onTop ? area.y0 + 2 : area.y1 - 2 - height;
   const ColorRGB veil = c.settings.background;
-  batch.rect(left - 6, top, area.x1 - 2, top + line * float(plot.series.size()) + 0.35f * ascent,
-             {veil.r, veil.g, veil.b, 0.85f});
-  float y = area.y0 + line;
+  batch.rect(left - 6, top, right + 6, top + height, {veil.r, veil.g, veil.b, 0.85f});
+  float y = top + line - 2;
   for (const auto& series : plot.series) {
     const float x = right - c.font.width(series.label, TextSize::Small);
     batch.capsule({x - 22, y - 0.35f * ascent}, {x - 6, y - 0.35f * ascent}, 1.3f, toRgba(series.color));
@@ -152,7 +169,7 @@ void drawPlotPanel(const PanelContext& c, int plotIndex, ShapeBatch& batch) {
   const PlotFrame& plot = plotIndex >= 0 && plotIndex < int(plots.size()) ? plots[plotIndex] : empty;
   const float line = c.font.lineHeight(TextSize::Small);
   const Axis y = valueAxis(plot);
-  const Axis x = linearAxis(plot.timeMin, plot.timeMax > plot.timeMin ? plot.timeMax : plot.timeMin + 1, 5);
+  const Axis x = spanAxis(plot.timeMin, plot.timeMax, 5);
   float labelWidth = 0;
   for (double v : y.ticks) labelWidth = std::max(labelWidth, c.font.width(tickLabel(y, v), TextSize::Small));
   const PlotArea area{c.rect.x + labelWidth + 14, c.rect.y + 1.9f * line, c.rect.x + c.rect.width - 16,
@@ -160,10 +177,20 @@ void drawPlotPanel(const PanelContext& c, int plotIndex, ShapeBatch& batch) {
   if (area.x1 - area.x0 < 10 || area.y1 - area.y0 < 10) return;  // too small to draw anything useful
   c.font.draw(batch, c.font.fitted(plot.title, TextSize::Normal, c.rect.x + c.rect.width - area.x0 - 4), TextSize::Normal,
               area.x0, c.rect.y + 1.3f * line, palette::ink);
-  c.font.draw(batch, "t", TextSize::Small, area.x1 - c.font.width("t", TextSize::Small),
-              c.rect.y + c.rect.height - 0.35f * line, palette::softInk);
+  // The axis name beyond its end, level with the axis: clear of every tick label below it.
+  c.font.draw(batch, "t", TextSize::Small, area.x1 + 4, area.y1 + 0.35f * c.font.ascent(TextSize::Small),
+              palette::softInk);
   drawAxes(c, area, x, y, batch);
-  for (const auto& series : plot.series) drawSeries(series, x, y, area, batch);
+  bool anyDrawn = false;
+  for (const auto& series : plot.series) {
+    drawSeries(series, x, y, area, batch);
+    for (double v : series.values) anyDrawn = anyDrawn || drawable(v, plot.logY);
+  }
+  if (!anyDrawn && !plot.emptyNote.empty()) {  // a plot that stays empty says why
+    const std::string note = c.font.fitted(plot.emptyNote, TextSize::Small, area.x1 - area.x0 - 8);
+    c.font.draw(batch, note, TextSize::Small, 0.5f * (area.x0 + area.x1 - c.font.width(note, TextSize::Small)),
+                0.5f * (area.y0 + area.y1), palette::softInk);
+  }
   drawLegend(c, plot, area, batch);
 }
 

@@ -74,7 +74,8 @@ json panelSchema() {
                         closedObject({{"panel", oneOfNames(kPanelKinds, "panel kind")},
                                       {"plot", oneOfNames(kPlotKinds, "what a plot panel shows")},
                                       {"scale", {{"enum", json::array({"log", "linear"})}}},
-                                      {"rect", fixedNumbers(4, 0, 1, "[x, y, width, height] as fractions")}},
+                                      {"rect", fixedNumbers(4, 0, 1, "[x, y, width, height] as fractions")},
+                                      {"y_range", fixedNumbers(2, -1e308, 1e308, "[lowest, highest] of the y axis")}},
                                      "a panel with options", json::array({"panel"}))})}};
 }
 

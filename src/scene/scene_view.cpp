@@ -29,7 +29,7 @@ constexpr std::array<Named<bool>, 2> kPlotScales{{{true, "log"}, {false, "linear
 
 // A plot with no kind given: divergence needs two runs to compare, otherwise the energy error.
 PlotSpec defaultPlot(const Scene& scene) {
-  return {scene.runs.size() >= 2 ? PlotKind::Divergence : PlotKind::EnergyError, true};
+  return {scene.runs.size() >= 2 ? PlotKind::Divergence : PlotKind::EnergyError, true, std::nullopt};
 }
 
 void addPanel(const json& value, const std::string& path, Scene& scene, std::vector<SceneProblem>& problems) {
@@ -39,7 +39,7 @@ void addPanel(const json& value, const std::string& path, Scene& scene, std::vec
   if (value.is_string()) {
     kind = pickKind(path, value.get<std::string>(), kPanelKinds, problems);
   } else {
-    const JsonObject object(value, path, problems, {"panel", "plot", "scale", "rect"});
+    const JsonObject object(value, path, problems, {"panel", "plot", "scale", "rect", "y_range"});
     if (!object.isObject()) return;
     if (const auto name = object.string("panel", true))
       kind = pickKind(object.pathOf("panel"), *name, kPanelKinds, problems);
@@ -48,6 +48,14 @@ void addPanel(const json& value, const std::string& path, Scene& scene, std::vec
     }
     if (const auto scale = object.string("scale")) {
       plot.logY = pickKind(object.pathOf("scale"), *scale, kPlotScales, problems).value_or(true);
+    }
+    if (const auto range = object.numbers("y_range");
+        range && object.checkSize("y_range", *range, 2, "the lowest and highest value of the y axis")) {
+      if (!((*range)(0) < (*range)(1)))
+        object.report("y_range", "expected the lowest value first, below the highest");
+      else if (plot.logY && !((*range)(0) > 0))
+        object.report("y_range", "expected positive values on a log axis (\"scale\": \"log\")");
+      plot.yRange = std::array<double, 2>{(*range)(0), (*range)(1)};
     }
     if (const auto rect = object.numbers("rect");
         rect && object.checkSize("rect", *rect, 4, "x, y, width, height as fractions")) {

@@ -120,6 +120,10 @@ std::optional<MethodFailure> ChartSystem::methodFailureAt(const State& y) const 
   // continues on the mirror image, silently retracing its path (spec section 4's caveat). Stop on reaching
   // |cos phi| < poleMargin (the fields are garbage there anyway) or on crossing pi/2.
   constexpr double poleMargin = 1e-3;
+  // A step ending this far past the pole did not cross it: it jumped there (a latitude moves by at most a
+  // step's worth of a bounded velocity). That is the vector field blowing up, e.g. the printed metric's 0/0 on
+  // the seam t = +-pi/2, and is reported as such rather than as a pole passage.
+  constexpr double jumpPastPole = 0.25;
   const Eigen::Index k = static_cast<Eigen::Index>(y.size() / 2);
   for (Eigen::Index level = 0; level + 1 < k; ++level) {
     const double latitude = y[static_cast<size_t>(level)];
@@ -127,6 +131,12 @@ std::optional<MethodFailure> ChartSystem::methodFailureAt(const State& y) const 
       std::ostringstream detail;
       detail.precision(17);
       detail << "single chart (phi, t): c" << level + 1 << " = " << latitude;
+      if (std::abs(latitude) >= M_PI / 2 + jumpPastPole) {
+        detail << " after one step: the vector field blew up";
+        if (k == 2 && std::abs(std::cos(y[1])) < 0.05)
+          detail << " next to the seam t = +-pi/2 (t = " << y[1] << "), where the published metric divides 0 by 0";
+        return MethodFailure{StopReason::FieldBlowUp, detail.str()};
+      }
       if (std::abs(latitude) >= M_PI / 2)
         detail << " is past +-pi/2, where the chart folds back over itself";
       else

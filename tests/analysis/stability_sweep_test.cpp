@@ -187,7 +187,7 @@ TEST(StabilityStatus, NamesKeepTheirOrderAndCodes) {
   const std::vector<std::string> expected = {"ok",
                                              "wrong-path",
                                              "pole-fold-back",
-                                             "pole-singularity",
+                                             "field-blow-up",
                                              "non-finite",
                                              "energy-blow-up",
                                              "step-size-collapse",

@@ -47,8 +47,8 @@ TEST(ConventionsCli, SummaryLineOnAPipeAndQuietMeansErrorsOnly) {
   ASSERT_EQ(loud.code, 0) << loud.err;
   EXPECT_NE(loud.err.find("linkage render: 3 frames of 160x90 -> out/ (PNG + manifest.json) in "), std::string::npos)
       << loud.err;
-  EXPECT_NE(loud.err.find("run \"published\" stopped at t = 0: pole-fold-back"), std::string::npos) << loud.err;
-  EXPECT_NE(loud.err.find("frames/s); \"exact\" ran to t = 3.4; \"published\" stopped at t = 0 (pole-fold-back)"),
+  EXPECT_NE(loud.err.find("run \"published\" stopped at t = 0: field-blow-up"), std::string::npos) << loud.err;
+  EXPECT_NE(loud.err.find("frames/s); \"exact\" ran to t = 3.4; \"published\" stopped at t = 0 (field-blow-up)"),
             std::string::npos)
       << loud.err;
 

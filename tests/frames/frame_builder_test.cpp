@@ -158,6 +158,58 @@ TEST(FrameBuilder, StoppedRunIsFrozenWithItsReason) {
   EXPECT_TRUE(std::isnan(late.plots[0].series[0].values.back()));  // no divergence once one side stopped
 }
 
+// Steady axes: every frame's plot carries the same y range, that of the values the whole animation plots
+// (checked against the last frame's full series), and the legend's corner does not move either.
+TEST(FrameBuilder, PlotRangesAreTheWholeAnimationsFromTheFirstFrame) {
+  const Scene scene = twoRunScene();
+  FrameBuilder builder = builderFor(scene);
+  const FrameState first = builder.frame(0);
+  const FrameState last = builder.frame(builder.frameCount() - 1);
+  ASSERT_EQ(first.plots.size(), 2u);
+  for (std::size_t p = 0; p < 2; ++p) {
+    ASSERT_TRUE(first.plots[p].valueRange) << p;
+    EXPECT_EQ(first.plots[p].valueRange, last.plots[p].valueRange);
+    EXPECT_EQ(first.plots[p].legendCorner, last.plots[p].legendCorner);
+    double lo = INFINITY, hi = -INFINITY;
+    for (const PlotSeries& series : last.plots[p].series)
+      for (double v : series.values)
+        if (std::isfinite(v) && v > 0) lo = std::min(lo, v), hi = std::max(hi, v);
+    EXPECT_EQ((*first.plots[p].valueRange)[0], lo) << p;
+    EXPECT_EQ((*first.plots[p].valueRange)[1], hi) << p;
+    EXPECT_TRUE(first.plots[p].emptyNote.empty());
+  }
+  // A range given by hand wins.
+  Scene fixed = twoRunScene();
+  fixed.view.plots[0].yRange = std::array<double, 2>{1e-12, 1.0};
+  EXPECT_EQ(builderFor(fixed).frame(0).plots[0].valueRange, (std::array<double, 2>{1e-12, 1.0}));
+}
+
+// A plot that stays empty for the whole animation says why: here the published run stops at once on the seam.
+TEST(FrameBuilder, APlotThatStaysEmptySaysWhy) {
+  const Scene scene = parseScene(R"({"name": "s", "linkage": {"rods": 4, "L": 3},
+    "initial": {"coords": [0.2, 1.5707963267948966], "velocity": [0.5, 0.7]}, "duration": 1.0,
+    "runs": [{"name": "exact", "method": "christoffel", "integrator": "dopri5", "tolerance": 1e-10},
+             {"name": "published", "method": "christoffel-fd", "integrator": "rk4", "step": 0.02}],
+    "output": {"fps": 10}, "view": {"panels": [{"panel": "plot", "plot": "divergence"}]}})",
+                                 "s.json");
+  FrameBuilder builder = builderFor(scene);
+  const FrameState frame = builder.frame(5);
+  ASSERT_EQ(frame.plots.size(), 1u);
+  EXPECT_FALSE(frame.plots[0].valueRange);
+  EXPECT_NE(frame.plots[0].emptyNote.find("\"published\" stopped at t = 0 (field-blow-up)"), std::string::npos)
+      << frame.plots[0].emptyNote;
+}
+
+TEST(PlotOverview, LegendGoesToTheEmptiestCorner) {
+  // Data along the top edge and in the bottom-right: the bottom-left is free.
+  std::vector<std::array<double, 2>> points;
+  for (int i = 0; i <= 100; ++i) points.push_back({i / 100.0, 0.95});
+  points.push_back({0.9, 0.1});
+  EXPECT_EQ(emptiestCorner(points, 0.4, 0.3), LegendCorner::BottomLeft);
+  EXPECT_EQ(emptiestCorner({}, 0.4, 0.3), LegendCorner::TopRight);  // ties: top right first
+  EXPECT_EQ(emptiestCorner({{0.9, 0.9}}, 0.4, 0.3), LegendCorner::TopLeft);
+}
+
 TEST(FrameBuilder, RefusesFramesOutOfOrder) {
   const Scene scene = twoRunScene();
   FrameBuilder builder = builderFor(scene);

@@ -1,0 +1,108 @@
+#include "frames/plot_overview.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "linkage/chain.hpp"
+#include "simulation/trajectory.hpp"
+
+namespace sl {
+namespace {
+
+bool drawable(double v, bool logY) { return std::isfinite(v) && (!logY || v > 0); }
+
+std::string stopText(const std::string& name, const std::optional<StopInfo>& stop) {
+  char time[32];
+  std::snprintf(time, sizeof time, "%.3g", stop ? stop->time : 0.0);
+  return "\"" + name + "\" stopped at t = " + time + " (" + (stop ? nameOf(stop->reason) : std::string("?")) + ")";
+}
+
+}  // namespace
+
+LegendCorner emptiestCorner(const std::vector<std::array<double, 2>>& points, double legendWidth,
+                            double legendHeight) {
+  constexpr std::array<LegendCorner, 4> order{LegendCorner::TopRight, LegendCorner::TopLeft, LegendCorner::BottomRight,
+                                              LegendCorner::BottomLeft};
+  std::array<long, 4> counts{};
+  for (const auto& [u, v] : points) {
+    const bool right = u >= 1 - legendWidth, left = u <= legendWidth;
+    const bool top = v >= 1 - legendHeight, bottom = v <= legendHeight;
+    counts[0] += right && top;
+    counts[1] += left && top;
+    counts[2] += right && bottom;
+    counts[3] += left && bottom;
+  }
+  return order[static_cast<std::size_t>(std::min_element(counts.begin(), counts.end()) - counts.begin())];
+}
+
+std::vector<PlotOverview> overviewPlots(const Scene& scene, const InitialState& start) {
+  const std::vector<PlotSpec>& plots = scene.view.plots;
+  if (plots.empty()) return {};
+  const std::size_t runCount = scene.runs.size();
+  std::vector<Trajectory> runs;
+  for (const RunSpec& run : scene.runs) runs.emplace_back(scene.chain, start, run.config);
+
+  // Per frame: each run's divergence from run 0 (index 0 unused) and its energy error; NaN where not defined.
+  const int frames = scene.frameCount();
+  const double nan = std::nan("");
+  std::vector<std::vector<double>> divergence(runCount), energy(runCount);
+  std::vector<bool> stopped(runCount, false);
+  for (int k = 0; k < frames; ++k) {
+    const double t = scene.frameTime(k);
+    std::vector<std::optional<Sample>> samples(runCount);
+    for (std::size_t r = 0; r < runCount; ++r) {
+      if (!stopped[r]) samples[r] = runs[r].sampleAt(t);
+      stopped[r] = stopped[r] || !samples[r];
+      energy[r].push_back(samples[r] ? std::abs(samples[r]->relativeEnergyDrift) : nan);
+      divergence[r].push_back(r > 0 && samples[0] && samples[r] ? hingeDistance(samples[0]->hinges, samples[r]->hinges)
+                                                                 : nan);
+    }
+  }
+
+  std::vector<PlotOverview> overviews;
+  for (const PlotSpec& spec : plots) {
+    const bool isDivergence = spec.kind == PlotKind::Divergence;
+    const auto& values = isDivergence ? divergence : energy;
+    double lo = INFINITY, hi = -INFINITY;
+    for (std::size_t r = isDivergence ? 1 : 0; r < runCount; ++r)
+      for (double v : values[r])
+        if (drawable(v, spec.logY)) lo = std::min(lo, v), hi = std::max(hi, v);
+    PlotOverview overview;
+    if (spec.yRange) {
+      overview.valueRange = spec.yRange;
+    } else if (lo <= hi) {
+      overview.valueRange = std::array<double, 2>{lo, hi};
+    }
+    if (!(lo <= hi)) {
+      // Say why: a run that stopped at once, or values a log axis cannot show (exactly zero).
+      std::string why;
+      for (std::size_t r = 0; r < runCount; ++r)
+        if (runs[r].stop() && runs[r].stop()->time <= scene.frameTime(std::min(frames - 1, 1)))
+          why += (why.empty() ? "" : "; ") + stopText(scene.runs[r].name, runs[r].stop());
+      overview.emptyNote = !why.empty() ? "nothing to plot: " + why
+                           : spec.logY  ? "nothing to plot: every value is 0 (a log axis cannot show it)"
+                                        : "nothing to plot";
+    }
+    if (overview.valueRange) {
+      const auto [a, b] = *overview.valueRange;
+      std::vector<std::array<double, 2>> points;
+      for (std::size_t r = isDivergence ? 1 : 0; r < runCount; ++r) {
+        for (int k = 0; k < frames; ++k) {
+          const double v = values[r][static_cast<std::size_t>(k)];
+          if (!drawable(v, spec.logY)) continue;
+          const double u = scene.duration > 0 ? scene.frameTime(k) / scene.duration : 0;
+          const double y = spec.logY && a > 0 ? (std::log10(v) - std::log10(a)) / std::max(std::log10(b / a), 1e-12)
+                                              : (v - a) / std::max(b - a, 1e-300);
+          points.push_back({u, y});
+        }
+      }
+      const double series = static_cast<double>(isDivergence ? runCount - 1 : runCount);
+      overview.legendCorner = emptiestCorner(points, 0.4, std::min(0.6, 0.12 * series + 0.06));
+    }
+    overviews.push_back(std::move(overview));
+  }
+  return overviews;
+}
+
+}  // namespace sl
