@@ -1,5 +1,7 @@
 #include "analysis/csv_table.hpp"
 
+#include "contracts/csv_format.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -43,48 +45,12 @@ const std::string& CsvTable::text(size_t row, const std::string& name) const { r
 
 namespace {
 
-void writeField(std::ostream& out, const std::string& field) {
-  if (field.find_first_of(",\"\n") == std::string::npos) {
-    out << field;
-    return;
-  }
-  out << '"';
-  for (char c : field) out << (c == '"' ? "\"\"" : std::string(1, c));
-  out << '"';
-}
-
 void writeRow(std::ostream& out, const std::vector<std::string>& fields) {
   for (size_t i = 0; i < fields.size(); ++i) {
     if (i) out << ',';
-    writeField(out, fields[i]);
+    out << csvField(fields[i]);
   }
   out << '\n';
-}
-
-// Splits one record; a quoted field may span lines, so more lines are pulled from `in` as needed.
-std::vector<std::string> splitRecord(std::string line, std::istream& in) {
-  std::vector<std::string> fields(1);
-  bool quoted = false;
-  for (size_t i = 0;; ++i) {
-    if (i == line.size()) {
-      if (!quoted) break;
-      std::string next;
-      if (!std::getline(in, next)) throw std::invalid_argument("unterminated quoted field");
-      line += '\n' + next;
-    }
-    const char c = line[i];
-    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-      fields.back() += '"';
-      ++i;
-    } else if (c == '"') {
-      quoted = !quoted;
-    } else if (c == ',' && !quoted) {
-      fields.emplace_back();
-    } else {
-      fields.back() += c;
-    }
-  }
-  return fields;
 }
 
 }  // namespace
@@ -102,16 +68,12 @@ std::string csvText(const CsvTable& table) {
 
 CsvTable readCsv(std::istream& in, const std::string& source) {
   CsvTable table;
-  std::string line;
   long lineNumber = 0;
   try {
-    if (!std::getline(in, line)) throw std::invalid_argument("empty file, expected a header row");
-    ++lineNumber;
-    table.columns = splitRecord(line, in);
-    while (std::getline(in, line)) {
-      ++lineNumber;
-      if (line.empty()) continue;
-      auto fields = splitRecord(line, in);
+    if (!readCsvRecord(in, table.columns, lineNumber)) throw std::invalid_argument("empty file, expected a header row");
+    std::vector<std::string> fields;
+    while (readCsvRecord(in, fields, lineNumber)) {
+      if (fields.size() == 1 && fields[0].empty()) continue;
       if (fields.size() != table.columns.size())
         throw std::invalid_argument("expected " + std::to_string(table.columns.size()) + " fields, found " +
                                     std::to_string(fields.size()));

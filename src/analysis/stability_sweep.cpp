@@ -18,13 +18,14 @@
 namespace sl {
 
 Shard parseShard(const std::string& text) {
-  const std::regex pattern(R"(\s*(\d+)\s*/\s*(\d+)\s*)");
+  const std::regex pattern(R"(\s*(\d{1,9})\s*/\s*(\d{1,9})\s*)");  // nine digits: never past int's range
   std::smatch match;
   if (std::regex_match(text, match, pattern)) {
     const Shard shard{std::stoi(match[1]), std::stoi(match[2])};
-    if (shard.count >= 1 && shard.index >= 1 && shard.index <= shard.count) return shard;
+    if (shard.count >= 1 && shard.count <= kMaxShards && shard.index >= 1 && shard.index <= shard.count) return shard;
   }
-  throw std::invalid_argument("--shard: expected K/N with 1 <= K <= N (e.g. 2/4), found '" + text + "'");
+  throw std::invalid_argument("--shard: expected K/N with 1 <= K <= N <= " + std::to_string(kMaxShards) +
+                              " (e.g. 2/4), found '" + text + "'");
 }
 
 Integrator sweepIntegratorFor(Method method) {
@@ -161,7 +162,7 @@ std::vector<int> stabilityShardCounts(const std::string& outDir, const std::stri
   for (const auto& entry : std::filesystem::directory_iterator(outDir)) {
     std::smatch match;
     const std::string name = entry.path().filename().string();
-    if (std::regex_match(name, match, pattern)) counts.insert(std::stoi(match[2]));
+    if (std::regex_match(name, match, pattern) && match[2].length() <= 9) counts.insert(std::stoi(match[2]));
   }
   return {counts.begin(), counts.end()};
 }
@@ -173,11 +174,26 @@ bool mergeStabilityShards(const std::string& outDir, const std::string& kind, in
     if (!std::filesystem::exists(paths.back())) return false;
   }
   CsvTable table{stabilityColumns(), {}};
+  // A shard file is input: anything wrong in it is std::invalid_argument naming the file and the row.
   for (const auto& path : paths) {
-    CsvTable shard = readCsvFile(path);
+    CsvTable shard;
+    try {
+      shard = readCsvFile(path);
+    } catch (const std::exception& error) {
+      throw std::invalid_argument(path + ": not a readable stability shard (" + error.what() + ")");
+    }
     if (shard.columns != table.columns)
-      throw std::runtime_error(path + ": not a stability shard (columns differ from " + stabilityColumns().front() +
-                               ",...)");
+      throw std::invalid_argument(path + ": not a stability shard (columns differ from " +
+                                  stabilityColumns().front() + ",...)");
+    const size_t cell = shard.column("cell"), row = shard.column("i");
+    for (size_t r = 0; r < shard.rows.size(); ++r) {
+      for (size_t column : {cell, row}) {
+        const std::string& text = shard.rows[r][column];
+        if (text.empty() || text.size() > 9 || text.find_first_not_of("0123456789") != std::string::npos)
+          throw std::invalid_argument(path + ": row " + std::to_string(r + 2) + ": column " + shard.columns[column] +
+                                      " is '" + text + "', expected a cell index");
+      }
+    }
     for (auto& row : shard.rows) table.rows.push_back(std::move(row));
   }
   const size_t cellColumn = table.column("cell");
@@ -193,7 +209,7 @@ bool mergeStabilityShards(const std::string& outDir, const std::string& kind, in
   }
   if (static_cast<long>(cells.size()) != gridSize * gridSize ||
       (!cells.empty() && *cells.rbegin() != gridSize * gridSize - 1))
-    throw std::runtime_error(outDir + ": the " + std::to_string(shardCount) + " shards of the '" + kind +
+    throw std::invalid_argument(outDir + ": the " + std::to_string(shardCount) + " shards of the '" + kind +
                              "' sweep hold " + std::to_string(cells.size()) + " cells, expected " +
                              std::to_string(gridSize * gridSize) + " (were they run with the same --grid?)");
   merged = std::move(table);

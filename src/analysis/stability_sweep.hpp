@@ -52,12 +52,15 @@ std::vector<std::string> stabilityColumns();
 CsvTable runStabilitySweep(const StabilityOptions& options, const CellProgress& progress = {});
 
 // === Files: DIR/stability-<kind>.csv, shards DIR/stability-<kind>.shard-K-of-N.csv
+
+// At most this many shards of one sweep (a 4096 x 4096 grid has 16.8 million cells).
+inline constexpr int kMaxShards = 1'000'000;
 std::string stabilityCsvPath(const std::string& outDir, const std::string& kind);
 std::string stabilityShardPath(const std::string& outDir, const std::string& kind, const Shard& shard);
 
-// Rows of all shards of a sweep, in cell order. Throws std::runtime_error naming what is missing: a shard
-// file, or cells (the union must be the full grid x grid). Returns false (and leaves `merged` alone) if
-// not all N shard files exist yet.
+// Rows of all shards of a sweep, in cell order. Throws std::invalid_argument naming the file and row of what
+// is wrong in a shard, or the cells missing from the union (it must be the full grid x grid). Returns false
+// (and leaves `merged` alone) if not all N shard files exist yet.
 bool mergeStabilityShards(const std::string& outDir, const std::string& kind, int shardCount, CsvTable& merged);
 
 // The shard counts N for which DIR holds shard files of this kind.

@@ -15,6 +15,8 @@
 #include "analysis/work_precision.hpp"
 #include "analysis/work_precision_charts.hpp"
 #include "cli/commands.hpp"
+#include "cli/number_options.hpp"
+#include "contracts/time_grid.hpp"
 #include "contracts/registry.hpp"
 #include "output/atomic_file.hpp"
 
@@ -63,6 +65,13 @@ void runBench(BenchArguments& args) {
   requirePositive("--steps", args.options.steps);
   requirePositive("--tolerances", args.options.tolerances);
   requirePositive("--targets", args.targets);
+  for (const NamedStart& start : chosenStarts(args.starts)) {  // the error grids, checked before any work
+    try {
+      gridTimesThrough(start.duration, args.options.sampleInterval);
+    } catch (const std::invalid_argument& error) {
+      throw CLI::ValidationError("--interval", error.what());
+    }
+  }
   const auto starts = chosenStarts(args.starts);
   if (args.charts && !gnuplotAvailable())
     throw std::runtime_error("charts need gnuplot with pngcairo: apt-get install gnuplot-nox (or pass --no-charts)");
@@ -108,7 +117,7 @@ void addBenchCommand(CLI::App& app) {
   bench->add_option("--repeats", args->options.repeats, "runs per point; wall time is their median")
       ->check(CLI::Range(1, 1000));
   bench->add_option("--interval", args->options.sampleInterval, "error grid spacing in time units")
-      ->check(CLI::PositiveNumber);
+      ->check(finitePositive());
   bench->add_flag("--quick", args->quick, "3 steps, 4 tolerances, 3 repeats");
   bench->add_flag("!--no-charts", args->charts, "skip the gnuplot charts");
   bench->add_option("--out", args->out, "output folder")->capture_default_str();

@@ -26,13 +26,22 @@ std::vector<std::pair<int, int>> hingeColumns(const TrajectoryCsv& csv) {
   }
 }
 
+// The same value, or both non-finite in the same way (a file compared with itself matches, NaN included).
+bool same(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
+
+// One coordinate's difference: 0 for the same value, infinite where only one side is finite (a NaN against a
+// number is as different as can be, and never hides behind a later row's small difference).
+double difference(double a, double b) {
+  if (same(a, b)) return 0;
+  if (!std::isfinite(a) || !std::isfinite(b)) return INFINITY;
+  return std::abs(a - b);
+}
+
 double hingeDistance(const Row& a, const Row& b, const std::vector<std::pair<int, int>>& columns) {
   double worst = 0;
-  for (const auto& [x, y] : columns) {
-    const double d = std::hypot(a.values[size_t(x)] - b.values[size_t(x)], a.values[size_t(y)] - b.values[size_t(y)]);
-    worst = std::isnan(d) ? d : std::max(worst, d);
-    if (std::isnan(worst)) return worst;
-  }
+  for (const auto& [x, y] : columns)
+    worst = std::max(worst, std::hypot(difference(a.values[size_t(x)], b.values[size_t(x)]),
+                                       difference(a.values[size_t(y)], b.values[size_t(y)])));
   return worst;
 }
 
@@ -45,16 +54,16 @@ RunDifference compareRun(const std::string& name, const std::vector<const Row*>&
   for (size_t i = 0; i < common; ++i) {
     const Row& a = *before[i];
     const Row& b = *after[i];
-    if (a.values[0] != b.values[0]) {
+    if (!same(a.values[0], b.values[0])) {
       result.structure = "sample times differ from row " + std::to_string(i + 1) + " of the run on";
       return result;
     }
     const double distance = hingeDistance(a, b, columns);
-    if (!(distance <= result.worstDistance)) {  // also takes a NaN as the worst
+    if (distance > result.worstDistance) {
       result.worstDistance = distance;
       result.worstTime = a.values[0];
     }
-    if (!(distance <= tolerance) && !result.firstExceedsAt) result.firstExceedsAt = a.values[0];
+    if (distance > tolerance && !result.firstExceedsAt) result.firstExceedsAt = a.values[0];
     if (a.status != b.status) {
       result.structure =
           "status at t = " + std::to_string(a.values[0]) + ": \"" + a.status + "\" vs \"" + b.status + "\"";

@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/number_options.hpp"
 #include "cli/csv_diff.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/folder_diff.hpp"
@@ -59,9 +60,17 @@ bool diffFolders(const DiffArguments& args) {
   for (const auto& [frame, hash] : before) {
     const auto other = after.find(frame);
     if (other == after.end() || other->second == hash || written >= args.maxImages) continue;
-    const PixelDifference pixels = comparePixels(args.before, args.after, frame, args.imageFolder);
-    std::cout << "frame " << frame << ": " << pixels.fraction * 100 << "% of pixels differ; " << pixels.diffImage
-              << '\n';
+    PixelDifference pixels;
+    try {
+      pixels = comparePixels(args.before, args.after, frame, args.imageFolder);
+    } catch (const std::invalid_argument& error) {
+      throw CommandExit(kExitBadInput, error.what());
+    }
+    if (!pixels.note.empty())
+      std::cout << "frame " << frame << ": " << pixels.note << " (no pixel comparison)\n";
+    else
+      std::cout << "frame " << frame << ": " << pixels.fraction * 100 << "% of pixels differ; " << pixels.diffImage
+                << '\n';
     ++written;
   }
   return result.matches();
@@ -71,6 +80,8 @@ void runDiff(const DiffArguments& args) {
   const bool folders = fs::is_directory(args.before) && fs::is_directory(args.after);
   const bool files = fs::is_regular_file(args.before) && fs::is_regular_file(args.after);
   if (!folders && !files) {
+    for (const std::string& path : {args.before, args.after})
+      if (!fs::exists(path)) throw CommandExit(kExitBadInput, "diff: " + path + ": no such file or folder");
     throw CommandExit(kExitBadInput, "diff: expected two trajectory CSV files or two render folders, found \"" +
                                          args.before + "\" and \"" + args.after + "\"");
   }
@@ -87,14 +98,14 @@ void addDiffCommand(CLI::App& app) {
   command->add_option("old", args->before, "CSV from `linkage simulate --csv`, or a render folder")->required();
   command->add_option("new", args->after, "the same kind as OLD")->required();
   command->add_option("--tol", args->tolerance, "CSV: largest hinge position difference that still matches")
-      ->check(CLI::NonNegativeNumber)
+      ->check(finiteNonNegative())
       ->capture_default_str();
   command->add_flag("--images", args->images,
                     "folders: decode differing frames, print the fraction of differing pixels, write diff images");
   command->add_option("--image-dir", args->imageFolder, "where --images writes diff_frame_NNNNN.png")
       ->capture_default_str();
   command->add_option("--max-images", args->maxImages, "at most this many diff images")
-      ->check(CLI::PositiveNumber)
+      ->check(finitePositive())
       ->capture_default_str();
   command->footer(
       "CSV: per run, the worst hinge position difference and the first time it exceeds --tol.\n"

@@ -12,6 +12,7 @@
 #include "output/atomic_file.hpp"
 #include "output/png_encoder.hpp"
 #include "output/png_sequence_sink.hpp"
+#include "output/sha256.hpp"
 
 namespace sl {
 
@@ -23,7 +24,17 @@ std::map<int, std::string> readPixelHashes(const std::string& folder) {
   try {
     const nlohmann::json manifest = nlohmann::json::parse(in);
     for (const auto& entry : manifest.at("frames")) {
-      hashes[entry.at("frame").get<int>()] = entry.at("pixelSha256").get<std::string>();
+      const int frame = entry.at("frame").get<int>();
+      hashes[frame] = entry.at("pixelSha256").get<std::string>();
+      // The manifest is only as good as the files: each must still be what was rendered.
+      const std::string file = entry.value("file", "");
+      if (file.empty()) continue;
+      const std::string framePath = folder + "/" + file;
+      if (!std::filesystem::is_regular_file(framePath))
+        throw std::invalid_argument(framePath + ": listed in " + path + " but missing");
+      if (output::sha256OfFile(framePath) != entry.value("fileSha256", ""))
+        throw std::invalid_argument(framePath + ": does not match its entry in " + path +
+                                    " (changed after the render, or written by another one)");
     }
   } catch (const nlohmann::json::exception& error) {
     throw std::invalid_argument(path + ": not a frame manifest: " + error.what());
@@ -58,7 +69,7 @@ DecodedImage decodePng(const std::string& path) {
   DecodedImage image;
   int channels = 0;
   image.pixels.reset(stbi_load(path.c_str(), &image.width, &image.height, &channels, 3));
-  if (!image.pixels) throw std::runtime_error(path + ": cannot decode PNG: " + stbi_failure_reason());
+  if (!image.pixels) throw std::invalid_argument(path + ": cannot decode PNG: " + stbi_failure_reason());
   return image;
 }
 
@@ -68,7 +79,9 @@ PixelDifference comparePixels(const std::string& before, const std::string& afte
                               const std::string& imageFolder) {
   const std::string name = output::frameFileName(frame);
   const DecodedImage a = decodePng(before + "/" + name), b = decodePng(after + "/" + name);
-  if (a.width != b.width || a.height != b.height) return {1.0, ""};
+  if (a.width != b.width || a.height != b.height)
+    return {1.0, "", "the frames are " + std::to_string(a.width) + "x" + std::to_string(a.height) + " and " +
+                         std::to_string(b.width) + "x" + std::to_string(b.height)};
   Image diff{a.width, a.height, std::vector<std::uint8_t>(size_t(a.width) * a.height * 3)};
   long differing = 0;
   for (size_t p = 0; p < size_t(a.width) * a.height; ++p) {
@@ -84,7 +97,7 @@ PixelDifference comparePixels(const std::string& before, const std::string& afte
   std::filesystem::create_directories(imageFolder);
   const std::string path = imageFolder + "/diff_" + name;
   output::writeFileAtomically(path, output::PngEncoder().encode(diff));
-  return {differing / double(size_t(a.width) * a.height), path};
+  return {differing / double(size_t(a.width) * a.height), path, ""};
 }
 
 }  // namespace sl

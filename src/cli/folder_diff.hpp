@@ -24,6 +24,7 @@ FolderDifference compareFolders(const std::map<int, std::string>& before, const 
 struct PixelDifference {
   double fraction = 0;    // of pixels with any channel different
   std::string diffImage;  // path written, empty if none
+  std::string note;       // why no pixel comparison was possible (different sizes), if so
 };
 
 // Decodes DIR/frame_k.png on both sides; writes a diff image (differing pixels red over a faded grey

@@ -188,8 +188,18 @@ void runRender(const RenderArguments& args) {
   const nlohmann::json info = manifestInfo(plan);
   sweepOutputFolders(plan);  // first: a killed render's leftovers must not count against the free space
   const InitialState start = sceneStart(scene);
-  FrameBuilder builder(scene, start, startRuns(scene, start));
-  if (!sampleUpTo(builder, plan.range.first)) stopIfInterrupted("nothing was written yet");
+  std::optional<FrameBuilder> built;
+  try {
+    built.emplace(scene, start, startRuns(scene, start), interruptRequested);
+  } catch (const RunCancelled&) {
+    stopIfInterrupted("nothing was written yet");
+  }
+  FrameBuilder& builder = *built;
+  try {
+    if (!sampleUpTo(builder, plan.range.first)) stopIfInterrupted("nothing was written yet");
+  } catch (const RunCancelled&) {
+    stopIfInterrupted("nothing was written yet");
+  }
   checkSpaceForFrames(plan, renderer, builder);
 
   std::unique_ptr<output::FrameManifest> pngManifest, videoManifest;
@@ -223,7 +233,11 @@ void runRender(const RenderArguments& args) {
   }
 
   int drawn = 0, skipped = 0;
-  const bool finished = renderFrames(plan, pngManifest.get(), sinks, renderer, builder, drawn, skipped);
+  bool finished = false;
+  try {
+    finished = renderFrames(plan, pngManifest.get(), sinks, renderer, builder, drawn, skipped);
+  } catch (const RunCancelled&) {  // a signal in the middle of a long frame: handled like one between frames
+  }
   if (pngSink) pngSink->finish();  // every frame handed over is written whole, interrupted or not
   if (videoSink && finished) videoSink->finish();
   videoSink.reset();  // unfinished: reaps ffmpeg and removes its temporary, so the video never gets its name

@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/exit_codes.hpp"
+#include "cli/interrupt.hpp"
 #include "simulation/initial_state.hpp"
 
 namespace sl {
@@ -44,6 +45,7 @@ std::vector<Trajectory> startRuns(const Scene& scene, const InitialState& start)
   for (size_t i = 0; i < scene.runs.size(); ++i) {
     try {
       runs.emplace_back(scene.chain, start, scene.runs[i].config);
+      runs.back().setCancellation(interruptRequested);  // SIGINT/SIGTERM answered within one step
     } catch (const std::invalid_argument& error) {
       // The start is shared by every run: a zero or non-finite velocity is the start's problem.
       failOnProblems(scene.file, {{"runs[" + std::to_string(i) + "]", error.what()}});

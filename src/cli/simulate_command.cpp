@@ -1,8 +1,14 @@
 // `linkage simulate SCENE.json [--csv FILE] [--dt DT]`: the scene's runs as trajectory CSV, no rendering.
 
+#include <unistd.h>
+
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include <CLI/CLI.hpp>
@@ -10,10 +16,13 @@
 #include "cli/commands.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/interrupt.hpp"
+#include "cli/number_options.hpp"
 #include "cli/run_report.hpp"
 #include "cli/scene_input.hpp"
+#include "cli/summary.hpp"
 #include "contracts/time_grid.hpp"
 #include "output/atomic_file.hpp"
+#include "scene/output_folder.hpp"
 #include "simulation/trajectory_csv.hpp"
 
 namespace sl {
@@ -25,42 +34,95 @@ struct SimulateArguments {
   std::string scene;
   std::string csv;  // empty: stdout
   double dt = 0;    // 0: the frame times k / fps
+  bool quiet = false;
 };
 
-// k / fps for every frame, or k * dt up to the duration.
-std::vector<double> sampleTimes(const Scene& scene, double dt) {
-  return dt <= 0 ? frameTimes(scene.duration, scene.output.fps) : uniformTimes(scene.duration, dt);
-}
+// Where the rows go: a file that appears whole or not at all, or standard output, whose every write is checked
+// (a full disk or a closed pipe is an error, not a silent short CSV).
+class CsvOutput {
+ public:
+  explicit CsvOutput(const std::string& path) {
+    if (!path.empty()) file_.emplace(path);
+  }
+  void write(const std::string& text) {
+    if (file_) return file_->write(text);
+    if (text.empty()) return;
+    if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) failOnStdout();
+    wroteToStdout_ = true;
+  }
+  void finish() {
+    if (file_) return file_->commit();
+    if (std::fflush(stdout) != 0 || (::fsync(STDOUT_FILENO) != 0 && errno != EINVAL && errno != EROFS)) failOnStdout();
+  }
+  // What an interruption leaves behind, for its message.
+  std::string whatWasWritten() const {
+    if (file_) return "no CSV was written";
+    return wroteToStdout_ ? "the CSV on standard output is incomplete" : "no CSV was written";
+  }
 
-// Written in chunks so that SIGINT/SIGTERM is noticed within one chunk's work. A run that stops ends
-// with one row at its stop time whose status is the reason (trajectory_csv.hpp); nothing follows it.
-void writeRun(std::ostream& out, const std::string& name, Trajectory& trajectory, const std::vector<double>& times) {
+ private:
+  [[noreturn]] void failOnStdout() {
+    throw CommandExit(kExitFailure,
+                      std::string("linkage simulate: cannot write the CSV to standard output: ") + std::strerror(errno) +
+                          (wroteToStdout_ ? " (what went out is incomplete)" : ""));
+  }
+  std::optional<output::AtomicFileWriter> file_;
+  bool wroteToStdout_ = false;
+};
+
+// Rows in chunks, each written out at once: memory stays bounded whatever the duration, the sampling and the
+// number of runs. A run that stops ends with one row at its stop time whose status is the reason
+// (trajectory_csv.hpp); nothing follows it. SIGINT/SIGTERM are noticed within one integration step.
+void writeRun(CsvOutput& out, const std::string& name, Trajectory& trajectory, const std::vector<double>& times) {
   const size_t chunk = 256;
   for (size_t first = 0; first < times.size(); first += chunk) {
-    stopIfInterrupted("no CSV was written");
+    stopIfInterrupted(out.whatWasWritten().c_str());
     const std::vector<double> part(times.begin() + first, times.begin() + std::min(times.size(), first + chunk));
-    writeTrajectoryCsv(out, name, trajectory, part, false);
+    std::ostringstream rows;
+    try {
+      writeTrajectoryCsv(rows, name, trajectory, part, false);
+    } catch (const RunCancelled&) {
+      stopIfInterrupted(out.whatWasWritten().c_str());
+      throw;
+    }
+    out.write(rows.str());
     if (trajectory.stop() && trajectory.stop()->time < part.back()) return;
   }
 }
 
 void runSimulate(const SimulateArguments& args) {
-  const Scene scene = loadSceneForCommand(args.scene, args.overrides);
-  // The CSV for --csv is built in memory (then written atomically): keep it below about a gigabyte.
-  if (args.dt > 0 && scene.duration / args.dt > 5e6) {
-    throw CommandExit(kExitBadInput, "--dt " + std::to_string(args.dt) +
-                                         " gives more than 5e6 samples per run; expected a larger step");
-  }
   installInterruptHandlers();
-  const std::vector<double> times = sampleTimes(scene, args.dt);
+  const CommandSummary summary("simulate", args.quiet);
+  const Scene scene = loadSceneForCommand(args.scene, args.overrides);
+  std::vector<double> times;
+  try {
+    times = args.dt > 0 ? uniformTimes(scene.duration, args.dt) : frameTimes(scene.duration, scene.output.fps);
+  } catch (const std::invalid_argument& error) {
+    throw CommandExit(kExitBadInput, "--dt: " + std::string(error.what()));
+  }
+  if (!args.csv.empty()) {
+    // Checked before any work, like render's outputs: a writable place that is not a folder or a device.
+    std::vector<SceneProblem> problems;
+    try {
+      output::outputTarget(args.csv);
+    } catch (const std::invalid_argument& error) {
+      problems.push_back({"--csv", error.what()});
+    }
+    const std::filesystem::path parent = std::filesystem::path(args.csv).parent_path();
+    for (SceneProblem& problem : checkOutputFolder(parent.empty() ? "." : parent.string(), "--csv"))
+      problems.push_back(problem);
+    failOnProblems(args.scene, problems);
+    if (!parent.empty()) std::filesystem::create_directories(parent);
+  }
   std::vector<Trajectory> runs = startRuns(scene, sceneStart(scene));
-  // To a file: the whole CSV is kept and written at once, so an interrupted run leaves no partial file.
-  std::ostringstream buffer;
-  std::ostream& out = args.csv.empty() ? std::cout : buffer;
-  out << trajectoryCsvHeader(scene.chain.rods) << '\n';
+  CsvOutput out(args.csv);
+  out.write(trajectoryCsvHeader(scene.chain.rods) + "\n");
   for (size_t i = 0; i < runs.size(); ++i) writeRun(out, scene.runs[i].name, runs[i], times);
-  reportStops(scene, runs);
-  if (!args.csv.empty()) output::writeFileAtomically(args.csv, buffer.str());
+  out.finish();
+  reportStops(scene, runs, args.quiet);
+  summary.print(std::to_string(runs.size()) + " run" + (runs.size() == 1 ? "" : "s") + " x " +
+                    std::to_string(times.size()) + " times -> " + (args.csv.empty() ? "standard output" : args.csv),
+                "; " + runOutcomes(scene, runs, times.empty() ? 0.0 : times.back()));
 }
 
 }  // namespace
@@ -73,11 +135,13 @@ void addSimulateCommand(CLI::App& app) {
   addSceneOverrideOption(*command, args->overrides);
   command->add_option("--csv", args->csv, "write the CSV here instead of stdout (written whole or not at all)");
   command->add_option("--dt", args->dt, "sample every DT time units (default: the frame times k / fps)")
-      ->check(CLI::PositiveNumber);
+      ->check(finitePositive());
+  command->add_flag("--quiet", args->quiet, "errors only: no run reports or summary line");
   command->footer(
       "Columns: run,time,phi,t,phidot,tdot,energy,p1x,p1y,...,status (4 rods; chart coordinates c1.. and rates v1..\n"
       "for other n). A run that stops ends with one row at its stop time whose status is the reason.\n"
-      "Example: linkage simulate scenes/comparison.json --dt 0.01 --csv comparison.csv");
+      "Run names are quoted as RFC 4180 says when they hold a comma, a quote or a line break.\n"
+      "Example: linkage simulate scenes/comparison.json --dt 0.01 --csv renders/comparison.csv");
   command->callback([args] { runSimulate(*args); });
 }
 

@@ -14,6 +14,9 @@
 #include "analysis/stability_charts.hpp"
 #include "analysis/stability_sweep.hpp"
 #include "cli/commands.hpp"
+#include "cli/exit_codes.hpp"
+#include "cli/number_options.hpp"
+#include "contracts/time_grid.hpp"
 #include "contracts/registry.hpp"
 #include "output/atomic_file.hpp"
 
@@ -50,9 +53,9 @@ void writeSweepOutputs(const CsvTable& rows, const StabilityArguments& args) {
 int detectShardCount(const StabilityArguments& args) {
   const auto counts = stabilityShardCounts(args.out, args.options.kind);
   if (counts.size() != 1)
-    throw std::runtime_error(args.out + ": expected shard files stability-" + args.options.kind +
-                             ".shard-K-of-N.csv for exactly one N, found " + std::to_string(counts.size()) +
-                             " values of N");
+    throw CommandExit(kExitBadInput, "linkage stability --merge: " + args.out + ": expected shard files stability-" +
+                                         args.options.kind + ".shard-K-of-N.csv for exactly one N, found " +
+                                         std::to_string(counts.size()) + " values of N");
   return counts.front();
 }
 
@@ -67,6 +70,11 @@ void runStability(StabilityArguments& args) {
   if (!args.integrator.empty())
     options.integrator = parseKindOption("--integrator", "integrator", args.integrator, kIntegrators);
   options.duration = args.duration > 0 ? args.duration : defaultStabilityDuration(options.kind);
+  try {  // the error grid, checked before any work: finite, and of a size that fits
+    gridTimesThrough(options.duration, options.sampleInterval);
+  } catch (const std::invalid_argument& error) {
+    throw CLI::ValidationError("--interval", error.what());
+  }
   if (args.charts && !gnuplotAvailable())
     throw std::runtime_error("charts need gnuplot with pngcairo: apt-get install gnuplot-nox (or pass --no-charts)");
   std::filesystem::create_directories(args.out);
@@ -74,9 +82,14 @@ void runStability(StabilityArguments& args) {
   if (args.merge) {
     CsvTable merged;
     const int count = detectShardCount(args);
-    if (!mergeStabilityShards(args.out, options.kind, count, merged))
-      throw std::runtime_error(args.out + ": not all " + std::to_string(count) + " shards of the '" + options.kind +
-                               "' sweep are present yet");
+    if (!mergeStabilityShards(args.out, options.kind, count, merged)) {
+      std::string missing;
+      for (int k = 1; k <= count; ++k) {
+        const std::string path = stabilityShardPath(args.out, options.kind, {k, count});
+        if (!std::filesystem::exists(path)) missing += (missing.empty() ? "" : ", ") + path;
+      }
+      throw CommandExit(kExitBadInput, "linkage stability --merge: missing shards: " + missing);
+    }
     writeSweepOutputs(merged, args);
     return;
   }
@@ -126,18 +139,18 @@ void addStabilityCommand(CLI::App& app) {
       ->check(CLI::Range(1, 4096))
       ->capture_default_str();
   stability->add_option("--duration", args->duration, "time span of each run (default 20; drift 1000)")
-      ->check(CLI::PositiveNumber);
+      ->check(finitePositive());
   stability->add_option("--interval", args->options.sampleInterval, "error grid spacing in time units")
-      ->check(CLI::PositiveNumber)
+      ->check(finitePositive())
       ->capture_default_str();
   stability->add_option("--methods", args->methods, "methods (default all)")->delimiter(',');
   stability->add_option(
       "--integrator", args->integrator,
       "integrator for every method (default: rk4 for the published -fd methods, the default run's otherwise)");
   stability->add_option("--tolerance", args->options.tolerance, "adaptive tolerance (default: the default run's)")
-      ->check(CLI::PositiveNumber)
+      ->check(finitePositive())
       ->capture_default_str();
-  stability->add_option("--step", args->options.step, "rk4 step")->check(CLI::PositiveNumber)->capture_default_str();
+  stability->add_option("--step", args->options.step, "rk4 step")->check(finitePositive())->capture_default_str();
   stability->add_option("--threads", args->options.threads, "worker threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
   stability->add_option("--shard", args->shard, "run only shard K of N (cells c with c mod N = K-1)");

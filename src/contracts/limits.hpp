@@ -13,6 +13,9 @@ inline constexpr int kMinRods = 3;
 inline constexpr int kMaxRods = 12;
 inline constexpr int kMaxFps = 1000;
 inline constexpr int kMaxPathSamplesPerFrame = 100;
+// Samples of one run on a time grid (simulate --dt, the error grids of bench and stability): 5e6 rows of
+// trajectory CSV are about a gigabyte.
+inline constexpr long kMaxSamplesPerRun = 5'000'000;
 // Adaptive integrators' relative and absolute tolerance (below 1e-16 is below double precision).
 inline constexpr double kMinTolerance = 1e-16;
 inline constexpr double kMaxTolerance = 1e-1;

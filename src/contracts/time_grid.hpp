@@ -13,6 +13,8 @@ inline double frameTime(long frame, int fps) { return frame / static_cast<double
 // The frame times k / fps, k = 0..frameCount - 1.
 std::vector<double> frameTimes(double duration, int fps);
 
+// The grids below throw std::invalid_argument for a non-finite or non-positive step or duration, or more than
+// limits::kMaxSamplesPerRun samples.
 // k * dt for k = 0..floor(duration / dt) (the last time within rounding of the duration included).
 long uniformTimeCount(double duration, double dt);
 std::vector<double> uniformTimes(double duration, double dt);

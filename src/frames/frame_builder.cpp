@@ -39,7 +39,8 @@ ColorRGB runColor(const Scene& scene, size_t run) {
   return chosen ? *chosen : palette[run % std::size(palette)];
 }
 
-FrameBuilder::FrameBuilder(const Scene& scene, const InitialState& start, std::vector<Trajectory> runs)
+FrameBuilder::FrameBuilder(const Scene& scene, const InitialState& start, std::vector<Trajectory> runs,
+                           const std::function<bool()>& cancelled)
     : scene_(scene),
       runs_(std::move(runs)),
       view_(scene.chain.rods, start.spherePoint),
@@ -47,7 +48,7 @@ FrameBuilder::FrameBuilder(const Scene& scene, const InitialState& start, std::v
       history_(runs_.size()),
       divergence_(runs_.empty() ? 0 : runs_.size() - 1),
       sphereDecoration_(makeSphereDecoration(scene.chain, scene.view.sphereSurface)),
-      plotOverviews_(overviewPlots(scene, start)) {
+      plotOverviews_(overviewPlots(scene, start, cancelled)) {
   for (size_t i = 0; i < runs_.size(); ++i) {
     RunFrame& frame = history_[i].frame;
     frame.name = scene.runs[i].name;

@@ -19,8 +19,10 @@ namespace sl {
 
 class FrameBuilder {
  public:
-  // runs: one Trajectory per scene run, in the scene's order, all from `start`.
-  FrameBuilder(const Scene& scene, const InitialState& start, std::vector<Trajectory> runs);
+  // runs: one Trajectory per scene run, in the scene's order, all from `start`. `cancelled` is asked during the
+  // builder's own integration (the plots' overview), which then throws RunCancelled.
+  FrameBuilder(const Scene& scene, const InitialState& start, std::vector<Trajectory> runs,
+               const std::function<bool()>& cancelled = {});
 
   int frameCount() const { return frameCount_; }
   // Frame k; k must not be smaller than the previous call's.

@@ -36,12 +36,16 @@ LegendCorner emptiestCorner(const std::vector<std::array<double, 2>>& points, do
   return order[static_cast<std::size_t>(std::min_element(counts.begin(), counts.end()) - counts.begin())];
 }
 
-std::vector<PlotOverview> overviewPlots(const Scene& scene, const InitialState& start) {
+std::vector<PlotOverview> overviewPlots(const Scene& scene, const InitialState& start,
+                                        const std::function<bool()>& cancelled) {
   const std::vector<PlotSpec>& plots = scene.view.plots;
   if (plots.empty()) return {};
   const std::size_t runCount = scene.runs.size();
   std::vector<Trajectory> runs;
-  for (const RunSpec& run : scene.runs) runs.emplace_back(scene.chain, start, run.config);
+  for (const RunSpec& run : scene.runs) {
+    runs.emplace_back(scene.chain, start, run.config);
+    runs.back().setCancellation(cancelled);
+  }
 
   // Per frame: each run's divergence from run 0 (index 0 unused) and its energy error; NaN where not defined.
   const int frames = scene.frameCount();

@@ -6,6 +6,7 @@
 // plot. Every shard computes the same overview.
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,7 +24,9 @@ struct PlotOverview {
 };
 
 // One per scene.view.plots entry; empty when the scene has no plots (nothing is integrated then).
-std::vector<PlotOverview> overviewPlots(const Scene& scene, const InitialState& start);
+// `cancelled` is given to the trajectories (Trajectory::setCancellation): RunCancelled comes through.
+std::vector<PlotOverview> overviewPlots(const Scene& scene, const InitialState& start,
+                                        const std::function<bool()>& cancelled = {});
 
 // The corner of the unit square (u right, v up) whose legend-sized region holds the fewest points; ties go in
 // the order TopRight, TopLeft, BottomRight, BottomLeft. `legendHeight` is a fraction of the plot's height.

@@ -46,7 +46,55 @@ void syncFolderOf(const std::string& path) {
 
 }  // namespace
 
-void writeFileAtomically(const std::string& path, const std::uint8_t* data, std::size_t size, Sync sync) {
+std::string outputTarget(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  fs::path target = path;
+  // Follow a chain of links (bounded, as the kernel bounds it) to the file they name.
+  for (int hops = 0; fs::is_symlink(fs::symlink_status(target, error)); ++hops) {
+    if (hops == 40) throw std::invalid_argument(path + ": too many levels of symbolic links");
+    const fs::path next = fs::read_symlink(target, error);
+    target = next.is_absolute() ? next : target.parent_path() / next;
+  }
+  const fs::file_status status = fs::status(target, error);
+  if (fs::exists(status) && !fs::is_regular_file(status))
+    throw std::invalid_argument(path + (target != fs::path(path) ? " (a link to " + target.string() + ")" : "") +
+                                " exists and is not a regular file (" +
+                                (fs::is_directory(status) ? "a folder" : "a device, pipe or socket") +
+                                "); refusing to replace it");
+  return target.string();
+}
+
+AtomicFileWriter::AtomicFileWriter(const std::string& path) : path_(outputTarget(path)) {
+  temporary_ = temporaryPathFor(path_);
+  fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd_ < 0) throw std::runtime_error("cannot create " + temporary_ + ": " + std::strerror(errno));
+}
+
+AtomicFileWriter::~AtomicFileWriter() {
+  if (fd_ >= 0) ::close(fd_);
+  if (!temporary_.empty()) ::unlink(temporary_.c_str());
+}
+
+void AtomicFileWriter::write(const std::string& text) {
+  if (fd_ < 0) throw std::logic_error("AtomicFileWriter: write after commit");
+  const int fd = fd_;
+  fd_ = -1;  // writeAll closes it on failure
+  writeAll(fd, reinterpret_cast<const std::uint8_t*>(text.data()), text.size(), temporary_);
+  fd_ = fd;
+}
+
+void AtomicFileWriter::commit() {
+  if (fd_ < 0) throw std::logic_error("AtomicFileWriter: commit twice");
+  const int fd = fd_;
+  fd_ = -1;
+  if (::close(fd) != 0) failAndRemove("cannot close", temporary_, temporary_);
+  if (std::rename(temporary_.c_str(), path_.c_str()) != 0) failAndRemove("cannot rename into", path_, temporary_);
+  temporary_.clear();
+}
+
+void writeFileAtomically(const std::string& requested, const std::uint8_t* data, std::size_t size, Sync sync) {
+  const std::string path = outputTarget(requested);
   const std::string temporary = temporaryPathFor(path);
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) throw std::runtime_error("cannot create " + temporary + ": " + std::strerror(errno));

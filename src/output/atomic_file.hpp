@@ -25,4 +25,28 @@ inline void writeFileAtomically(const std::string& path, const std::vector<std::
 }
 void writeFileAtomically(const std::string& path, const std::string& text, Sync sync = Sync::none);
 
+// Where an output named `path` really goes: `path` itself, or the file a symbolic link there points to (written
+// through, never replaced by a regular file). Throws std::invalid_argument if that exists and is not a regular
+// file (a device such as /dev/null, a folder, a pipe): such things are never replaced. Used by every writer here.
+std::string outputTarget(const std::string& path);
+
+// A file written in pieces (a long CSV) that appears under its name only when complete: the pieces go to a
+// temporary beside it; commit() checks every write, closes and renames; destroyed uncommitted (an error, an
+// interruption), it removes the temporary. Memory stays bounded whatever the file's size.
+class AtomicFileWriter {
+ public:
+  explicit AtomicFileWriter(const std::string& path);  // throws if the file cannot be created
+  ~AtomicFileWriter();
+  AtomicFileWriter(const AtomicFileWriter&) = delete;
+  AtomicFileWriter& operator=(const AtomicFileWriter&) = delete;
+
+  void write(const std::string& text);  // throws naming the file (disk full, quota, I/O error)
+  void commit();
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_, temporary_;
+  int fd_ = -1;
+};
+
 }  // namespace sl::output

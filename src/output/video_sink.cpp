@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "output/atomic_file.hpp"
 #include "output/sha256.hpp"
 #include "output/temporary_file.hpp"
 
@@ -146,7 +147,8 @@ void VideoSink::finish() {
   // The earlier video's manifest goes first: a kill between here and the flush leaves a video without a
   // manifest, never one that describes another video.
   ::unlink(manifest_.path().c_str());
-  if (std::rename(temporary_.c_str(), settings_.path.c_str()) != 0)
+  // Through a symbolic link to its target, never replacing the link (atomic_file.hpp).
+  if (std::rename(temporary_.c_str(), outputTarget(settings_.path).c_str()) != 0)
     throw std::runtime_error("cannot rename the finished video into " + settings_.path + ": " + std::strerror(errno));
   finished_ = true;
   // Listed only now: a manifest never describes a video that is not in place.

@@ -87,6 +87,7 @@ struct Trajectory::Impl {
   double lastSampleTime = 0;
   std::optional<StopInfo> stop;
   InvariantExtremes extremes;
+  std::function<bool()> cancelled;
 
   void halt(StopReason reason, double time, const std::string& detail) { stop = StopInfo{reason, time, detail}; }
 
@@ -177,7 +178,10 @@ std::optional<Sample> Trajectory::sampleAt(double t) {
   Impl& run = *impl_;
   if (!std::isfinite(t) || t < 0) throw std::invalid_argument("sample time must be finite and >= 0");
   if (t < run.lastSampleTime) throw std::invalid_argument("sample times must be non-decreasing");
-  while (!run.stop && t > run.stepper->endTime()) run.advance();
+  while (!run.stop && t > run.stepper->endTime()) {
+    if (run.cancelled && run.cancelled()) throw RunCancelled();
+    run.advance();
+  }
   if (run.stop && t > run.stop->time) return std::nullopt;  // the stop time itself can still be sampled
   run.lastSampleTime = t;
   State y;
@@ -185,6 +189,7 @@ std::optional<Sample> Trajectory::sampleAt(double t) {
   return run.sample(t, y);
 }
 
+void Trajectory::setCancellation(std::function<bool()> cancelled) { impl_->cancelled = std::move(cancelled); }
 const std::optional<StopInfo>& Trajectory::stop() const { return impl_->stop; }
 const InvariantExtremes& Trajectory::invariantExtremes() const { return impl_->extremes; }
 long Trajectory::vectorFieldEvaluations() const { return impl_->system->evaluations; }

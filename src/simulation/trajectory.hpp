@@ -2,8 +2,10 @@
 // The trajectory of one run: a geodesic method integrated from an initial state by an integrator, watched
 // for failure (the watchdogs of RunConfig), sampled on demand. Used by frames/, analysis/ and cli/.
 
+#include <functional>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -41,6 +43,12 @@ struct InvariantExtremes {
   double maxRodLengthError = 0;       // max_k | |p_k - p_(k-1)| - 1 |
 };
 
+// Thrown by Trajectory::sampleAt when the run's cancellation check (setCancellation) answers true; the run is
+// left as it was after its last step.
+struct RunCancelled : std::runtime_error {
+  RunCancelled() : std::runtime_error("the run was cancelled") {}
+};
+
 class Trajectory {
  public:
   Trajectory(const Chain& chain, const InitialState& start, const RunConfig& config);
@@ -52,6 +60,10 @@ class Trajectory {
   // are asked for, so every sampling of the same run sees the same motion. Empty once the run has
   // stopped before t; stop() then says why and when.
   std::optional<Sample> sampleAt(double t);
+
+  // Asked before every integration step (so a long sampleAt answers within one step), e.g. "was SIGTERM
+  // received?"; empty = never cancelled.
+  void setCancellation(std::function<bool()> cancelled);
 
   const std::optional<StopInfo>& stop() const;
   const InvariantExtremes& invariantExtremes() const;  // over the steps integrated so far

@@ -12,15 +12,6 @@ namespace sl {
 
 namespace {
 
-std::vector<std::string> splitFields(const std::string& line) {
-  std::vector<std::string> fields;
-  std::string field;
-  std::istringstream in(line);
-  while (std::getline(in, field, ',')) fields.push_back(field);
-  if (!line.empty() && line.back() == ',') fields.emplace_back();
-  return fields;
-}
-
 }  // namespace
 
 std::vector<std::string> trajectoryCsvColumns(int rods) {
@@ -48,7 +39,7 @@ std::string trajectoryCsvHeader(int rods) {
 }
 
 std::string trajectoryCsvRow(const std::string& run, const Sample& s, const std::string& status) {
-  std::string line = run;
+  std::string line = csvField(run);  // a name may hold a comma or a line break: quoted (RFC 4180)
   auto add = [&line](double v) {
     line += ',';
     appendShortest(line, v);
@@ -87,17 +78,24 @@ int TrajectoryCsv::valueIndex(const std::string& column) const {
 
 TrajectoryCsv readTrajectoryCsv(std::istream& in, const std::string& sourceName) {
   TrajectoryCsv csv;
-  std::string line;
-  if (!std::getline(in, line)) throw std::runtime_error(sourceName + ": empty file, expected a trajectory CSV header");
-  csv.columns = splitFields(line);
+  long lineNumber = 0;
+  const auto next = [&](std::vector<std::string>& fields) {
+    try {
+      return readCsvRecord(in, fields, lineNumber);
+    } catch (const std::invalid_argument& error) {
+      throw std::runtime_error(sourceName + ":" + std::to_string(lineNumber) + ": " + error.what());
+    }
+  };
+  if (!next(csv.columns)) throw std::runtime_error(sourceName + ": empty file, expected a trajectory CSV header");
   if (csv.columns.size() < 4 || csv.columns.front() != "run" || csv.columns[1] != "time" ||
-      csv.columns.back() != "status")
-    throw std::runtime_error(sourceName + ":1: expected a header 'run,time,...,status', got '" + line + "'");
-  long lineNumber = 1;
-  while (std::getline(in, line)) {
-    ++lineNumber;
-    if (line.empty()) continue;
-    const std::vector<std::string> fields = splitFields(line);
+      csv.columns.back() != "status") {
+    std::string header;
+    for (const std::string& column : csv.columns) header += (header.empty() ? "" : ",") + column;
+    throw std::runtime_error(sourceName + ":1: expected a header 'run,time,...,status', got '" + header + "'");
+  }
+  std::vector<std::string> fields;
+  while (next(fields)) {
+    if (fields.size() == 1 && fields[0].empty()) continue;
     const std::string where = sourceName + ":" + std::to_string(lineNumber);
     if (fields.size() != csv.columns.size())
       throw std::runtime_error(where + ": expected " + std::to_string(csv.columns.size()) + " fields, got " +

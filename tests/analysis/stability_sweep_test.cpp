@@ -79,7 +79,7 @@ TEST(StabilitySweep, MergingShardsOfDifferentGridsIsRefused) {
   options.shard = {2, 2};
   output::writeFileAtomically(stabilityShardPath(folder, "seam", options.shard), csvText(runStabilitySweep(options)));
   CsvTable merged;
-  EXPECT_THROW(mergeStabilityShards(folder, "seam", 2, merged), std::runtime_error);
+  EXPECT_THROW(mergeStabilityShards(folder, "seam", 2, merged), std::invalid_argument);
 }
 
 // Columns of the pole sweep (grid 4): closest approach 0 (exactly through the pole), 10^-7.7, 10^-4.3

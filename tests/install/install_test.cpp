@@ -16,13 +16,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string singleQuoted(const std::string& text) { return "'" + text + "'"; }
-
 TEST(Install, MovedPrefixRendersTheSameBytesAsTheBuildTree) {
   TempFolder temp;
   const fs::path prefix = temp.path() / "prefix";
-  const ProcessResult install = runShell(std::string(SL_CMAKE_COMMAND) + " --install " + singleQuoted(SL_BUILD_DIR) +
-                                             " --prefix " + singleQuoted(prefix.string()),
+  const ProcessResult install = runShell(std::string(SL_CMAKE_COMMAND) + " --install " + shellQuoted(SL_BUILD_DIR) +
+                                             " --prefix " + shellQuoted(prefix.string()),
                                          temp.path(), 300);
   ASSERT_EQ(install.code, 0) << install.out << install.err;
   // Moved: a cluster node or another user's prefix has none of the paths the build knew.
@@ -56,8 +54,8 @@ TEST(Install, MovedPrefixRendersTheSameBytesAsTheBuildTree) {
 
 TEST(Install, DebianPackageCarriesTheProgramScenesAndRunTimeDependencies) {
   TempFolder temp;
-  const ProcessResult cpack = runShell("cd " + singleQuoted(SL_BUILD_DIR) + " && " + SL_CPACK_COMMAND + " -G DEB -B " +
-                                           singleQuoted(temp.path().string()),
+  const ProcessResult cpack = runShell("cd " + shellQuoted(SL_BUILD_DIR) + " && " + SL_CPACK_COMMAND + " -G DEB -B " +
+                                           shellQuoted(temp.path().string()),
                                        temp.path(), 600);
   ASSERT_EQ(cpack.code, 0) << cpack.out << cpack.err;
   std::string deb;
@@ -65,11 +63,11 @@ TEST(Install, DebianPackageCarriesTheProgramScenesAndRunTimeDependencies) {
     if (entry.path().extension() == ".deb") deb = entry.path().string();
   ASSERT_FALSE(deb.empty()) << cpack.out;
   EXPECT_EQ(fs::path(deb).filename().string().rfind("linkage_", 0), 0u) << deb;
-  const ProcessResult depends = runShell("dpkg-deb -f " + singleQuoted(deb) + " Depends", temp.path());
+  const ProcessResult depends = runShell("dpkg-deb -f " + shellQuoted(deb) + " Depends", temp.path());
   ASSERT_EQ(depends.code, 0) << depends.err;
   for (const char* package : {"libosmesa6", "ffmpeg", "fonts-dejavu-core", "gnuplot", "libdeflate0", "libc6"})
     EXPECT_NE(depends.out.find(package), std::string::npos) << package << " missing from Depends: " << depends.out;
-  const ProcessResult contents = runShell("dpkg-deb -c " + singleQuoted(deb), temp.path());
+  const ProcessResult contents = runShell("dpkg-deb -c " + shellQuoted(deb), temp.path());
   ASSERT_EQ(contents.code, 0) << contents.err;
   EXPECT_NE(contents.out.find("./usr/bin/linkage"), std::string::npos) << contents.out;
   EXPECT_NE(contents.out.find("./usr/share/sphere-linkages/scenes/default.json"), std::string::npos);

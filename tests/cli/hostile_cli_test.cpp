@@ -1,0 +1,183 @@
+// Hostile options, outputs and inputs from the command line (issue 13): each test pins one class of defect so
+// that it cannot come back. Crashes, hangs and silent loss first; then what validate must refuse; then files.
+#include <chrono>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "support/child_process.hpp"
+#include "support/files.hpp"
+#include "support/linkage_binary.hpp"
+#include "support/scene_files.hpp"
+#include "support/temp_folder.hpp"
+
+namespace sl::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+// 13.1: a NaN or absurd error-grid interval was a SIGSEGV (an empty grid) or a 5e11-sample allocation.
+TEST(HostileCli, ErrorGridIntervalsAreCheckedBeforeAnyWork) {
+  TempFolder folder;
+  for (const char* interval : {"nan", "1e-300", "1e-12", "inf", "-1", "0"}) {
+    SCOPED_TRACE(interval);
+    const ProcessResult stability = runLinkage(
+        {"stability", "--interval", interval, "--grid", "2", "--no-charts", "--out", "st"}, folder.path(), 60);
+    EXPECT_EQ(stability.code, 2) << stability.err;
+    EXPECT_NE(stability.err.find("--interval"), std::string::npos) << stability.err;
+    const ProcessResult bench =
+        runLinkage({"bench", "--interval", interval, "--quick", "--no-charts", "--out", "bn"}, folder.path(), 60);
+    EXPECT_EQ(bench.code, 2) << bench.err;
+  }
+}
+
+// 13.15: NaN where a positive number is required is refused, by every command.
+TEST(HostileCli, NonFiniteNumbersAreRefusedEverywhere) {
+  TempFolder folder;
+  const std::string scene = shippedScene("default.json");
+  writeFile(folder.path() / "a.csv", "run,time,phi,t,phidot,tdot,energy,p1x,p1y,p2x,p2y,p3x,p3y,status\n");
+  const std::vector<std::vector<std::string>> commands{
+      {"simulate", scene, "--dt", "nan"},
+      {"simulate", scene, "--dt", "inf"},
+      {"diff", "a.csv", "a.csv", "--tol", "nan"},
+      {"stability", "--tolerance", "nan", "--grid", "2", "--no-charts"},
+      {"stability", "--step", "nan", "--grid", "2", "--no-charts"},
+      {"stability", "--duration", "nan", "--grid", "2", "--no-charts"},
+  };
+  for (const auto& command : commands) {
+    const ProcessResult result = runLinkage(command, folder.path(), 60);
+    EXPECT_EQ(result.code, 2) << command[0] << " " << command[2] << " " << command[3] << ": " << result.err;
+    EXPECT_NE(result.err.find("expected a finite number"), std::string::npos) << result.err;
+  }
+}
+
+// 13.16: shard numbers beyond int and merges of missing or corrupt shards are input errors (2), named.
+TEST(HostileCli, ShardAndMergeProblemsAreInputErrors) {
+  TempFolder folder;
+  const ProcessResult huge =
+      runLinkage({"stability", "--shard", "1/99999999999", "--grid", "2", "--no-charts"}, folder.path());
+  EXPECT_EQ(huge.code, 2);
+  EXPECT_NE(huge.err.find("--shard: expected K/N"), std::string::npos) << huge.err;
+  const std::vector<std::string> merge{"stability", "--merge", "--out", "st", "--no-charts"};
+  fs::create_directories(folder.path() / "st");
+  EXPECT_EQ(runLinkage(merge, folder.path()).code, 2);
+  ASSERT_EQ(runLinkage({"stability", "--shard", "1/2", "--grid", "2", "--no-reference", "--no-charts", "--out", "st",
+                        "--quiet"},
+                       folder.path())
+                .code,
+            0);
+  const ProcessResult missing = runLinkage(merge, folder.path());
+  EXPECT_EQ(missing.code, 2);
+  EXPECT_NE(missing.err.find("missing shards: st/stability-launch.shard-2-of-2.csv"), std::string::npos)
+      << missing.err;
+  writeFile(folder.path() / "st" / "stability-launch.shard-2-of-2.csv", "junk\n");
+  const ProcessResult corrupt = runLinkage(merge, folder.path());
+  EXPECT_EQ(corrupt.code, 2);
+  EXPECT_NE(corrupt.err.find("stability-launch.shard-2-of-2.csv: not a stability shard"), std::string::npos)
+      << corrupt.err;
+}
+
+// 13.3 and 13.20: standard output's write errors end the command with 3, never a silent short CSV.
+TEST(HostileCli, WriteErrorsOnStandardOutputAreFailures) {
+  TempFolder folder;
+  const ProcessResult full =
+      runShell(shellQuoted(linkageBinary()) + " simulate " + shellQuoted(shippedScene("default.json")) + " > /dev/full",
+               folder.path());
+  EXPECT_EQ(full.code, 3) << full.err;
+  EXPECT_NE(full.err.find("cannot write the CSV to standard output"), std::string::npos) << full.err;
+}
+
+// 13.7 and 13.20: SIGTERM is answered within a second, even inside one long sample; stdout says it is cut.
+TEST(HostileCli, SimulateAnswersSigtermWithinASecond) {
+  TempFolder folder;
+  std::string scene = readFile(shippedScene("default.json"));
+  // Slow on purpose: a tiny tolerance over a long time with one frame per 100 s (one sample = a long integration).
+  scene.replace(scene.find("\"duration\": 20.0"), 16, "\"duration\": 100000.0");
+  scene.replace(scene.find("\"tolerance\": 1e-10"), 18, "\"tolerance\": 1e-16");
+  scene.replace(scene.find("\"fps\": 30"), 9, "\"fps\": 1");
+  writeFile(folder.path() / "slow.json", scene);
+  const ProcessResult result = runShell(
+      shellQuoted(linkageBinary()) + " simulate slow.json > out.csv 2> err.txt & pid=$!; sleep 1.5; "
+                                "start=$(date +%s%N); kill -TERM $pid; wait $pid; rc=$?; end=$(date +%s%N); "
+                                "echo $rc $(( (end - start) / 1000000 ))",
+      folder.path(), 120);
+  ASSERT_EQ(result.code, 0) << result.err;
+  int rc = 0;
+  long milliseconds = 0;
+  ASSERT_EQ(std::sscanf(result.out.c_str(), "%d %ld", &rc, &milliseconds), 2) << result.out;
+  EXPECT_EQ(rc, 130);
+  EXPECT_LT(milliseconds, 1000) << "SIGTERM answered after " << milliseconds << " ms";
+  const std::string err = readFile(folder.path() / "err.txt");
+  EXPECT_NE(err.find("stopped by SIGTERM"), std::string::npos) << err;
+  EXPECT_NE(err.find("the CSV on standard output is incomplete"), std::string::npos) << err;
+}
+
+// 13.6: outputs through a symbolic link go to its target (the link stays); devices and folders are refused.
+TEST(HostileCli, LinksAreWrittenThroughAndDevicesRefused) {
+  TempFolder folder;
+  const std::string scene = shippedScene("default.json");
+  writeFile(folder.path() / "target.csv", "stale\n");
+  fs::create_symlink("target.csv", folder.path() / "link.csv");
+  ASSERT_EQ(runLinkage({"simulate", scene, "--csv", "link.csv", "--quiet"}, folder.path()).code, 0);
+  EXPECT_TRUE(fs::is_symlink(folder.path() / "link.csv"));
+  EXPECT_EQ(readFile(folder.path() / "target.csv").rfind("run,time,", 0), 0u);
+  for (const char* bad : {"/dev/null", "."}) {
+    const ProcessResult refused = runLinkage({"simulate", scene, "--csv", bad}, folder.path());
+    EXPECT_EQ(refused.code, 2) << bad;
+    EXPECT_NE(refused.err.find("--csv"), std::string::npos) << refused.err;
+  }
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+}
+
+// 13.17 and 13.18: the program reads its own CSV whatever the run names; diff handles NaN, CRLF, missing files,
+// frame sizes and frames changed behind the manifest's back.
+TEST(HostileCli, DiffReadsEveryCsvTheProgramWritesAndSaysWhatIsWrong) {
+  TempFolder folder;
+  std::string scene = readFile(shippedScene("comparison.json"));
+  scene.replace(scene.find("\"christoffel (published)\""), 25, "\"a, \\\"quoted\\\"\\nname\"");
+  writeFile(folder.path() / "names.json", scene);
+  ASSERT_EQ(runLinkage({"simulate", "names.json", "--csv", "a.csv", "--quiet"}, folder.path()).code, 0);
+  const ProcessResult own = runLinkage({"diff", "a.csv", "a.csv"}, folder.path());
+  EXPECT_EQ(own.code, 0) << own.out << own.err;
+
+  const std::string header = "run,time,phi,t,phidot,tdot,energy,p1x,p1y,p2x,p2y,p3x,p3y,status";
+  writeFile(folder.path() / "nan.csv", header + "\nr,0,0,0,0,0,0.5,nan,0,0,0,0,0,ok\nr,1,0,0,0,0,0.5,0,0,0,0,0,0,ok\n");
+  EXPECT_EQ(runLinkage({"diff", "nan.csv", "nan.csv"}, folder.path()).code, 0);
+  writeFile(folder.path() / "zero.csv", header + "\nr,0,0,0,0,0,0.5,0,0,0,0,0,0,ok\nr,1,0,0,0,0,0.5,0,0,0,0,0,0,ok\n");
+  const ProcessResult nanVsZero = runLinkage({"diff", "nan.csv", "zero.csv"}, folder.path());
+  EXPECT_EQ(nanVsZero.code, 1);
+  EXPECT_NE(nanVsZero.out.find("worst hinge difference inf at t = 0"), std::string::npos) << nanVsZero.out;
+  writeFile(folder.path() / "crlf.csv",
+            header + "\r\nr,0,0,0,0,0,0.5,0,0,0,0,0,0,ok\r\nr,1,0,0,0,0,0.5,0,0,0,0,0,0,ok\r\n");
+  EXPECT_EQ(runLinkage({"diff", "crlf.csv", "zero.csv"}, folder.path()).code, 0);
+
+  const ProcessResult missing = runLinkage({"diff", "zero.csv", "nothere.csv"}, folder.path());
+  EXPECT_EQ(missing.code, 2);
+  EXPECT_NE(missing.err.find("nothere.csv: no such file or folder"), std::string::npos) << missing.err;
+
+  const std::string seam = shippedScene("seam.json");
+  ASSERT_EQ(runLinkage({"render", seam, "--size", "160x90", "--frames", "0:2", "--out", "small", "--quiet"},
+                       folder.path())
+                .code,
+            0);
+  ASSERT_EQ(runLinkage({"render", seam, "--size", "320x180", "--frames", "0:2", "--out", "big", "--quiet"},
+                       folder.path())
+                .code,
+            0);
+  const ProcessResult sizes = runLinkage({"diff", "small", "big", "--images"}, folder.path());
+  EXPECT_EQ(sizes.code, 1);
+  EXPECT_NE(sizes.out.find("the frames are 160x90 and 320x180"), std::string::npos) << sizes.out;
+  // A frame replaced behind the manifest's back: the folder is not a consistent render.
+  fs::copy_file(folder.path() / "big" / "frame_00001.png", folder.path() / "small" / "frame_00001.png",
+                fs::copy_options::overwrite_existing);
+  const ProcessResult tampered = runLinkage({"diff", "small", "small"}, folder.path());
+  EXPECT_EQ(tampered.code, 2);
+  EXPECT_NE(tampered.err.find("frame_00001.png: does not match its entry"), std::string::npos) << tampered.err;
+  fs::remove(folder.path() / "small" / "frame_00001.png");
+  EXPECT_EQ(runLinkage({"diff", "small", "big"}, folder.path()).code, 2);
+}
+
+}  // namespace
+}  // namespace sl::testing
