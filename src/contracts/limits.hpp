@@ -2,6 +2,8 @@
 // What the program accepts, each bound written once: the scene loader, the command-line options and the
 // stages that allocate check against these.
 
+#include <cstddef>
+
 namespace sl::limits {
 
 inline constexpr int kMinImageSide = 16;
@@ -9,6 +11,12 @@ inline constexpr int kMinImageSide = 16;
 inline constexpr int kMaxImageSide = 8192;
 // About 9 hours at 30 fps: anything longer is a typo.
 inline constexpr long kMaxFrames = 1'000'000;
+// A scene file is a few kilobytes; anything near this is not a scene (and is not read whole into memory).
+inline constexpr std::size_t kMaxSceneBytes = 16u << 20;
+// Hinge and rod masses (relative units): beyond this the kinetic energy and the constraint solve overflow.
+inline constexpr double kMaxMass = 1e6;
+// The camera's orbit: 10 turns a second is already a blur.
+inline constexpr double kMaxOrbitDegreesPerSecond = 3600;
 inline constexpr int kMinRods = 3;
 inline constexpr int kMaxRods = 12;
 inline constexpr int kMaxFps = 1000;

@@ -1,5 +1,7 @@
 #include "scene/json_fields.hpp"
 
+#include <climits>
+
 #include <cmath>
 #include <sstream>
 
@@ -83,6 +85,11 @@ std::optional<long> JsonObject::integer(const std::string& key, bool required) c
   }
   if (!value->is_number_integer()) {
     report(key, "found " + describeJson(*value) + "; expected an integer");
+    return std::nullopt;
+  }
+  // 2^63 .. 2^64 - 1 arrive as unsigned: never let them wrap into a negative long.
+  if (value->is_number_unsigned() && value->get<unsigned long long>() > static_cast<unsigned long long>(LONG_MAX)) {
+    report(key, "found " + std::to_string(value->get<unsigned long long>()) + "; far beyond any allowed value");
     return std::nullopt;
   }
   return value->get<long>();

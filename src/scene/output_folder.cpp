@@ -49,6 +49,7 @@ std::vector<SceneProblem> checkVideoPath(const std::string& video, const std::st
   std::string formats;
   for (const VideoFormatTraits& format : kVideoFormats) formats += (formats.empty() ? "." : ", .") + std::string(format.name);
   if (video.empty() || video.back() == '/') return {{jsonPath, found + "; expected a video file name, not a folder"}};
+  if (video.find('\0') != std::string::npos) return {{jsonPath, "holds a NUL character; expected a file name"}};
   std::error_code error;
   if (fs::is_directory(video, error)) return {{jsonPath, found + ": that is a folder; expected a video file name in it"}};
   if (!videoFormatOfPath(video))

@@ -7,11 +7,13 @@
 #include <set>
 #include <sstream>
 
+#include "contracts/csv_format.hpp"
 #include "contracts/limits.hpp"
 #include "contracts/registry.hpp"
 #include "scene/did_you_mean.hpp"
 #include "scene/json_error_path.hpp"
 #include "scene/json_fields.hpp"
+#include "scene/output_folder.hpp"
 #include "scene/scene_sections.hpp"
 
 namespace sl {
@@ -22,9 +24,23 @@ namespace {
 
 // A scene name becomes a folder name: keep it to characters that are safe everywhere.
 bool isSafeName(const std::string& name) {
-  return !name.empty() && name != "." && name != ".." && std::all_of(name.begin(), name.end(), [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.';
-  });
+  return !name.empty() && name.size() <= kMaxOutputNameBytes && name != "." && name != ".." &&
+         std::all_of(name.begin(), name.end(), [](char c) {
+           return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.';
+         });
+}
+
+// What no file system takes: a NUL byte (it would cut the path short), or a component longer than NAME_MAX.
+std::string unusablePathReason(const std::string& path) {
+  if (path.find('\0') != std::string::npos) return "holds a NUL character";
+  std::size_t start = 0;
+  while (start <= path.size()) {
+    const std::size_t end = std::min(path.find('/', start), path.size());
+    if (end - start > 255)
+      return "has a component of " + std::to_string(end - start) + " bytes; file systems allow 255";
+    start = end + 1;
+  }
+  return "";
 }
 
 void readLinkage(const json& value, Scene& scene, std::vector<SceneProblem>& problems) {
@@ -54,13 +70,15 @@ void readLinkage(const json& value, Scene& scene, std::vector<SceneProblem>& pro
   chain.rodMasses = Eigen::VectorXd::Zero(n);
   if (const auto masses = linkage.numbers("hinge_masses")) {
     if (linkage.checkSize("hinge_masses", *masses, n - 1, "one per interior hinge, n-1")) {
-      if (masses->minCoeff() < 0) linkage.report("hinge_masses", "expected non-negative masses");
+      if (masses->minCoeff() < 0 || masses->maxCoeff() > limits::kMaxMass)
+        linkage.report("hinge_masses", "expected masses from 0 to " + shortest(limits::kMaxMass));
       chain.hingeMasses = *masses;
     }
   }
   if (const auto masses = linkage.numbers("rod_masses")) {
     if (linkage.checkSize("rod_masses", *masses, n, "one per rod, n")) {
-      if (masses->minCoeff() < 0) linkage.report("rod_masses", "expected non-negative masses");
+      if (masses->minCoeff() < 0 || masses->maxCoeff() > limits::kMaxMass)
+        linkage.report("rod_masses", "expected masses from 0 to " + shortest(limits::kMaxMass));
       chain.rodMasses = *masses;
     }
   }
@@ -255,6 +273,8 @@ void readOutput(const json& value, Scene& scene, std::vector<SceneProblem>& prob
   spec.size.height = static_cast<int>(std::clamp<long>(height.value_or(spec.size.height), -1, 1 << 30));
   spec.folder = output.string("folder").value_or("renders/" + scene.name);
   if (spec.folder.empty()) output.report("folder", "is empty; expected a folder for the frames");
+  if (const std::string reason = unusablePathReason(spec.folder); !reason.empty())
+    output.report("folder", reason + "; expected a usable folder path");
   spec.png = output.boolean("png").value_or(true);
   spec.video = output.string("video").value_or("");
   if (const auto quality = output.string("video_quality")) {
@@ -297,8 +317,32 @@ std::vector<SceneProblem> checkFrameCount(double duration, int fps) {
 
 Scene parseScene(const std::string& text, const std::string& file, const std::vector<std::string>& overrides) {
   json document;
+  // A key twice in one object: nlohmann keeps the last silently, which could hide a whole section. Found while
+  // parsing, with the chain of keys that leads to it.
+  std::vector<SceneProblem> duplicates;
+  std::vector<std::set<std::string>> keysOfObject;
+  std::vector<std::string> keyPath;
+  const json::parser_callback_t noticeDuplicates = [&](int depth, json::parse_event_t event, json& parsed) {
+    if (event == json::parse_event_t::object_start) {
+      keysOfObject.emplace_back();
+    } else if (event == json::parse_event_t::object_end && !keysOfObject.empty()) {
+      keysOfObject.pop_back();
+    } else if (event == json::parse_event_t::key && !keysOfObject.empty()) {
+      const std::string key = parsed.get<std::string>();
+      keyPath.resize(static_cast<std::size_t>(std::max(depth - 1, 0)));
+      keyPath.push_back(key);
+      if (!keysOfObject.back().insert(key).second) {
+        std::string path;
+        for (const std::string& part : keyPath)  // array levels have no key: runs[i].name shows as runs.name
+          if (!part.empty()) path += (path.empty() ? "" : ".") + part;
+        duplicates.push_back({path, "appears twice in one object; expected each key once (the later one would "
+                                    "silently replace the earlier)"});
+      }
+    }
+    return true;
+  };
   try {
-    document = json::parse(text);
+    document = json::parse(text, noticeDuplicates);
   } catch (const json::exception& error) {
     // nlohmann says "parse error at line L, column C: ..." (or "number overflow parsing '1e999'"): keep
     // that, drop its "[json.exception...]" tag, and add the JSON path where reading stopped.
@@ -308,7 +352,7 @@ Scene parseScene(const std::string& text, const std::string& file, const std::ve
     throw SceneError(file, {{jsonPathOfParseError(text), "malformed JSON: " + message}});
   }
 
-  std::vector<SceneProblem> problems;
+  std::vector<SceneProblem> problems = std::move(duplicates);
   applySceneOverrides(document, overrides, problems);
   Scene scene;
   scene.file = file;
@@ -322,7 +366,8 @@ Scene parseScene(const std::string& text, const std::string& file, const std::ve
   if (top.has("name") && !isSafeName(scene.name)) {
     top.report("name",
                "found \"" + scene.name +
-                   "\"; expected a non-empty name of letters, digits, '-', '_' or '.' (it names the output folder)");
+                   "\"; expected a non-empty name of at most " + std::to_string(kMaxOutputNameBytes) +
+                   " letters, digits, '-', '_' or '.' (it names the output folder)");
   }
   scene.title = top.string("title").value_or(scene.name);
   if (const auto duration = top.number("duration", true); duration && top.checkPositive("duration", *duration)) {
@@ -348,10 +393,15 @@ Scene parseScene(const std::string& text, const std::string& file, const std::ve
 Scene loadScene(const std::string& file, const std::vector<std::string>& overrides) {
   std::ifstream stream(file, std::ios::binary);
   if (!stream) throw SceneError(file, {{"", "cannot open the file for reading"}});
-  std::ostringstream text;
-  text << stream.rdbuf();
+  // Read once (it may be a pipe), and never more than a scene can sensibly be.
+  std::string text(limits::kMaxSceneBytes + 1, '\0');
+  stream.read(text.data(), static_cast<std::streamsize>(text.size()));
   if (stream.bad()) throw SceneError(file, {{"", "cannot read the file"}});
-  return parseScene(text.str(), file, overrides);
+  text.resize(static_cast<std::size_t>(stream.gcount()));
+  if (text.size() > limits::kMaxSceneBytes)
+    throw SceneError(file, {{"", "larger than " + std::to_string(limits::kMaxSceneBytes >> 20) +
+                                     " MiB; a scene file is a few kilobytes"}});
+  return parseScene(text, file, overrides);
 }
 
 }  // namespace sl

@@ -4,6 +4,7 @@
 
 #include "contracts/limits.hpp"
 #include "contracts/registry.hpp"
+#include "scene/output_folder.hpp"
 
 namespace sl {
 namespace {
@@ -27,13 +28,13 @@ json closedObject(json properties, const std::string& description, json required
   return object;
 }
 
-json number(const std::string& description) { return {{"type", "number"}, {"description", description}}; }
 json positive(const std::string& description) {
   return {{"type", "number"}, {"exclusiveMinimum", 0}, {"description", description}};
 }
-json numbers(const std::string& description, double minimum = -1e308) {
+json numbers(const std::string& description, double minimum = -1e308, double maximum = 1e308) {
   json items{{"type", "number"}};
   if (minimum > -1e308) items["minimum"] = minimum;
+  if (maximum < 1e308) items["maximum"] = maximum;
   return {{"type", "array"}, {"items", items}, {"description", description}};
 }
 json fixedNumbers(int count, double minimum, double maximum, const std::string& description) {
@@ -83,7 +84,11 @@ json viewSchema() {
   return closedObject(
       {{"panels", {{"type", "array"}, {"minItems", 1}, {"items", panelSchema()}, {"description", "layout order"}}},
        {"camera", closedObject({{"direction", fixedNumbers(3, -1e308, 1e308, "from the centre towards the eye")},
-                                {"orbit_degrees_per_second", number("slow orbit about the vertical axis")},
+                                {"orbit_degrees_per_second",
+                                 {{"type", "number"},
+                                  {"minimum", -limits::kMaxOrbitDegreesPerSecond},
+                                  {"maximum", limits::kMaxOrbitDegreesPerSecond},
+                                  {"description", "slow orbit about the vertical axis"}}},
                                 {"field_of_view",
                                  {{"type", "number"},
                                   {"minimum", limits::kMinFieldOfViewDegrees},
@@ -127,8 +132,8 @@ json sceneSchema() {
         {"title", text("shown in the frames")},
         {"linkage", closedObject({{"rods", integer(limits::kMinRods, limits::kMaxRods, "n, unit rods")},
                                   {"L", positive("distance between the pins, n-2 < L < n")},
-                                  {"hinge_masses", numbers("n-1 point masses at the interior hinges", 0)},
-                                  {"rod_masses", numbers("n uniform rod masses", 0)}},
+                                  {"hinge_masses", numbers("n-1 point masses at the interior hinges", 0, limits::kMaxMass)},
+                                  {"rod_masses", numbers("n uniform rod masses", 0, limits::kMaxMass)}},
                                  "the chain", json::array({"rods", "L"}))},
         {"initial", initial},
         {"duration", positive("simulated time")},

@@ -59,8 +59,10 @@ void addPanel(const json& value, const std::string& path, Scene& scene, std::vec
     }
     if (const auto rect = object.numbers("rect");
         rect && object.checkSize("rect", *rect, 4, "x, y, width, height as fractions")) {
-      if (rect->minCoeff() < 0 || rect->maxCoeff() > 1 || (*rect)(2) <= 0 || (*rect)(3) <= 0) {
-        object.report("rect", "expected fractions of the frame from 0 to 1, with positive width and height");
+      if (rect->minCoeff() < 0 || rect->maxCoeff() > 1 || (*rect)(2) <= 0 || (*rect)(3) <= 0 ||
+          (*rect)(0) + (*rect)(2) > 1 + 1e-9 || (*rect)(1) + (*rect)(3) > 1 + 1e-9) {
+        object.report("rect", "expected fractions of the frame from 0 to 1, with positive width and height, inside "
+                              "the frame (x + width and y + height at most 1)");
       }
       panel.rect = std::array<double, 4>{(*rect)(0), (*rect)(1), (*rect)(2), (*rect)(3)};
     }
@@ -96,10 +98,18 @@ void readCamera(const JsonObject& view, CameraSpec& camera, std::vector<ScenePro
                           {"direction", "orbit_degrees_per_second", "field_of_view"});
   if (const auto direction = object.numbers("direction");
       direction && object.checkSize("direction", *direction, 3, "x, y, z towards the eye")) {
-    if (direction->norm() == 0) object.report("direction", "found the zero vector; expected a direction");
-    camera.viewDirection = {(*direction)(0), (*direction)(1), (*direction)(2)};
+    // Only the direction counts: brought to size 1 by its largest component, so [1e300, 1e300, 1e300] (whose
+    // length overflows) and [1e-300, 0, 0] are directions like any other.
+    const double largest = direction->cwiseAbs().maxCoeff();
+    if (largest == 0) object.report("direction", "found the zero vector; expected a direction");
+    const Eigen::VectorXd unit = largest > 0 ? Eigen::VectorXd(*direction / largest) : *direction;
+    camera.viewDirection = {unit(0), unit(1), unit(2)};
   }
-  if (const auto orbit = object.number("orbit_degrees_per_second")) camera.orbitDegreesPerSecond = *orbit;
+  if (const auto orbit = object.number("orbit_degrees_per_second");
+      orbit && object.checkRange("orbit_degrees_per_second", *orbit, -limits::kMaxOrbitDegreesPerSecond,
+                                 limits::kMaxOrbitDegreesPerSecond, "degrees per second from -3600 to 3600")) {
+    camera.orbitDegreesPerSecond = *orbit;
+  }
   std::ostringstream fovRange;
   fovRange << "an angle from " << limits::kMinFieldOfViewDegrees << " to " << limits::kMaxFieldOfViewDegrees
            << " degrees";

@@ -30,6 +30,30 @@ double speedSquared(const Chain& chain, const InitialState& start) {
                              Eigen::Map<const Eigen::Matrix2Xd>(stacked.data(), 2, chain.hingeCount()));
 }
 
+namespace {
+
+// Scales a velocity to unit speed without overflow: the direction is brought to size 1 first, so a velocity of
+// 1e300 (or 1e-300) keeps its direction instead of becoming inf (or 0) on the way.
+void toUnitSpeed(const Chain& chain, InitialState& start, const char* what) {
+  const double largest = start.sphereVelocity.cwiseAbs().maxCoeff();
+  if (largest > 0) start.sphereVelocity /= largest;
+  const double speed2 = speedSquared(chain, start);
+  if (!(speed2 > 1e-300)) throw std::invalid_argument(std::string(what) + " moves nothing; unit_speed needs a motion");
+  start.sphereVelocity /= std::sqrt(speed2);
+}
+
+// Without unit_speed the velocity is used as given: it must move the linkage, at a finite kinetic energy.
+void requireFiniteMotion(const Chain& chain, const InitialState& start, const char* what) {
+  const double speed2 = speedSquared(chain, start);
+  if (!std::isfinite(speed2))
+    throw std::invalid_argument(std::string(what) +
+                                " is so large that the kinetic energy overflows; expected a smaller velocity (or "
+                                "unit_speed)");
+  if (!(speed2 > 0)) throw std::invalid_argument(std::string(what) + " is zero: nothing moves");
+}
+
+}  // namespace
+
 InitialState initialStateFromDrag(const Chain& chain, const Eigen::VectorXd& point, const Eigen::VectorXd& direction,
                                   bool unitSpeed) {
   requireSize(point, chain.rods - 1, "drag start point");
@@ -38,12 +62,10 @@ InitialState initialStateFromDrag(const Chain& chain, const Eigen::VectorXd& poi
   InitialState start;
   start.spherePoint = point.normalized();
   start.sphereVelocity = direction - start.spherePoint * start.spherePoint.dot(direction);
-  if (unitSpeed) {
-    const double speed2 = speedSquared(chain, start);
-    if (!(speed2 > 1e-300))
-      throw std::invalid_argument("drag direction has no component tangent to the sphere at the start point");
-    start.sphereVelocity /= std::sqrt(speed2);
-  }
+  if (unitSpeed)
+    toUnitSpeed(chain, start, "the drag direction, once its part along the point is removed,");
+  else
+    requireFiniteMotion(chain, start, "the drag direction's part tangent to the sphere");
   return start;
 }
 
@@ -62,8 +84,17 @@ InitialState initialStateFromSpec(const Chain& chain, const InitialSpec& spec) {
     return initialStateFromDrag(chain, spec.dragPoint, spec.dragDirection, spec.unitSpeed);
   }
   InitialState start = initialStateFromChart(chain, spec.coords, spec.velocity);
-  const double speed = std::sqrt(speedSquared(chain, start));
-  if (spec.unitSpeed && speed > 0) start.sphereVelocity /= speed;
+  // Where the chart is singular (phi = +-pi/2 for 4 rods: t is undefined there) a non-zero chart velocity can
+  // be zero on the sphere: a frozen linkage, or rounding noise that unit_speed would blow up to any direction.
+  const double rates = spec.velocity.cwiseAbs().maxCoeff();
+  if (rates > 0 && !(start.sphereVelocity.cwiseAbs().maxCoeff() > 1e-9 * rates))
+    throw std::invalid_argument(
+        "the chart velocity moves nothing at this point (a pole of the chart, where a coordinate is undefined); "
+        "expected a velocity along the other coordinates, or a drag start");
+  if (spec.unitSpeed)
+    toUnitSpeed(chain, start, "the velocity");
+  else
+    requireFiniteMotion(chain, start, "the velocity");
   return start;
 }
 

@@ -40,6 +40,7 @@ TEST(BadScenes, TableCoversEveryFile) {
 TEST(BadScenes, EachNamesItsJsonPathAndWhatIsWrong) {
   for (const auto& [file, expected] : badSceneExpectations()) {
     SCOPED_TRACE(file);
+    if (expected.front().atStart) continue;  // the start's problems: tests/cli/bad_scene_cli_test.cpp
     const std::vector<SceneProblem> problems = problemsOf(kBadDir + file);
     ASSERT_FALSE(problems.empty());
     for (const BadSceneExpectation& expectation : expected) {

@@ -21,11 +21,12 @@ std::map<std::string, std::vector<BadSceneExpectation>> badSceneExpectations() {
   while (std::getline(table, line)) {
     if (line.empty() || line[0] == '#') continue;
     std::istringstream fields(line);
-    std::string file, jsonPath, fragment;
+    std::string file, jsonPath, fragment, stage;
     std::getline(fields, file, '\t');
     std::getline(fields, jsonPath, '\t');
-    std::getline(fields, fragment);
-    byFile[file].push_back({jsonPath, fragment});
+    std::getline(fields, fragment, '\t');
+    std::getline(fields, stage);
+    byFile[file].push_back({jsonPath, fragment, stage == "start"});
   }
   return byFile;
 }

@@ -18,8 +18,11 @@ std::string shippedScene(const std::string& name);
 std::string badSceneFolder();
 
 // One line of expected.tsv: a JSON path the file's messages must name, with a fragment of that message.
+// A fourth column "start" marks problems found when the start is set up from the scene (the simulation's
+// initial state: validate, render and simulate refuse them), which the scene loader alone cannot see.
 struct BadSceneExpectation {
   std::string jsonPath, fragment;
+  bool atStart = false;
 };
 // Every bad scene file named in expected.tsv, with all its expectations in the table's order.
 std::map<std::string, std::vector<BadSceneExpectation>> badSceneExpectations();
