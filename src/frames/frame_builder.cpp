@@ -29,6 +29,24 @@ void fadeOut(std::vector<T>& points, std::vector<double>& times, double now, dou
   times.erase(times.begin(), first);
 }
 
+// Bounds a path's memory and drawing cost whatever the duration and sampling: past kMaxPathPoints points, every
+// other point of the older part goes (the newest kRecentPathPoints stay at full resolution). Depends on the
+// sequence of samples only, so every shard thins alike.
+template <class T>
+void thinOut(std::vector<T>& points, std::vector<double>& times) {
+  if (points.size() <= kMaxPathPoints) return;
+  const std::size_t older = points.size() - kRecentPathPoints;
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (i < older && i % 2 == 1) continue;
+    points[kept] = points[i];
+    times[kept] = times[i];
+    ++kept;
+  }
+  points.resize(kept);
+  times.resize(kept);
+}
+
 }  // namespace
 
 ColorRGB runColor(const Scene& scene, size_t run) {
@@ -99,6 +117,7 @@ void FrameBuilder::sampleRunAt(size_t run, double t, bool isFrameTime) {
   frame.path.push_back(frame.current);
   frame.pathTimes.push_back(t);
   fadeOut(frame.path, frame.pathTimes, t, scene_.view.pathFadeSeconds);
+  thinOut(frame.path, frame.pathTimes);
   if (!isFrameTime) return;
   frame.hinges = hingeList(sample->hinges);
   history.hingesAtFrame = sample->hinges;

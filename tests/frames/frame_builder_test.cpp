@@ -200,6 +200,26 @@ TEST(FrameBuilder, APlotThatStaysEmptySaysWhy) {
       << frame.plots[0].emptyNote;
 }
 
+// Memory per run is bounded: a long, densely sampled path is thinned in its older part, never in its newest.
+TEST(FrameBuilder, PathHistoryIsBounded) {
+  const Scene scene = parseScene(R"({"name": "long", "linkage": {"rods": 4, "L": 3},
+    "initial": {"coords": [0.3, 0.2], "velocity": [0.5, 0.7]}, "duration": 120.0,
+    "runs": [{"name": "a", "method": "ambient", "integrator": "dopri5", "tolerance": 1e-8}],
+    "output": {"fps": 30}, "view": {"path_samples_per_frame": 100}})",
+                                 "long.json");
+  FrameBuilder builder = builderFor(scene);
+  const FrameState last = builder.frame(builder.frameCount() - 1);
+  const RunFrame& run = last.runs[0];
+  EXPECT_LE(run.path.size(), kMaxPathPoints);
+  EXPECT_GT(run.path.size(), kMaxPathPoints / 2);
+  ASSERT_EQ(run.path.size(), run.pathTimes.size());
+  const double spacing = 1.0 / (30 * 100);
+  for (std::size_t i = run.pathTimes.size() - kRecentPathPoints + 1; i < run.pathTimes.size(); ++i)
+    EXPECT_NEAR(run.pathTimes[i] - run.pathTimes[i - 1], spacing, 1e-9) << i;
+  EXPECT_EQ(run.pathTimes.front(), 0.0);  // the start is kept
+  EXPECT_EQ(run.pathTimes.back(), 120.0);
+}
+
 TEST(PlotOverview, LegendGoesToTheEmptiestCorner) {
   // Data along the top edge and in the bottom-right: the bottom-left is free.
   std::vector<std::array<double, 2>> points;
