@@ -18,7 +18,17 @@ namespace {
 [[noreturn]] void failAndRemove(const std::string& what, const std::string& path, const std::string& temporary) {
   const int saved = errno;
   ::unlink(temporary.c_str());
-  throw std::runtime_error(what + " " + path + ": " + std::strerror(saved));
+  const std::string message = what + " " + path + ": " + std::strerror(saved);
+  if (saved == ENOSPC || saved == EDQUOT) throw FileSystemFull(message);
+  throw std::runtime_error(message);
+}
+
+[[noreturn]] void failToCreate(const std::string& temporary) {
+  const int saved = errno;
+  const std::string message = "cannot create " + temporary + ": " + std::strerror(saved) +
+                              (saved == ENOSPC ? " (no space, or no free inodes)" : "");
+  if (saved == ENOSPC || saved == EDQUOT) throw FileSystemFull(message);
+  throw std::runtime_error(message);
 }
 
 void writeAll(int fd, const std::uint8_t* data, std::size_t size, const std::string& temporary) {
@@ -68,7 +78,7 @@ std::string outputTarget(const std::string& path) {
 AtomicFileWriter::AtomicFileWriter(const std::string& path) : path_(outputTarget(path)) {
   temporary_ = temporaryPathFor(path_);
   fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd_ < 0) throw std::runtime_error("cannot create " + temporary_ + ": " + std::strerror(errno));
+  if (fd_ < 0) failToCreate(temporary_);
 }
 
 AtomicFileWriter::~AtomicFileWriter() {
@@ -97,7 +107,7 @@ void writeFileAtomically(const std::string& requested, const std::uint8_t* data,
   const std::string path = outputTarget(requested);
   const std::string temporary = temporaryPathFor(path);
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw std::runtime_error("cannot create " + temporary + ": " + std::strerror(errno));
+  if (fd < 0) failToCreate(temporary);
   writeAll(fd, data, size, temporary);
   if (sync == Sync::data && ::fsync(fd) != 0) {
     const int saved = errno;

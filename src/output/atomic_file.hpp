@@ -10,6 +10,7 @@
 // correctness, and an fsync per frame would cost throughput. The manifest itself is synced.
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,12 @@ inline void writeFileAtomically(const std::string& path, const std::vector<std::
   writeFileAtomically(path, bytes.data(), bytes.size(), sync);
 }
 void writeFileAtomically(const std::string& path, const std::string& text, Sync sync = Sync::none);
+
+// Thrown when a file cannot be created or written because the file system is full: no space, no free inodes or
+// the quota used up (ENOSPC, EDQUOT). Callers that must still record something can fall back (frame_manifest).
+struct FileSystemFull : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 // Where an output named `path` really goes: `path` itself, or the file a symbolic link there points to (written
 // through, never replaced by a regular file). Throws std::invalid_argument if that exists and is not a regular

@@ -89,6 +89,21 @@ class ManifestLock {
   int fd_ = -1;
 };
 
+// Overwrites an existing file's content without creating anything; false if that is impossible too.
+bool rewriteInPlace(const std::string& path, const std::string& text) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+  if (fd < 0) return false;
+  bool ok = true;
+  for (std::size_t written = 0; ok && written < text.size();) {
+    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    ok = n > 0;
+    if (ok) written += static_cast<std::size_t>(n);
+  }
+  ok = ::fsync(fd) == 0 && ok;
+  return ::close(fd) == 0 && ok;
+}
+
 std::string describeRender(const nlohmann::json& info) {
   if (info.is_object() && info.contains("scene") && info["scene"].is_string())
     return "scene \"" + info["scene"].get<std::string>() + "\"";
@@ -121,10 +136,13 @@ FrameManifest::FrameManifest(std::string folder, nlohmann::json info, std::strin
   activeFd_ = openLockFile(activePath);
   try {
     lockWithTimeout(activeFd_, LOCK_SH, activePath);  // waits only while a render takes the folder over
-    if (claim == Claim::supersede) {
+    {
       ManifestLock lock(folder_, fileName_);
       const nlohmann::json manifest = readAnyLocked();
-      if (manifest.at("info") != info_) supersedeLocked(manifest);
+      if (claim == Claim::supersede && manifest.at("info") != info_) supersedeLocked(manifest);
+      // The manifest's file exists from the start: if the file system later runs out of inodes, the entries
+      // can still be written into it in place (flushLocked), and the finished frames stay resumable.
+      if (!std::filesystem::exists(path())) writeFileAtomically(path(), emptyManifest().dump(1) + "\n", Sync::data);
     }
     reload();
   } catch (...) {
@@ -216,7 +234,10 @@ void FrameManifest::record(const FrameEntry& entry) {
   std::lock_guard guard(mutex_);
   pending_[entry.frame] = entry;
   // A replaced manifest describes a whole file: written once, by flush(), never part-way.
-  if (existing_ == Existing::merge && std::chrono::steady_clock::now() - lastFlush_ >= flushInterval_) flushLocked();
+  // Every flush rewrites the whole manifest: with many frames, flush less often (0.5 s more per 10,000 frames),
+  // so a 40,000-frame render does not spend its time rewriting megabytes of JSON.
+  const auto interval = flushInterval_ * static_cast<long>(1 + known_.size() / 10000);
+  if (existing_ == Existing::merge && std::chrono::steady_clock::now() - lastFlush_ >= interval) flushLocked();
 }
 
 void FrameManifest::flush() {
@@ -240,7 +261,18 @@ void FrameManifest::flushLocked() {
   manifest["renderers"] = renderers;
   manifest["frames"] = nlohmann::json::array();
   for (const auto& [frame, e] : merged) manifest["frames"].push_back(toJson(e));
-  writeFileAtomically(path(), manifest.dump(1) + "\n", Sync::data);
+  const std::string text = manifest.dump(1) + "\n";
+  try {
+    writeFileAtomically(path(), text, Sync::data);
+  } catch (const FileSystemFull&) {
+    // No inode for a temporary: rewrite the manifest's own file in place, so that the frames already finished
+    // stay listed and --resume can use them once space is freed. Not atomic; only in this emergency, and
+    // followed by the error.
+    if (!rewriteInPlace(path(), text)) throw;
+    known_ = std::move(merged);
+    pending_.clear();
+    throw;
+  }
   known_ = std::move(merged);
   pending_.clear();
 }

@@ -17,8 +17,9 @@
 // holding flock(2) on <folder>/.manifest.json.lock (a hidden lock file per manifest), merging the entries already
 // there, so concurrent shards never lose each other's entries. Entries are listed only after their file was renamed
 // into place. Content is deterministic: frames sorted, keys sorted, no timestamps or host names; the union of shards
-// equals a single run byte for byte. After SIGKILL at most the last 0.5 s of entries are missing; their
-// frames are simply rendered again on resume. A video render records pixel hashes only (file empty).
+// equals a single run byte for byte. After SIGKILL at most the last 0.5 s of entries are missing (0.5 s more per
+// 10,000 frames already listed, as each flush rewrites the whole manifest); their frames are simply rendered again
+// on resume. A video render records pixel hashes only (file empty).
 //
 // One folder, one render. Every merge-mode manifest holds a shared flock(2) on <folder>/.<name>.active for its
 // lifetime. Claim::join (shards, --resume) refuses a folder whose manifest belongs to another render.
@@ -29,7 +30,9 @@
 //
 // Existing::replace is for a file that is always written whole (a video): the manifest on disk, of any
 // earlier render, is neither read nor merged nor locked but replaced by this render's entries, written only
-// by flush() (record() does not flush part-way). A manifest with no entries recorded is never written.
+// by flush() (record() does not flush part-way). A replaced manifest with no entries recorded is never written;
+// a merged one exists (empty) from the start, so that it can be rewritten in place when the file system has no
+// inode left for a temporary.
 
 #include <chrono>
 #include <map>

@@ -2,7 +2,11 @@
 
 #include "contracts/registry.hpp"
 
+#include <fcntl.h>
 #include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -13,16 +17,25 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Creates and removes a uniquely named empty file in an existing directory.
-bool canCreateFileIn(const fs::path& directory) {
+// Creates and removes a uniquely named empty file in an existing directory; the reason if that fails (no
+// permission, no space or no free inodes, a read-only file system: errno says which).
+std::string whyNoFileIn(const fs::path& directory) {
   const fs::path probe = directory / (".linkage-write-probe-" + std::to_string(::getpid()));
-  {
-    std::ofstream stream(probe);
-    if (!stream) return false;
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+  if (fd < 0) {
+    switch (errno) {
+      case EACCES:
+      case EPERM: return "no permission to create files in ";
+      case ENOSPC: return "no space left (or no free inodes) to create files in ";
+      case EDQUOT: return "the disk quota is used up in ";
+      case EROFS: return "the file system is read-only at ";
+      default: return std::string(std::strerror(errno)) + ": cannot create files in ";
+    }
   }
+  ::close(fd);
   std::error_code ignored;
   fs::remove(probe, ignored);
-  return true;
+  return "";
 }
 
 }  // namespace
@@ -38,8 +51,8 @@ std::vector<SceneProblem> checkOutputFolder(const std::string& folder, const std
   if (!fs::is_directory(existing, error)) {
     return {{jsonPath, "cannot write " + found + ": " + existing.string() + " is not a directory"}};
   }
-  if (!canCreateFileIn(existing)) {
-    return {{jsonPath, "cannot write " + found + ": no permission to create files in " + existing.string()}};
+  if (const std::string why = whyNoFileIn(existing); !why.empty()) {
+    return {{jsonPath, "cannot write " + found + ": " + why + existing.string()}};
   }
   return {};
 }

@@ -216,6 +216,44 @@ TEST_F(ProcessFaults, RenderThatCannotFitIsRefusedUpFront) {
   EXPECT_FALSE(fs::exists(folder_.path() / "small-disk/frames")) << "a refused render must write nothing";
 }
 
+// Out of inodes while rendering: the error names the cause, the frames finished so far stay listed in the
+// manifest (rewritten in place: there is no inode for a temporary), and validate names the cause too.
+TEST_F(ProcessFaults, NoFreeInodesKeepsTheFinishedFramesResumable) {
+  Mount disk(folder_.path() / "few-inodes", "size=16m,nr_inodes=64");
+  if (!disk.mounted()) GTEST_SKIP() << "mounting a tmpfs is not permitted here (needs root)";
+  ChildProcess child(linkageBinary(), {"render", "small.json", "--quiet", "--out", "few-inodes/frames"},
+                     folder_.path());
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (child.running() && frameFileCount(folder_.path() / "few-inodes/frames") < 5 &&
+         std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  child.sendSignal(SIGSTOP);
+  for (int k = 0;; ++k) {  // use up every inode
+    std::FILE* file = std::fopen((folder_.path() / "few-inodes" / ("inode" + std::to_string(k))).c_str(), "w");
+    if (!file) break;
+    std::fclose(file);
+  }
+  child.sendSignal(SIGCONT);
+  const ProcessResult status = child.wait(120);
+  ASSERT_FALSE(status.timedOut);
+  EXPECT_EQ(status.code, 3) << status.err;
+  EXPECT_NE(status.err.find("no free inodes"), std::string::npos) << status.err;
+  const int finished = frameFileCount(folder_.path() / "few-inodes/frames");
+  EXPECT_GE(finished, 5);
+  expectOnlyCompleteFrames("few-inodes/frames");
+  // The manifest lists (nearly) every finished frame: the last flush went in place.
+  const std::string manifest = readFile(folder_.path() / "few-inodes/frames/manifest.json");
+  int listed = 0;
+  for (std::size_t at = manifest.find("\"file\""); at != std::string::npos; at = manifest.find("\"file\"", at + 1))
+    ++listed;
+  EXPECT_EQ(listed, finished) << manifest;
+  const ProcessResult validate = testing::runLinkage({"validate", "small.json", "--set", "output.folder=\"few-inodes/x\""},
+                                            folder_.path());
+  EXPECT_EQ(validate.code, 2);
+  EXPECT_NE(validate.err.find("no space left (or no free inodes)"), std::string::npos) << validate.err;
+}
+
 TEST_F(ProcessFaults, ReadOnlyFolderGivesAClearErrorAndKeepsItsFrames) {
   Mount disk(folder_.path() / "ro", "size=4m");
   if (!disk.mounted()) GTEST_SKIP() << "mounting a tmpfs is not permitted here (needs root)";
