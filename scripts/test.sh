@@ -25,7 +25,7 @@ cmake -S . -B build-asan -G Ninja -DSL_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDeb
 # The stages' own suites and the fault tests, which also drive the sanitized `linkage` binary; the CLI,
 # frame-builder and analysis suites run in the normal pass only, to keep CI well inside its time on 2 cores.
 asan_targets=(test_contracts test_architecture test_linkage test_geometry test_simulation test_scene
-              test_render_cpu test_render test_output test_faults)
+              test_render_cpu test_render test_output test_faults random_starts)
 cmake --build build-asan -j "$jobs" --target "${asan_targets[@]}"
 # abort_on_error: any report fails its test. detect_leaks: LeakSanitizer at exit.
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:check_initialization_order=1"
