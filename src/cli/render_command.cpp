@@ -187,10 +187,10 @@ void runRender(const RenderArguments& args) {
   Renderer renderer(scene.view, scene.output.size);
   const nlohmann::json info = manifestInfo(plan);
   sweepOutputFolders(plan);  // first: a killed render's leftovers must not count against the free space
-  const InitialState start = sceneStart(scene);
+  const std::vector<InitialState> starts = runStarts(scene);
   std::optional<FrameBuilder> built;
   try {
-    built.emplace(scene, start, startRuns(scene, start), interruptRequested);
+    built.emplace(scene, starts, startRuns(scene, starts), interruptRequested);
   } catch (const RunCancelled&) {
     stopIfInterrupted("nothing was written yet");
   }

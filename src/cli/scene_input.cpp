@@ -31,23 +31,28 @@ void addSceneOverrideOption(CLI::App& command, std::vector<std::string>& overrid
       ->allow_extra_args(false);
 }
 
-InitialState sceneStart(const Scene& scene) {
-  try {
-    return initialStateFromSpec(scene.chain, scene.initial);
-  } catch (const std::invalid_argument& error) {
-    failOnProblems(scene.file, {{"initial", error.what()}});
-    throw;
+std::vector<InitialState> runStarts(const Scene& scene) {
+  std::vector<InitialState> starts;
+  for (size_t i = 0; i < scene.runs.size(); ++i) {
+    const RunSpec& run = scene.runs[i];
+    try {
+      starts.push_back(initialStateFromSpec(run.chain, run.initial));
+    } catch (const std::invalid_argument& error) {
+      // A start the scene shares is reported once, where it is written.
+      failOnProblems(scene.file, {{run.ownInitial ? "runs[" + std::to_string(i) + "].initial" : "initial", error.what()}});
+      throw;
+    }
   }
+  return starts;
 }
 
-std::vector<Trajectory> startRuns(const Scene& scene, const InitialState& start) {
+std::vector<Trajectory> startRuns(const Scene& scene, const std::vector<InitialState>& starts) {
   std::vector<Trajectory> runs;
   for (size_t i = 0; i < scene.runs.size(); ++i) {
     try {
-      runs.emplace_back(scene.chain, start, scene.runs[i].config);
+      runs.emplace_back(scene.runs[i].chain, starts.at(i), scene.runs[i].config);
       runs.back().setCancellation(interruptRequested);  // SIGINT/SIGTERM answered within one step
     } catch (const std::invalid_argument& error) {
-      // The start is shared by every run: a zero or non-finite velocity is the start's problem.
       failOnProblems(scene.file, {{"runs[" + std::to_string(i) + "]", error.what()}});
       throw;
     }

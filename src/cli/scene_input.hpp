@@ -26,9 +26,10 @@ void addSceneOverrideOption(CLI::App& command, std::vector<std::string>& overrid
 // Throws CommandExit(kExitBadInput) listing the problems, if any.
 void failOnProblems(const std::string& file, const std::vector<SceneProblem>& problems);
 
-// The scene's start as the runs' InitialState, and one Trajectory per run from it. A start or run the
-// simulation refuses is a problem of the scene: CommandExit(kExitBadInput) naming the file and the JSON path.
-InitialState sceneStart(const Scene& scene);
-std::vector<Trajectory> startRuns(const Scene& scene, const InitialState& start);
+// Each run's start as an InitialState (the scene's "initial", or the run's own, on the run's own linkage), and
+// one Trajectory per run from it. A start or run the simulation refuses is a problem of the scene:
+// CommandExit(kExitBadInput) naming the file and the JSON path ("initial" or "runs[i].initial", "runs[i]").
+std::vector<InitialState> runStarts(const Scene& scene);
+std::vector<Trajectory> startRuns(const Scene& scene, const std::vector<InitialState>& starts);
 
 }  // namespace sl

@@ -114,7 +114,7 @@ void runSimulate(const SimulateArguments& args) {
     failOnProblems(args.scene, problems);
     if (!parent.empty()) std::filesystem::create_directories(parent);
   }
-  std::vector<Trajectory> runs = startRuns(scene, sceneStart(scene));
+  std::vector<Trajectory> runs = startRuns(scene, runStarts(scene));
   CsvOutput out(args.csv);
   out.write(trajectoryCsvHeader(scene.chain.rods) + "\n");
   for (size_t i = 0; i < runs.size(); ++i) writeRun(out, scene.runs[i].name, runs[i], times);

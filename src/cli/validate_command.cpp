@@ -25,7 +25,7 @@ void runValidate(const ValidateArguments& args) {
   if (!scene.output.video.empty())
     for (SceneProblem& problem : checkVideoPath(scene.output.video, "output.video")) problems.push_back(problem);
   failOnProblems(file, problems);
-  startRuns(scene, sceneStart(scene));  // the start and every run, as render and simulate set them up
+  startRuns(scene, runStarts(scene));  // every start and run, as render and simulate set them up
   std::cout << file << ": ok: \"" << scene.name << "\", " << scene.chain.rods << " rods, L = " << scene.chain.baseLength
             << ", " << scene.frameCount() << " frames of " << scene.output.size.width << "x" << scene.output.size.height
             << " at " << scene.output.fps << " fps, runs:";

@@ -30,6 +30,7 @@ struct RunFrame {
   bool stopped = false;    // the run stopped at or before this frame's time
   double stopTime = 0;     // when it stopped (valid if stopped)
   std::string stopReason;  // why, e.g. "pole-fold-back" (valid if stopped)
+  double baseLength = 3;   // L of this run's own linkage (runs may differ in L and masses, never in n)
 
   // Linkage panel: the n-1 interior hinges at the last valid time (frozen once stopped).
   std::vector<Vec2> hinges;
@@ -94,7 +95,6 @@ struct FrameState {
   double duration = 0;    // total simulated time
   std::string title;      // scene title
   int rods = 4;           // n
-  double baseLength = 3;  // L
   ViewSpace viewSpace = ViewSpace::Sphere;
   std::vector<RunFrame> runs;
   std::vector<PlotFrame> plots;  // one per plot panel, in layout order

@@ -57,21 +57,22 @@ ColorRGB runColor(const Scene& scene, size_t run) {
   return chosen ? *chosen : palette[run % std::size(palette)];
 }
 
-FrameBuilder::FrameBuilder(const Scene& scene, const InitialState& start, std::vector<Trajectory> runs,
+FrameBuilder::FrameBuilder(const Scene& scene, const std::vector<InitialState>& starts, std::vector<Trajectory> runs,
                            const std::function<bool()>& cancelled)
     : scene_(scene),
       runs_(std::move(runs)),
-      view_(scene.chain.rods, start.spherePoint),
+      view_(scene.chain.rods, starts.at(0).spherePoint),
       frameCount_(scene.frameCount()),
       history_(runs_.size()),
       divergence_(runs_.empty() ? 0 : runs_.size() - 1),
       sphereDecoration_(makeSphereDecoration(scene.chain, scene.view.sphereSurface)),
-      plotOverviews_(overviewPlots(scene, start, cancelled)) {
+      plotOverviews_(overviewPlots(scene, starts, cancelled)) {
   for (size_t i = 0; i < runs_.size(); ++i) {
     RunFrame& frame = history_[i].frame;
     frame.name = scene.runs[i].name;
     frame.method = nameOf(scene.runs[i].config.method);
     frame.color = runColor(scene, i);
+    frame.baseLength = scene.runs[i].chain.baseLength;
     frame.trails.resize(scene.view.trailHinges.size());
   }
 }
@@ -152,7 +153,6 @@ FrameState FrameBuilder::snapshot(int k) const {
   state.duration = scene_.duration;
   state.title = scene_.title;
   state.rods = scene_.chain.rods;
-  state.baseLength = scene_.chain.baseLength;
   state.viewSpace = view_.space();
   state.sphereDecoration = sphereDecoration_;
   for (const RunHistory& history : history_) state.runs.push_back(history.frame);

@@ -19,9 +19,10 @@ namespace sl {
 
 class FrameBuilder {
  public:
-  // runs: one Trajectory per scene run, in the scene's order, all from `start`. `cancelled` is asked during the
-  // builder's own integration (the plots' overview), which then throws RunCancelled.
-  FrameBuilder(const Scene& scene, const InitialState& start, std::vector<Trajectory> runs,
+  // runs: one Trajectory per scene run, in the scene's order, run i from starts[i] on the run's own chain. The
+  // ball view of 5+ rods is centred on run 0's start. `cancelled` is asked during the builder's own integration
+  // (the plots' overview), which then throws RunCancelled.
+  FrameBuilder(const Scene& scene, const std::vector<InitialState>& starts, std::vector<Trajectory> runs,
                const std::function<bool()>& cancelled = {});
 
   int frameCount() const { return frameCount_; }

@@ -36,14 +36,14 @@ LegendCorner emptiestCorner(const std::vector<std::array<double, 2>>& points, do
   return order[static_cast<std::size_t>(std::min_element(counts.begin(), counts.end()) - counts.begin())];
 }
 
-std::vector<PlotOverview> overviewPlots(const Scene& scene, const InitialState& start,
+std::vector<PlotOverview> overviewPlots(const Scene& scene, const std::vector<InitialState>& starts,
                                         const std::function<bool()>& cancelled) {
   const std::vector<PlotSpec>& plots = scene.view.plots;
   if (plots.empty()) return {};
   const std::size_t runCount = scene.runs.size();
   std::vector<Trajectory> runs;
-  for (const RunSpec& run : scene.runs) {
-    runs.emplace_back(scene.chain, start, run.config);
+  for (std::size_t r = 0; r < runCount; ++r) {
+    runs.emplace_back(scene.runs[r].chain, starts.at(r), scene.runs[r].config);
     runs.back().setCancellation(cancelled);
   }
 

@@ -25,7 +25,7 @@ struct PlotOverview {
 
 // One per scene.view.plots entry; empty when the scene has no plots (nothing is integrated then).
 // `cancelled` is given to the trajectories (Trajectory::setCancellation): RunCancelled comes through.
-std::vector<PlotOverview> overviewPlots(const Scene& scene, const InitialState& start,
+std::vector<PlotOverview> overviewPlots(const Scene& scene, const std::vector<InitialState>& starts,
                                         const std::function<bool()>& cancelled = {});
 
 // The corner of the unit square (u right, v up) whose legend-sized region holds the fewest points; ties go in

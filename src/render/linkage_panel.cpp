@@ -1,6 +1,6 @@
 // The linkage panel: the chain in its plane, drawn as lit 2D shapes (silver rods as cylinders, joints
 // as balls), the two pins as charcoal bolts on a floor line, and fading trails of chosen hinges.
-// The view is fixed per scene (from n and L alone), so the picture never jumps as the chain moves.
+// The view is fixed per scene (from n and the runs' L alone), so the picture never jumps as the chain moves.
 
 #include <algorithm>
 #include <cmath>
@@ -52,13 +52,14 @@ void drawChain(const RunFrame& run, const PlaneView& view, double base, float ro
 }
 
 void drawRun(const PanelContext& context, const RunFrame* run, const PixelRect& area, bool label, ShapeBatch& batch) {
-  const FrameState& frame = context.frame;
-  const PlaneView view = fitChainView(frame.rods, frame.baseLength, area);
+  // One scale for every run (runs may differ in L): each is drawn on its own pins.
+  const PlaneView view = fitFrameView(context.frame, area);
   const float rod = std::max(1.5f, float(0.045 * view.scale));  // rod half width
-  drawFloor(view, frame.baseLength, rod, batch);
+  const double base = run ? run->baseLength : context.frame.rods - 1;
+  drawFloor(view, base, rod, batch);
   if (!run) return;
   drawTrails(*run, view, rod, batch);
-  drawChain(*run, view, frame.baseLength, rod, batch);
+  drawChain(*run, view, base, rod, batch);
   if (label) {
     const std::string name = context.font.fitted(run->name, TextSize::Small, area.width);
     const float width = context.font.width(name, TextSize::Small);

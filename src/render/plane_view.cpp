@@ -22,21 +22,42 @@ double lensHeight(double a, double b, double base) {
   return height;
 }
 
-}  // namespace
+struct Box {
+  double x0 = 0, x1 = 0, y0 = -0.3, y1 = 0.3;
+};
 
-PlaneView fitChainView(int rods, double base, const PixelRect& r) {
-  double x0 = 0, x1 = base, y0 = -0.3, y1 = 0.3;
+void holdChain(int rods, double base, Box& box) {
+  box.x1 = std::max(box.x1, base);
   for (int k = 1; k < rods; ++k) {  // hinge k: within k of the left pin and n-k of the right one
     const double a = k, b = rods - k;
-    x0 = std::min(x0, inDisc(-a, 0, base, b) ? -a : base - b);
-    x1 = std::max(x1, inDisc(base + b, 0, 0, a) ? base + b : a);
+    box.x0 = std::min(box.x0, inDisc(-a, 0, base, b) ? -a : base - b);
+    box.x1 = std::max(box.x1, inDisc(base + b, 0, 0, a) ? base + b : a);
     const double height = lensHeight(a, b, base);
-    y0 = std::min(y0, -height);
-    y1 = std::max(y1, height);
+    box.y0 = std::min(box.y0, -height);
+    box.y1 = std::max(box.y1, height);
   }
+}
+
+PlaneView fitBox(const Box& box, const PixelRect& r) {
+  const auto [x0, x1, y0, y1] = box;
   const double margin = 0.08;
   const double scale = std::min(r.width * (1 - 2 * margin) / (x1 - x0), r.height * (1 - 2 * margin) / (y1 - y0));
   return {scale, r.x + 0.5 * r.width - scale * 0.5 * (x0 + x1), r.y + 0.5 * r.height + scale * 0.5 * (y0 + y1)};
+}
+
+}  // namespace
+
+PlaneView fitChainView(int rods, double base, const PixelRect& area) {
+  Box box;
+  holdChain(rods, base, box);
+  return fitBox(box, area);
+}
+
+PlaneView fitFrameView(const FrameState& frame, const PixelRect& area) {
+  Box box;
+  for (const RunFrame& run : frame.runs) holdChain(frame.rods, run.baseLength, box);
+  if (frame.runs.empty()) holdChain(frame.rods, frame.rods - 1, box);
+  return fitBox(box, area);
 }
 
 }  // namespace sl::render

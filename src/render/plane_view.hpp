@@ -18,4 +18,8 @@ struct PlaneView {
 // within n-k of the right one) into `area`, with a margin.
 PlaneView fitChainView(int rods, double baseLength, const PixelRect& area);
 
+// The view of a frame's linkage panel: one box holding every configuration of every run's chain (runs may
+// differ in L), so that all runs are drawn at one scale and the picture never jumps.
+PlaneView fitFrameView(const FrameState& frame, const PixelRect& area);
+
 }  // namespace sl::render

@@ -18,6 +18,12 @@ namespace sl {
 struct RunSpec {
   std::string name;
   RunConfig config;
+  // The run's physics and start: the scene's "linkage" and "initial" unless the run gives its own (the number
+  // of rods is always the scene's).
+  Chain chain;
+  InitialSpec initial;
+  bool ownLinkage = false;  // the run gave "linkage" / "initial" (messages name runs[i].linkage ...)
+  bool ownInitial = false;
   std::optional<ColorRGB> color;  // default: a palette colour by position
 };
 
@@ -28,8 +34,8 @@ struct Scene {
   std::string identity;
   std::string name;  // also the default output folder name
   std::string title;
-  Chain chain;
-  InitialSpec initial;
+  Chain chain;          // the runs' default linkage; n is every run's
+  InitialSpec initial;  // the runs' default start
   double duration = 20;
   std::vector<RunSpec> runs;
   OutputSettings output;

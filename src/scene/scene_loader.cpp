@@ -43,11 +43,19 @@ std::string unusablePathReason(const std::string& path) {
   return "";
 }
 
-void readLinkage(const json& value, Scene& scene, std::vector<SceneProblem>& problems) {
-  const JsonObject linkage(value, "linkage", problems, {"rods", "L", "hinge_masses", "rod_masses"});
-  Chain& chain = scene.chain;
-  bool rodsKnown = false;  // L is judged against n only when n itself is valid
-  if (const auto rods = linkage.integer("rods", true)) {
+// Reads a "linkage" object at `path` into `chain`. The scene's linkage sets n and L and gives the masses their
+// defaults (unit hinges, massless rods); a run's linkage (forRun) starts from the scene's chain and may change L
+// and the masses, never n: every run of a scene is drawn and compared with the same number of rods.
+void readLinkage(const json& value, const std::string& path, bool forRun, Chain& chain,
+                 std::vector<SceneProblem>& problems) {
+  const JsonObject linkage(value, path, problems, {"rods", "L", "hinge_masses", "rod_masses"});
+  bool rodsKnown = forRun;  // L is judged against n only when n itself is valid
+  if (forRun) {
+    if (const auto rods = linkage.integer("rods"); rods && *rods != chain.rods) {
+      linkage.report("rods", "found " + std::to_string(*rods) + "; a run keeps the scene's number of rods, " +
+                                 std::to_string(chain.rods) + " (a run may set its own L and masses)");
+    }
+  } else if (const auto rods = linkage.integer("rods", true)) {
     if (*rods < limits::kMinRods || *rods > limits::kMaxRods) {
       linkage.report("rods", "found " + std::to_string(*rods) + "; expected an integer from 3 to " +
                                  std::to_string(limits::kMaxRods) + " (fewer than 3 rods cannot move)");
@@ -57,7 +65,7 @@ void readLinkage(const json& value, Scene& scene, std::vector<SceneProblem>& pro
     }
   }
   const int n = chain.rods;
-  if (const auto base = linkage.number("L", true)) {
+  if (const auto base = linkage.number("L", !forRun)) {
     if (rodsKnown && (*base <= n - 2 || *base >= n)) {
       std::ostringstream allowed;
       allowed << "a length strictly between n-2 = " << n - 2 << " and n = " << n
@@ -66,8 +74,10 @@ void readLinkage(const json& value, Scene& scene, std::vector<SceneProblem>& pro
     }
     chain.baseLength = *base;
   }
-  chain.hingeMasses = Eigen::VectorXd::Ones(n - 1);
-  chain.rodMasses = Eigen::VectorXd::Zero(n);
+  if (!forRun) {
+    chain.hingeMasses = Eigen::VectorXd::Ones(n - 1);
+    chain.rodMasses = Eigen::VectorXd::Zero(n);
+  }
   if (const auto masses = linkage.numbers("hinge_masses")) {
     if (linkage.checkSize("hinge_masses", *masses, n - 1, "one per interior hinge, n-1")) {
       if (masses->minCoeff() < 0 || masses->maxCoeff() > limits::kMaxMass)
@@ -93,11 +103,10 @@ void readLinkage(const json& value, Scene& scene, std::vector<SceneProblem>& pro
   }
 }
 
-void readDrag(const JsonObject& initial, Scene& scene, std::vector<SceneProblem>& problems) {
+void readDrag(const JsonObject& initial, int rods, InitialSpec& spec, std::vector<SceneProblem>& problems) {
   const JsonObject drag(*initial.member("drag"), initial.pathOf("drag"), problems, {"point", "direction"});
-  const long size = scene.chain.rods - 1;
+  const long size = rods - 1;
   const std::string what = "a vector of R^(n-1), n-1 = " + std::to_string(size);
-  InitialSpec& spec = scene.initial;
   if (const auto point = drag.numbers("point", true); point && drag.checkSize("point", *point, size, what)) {
     // Only the point's direction matters: normalise here, overflow-free (a plain norm of [1e200, ...] is
     // inf and the "unit" point would be zero; of [1e-320, 0, 0] it is 0 and a valid point looks zero).
@@ -121,10 +130,13 @@ void readDrag(const JsonObject& initial, Scene& scene, std::vector<SceneProblem>
   }
 }
 
-void readInitial(const json& value, Scene& scene, std::vector<SceneProblem>& problems) {
-  const JsonObject initial(value, "initial", problems, {"coords", "velocity", "drag", "unit_speed"});
+// Reads an "initial" object at `path` (the scene's start, or a run's own) for a chain of `rods` rods. A run's
+// start replaces the scene's whole: it is one start, in any form the scene's may take.
+void readInitial(const json& value, const std::string& path, int rods, InitialSpec& spec,
+                 std::vector<SceneProblem>& problems) {
+  const JsonObject initial(value, path, problems, {"coords", "velocity", "drag", "unit_speed"});
   if (!initial.isObject()) return;
-  InitialSpec& spec = scene.initial;
+  spec = InitialSpec{};
   spec.unitSpeed = initial.boolean("unit_speed").value_or(false);
   const bool hasDrag = initial.has("drag");
   const bool hasCoords = initial.has("coords") || initial.has("velocity");
@@ -135,10 +147,10 @@ void readInitial(const json& value, Scene& scene, std::vector<SceneProblem>& pro
   }
   if (hasDrag) {
     spec.kind = InitialSpec::Kind::Drag;
-    readDrag(initial, scene, problems);
+    readDrag(initial, rods, spec, problems);
     return;
   }
-  const long size = scene.chain.rods - 2;
+  const long size = rods - 2;
   const std::string what = "chart coordinates, outermost first, n-2 = " + std::to_string(size);
   if (const auto coords = initial.numbers("coords", true); coords && initial.checkSize("coords", *coords, size, what)) {
     spec.coords = *coords;
@@ -181,16 +193,24 @@ std::optional<ColorRGB> readColor(const JsonObject& object, const std::string& k
 
 RunSpec readRun(const json& value, const std::string& path, const Scene& scene, std::vector<SceneProblem>& problems) {
   const JsonObject run(value, path, problems,
-                       {"name", "method", "integrator", "tolerance", "step", "color", "watchdog"});
+                       {"name", "method", "integrator", "tolerance", "step", "color", "watchdog", "linkage", "initial"});
   RunSpec spec;
   spec.name = run.string("name", true).value_or("");
   if (run.has("name") && spec.name.empty()) run.report("name", "is empty; expected a name shown in the panels");
+  // The run's own physics and start, defaulting to the scene's (issue 15: compare physics, not only methods).
+  spec.chain = scene.chain;
+  spec.initial = scene.initial;
+  spec.ownLinkage = run.has("linkage");
+  spec.ownInitial = run.has("initial");
+  if (spec.ownLinkage) readLinkage(*run.member("linkage"), run.pathOf("linkage"), true, spec.chain, problems);
+  if (spec.ownInitial)
+    readInitial(*run.member("initial"), run.pathOf("initial"), scene.chain.rods, spec.initial, problems);
   if (const auto method = run.string("method")) {
     if (const auto kind = detail::pickKind(run.pathOf("method"), *method, kMethods, problems)) {
       spec.config.method = *kind;
       // The published methods are the spec's 4-rod, unit-mass ones; the simulation refuses them otherwise,
       // so say so here, with the JSON path, before any work.
-      const Chain& chain = scene.chain;
+      const Chain& chain = spec.chain;
       const bool specsChain =
           chain.rods == 4 && (chain.hingeMasses.array() == 1.0).all() && (chain.rodMasses.array() == 0.0).all();
       if (traits(*kind).published && !specsChain) {
@@ -374,11 +394,11 @@ Scene parseScene(const std::string& text, const std::string& file, const std::ve
     scene.duration = *duration;
   }
   if (top.has("linkage"))
-    readLinkage(*top.member("linkage"), scene, problems);
+    readLinkage(*top.member("linkage"), "linkage", false, scene.chain, problems);
   else
     top.reportMissing("linkage", "an object with rods and L");
   if (top.has("initial"))
-    readInitial(*top.member("initial"), scene, problems);
+    readInitial(*top.member("initial"), "initial", scene.chain.rods, scene.initial, problems);
   else
     top.reportMissing("initial", "an object with coords and velocity, or drag");
   readRuns(top.member("runs"), scene, problems);

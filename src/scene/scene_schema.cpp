@@ -50,6 +50,27 @@ json integer(long minimum, long maximum, const std::string& description) {
 json text(const std::string& description) { return {{"type", "string"}, {"description", description}}; }
 json flag(const std::string& description) { return {{"type", "boolean"}, {"description", description}}; }
 
+json linkageSchema(bool forRun) {
+  json properties{{"rods", integer(limits::kMinRods, limits::kMaxRods, forRun ? "the scene's n (a run cannot change it)"
+                                                                            : "n, unit rods")},
+                  {"L", positive("distance between the pins, n-2 < L < n")},
+                  {"hinge_masses", numbers("n-1 point masses at the interior hinges", 0, limits::kMaxMass)},
+                  {"rod_masses", numbers("n uniform rod masses", 0, limits::kMaxMass)}};
+  if (forRun) return closedObject(properties, "this run's own L and masses (default: the scene's linkage)");
+  return closedObject(properties, "the chain", json::array({"rods", "L"}));
+}
+
+json initialSchema(const std::string& description) {
+  return closedObject(
+      {{"coords", numbers("start in the spec's chart, n-2 numbers")},
+       {"velocity", numbers("chart velocity, n-2 numbers")},
+       {"drag", closedObject({{"point", numbers("a point of R^(n-1)")},
+                              {"direction", numbers("a release direction in R^(n-1)")}},
+                             "start as the spec's demo", json::array({"point", "direction"}))},
+       {"unit_speed", flag("rescale the velocity to kinetic energy 1/2")}},
+      description);
+}
+
 json runSchema() {
   return closedObject(
       {{"name", {{"type", "string"}, {"minLength", 1}, {"description", "shown in panels and plots, unique"}}},
@@ -65,8 +86,10 @@ json runSchema() {
        {"watchdog", closedObject({{"max_energy_drift", positive("stop when |E - E0| / E0 exceeds this")},
                                   {"max_rod_length_error", positive("stop when a rod length is off by more")},
                                   {"max_steps", positive("bound on the work of a run")}},
-                                 "limits that stop a run")}},
-      "one run: a method and integrator from the scene's start", json::array({"name"}));
+                                 "limits that stop a run")},
+       {"linkage", linkageSchema(true)},
+       {"initial", initialSchema("this run's own start (default: the scene's initial)")}},
+      "one run: a method and integrator from the scene's start (or its own)", json::array({"name"}));
 }
 
 json panelSchema() {
@@ -111,14 +134,6 @@ json viewSchema() {
 }  // namespace
 
 json sceneSchema() {
-  json initial = closedObject(
-      {{"coords", numbers("start in the spec's chart, n-2 numbers")},
-       {"velocity", numbers("chart velocity, n-2 numbers")},
-       {"drag", closedObject({{"point", numbers("a point of R^(n-1)")},
-                              {"direction", numbers("a release direction in R^(n-1)")}},
-                             "start as the spec's demo", json::array({"point", "direction"}))},
-       {"unit_speed", flag("rescale the velocity to kinetic energy 1/2")}},
-      "where the motion starts: coords and velocity, or drag");
   return {
       {"$schema", "https://json-schema.org/draft/2020-12/schema"},
       {"$id", "https://github.com/sphere-linkages/sphere-linkages/scenes/scene.schema.json"},
@@ -130,12 +145,8 @@ json sceneSchema() {
       {"properties",
        {{"name", {{"type", "string"}, {"pattern", "^[A-Za-z0-9._-]+$"}, {"description", "names renders/<name>"}}},
         {"title", text("shown in the frames")},
-        {"linkage", closedObject({{"rods", integer(limits::kMinRods, limits::kMaxRods, "n, unit rods")},
-                                  {"L", positive("distance between the pins, n-2 < L < n")},
-                                  {"hinge_masses", numbers("n-1 point masses at the interior hinges", 0, limits::kMaxMass)},
-                                  {"rod_masses", numbers("n uniform rod masses", 0, limits::kMaxMass)}},
-                                 "the chain", json::array({"rods", "L"}))},
-        {"initial", initial},
+        {"linkage", linkageSchema(false)},
+        {"initial", initialSchema("where the motion starts: coords and velocity, or drag")},
         {"duration", positive("simulated time")},
         {"runs", {{"type", "array"}, {"minItems", 1}, {"items", runSchema()}}},
         {"output", closedObject({{"fps", integer(1, limits::kMaxFps, "frames per simulated second")},

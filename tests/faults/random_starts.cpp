@@ -131,8 +131,8 @@ int main(int argc, char** argv) {
       }
       std::optional<FrameBuilder> builder;
       try {
-        const InitialState start = sceneStart(scene);
-        builder.emplace(scene, start, startRuns(scene, start));
+        const std::vector<InitialState> starts = runStarts(scene);
+        builder.emplace(scene, starts, startRuns(scene, starts));
       } catch (const CommandExit& exit) {
         if (exit.code() != kExitBadInput) fail(std::string("start refused with exit ") + std::to_string(exit.code()));
         ++refused;

@@ -69,8 +69,8 @@ TEST(SceneFaults, NoFrameIsBuiltFromANonFiniteState) {
     SCOPED_TRACE(fault.name);
     const Scene scene = parseScene(fault.json, fault.name + ".json");
     // The start and runs as the commands set them up.
-    const InitialState start = sceneStart(scene);
-    FrameBuilder builder(scene, start, startRuns(scene, start));
+    const std::vector<InitialState> starts = runStarts(scene);
+    FrameBuilder builder(scene, starts, startRuns(scene, starts));
     for (const int k : framesToBuild(builder.frameCount())) expectDrawable(builder.frame(k));
   }
 }

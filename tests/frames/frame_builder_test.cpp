@@ -25,17 +25,22 @@ Scene twoRunScene(const std::string& extraView = "") {
                     "t.json");
 }
 
-InitialState startOf(const Scene& scene) { return initialStateFromSpec(scene.chain, scene.initial); }
+// Each run's start on its own chain, in the scene's order.
+std::vector<InitialState> startsOf(const Scene& scene) {
+  std::vector<InitialState> starts;
+  for (const RunSpec& run : scene.runs) starts.push_back(initialStateFromSpec(run.chain, run.initial));
+  return starts;
+}
 
-// One fresh Trajectory per scene run, from the scene's start, in the scene's order.
+// One fresh Trajectory per scene run, from its start, in the scene's order.
 std::vector<Trajectory> runsOf(const Scene& scene) {
-  const InitialState start = startOf(scene);
+  const std::vector<InitialState> starts = startsOf(scene);
   std::vector<Trajectory> runs;
-  for (const RunSpec& run : scene.runs) runs.emplace_back(scene.chain, start, run.config);
+  for (std::size_t i = 0; i < scene.runs.size(); ++i) runs.emplace_back(scene.runs[i].chain, starts[i], scene.runs[i].config);
   return runs;
 }
 
-FrameBuilder builderFor(const Scene& scene) { return FrameBuilder(scene, startOf(scene), runsOf(scene)); }
+FrameBuilder builderFor(const Scene& scene) { return FrameBuilder(scene, startsOf(scene), runsOf(scene)); }
 
 void expectSameVec(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
   ASSERT_EQ(a.size(), b.size());
@@ -124,6 +129,45 @@ TEST(FrameBuilder, ValuesMatchDirectSampling) {
     EXPECT_EQ(state.plots[1].series[1].values.back(), std::abs(b.relativeEnergyDrift));
     EXPECT_EQ(state.plots[0].series[0].times.back(), scene.frameTime(k));
   }
+}
+
+// Runs with their own linkage and start (issue 15): each run is its own chain's motion from its own start, and
+// each frame carries the run's own pin distance for the linkage panel.
+TEST(FrameBuilder, RunsWithTheirOwnLinkageAndStartFollowTheirOwnPhysics) {
+  const Scene scene = parseScene(R"({"name": "t", "linkage": {"rods": 4, "L": 3},
+    "initial": {"coords": [0.3, 0.2], "velocity": [0.5, 0.7]}, "duration": 1.0,
+    "runs": [{"name": "scene's", "method": "ambient", "integrator": "dopri5", "tolerance": 1e-10},
+             {"name": "short, heavy", "method": "ambient", "integrator": "dopri5", "tolerance": 1e-10,
+              "linkage": {"L": 2.6, "rod_masses": [3, 3, 3, 3]}},
+             {"name": "own start", "method": "christoffel", "integrator": "dopri5", "tolerance": 1e-10,
+              "initial": {"coords": [-0.4, 1.0], "velocity": [0.2, -0.3]}}],
+    "output": {"fps": 10}, "view": {"panels": ["sphere", "linkage"]}})",
+                                 "t.json");
+  FrameBuilder builder = builderFor(scene);
+  const Chain& shortChain = scene.runs[1].chain;
+  ASSERT_DOUBLE_EQ(shortChain.baseLength, 2.6);
+  Trajectory alone(shortChain, initialStateFromSpec(shortChain, scene.initial), scene.runs[1].config);
+  Trajectory sceneChain(scene.chain, initialStateFromSpec(scene.chain, scene.initial), scene.runs[1].config);
+  for (int k = 0; k < builder.frameCount(); ++k) {
+    const FrameState state = builder.frame(k);
+    EXPECT_DOUBLE_EQ(state.runs[0].baseLength, 3.0);
+    EXPECT_DOUBLE_EQ(state.runs[1].baseLength, 2.6);
+    const RunFrame& heavy = state.runs[1];
+    // The last rod ends on the run's own pin (L = 2.6), not the scene's.
+    const Vec2 last = heavy.hinges.back();
+    EXPECT_NEAR(std::hypot(last.x - 2.6, last.y), 1.0, 1e-9) << "frame " << k;
+    const Sample expected = *alone.sampleAt(scene.frameTime(k));
+    for (int h = 0; h < 3; ++h) EXPECT_NEAR(heavy.hinges[size_t(h)].y, expected.hinges(1, h), 1e-14);
+    if (k > 0) {  // the same start on another chain moves differently
+      const Sample other = *sceneChain.sampleAt(scene.frameTime(k));
+      EXPECT_GT(hingeDistance(expected.hinges, other.hinges), 1e-3);
+    }
+  }
+  // The run with its own start begins there: chart coordinates (-0.4, 1.0).
+  FrameBuilder again = builderFor(scene);
+  const Vec3 start = again.frame(0).runs[2].current;
+  EXPECT_NEAR(start.z, std::sin(-0.4), 1e-12);
+  EXPECT_NEAR(start.y, std::cos(-0.4) * std::sin(1.0), 1e-12);
 }
 
 TEST(FrameBuilder, TrailsFollowTheirHingesAndFade) {

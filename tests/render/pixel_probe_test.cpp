@@ -94,8 +94,8 @@ TEST_F(PixelProbe, PathBehindTheSphereIsHidden) {
 }
 
 TEST_F(PixelProbe, PinsAreCharcoal) {
-  const auto view = render::fitChainView(frame.rods, frame.baseLength, panelRect(settings, PanelKind::Linkage));
-  for (double x : {0.0, frame.baseLength}) {
+  const auto view = render::fitFrameView(frame, panelRect(settings, PanelKind::Linkage));
+  for (double x : {0.0, frame.runs[0].baseLength}) {
     const render::P2 pin = view(x, 0);
     const float rod = std::max(1.5f, float(0.045 * view.scale));
     const Rgb8 c = pixel(image, int(pin.x), int(pin.y - 1.4f * rod));  // on the bolt, off its silver centre

@@ -154,6 +154,41 @@ TEST(SceneLoader, FrameCountCoversTheDurationWithBothEnds) {
   EXPECT_DOUBLE_EQ(scene.frameTime(10), 1.0);
 }
 
+TEST(SceneLoader, RunsTakeTheScenesPhysicsAndStartUnlessTheyGiveTheirOwn) {
+  const Scene scene = parseScene(R"({
+    "name": "per-run", "linkage": { "rods": 4, "L": 3.0, "hinge_masses": [2, 2, 2] },
+    "initial": { "coords": [0.3, 0.2], "velocity": [0.5, 0.7] }, "duration": 1,
+    "runs": [ { "name": "shared", "method": "ambient" },
+              { "name": "own L", "method": "ambient", "linkage": { "L": 2.5 } },
+              { "name": "own masses and start", "method": "christoffel",
+                "linkage": { "rod_masses": [1, 0, 0, 1] },
+                "initial": { "drag": { "point": [1, 0, 0], "direction": [0, 1, 0] }, "unit_speed": true } } ]
+  })", "per-run.json");
+  ASSERT_EQ(scene.runs.size(), 3u);
+  const RunSpec& shared = scene.runs[0];
+  EXPECT_FALSE(shared.ownLinkage);
+  EXPECT_FALSE(shared.ownInitial);
+  EXPECT_DOUBLE_EQ(shared.chain.baseLength, 3.0);
+  EXPECT_EQ(shared.chain.hingeMasses, scene.chain.hingeMasses);
+  EXPECT_EQ(shared.initial.coords, scene.initial.coords);
+  // A run's linkage changes what it gives and keeps the scene's values for the rest.
+  const RunSpec& ownL = scene.runs[1];
+  EXPECT_TRUE(ownL.ownLinkage);
+  EXPECT_DOUBLE_EQ(ownL.chain.baseLength, 2.5);
+  EXPECT_EQ(ownL.chain.rods, 4);
+  EXPECT_EQ(ownL.chain.hingeMasses, Eigen::VectorXd::Constant(3, 2.0));
+  const RunSpec& own = scene.runs[2];
+  EXPECT_DOUBLE_EQ(own.chain.baseLength, 3.0);
+  EXPECT_DOUBLE_EQ(own.chain.rodMasses(3), 1.0);
+  EXPECT_EQ(own.chain.hingeMasses, Eigen::VectorXd::Constant(3, 2.0));
+  // A run's start replaces the scene's whole (here a drag instead of chart coordinates).
+  EXPECT_TRUE(own.ownInitial);
+  EXPECT_EQ(own.initial.kind, InitialSpec::Kind::Drag);
+  EXPECT_TRUE(own.initial.unitSpeed);
+  EXPECT_EQ(scene.initial.kind, InitialSpec::Kind::ChartCoordinates);
+  EXPECT_FALSE(scene.initial.unitSpeed);
+}
+
 TEST(SceneLoader, ShippedScenesLoad) {
   for (const char* name :
        {"default.json", "comparison.json", "pole-passage.json", "seam.json", "massive-rods.json", "five-rods.json"}) {
