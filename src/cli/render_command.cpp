@@ -190,7 +190,7 @@ void runRender(const RenderArguments& args) {
   const std::vector<InitialState> starts = runStarts(scene);
   std::optional<FrameBuilder> built;
   try {
-    built.emplace(scene, starts, startRuns(scene, starts), interruptRequested);
+    built.emplace(scene, starts, startRuns(scene, starts), startFamilies(scene, starts), interruptRequested);
   } catch (const RunCancelled&) {
     stopIfInterrupted("nothing was written yet");
   }

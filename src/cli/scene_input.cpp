@@ -6,6 +6,7 @@
 
 #include "cli/exit_codes.hpp"
 #include "cli/interrupt.hpp"
+#include "simulation/family.hpp"
 #include "simulation/initial_state.hpp"
 
 namespace sl {
@@ -58,6 +59,24 @@ std::vector<Trajectory> startRuns(const Scene& scene, const std::vector<InitialS
     }
   }
   return runs;
+}
+
+std::vector<std::vector<Trajectory>> startFamilies(const Scene& scene, const std::vector<InitialState>& starts) {
+  std::vector<std::vector<Trajectory>> families(scene.runs.size());
+  for (size_t i = 0; i < scene.runs.size(); ++i) {
+    const RunSpec& run = scene.runs[i];
+    if (!run.family) continue;
+    try {
+      for (const InitialState& member : familyStarts(run.chain, starts.at(i), *run.family, run.config)) {
+        families[i].emplace_back(run.chain, member, run.config);
+        families[i].back().setCancellation(interruptRequested);
+      }
+    } catch (const std::invalid_argument& error) {
+      failOnProblems(scene.file, {{"runs[" + std::to_string(i) + "].family", error.what()}});
+      throw;
+    }
+  }
+  return families;
 }
 
 }  // namespace sl

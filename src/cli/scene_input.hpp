@@ -31,5 +31,8 @@ void failOnProblems(const std::string& file, const std::vector<SceneProblem>& pr
 // CommandExit(kExitBadInput) naming the file and the JSON path ("initial" or "runs[i].initial", "runs[i]").
 std::vector<InitialState> runStarts(const Scene& scene);
 std::vector<Trajectory> startRuns(const Scene& scene, const std::vector<InitialState>& starts);
+// The members of each run's family (none for a run without one), from the run's start; a family that cannot
+// start is a problem of runs[i].family.
+std::vector<std::vector<Trajectory>> startFamilies(const Scene& scene, const std::vector<InitialState>& starts);
 
 }  // namespace sl

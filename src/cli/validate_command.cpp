@@ -25,12 +25,18 @@ void runValidate(const ValidateArguments& args) {
   if (!scene.output.video.empty())
     for (SceneProblem& problem : checkVideoPath(scene.output.video, "output.video")) problems.push_back(problem);
   failOnProblems(file, problems);
-  startRuns(scene, runStarts(scene));  // every start and run, as render and simulate set them up
+  const std::vector<InitialState> starts = runStarts(scene);
+  // Every start, run and family, as render and simulate set them up.
+  startRuns(scene, starts);
+  startFamilies(scene, starts);
   std::cout << file << ": ok: \"" << scene.name << "\", " << scene.chain.rods << " rods, L = " << scene.chain.baseLength
             << ", " << scene.frameCount() << " frames of " << scene.output.size.width << "x" << scene.output.size.height
             << " at " << scene.output.fps << " fps, runs:";
   for (const RunSpec& run : scene.runs)
     std::cout << " \"" << run.name << "\" (" << nameOf(run.config.method) << ", " << nameOf(run.config.integrator)
+              << (run.family ? ", " + std::string(traitsOf(kFamilyKinds, run.family->kind).name) + " of " +
+                                   std::to_string(run.family->count)
+                             : std::string())
               << ")";
   std::cout << '\n';
 }

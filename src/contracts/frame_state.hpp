@@ -21,6 +21,15 @@ enum class ViewSpace {
   Circle   // 3 rods: (cos t, sin t, 0) on the equator
 };
 
+// One member of a run's family of geodesics (issue 15) at this frame: drawn thin, with the others.
+struct MemberFrame {
+  bool stopped = false;     // stopped at or before this frame's time (frozen where it stopped)
+  std::vector<Vec2> hinges;  // the linkage panel's "feather": every member's chain, faint
+  std::vector<Vec3> path;    // as RunFrame::path
+  std::vector<double> pathTimes;
+  Vec3 current;  // a point of the wavefront
+};
+
 // One run's state at this frame.
 struct RunFrame {
   std::string name;  // run name from the scene
@@ -41,6 +50,9 @@ struct RunFrame {
   std::vector<Vec3> path;
   std::vector<double> pathTimes;
   Vec3 current;
+
+  // The run's family, in member order (the wavefront joins their current points in this order); empty if none.
+  std::vector<MemberFrame> members;
 };
 
 // A time series for the plot panel.

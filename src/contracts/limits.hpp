@@ -21,6 +21,10 @@ inline constexpr int kMinRods = 3;
 inline constexpr int kMaxRods = 12;
 inline constexpr int kMaxFps = 1000;
 inline constexpr int kMaxPathSamplesPerFrame = 100;
+// A run's family (issue 15): members beside the run, their spread and a cloud's perturbation size.
+inline constexpr int kMaxFamilyMembers = 256;
+inline constexpr double kMaxFamilySpread = 3.141592653589793;  // a fan's whole angle, a parallel family's width
+inline constexpr double kMaxCloudEpsilon = 0.1;
 // Samples of one run on a time grid (simulate --dt, the error grids of bench and stability): 5e6 rows of
 // trajectory CSV are about a gigabyte.
 inline constexpr long kMaxSamplesPerRun = 5'000'000;

@@ -81,6 +81,15 @@ inline constexpr std::array<StopReasonTraits, 7> kStopReasons{{
     {StopReason::MaxSteps, "max-steps", "the run used up its step budget"},
 }};
 
+// === Families of geodesics from a run's start (simulation/family.hpp)
+
+enum class FamilyKind { Fan, Parallel, Cloud };
+inline constexpr std::array<Named<FamilyKind>, 3> kFamilyKinds{{
+    {FamilyKind::Fan, "fan"},            // one point, directions spread by angle in a g-orthonormal frame
+    {FamilyKind::Parallel, "parallel"},  // starts spaced along the geodesic orthogonal to the run's
+    {FamilyKind::Cloud, "cloud"},        // random perturbations of the start, for sensitivity
+}};
+
 // === Scene view kinds (scenes/README.md)
 
 enum class PanelKind { Linkage, Sphere, Plot, Text };

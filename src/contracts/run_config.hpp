@@ -22,6 +22,20 @@ struct RunConfig {
   double accuracySetting() const { return traits(integrator).adaptive ? tolerance : step; }
 };
 
+// A family of geodesics around a run (issue 15): `count` members beside the run itself, sharing its chain,
+// method and integrator. Fan: the run's point, directions at angles spread evenly over [-spread/2, spread/2]
+// from the run's in a g-orthonormal frame, the run's speed. Parallel: points at geodesic distances evenly over
+// [-spread/2, spread/2] along the geodesic orthogonal to the run's velocity, velocities g-orthogonal to it there
+// (the run's velocity transported). Cloud: the start's point and velocity each moved by up to `epsilon`
+// (relative to the speed for the velocity) in random directions drawn from `seed`.
+struct FamilySpec {
+  FamilyKind kind = FamilyKind::Fan;
+  int count = 16;
+  double spread = 0.2;    // radians (fan) or geodesic distance (parallel)
+  double epsilon = 1e-6;  // cloud
+  unsigned long seed = 1;  // cloud
+};
+
 // The start of the motion as a scene states it; simulation/initial_state.hpp turns it into an InitialState.
 struct InitialSpec {
   enum class Kind { ChartCoordinates, Drag };

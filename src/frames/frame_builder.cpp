@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "frames/parallel_for.hpp"
 #include "frames/sphere_decoration.hpp"
 
 namespace sl {
@@ -58,9 +59,10 @@ ColorRGB runColor(const Scene& scene, size_t run) {
 }
 
 FrameBuilder::FrameBuilder(const Scene& scene, const std::vector<InitialState>& starts, std::vector<Trajectory> runs,
-                           const std::function<bool()>& cancelled)
+                           std::vector<std::vector<Trajectory>> families, const std::function<bool()>& cancelled)
     : scene_(scene),
       runs_(std::move(runs)),
+      families_(std::move(families)),
       view_(scene.chain.rods, starts.at(0).spherePoint),
       frameCount_(scene.frameCount()),
       history_(runs_.size()),
@@ -73,8 +75,15 @@ FrameBuilder::FrameBuilder(const Scene& scene, const std::vector<InitialState>& 
     frame.method = nameOf(scene.runs[i].config.method);
     frame.color = runColor(scene, i);
     frame.baseLength = scene.runs[i].chain.baseLength;
+    if (i < families_.size()) frame.members.resize(families_[i].size());
     frame.trails.resize(scene.view.trailHinges.size());
   }
+}
+
+// Path sample j of `substeps` on the way to frame k. The last is the frame time itself, computed as k / fps so it
+// is the same in every shard.
+double FrameBuilder::pathSampleTime(int k, int j, int substeps) const {
+  return j == substeps ? scene_.frameTime(k) : ((k - 1) * substeps + j) / double(substeps * scene_.output.fps);
 }
 
 void FrameBuilder::advanceTo(int k) {
@@ -91,14 +100,41 @@ void FrameBuilder::sampleFrame(int k) {
   const int substeps = k == 0 ? 1 : scene_.view.pathSamplesPerFrame;
   for (size_t run = 0; run < runs_.size(); ++run) {
     for (int j = 1; j <= substeps; ++j) {
-      // The last substep is the frame time itself, computed as k / fps so it is the same in every shard.
-      const double t =
-          j == substeps ? scene_.frameTime(k) : ((k - 1) * substeps + j) / double(substeps * scene_.output.fps);
-      sampleRunAt(run, t, j == substeps);
+      sampleRunAt(run, pathSampleTime(k, j, substeps), j == substeps);
     }
   }
+  sampleMembers(k);
   recordPlots(k);
   sampled_ = k;
+}
+
+// Members are sampled at the run's times, each by one thread into its own MemberFrame: the frames are the
+// same however many cores there are.
+void FrameBuilder::sampleMembers(int k) {
+  std::vector<std::pair<std::size_t, std::size_t>> jobs;
+  for (std::size_t run = 0; run < families_.size(); ++run)
+    for (std::size_t m = 0; m < families_[run].size(); ++m)
+      if (!history_[run].frame.members[m].stopped) jobs.emplace_back(run, m);
+  const int substeps = k == 0 ? 1 : scene_.view.pathSamplesPerFrame;
+  parallelFor(jobs.size(), [&](std::size_t j) {
+    const auto [run, m] = jobs[j];
+    MemberFrame& member = history_[run].frame.members[m];
+    Trajectory& trajectory = families_[run][m];
+    for (int step = 1; step <= substeps && !member.stopped; ++step) {
+      const double t = pathSampleTime(k, step, substeps);
+      const std::optional<Sample> sample = trajectory.sampleAt(t);
+      if (!sample) {
+        member.stopped = true;
+        break;
+      }
+      member.current = view_.project(sample->spherePoint);
+      member.path.push_back(member.current);
+      member.pathTimes.push_back(t);
+      fadeOut(member.path, member.pathTimes, t, scene_.view.pathFadeSeconds);
+      thinOut(member.path, member.pathTimes);
+      if (step == substeps) member.hinges = hingeList(sample->hinges);
+    }
+  });
 }
 
 void FrameBuilder::sampleRunAt(size_t run, double t, bool isFrameTime) {

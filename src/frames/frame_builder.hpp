@@ -19,11 +19,12 @@ namespace sl {
 
 class FrameBuilder {
  public:
-  // runs: one Trajectory per scene run, in the scene's order, run i from starts[i] on the run's own chain. The
-  // ball view of 5+ rods is centred on run 0's start. `cancelled` is asked during the builder's own integration
-  // (the plots' overview), which then throws RunCancelled.
+  // runs: one Trajectory per scene run, in the scene's order, run i from starts[i] on the run's own chain.
+  // families[i]: the members of run i's family (empty without one; families may be empty for none at all).
+  // The ball view of 5+ rods is centred on run 0's start. `cancelled` is asked during the builder's own
+  // integration (the plots' overview), which then throws RunCancelled.
   FrameBuilder(const Scene& scene, const std::vector<InitialState>& starts, std::vector<Trajectory> runs,
-               const std::function<bool()>& cancelled = {});
+               std::vector<std::vector<Trajectory>> families = {}, const std::function<bool()>& cancelled = {});
 
   int frameCount() const { return frameCount_; }
   // Frame k; k must not be smaller than the previous call's.
@@ -43,11 +44,14 @@ class FrameBuilder {
 
   void sampleFrame(int k);  // advance the history to frame k (k = sampled_ + 1)
   void sampleRunAt(size_t run, double t, bool isFrameTime);
+  void sampleMembers(int k);
+  double pathSampleTime(int k, int j, int substeps) const;  // every family member up to frame k, members spread over the cores
   void recordPlots(int k);
   FrameState snapshot(int k) const;
 
   const Scene& scene_;
   std::vector<Trajectory> runs_;
+  std::vector<std::vector<Trajectory>> families_;  // [run][member]
   ConfigurationView view_;
   int frameCount_;
   int sampled_ = -1;  // the last frame sampled into the history

@@ -51,6 +51,20 @@ void drawChain(const RunFrame& run, const PlaneView& view, double base, float ro
   }
 }
 
+// The family's "feather": every member's chain as thin faint rods in the run's colour ramp, under the run's own.
+void drawFeather(const RunFrame& run, const PlaneView& view, double base, float rod, ShapeBatch& batch) {
+  const std::size_t count = run.members.size();
+  const float alpha = std::clamp(6.0f / float(count), 0.12f, 0.5f);  // many members: fainter each
+  for (std::size_t m = 0; m < count; ++m) {
+    std::vector<P2> joints{view(0, 0)};
+    for (const Vec2& h : run.members[m].hinges)
+      if (std::isfinite(h.x) && std::isfinite(h.y)) joints.push_back(view(h));
+    joints.push_back(view(base, 0));
+    for (std::size_t k = 0; k + 1 < joints.size(); ++k)
+      batch.capsule(joints[k], joints[k + 1], std::max(0.6f, 0.3f * rod), memberColor(run.color, m, count, alpha));
+  }
+}
+
 void drawRun(const PanelContext& context, const RunFrame* run, const PixelRect& area, bool label, ShapeBatch& batch) {
   // One scale for every run (runs may differ in L): each is drawn on its own pins.
   const PlaneView view = fitFrameView(context.frame, area);
@@ -59,6 +73,7 @@ void drawRun(const PanelContext& context, const RunFrame* run, const PixelRect& 
   drawFloor(view, base, rod, batch);
   if (!run) return;
   drawTrails(*run, view, rod, batch);
+  drawFeather(*run, view, base, rod, batch);
   drawChain(*run, view, base, rod, batch);
   if (label) {
     const std::string name = context.font.fitted(run->name, TextSize::Small, area.width);

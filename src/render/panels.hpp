@@ -28,4 +28,13 @@ void drawTextPanel(const PanelContext& context, ShapeBatch& batch);
 // Run colour of the frame state as a shape colour.
 inline Rgba toRgba(const ColorRGB& c, float alpha = 1) { return {c.r, c.g, c.b, alpha}; }
 
+// Member m of a family of `count`: the run's colour ramped from darker (first member) to lighter (last), so the
+// order of the members, and so the wavefront's orientation, can be read off the picture.
+inline Rgba memberColor(const ColorRGB& c, std::size_t m, std::size_t count, float alpha = 1) {
+  const float u = count > 1 ? float(m) / float(count - 1) : 0.5f;
+  const float dark = 0.55f, light = 0.55f;  // at the ends: 55% of the colour, or 55% of the way to white
+  auto ramp = [&](float x) { return u < 0.5f ? x * (1 - dark * (1 - 2 * u)) : x + (1 - x) * light * (2 * u - 1); };
+  return {ramp(c.r), ramp(c.g), ramp(c.b), alpha};
+}
+
 }  // namespace sl::render

@@ -48,25 +48,64 @@ float pathAlpha(const ViewSettings& settings, double age) {
   return static_cast<float>(std::clamp(1.0 - age / settings.pathFadeSeconds, 0.0, 1.0));
 }
 
-void drawPath(const RunFrame& run, const PanelContext& context, const SphereCamera& camera, const Placement& placement,
+// A path as a tube of `radius` (world units, at least `minHalfWidth` pixels) in `color`, fading with age.
+void drawPath(const std::vector<Vec3>& path, const std::vector<double>& times, Rgba color, double radius,
+              float minHalfWidth, const PanelContext& context, const SphereCamera& camera, const Placement& placement,
               bool throughAntipode, ShapeBatch& batch) {
   std::vector<PolylinePoint> points;
-  points.reserve(run.path.size() + 1);
-  for (std::size_t i = 0; i < run.path.size(); ++i) {
-    const double age = i < run.pathTimes.size() ? context.frame.time - run.pathTimes[i] : 0.0;
+  points.reserve(path.size() + 1);
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    const double age = i < times.size() ? context.frame.time - times[i] : 0.0;
     const float alpha = pathAlpha(context.settings, age);
-    const V3 p = placement.place(run.path[i]);
-    const bool hidden = alpha <= 0.0f || !drawable(run.path[i]) || !camera.inFront(p);
-    const bool jump = throughAntipode && i > 0 && distance(run.path[i - 1], run.path[i]) > kMaxPathChord;
+    const V3 p = placement.place(path[i]);
+    const bool hidden = alpha <= 0.0f || !drawable(path[i]) || !camera.inFront(p);
+    const bool jump = throughAntipode && i > 0 && distance(path[i - 1], path[i]) > kMaxPathChord;
     if (hidden || jump) {  // a gap: draw what came before, start afresh (with this point, unless hidden)
       batch.polyline(points, true, 0.35f);
       points.clear();
     }
     if (hidden) continue;
-    const float halfWidth = std::max(1.0f, float(kTubeRadius * camera.pixelsPerUnitAt(p)));
-    points.push_back({camera.project(p), halfWidth, toRgba(run.color, alpha), placement.world(p)});
+    const float halfWidth = std::max(minHalfWidth, float(radius * camera.pixelsPerUnitAt(p)));
+    points.push_back({camera.project(p), halfWidth, palette::withAlpha(color, color.a * alpha), placement.world(p)});
   }
   batch.polyline(points, true, 0.35f);
+}
+
+// A run's family: each member's path as a thin tube in the run's colour ramp, then the wavefront, the curve
+// through the members' current points in member order, as a dark line over them, and a dot per member (a
+// stopped member's dot on a red halo, as a stopped run's ball).
+void drawFamily(const RunFrame& run, const PanelContext& context, const SphereCamera& camera,
+                const Placement& placement, bool throughAntipode, ShapeBatch& batch) {
+  const std::size_t count = run.members.size();
+  for (std::size_t m = 0; m < count; ++m) {
+    drawPath(run.members[m].path, run.members[m].pathTimes, memberColor(run.color, m, count, 0.85f),
+             0.3 * kTubeRadius, 0.6f, context, camera, placement, throughAntipode, batch);
+  }
+  std::vector<PolylinePoint> front;
+  auto flush = [&] {
+    batch.polyline(front, true, 0.2f);
+    front.clear();
+  };
+  for (std::size_t m = 0; m < count; ++m) {
+    const Vec3& at = run.members[m].current;
+    const V3 p = placement.place(at);
+    const bool jump = throughAntipode && m > 0 && distance(run.members[m - 1].current, at) > kMaxPathChord;
+    if (!drawable(at) || !camera.inFront(p) || jump) flush();
+    if (!drawable(at) || !camera.inFront(p)) continue;
+    const float halfWidth = std::max(1.0f, float(0.45 * kTubeRadius * camera.pixelsPerUnitAt(p)));
+    front.push_back({camera.project(p), halfWidth, palette::withAlpha(palette::ink, 0.9f), placement.world(p)});
+  }
+  flush();
+  for (std::size_t m = 0; m < count; ++m) {
+    const MemberFrame& member = run.members[m];
+    const V3 p = placement.place(member.current);
+    if (!drawable(member.current) || !camera.inFront(p)) continue;
+    const float pixelsPerUnit = float(camera.pixelsPerUnitAt(p));
+    const float radius = std::max(1.5f, 0.35f * float(kBallRadius) * pixelsPerUnit);
+    if (member.stopped) batch.disc(camera.project(p), radius + 1.5f, palette::stopRed, false, 0, placement.world(p));
+    batch.disc(camera.project(p), radius, memberColor(run.color, m, count), true, 0.3f, placement.world(p),
+               radius / pixelsPerUnit);
+  }
 }
 
 void drawBall(const RunFrame& run, const SphereCamera& camera, const Placement& placement, ShapeBatch& batch) {
@@ -153,8 +192,11 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
                    context.font, batch);
     }
   }
+  const bool throughAntipode = space == ViewSpace::Ball;
+  for (const RunFrame& run : context.frame.runs) drawFamily(run, context, camera, placement, throughAntipode, batch);
   for (const RunFrame& run : context.frame.runs)
-    drawPath(run, context, camera, placement, space == ViewSpace::Ball, batch);
+    drawPath(run.path, run.pathTimes, toRgba(run.color), kTubeRadius, 1.0f, context, camera, placement,
+             throughAntipode, batch);
   for (const RunFrame& run : context.frame.runs) drawBall(run, camera, placement, batch);
   const SphereLook look = colored ? SphereLook::Colored : space == ViewSpace::Sphere ? SphereLook::Opaque : SphereLook::Glass;
   return {camera, look};

@@ -164,6 +164,57 @@ void readInitial(const json& value, const std::string& path, int rods, InitialSp
   }
 }
 
+// "family": a fan, parallel family or cloud of geodesics around the run (FamilySpec). Keys that mean nothing to
+// the kind are refused, as "step" is with an adaptive integrator.
+std::optional<FamilySpec> readFamily(const JsonObject& run, int rods, std::vector<SceneProblem>& problems) {
+  const JsonObject object(*run.member("family"), run.pathOf("family"), problems,
+                          {"kind", "count", "spread", "epsilon", "seed"});
+  if (!object.isObject()) return std::nullopt;
+  FamilySpec family;
+  const std::size_t before = problems.size();
+  if (const auto kind = object.string("kind", true)) {
+    if (const auto parsed = detail::pickKind(object.pathOf("kind"), *kind, kFamilyKinds, problems)) family.kind = *parsed;
+  }
+  if (const auto count = object.integer("count")) {
+    if (*count < 2 || *count > limits::kMaxFamilyMembers)
+      object.report("count", "found " + std::to_string(*count) + "; expected an integer from 2 to " +
+                                 std::to_string(limits::kMaxFamilyMembers));
+    else
+      family.count = static_cast<int>(*count);
+  }
+  const bool isCloud = family.kind == FamilyKind::Cloud;
+  const std::string kindName = "\"" + std::string(traitsOf(kFamilyKinds, family.kind).name) + "\"";
+  if (const auto spread = object.number("spread")) {
+    if (isCloud)
+      object.report("spread", "is not used by a " + kindName + " family; expected \"epsilon\" instead");
+    else if (object.checkRange("spread", *spread, 1e-12, limits::kMaxFamilySpread,
+                               "a spread above 0 and at most pi (radians for a fan, geodesic distance for parallel)"))
+      family.spread = *spread;
+  }
+  for (const char* key : {"epsilon", "seed"}) {
+    if (!isCloud && object.has(key))
+      object.report(key, std::string("is used by a \"cloud\" family only; expected \"spread\" for a ") + kindName +
+                             " family");
+  }
+  if (const auto epsilon = object.number("epsilon"); epsilon && isCloud) {
+    if (object.checkRange("epsilon", *epsilon, 1e-300, limits::kMaxCloudEpsilon,
+                          "a perturbation size above 0 and at most 0.1"))
+      family.epsilon = *epsilon;
+  }
+  if (const auto seed = object.integer("seed"); seed && isCloud) {
+    if (*seed < 0)
+      object.report("seed", "found " + std::to_string(*seed) + "; expected an integer >= 0");
+    else
+      family.seed = static_cast<unsigned long>(*seed);
+  }
+  if (!isCloud && rods < 4)
+    object.report("kind", "found " + kindName + " for " + std::to_string(rods) +
+                              " rods; a fan or parallel family needs a tangent plane (4 or more rods); expected "
+                              "\"cloud\"");
+  if (problems.size() != before) return std::nullopt;
+  return family;
+}
+
 void readWatchdog(const JsonObject& run, RunConfig& config, std::vector<SceneProblem>& problems) {
   const JsonObject watchdog(*run.member("watchdog"), run.pathOf("watchdog"), problems,
                             {"max_energy_drift", "max_rod_length_error", "max_steps"});
@@ -193,7 +244,8 @@ std::optional<ColorRGB> readColor(const JsonObject& object, const std::string& k
 
 RunSpec readRun(const json& value, const std::string& path, const Scene& scene, std::vector<SceneProblem>& problems) {
   const JsonObject run(value, path, problems,
-                       {"name", "method", "integrator", "tolerance", "step", "color", "watchdog", "linkage", "initial"});
+                       {"name", "method", "integrator", "tolerance", "step", "color", "watchdog", "linkage", "initial",
+                        "family"});
   RunSpec spec;
   spec.name = run.string("name", true).value_or("");
   if (run.has("name") && spec.name.empty()) run.report("name", "is empty; expected a name shown in the panels");
@@ -253,6 +305,7 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
   }
   spec.color = readColor(run, "color");
   if (run.has("watchdog")) readWatchdog(run, spec.config, problems);
+  if (run.has("family")) spec.family = readFamily(run, scene.chain.rods, problems);
   return spec;
 }
 

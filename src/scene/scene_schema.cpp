@@ -88,6 +88,18 @@ json runSchema() {
                                   {"max_steps", positive("bound on the work of a run")}},
                                  "limits that stop a run")},
        {"linkage", linkageSchema(true)},
+       {"family", closedObject({{"kind", oneOfNames(kFamilyKinds, "fan, parallel or cloud")},
+                                {"count", integer(2, limits::kMaxFamilyMembers, "members beside the run")},
+                                {"spread", {{"type", "number"},
+                                            {"exclusiveMinimum", 0},
+                                            {"maximum", limits::kMaxFamilySpread},
+                                            {"description", "fan: whole angle (radians); parallel: width"}}},
+                                {"epsilon", {{"type", "number"},
+                                             {"exclusiveMinimum", 0},
+                                             {"maximum", limits::kMaxCloudEpsilon},
+                                             {"description", "cloud: perturbation size"}}},
+                                {"seed", integer(0, 9223372036854775807L, "cloud: random seed")}},
+                               "a family of geodesics around the run", json::array({"kind"}))},
        {"initial", initialSchema("this run's own start (default: the scene's initial)")}},
       "one run: a method and integrator from the scene's start (or its own)", json::array({"name"}));
 }

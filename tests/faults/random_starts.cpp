@@ -132,7 +132,7 @@ int main(int argc, char** argv) {
       std::optional<FrameBuilder> builder;
       try {
         const std::vector<InitialState> starts = runStarts(scene);
-        builder.emplace(scene, starts, startRuns(scene, starts));
+        builder.emplace(scene, starts, startRuns(scene, starts), startFamilies(scene, starts));
       } catch (const CommandExit& exit) {
         if (exit.code() != kExitBadInput) fail(std::string("start refused with exit ") + std::to_string(exit.code()));
         ++refused;

@@ -70,7 +70,7 @@ TEST(SceneFaults, NoFrameIsBuiltFromANonFiniteState) {
     const Scene scene = parseScene(fault.json, fault.name + ".json");
     // The start and runs as the commands set them up.
     const std::vector<InitialState> starts = runStarts(scene);
-    FrameBuilder builder(scene, starts, startRuns(scene, starts));
+    FrameBuilder builder(scene, starts, startRuns(scene, starts), startFamilies(scene, starts));
     for (const int k : framesToBuild(builder.frameCount())) expectDrawable(builder.frame(k));
   }
 }

@@ -7,6 +7,7 @@
 #include "frames/frame_builder.hpp"
 #include "linkage/chain.hpp"
 #include "scene/scene_loader.hpp"
+#include "simulation/family.hpp"
 #include "simulation/initial_state.hpp"
 
 namespace sl {
@@ -40,7 +41,22 @@ std::vector<Trajectory> runsOf(const Scene& scene) {
   return runs;
 }
 
-FrameBuilder builderFor(const Scene& scene) { return FrameBuilder(scene, startsOf(scene), runsOf(scene)); }
+// Each run's family members, as the commands start them (cli/scene_input.cpp).
+std::vector<std::vector<Trajectory>> familiesOf(const Scene& scene) {
+  const std::vector<InitialState> starts = startsOf(scene);
+  std::vector<std::vector<Trajectory>> families(scene.runs.size());
+  for (std::size_t i = 0; i < scene.runs.size(); ++i) {
+    const RunSpec& run = scene.runs[i];
+    if (!run.family) continue;
+    for (const InitialState& member : familyStarts(run.chain, starts[i], *run.family, run.config))
+      families[i].emplace_back(run.chain, member, run.config);
+  }
+  return families;
+}
+
+FrameBuilder builderFor(const Scene& scene) {
+  return FrameBuilder(scene, startsOf(scene), runsOf(scene), familiesOf(scene));
+}
 
 void expectSameVec(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
   ASSERT_EQ(a.size(), b.size());
@@ -168,6 +184,49 @@ TEST(FrameBuilder, RunsWithTheirOwnLinkageAndStartFollowTheirOwnPhysics) {
   const Vec3 start = again.frame(0).runs[2].current;
   EXPECT_NEAR(start.z, std::sin(-0.4), 1e-12);
   EXPECT_NEAR(start.y, std::cos(-0.4) * std::sin(1.0), 1e-12);
+}
+
+// A run's family (issue 15): every member in every frame, in member order, each the motion of its own start;
+// a shard's first frame equals the full walk's, members included.
+TEST(FrameBuilder, FamilyMembersAreSampledWithTheRunInEveryShard) {
+  const Scene scene = parseScene(R"({"name": "t", "linkage": {"rods": 4, "L": 3},
+    "initial": {"coords": [0.3, 0.2], "velocity": [0.5, 0.7]}, "duration": 1.0,
+    "runs": [{"name": "fan", "method": "ambient", "integrator": "dopri5", "tolerance": 1e-10,
+              "family": {"kind": "fan", "count": 5, "spread": 0.4}},
+             {"name": "alone", "method": "ambient", "integrator": "dopri5", "tolerance": 1e-10}],
+    "output": {"fps": 10}, "view": {"panels": ["sphere", "linkage"], "path_samples_per_frame": 3}})",
+                                 "t.json");
+  FrameBuilder builder = builderFor(scene);
+  const std::vector<InitialState> starts = familyStarts(scene.runs[0].chain, startsOf(scene)[0], *scene.runs[0].family,
+                                                        scene.runs[0].config);
+  std::vector<Trajectory> direct;
+  for (const InitialState& start : starts) direct.emplace_back(scene.runs[0].chain, start, scene.runs[0].config);
+  std::vector<FrameState> all;
+  for (int k = 0; k < builder.frameCount(); ++k) {
+    all.push_back(builder.frame(k));
+    const FrameState& state = all.back();
+    ASSERT_EQ(state.runs[0].members.size(), 5u);
+    EXPECT_TRUE(state.runs[1].members.empty());
+    for (std::size_t m = 0; m < 5; ++m) {
+      const MemberFrame& member = state.runs[0].members[m];
+      const Sample expected = *direct[m].sampleAt(scene.frameTime(k));
+      EXPECT_FALSE(member.stopped);
+      for (int h = 0; h < 3; ++h) EXPECT_NEAR(member.hinges[size_t(h)].x, expected.hinges(0, h), 1e-14);
+      EXPECT_EQ(member.path.size(), size_t(k == 0 ? 1 : 1 + 3 * k));
+      EXPECT_NEAR(member.current.z, expected.spherePoint(2), 1e-14);
+    }
+  }
+  // Members leave one point in different directions: the wavefront is spread out after a while.
+  const auto& last = all.back().runs[0].members;
+  EXPECT_GT(std::abs(last.front().current.x - last.back().current.x) + std::abs(last.front().current.y - last.back().current.y),
+            0.05);
+  for (int start : {3, 7}) {
+    FrameBuilder shard = builderFor(scene);
+    const FrameState first = shard.frame(start);
+    for (std::size_t m = 0; m < 5; ++m) {
+      expectSameVec(first.runs[0].members[m].path, all[size_t(start)].runs[0].members[m].path);
+    }
+  }
 }
 
 TEST(FrameBuilder, TrailsFollowTheirHingesAndFade) {

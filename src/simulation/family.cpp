@@ -1,0 +1,144 @@
+#include "simulation/family.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+#include "simulation/initial_state.hpp"
+#include "simulation/trajectory.hpp"
+
+namespace sl {
+
+double kineticInner(const Chain& chain, const Eigen::VectorXd& x, const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
+  return 0.25 * (speedSquared(chain, {x, u + v}) - speedSquared(chain, {x, u - v}));
+}
+
+std::vector<Eigen::VectorXd> orthonormalTangentFrame(const Chain& chain, const Eigen::VectorXd& x,
+                                                     const Eigen::VectorXd& first) {
+  const Eigen::Index size = x.size();
+  std::vector<Eigen::VectorXd> frame;
+  auto addOrthonormalised = [&](Eigen::VectorXd w) {
+    w -= x * x.dot(w);  // tangent
+    for (const Eigen::VectorXd& e : frame) w -= kineticInner(chain, x, e, w) * e;
+    const double norm2 = speedSquared(chain, {x, w});
+    if (!(norm2 > 1e-20 * (1.0 + w.squaredNorm()))) return;  // dependent on the vectors so far
+    frame.push_back(w / std::sqrt(norm2));
+  };
+  addOrthonormalised(first);
+  if (frame.empty()) throw std::invalid_argument("a family needs a start that moves (zero velocity)");
+  for (Eigen::Index k = 0; k < size && Eigen::Index(frame.size()) < size - 1; ++k)
+    addOrthonormalised(Eigen::VectorXd::Unit(size, k));
+  return frame;
+}
+
+namespace {
+
+// Evenly over [-width/2, width/2]: member k of count (count >= 2).
+double evenOffset(double width, int k, int count) { return width * (double(k) / double(count - 1) - 0.5); }
+
+// Standard normal numbers from 64-bit draws, written out (Box-Muller) so that the same seed gives the same
+// cloud with every standard library (std::normal_distribution's algorithm is not specified).
+class NormalDraws {
+ public:
+  explicit NormalDraws(unsigned long seed) : bits_(seed) {}
+  double next() {
+    const double u1 = (double(bits_() >> 11) + 0.5) * 0x1.0p-53;  // in (0, 1)
+    const double u2 = double(bits_() >> 11) * 0x1.0p-53;
+    return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * 3.141592653589793 * u2);
+  }
+  Eigen::VectorXd vector(Eigen::Index size) {
+    Eigen::VectorXd v(size);
+    for (Eigen::Index i = 0; i < size; ++i) v(i) = next();
+    return v;
+  }
+
+ private:
+  std::mt19937_64 bits_;
+};
+
+std::vector<InitialState> fan(const Chain& chain, const InitialState& start, const FamilySpec& family) {
+  const double speed = std::sqrt(speedSquared(chain, start));
+  const std::vector<Eigen::VectorXd> frame = orthonormalTangentFrame(chain, start.spherePoint, start.sphereVelocity);
+  if (frame.size() < 2) throw std::invalid_argument("a fan needs a tangent plane (at least 4 rods)");
+  std::vector<InitialState> members;
+  for (int k = 0; k < family.count; ++k) {
+    const double angle = evenOffset(family.spread, k, family.count);
+    members.push_back({start.spherePoint, speed * (std::cos(angle) * frame[0] + std::sin(angle) * frame[1])});
+  }
+  return members;
+}
+
+// Along the geodesic orthogonal to the run's velocity (unit speed, in the frame's second direction), at
+// geodesic distance s: the point, and there the run's velocity carried along, made g-orthogonal to that
+// geodesic and given the run's speed. On S^2 (4 rods) this is the parallel transport of the run's velocity
+// (the unit normal of a geodesic is parallel along it); on higher spheres it keeps the velocity's direction as
+// closely as orthogonality allows.
+std::vector<InitialState> parallel(const Chain& chain, const InitialState& start, const FamilySpec& family,
+                                   const RunConfig& config) {
+  const double speed = std::sqrt(speedSquared(chain, start));
+  const std::vector<Eigen::VectorXd> frame = orthonormalTangentFrame(chain, start.spherePoint, start.sphereVelocity);
+  if (frame.size() < 2) throw std::invalid_argument("a parallel family needs a tangent plane (at least 4 rods)");
+  // Two unit-speed geodesics out of the start, one each way, sampled at the members' distances in order.
+  std::vector<InitialState> members(static_cast<std::size_t>(family.count));
+  for (const double side : {-1.0, 1.0}) {
+    Trajectory across(chain, {start.spherePoint, side * frame[1]}, config);
+    std::vector<int> order;
+    for (int k = 0; k < family.count; ++k)
+      if (side * evenOffset(family.spread, k, family.count) >= 0) order.push_back(k);
+    if (side < 0) std::reverse(order.begin(), order.end());  // increasing distance
+    for (const int k : order) {
+      const double distance = std::abs(evenOffset(family.spread, k, family.count));
+      const std::optional<Sample> at = across.sampleAt(distance);
+      if (!at)
+        throw std::invalid_argument("the geodesic orthogonal to the run stopped before distance " +
+                                    std::to_string(distance) + " (" + (across.stop() ? across.stop()->detail : "") +
+                                    ")");
+      const Eigen::VectorXd& y = at->spherePoint;
+      const Eigen::VectorXd u = side * at->sphereVelocity;  // pointing the way of increasing offset
+      Eigen::VectorXd w = start.sphereVelocity - y * y.dot(start.sphereVelocity);
+      const double uu = speedSquared(chain, {y, u});
+      w -= kineticInner(chain, y, u, w) / uu * u;
+      const double ww = speedSquared(chain, {y, w});
+      if (!(ww > 0)) throw std::invalid_argument("the run's velocity cannot be carried that far across");
+      members[static_cast<std::size_t>(k)] = {y, speed / std::sqrt(ww) * w};
+    }
+  }
+  return members;
+}
+
+std::vector<InitialState> cloud(const Chain& chain, const InitialState& start, const FamilySpec& family) {
+  NormalDraws draws(family.seed);
+  const Eigen::Index size = start.spherePoint.size();
+  const double velocitySize = start.sphereVelocity.norm();
+  std::vector<InitialState> members;
+  for (int k = 0; k < family.count; ++k) {
+    Eigen::VectorXd along = draws.vector(size);
+    along -= start.spherePoint * start.spherePoint.dot(along);
+    const Eigen::VectorXd x = (start.spherePoint + family.epsilon * along.normalized()).normalized();
+    Eigen::VectorXd v = start.sphereVelocity + family.epsilon * velocitySize * draws.vector(size).normalized();
+    v -= x * x.dot(v);
+    members.push_back({x, v});
+  }
+  (void)chain;
+  return members;
+}
+
+}  // namespace
+
+std::vector<InitialState> familyStarts(const Chain& chain, const InitialState& start, const FamilySpec& family,
+                                       const RunConfig& config) {
+  if (family.count < 2) throw std::invalid_argument("a family needs at least 2 members");
+  std::vector<InitialState> members;
+  switch (family.kind) {
+    case FamilyKind::Fan: members = fan(chain, start, family); break;
+    case FamilyKind::Parallel: members = parallel(chain, start, family, config); break;
+    case FamilyKind::Cloud: members = cloud(chain, start, family); break;
+  }
+  for (const InitialState& member : members) validateInitialState(chain, member);
+  return members;
+}
+
+}  // namespace sl
