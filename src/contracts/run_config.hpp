@@ -17,6 +17,9 @@ struct RunConfig {
   double maxRelativeEnergyDrift = 1e-2;  // watchdog: |E - E0| / E0 beyond this stops the run
   double maxRodLengthError = 1e-6;       // watchdog
   long maxSteps = 50'000'000;            // watchdog: bounds the work of any run
+  // Carry the Jacobi fields along the motion (simulation/jacobi_system.hpp) and find its conjugate points;
+  // the ambient method only (its linearisation is the one written out).
+  bool jacobi = false;
 
   // The integrator's accuracy setting: the tolerance if it is adaptive, the step otherwise.
   double accuracySetting() const { return traits(integrator).adaptive ? tolerance : step; }

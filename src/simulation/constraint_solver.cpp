@@ -118,6 +118,8 @@ void ConstraintSolver::solveKkt(const Eigen::VectorXd& rhs, Eigen::Matrix2Xd& co
   kkt_->solution = kkt_->lu.solve(kkt_->rhs);
   for (Eigen::Index h = 1; h < n; ++h)
     for (int xy = 0; xy < 2; ++xy) correction(xy, h - 1) = kkt_->solution(Kkt::x(h, xy));
+  // The KKT rows read M x + G^T nu = 0 with G's row r = (-D_r at p_r, +D_r at p_(r+1)): x = M^-1 G^T (-nu).
+  for (Eigen::Index r = 0; r < n; ++r) mu_(r) = -kkt_->solution(Kkt::mu(r));
 }
 
 }  // namespace sl

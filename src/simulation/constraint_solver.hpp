@@ -25,6 +25,9 @@ class ConstraintSolver {
   // hinges: 2 x (n-1); rhs: n entries; correction: 2 x (n-1). Throws std::runtime_error if the system is
   // singular (a fully stretched chain).
   void solve(const Eigen::Matrix2Xd& hinges, const Eigen::VectorXd& rhs, Eigen::Matrix2Xd& correction);
+  // The multipliers mu of the last solve (one per rod): correction = M^-1 G^T mu, where (G^T mu) at hinge p_h is
+  // D_(h-1) mu_(h-1) - D_h mu_h. The Jacobi fields' linearisation needs them (simulation/jacobi_system.hpp).
+  const Eigen::VectorXd& multipliers() const { return mu_; }
 
   // Rod vectors D_k = p_k - p_(k-1), k = 1..n, pins included: 2 x n.
   void rodVectors(const Eigen::Matrix2Xd& hinges, Eigen::Matrix2Xd& rods) const;

@@ -9,6 +9,7 @@
 #include "simulation/ambient_system.hpp"
 #include "simulation/chart_system.hpp"
 #include "simulation/initial_state.hpp"
+#include "simulation/jacobi_system.hpp"
 #include "simulation/steppers.hpp"
 
 namespace sl {
@@ -43,9 +44,12 @@ class CountingSystem : public GeodesicSystem {
 
 std::unique_ptr<GeodesicSystem> makeSystem(const ChainConstants& bound, const InitialState& start,
                                            const RunConfig& config) {
+  if (config.jacobi && config.method != Method::Ambient)
+    throw std::invalid_argument("Jacobi fields are computed with the ambient method only");
   if (config.method == Method::Ambient) {
     // Project once the rods drift past a tenth of the tolerance (never below rounding level).
     const double projectBeyond = std::max(1e-14, 0.1 * std::min(config.tolerance, config.maxRodLengthError));
+    if (config.jacobi) return std::make_unique<JacobiSystem>(bound.chain, start, projectBeyond);
     return std::make_unique<AmbientSystem>(bound.chain, start, projectBeyond);
   }
   return std::make_unique<ChartSystem>(bound, chartMethod(config.method, bound), start);
@@ -88,6 +92,31 @@ struct Trajectory::Impl {
   std::optional<StopInfo> stop;
   InvariantExtremes extremes;
   std::function<bool()> cancelled;
+  // Jacobi fields (RunConfig::jacobi): the system, the Gram determinant's rate at the last step's end, its
+  // largest value so far, and the conjugate points found.
+  const JacobiSystem* jacobi = nullptr;
+  double lastGramRate = 0, maxGramDeterminant = 0;
+  std::vector<double> conjugateTimes;
+
+  // A conjugate point is a zero of det G: there its rate goes from negative to positive (a minimum) and the
+  // determinant itself is zero to rounding, far below its size elsewhere (a dip that stays away from zero is
+  // not one). Located by bisection on the rate over the last step's dense output.
+  void findConjugatePoint(double t0, double t1, double rate1, double determinant1) {
+    maxGramDeterminant = std::max(maxGramDeterminant, determinant1);
+    const bool minimumInside = lastGramRate < 0 && rate1 >= 0;
+    lastGramRate = rate1;
+    if (!minimumInside) return;
+    State y;
+    double low = t0, high = t1;
+    for (int iteration = 0; iteration < 200 && high - low > 1e-14 * std::max(1.0, high); ++iteration) {
+      const double middle = 0.5 * (low + high);
+      stepper->stateAt(middle, y);
+      (jacobi->jacobiAt(y).gramRate < 0 ? low : high) = middle;
+    }
+    const double time = 0.5 * (low + high);
+    stepper->stateAt(time, y);
+    if (jacobi->jacobiAt(y).gramDeterminant <= 1e-12 * maxGramDeterminant) conjugateTimes.push_back(time);
+  }
 
   void halt(StopReason reason, double time, const std::string& detail) { stop = StopInfo{reason, time, detail}; }
 
@@ -129,6 +158,10 @@ struct Trajectory::Impl {
     if (!(summary.rodLengthError <= config.maxRodLengthError))
       return haltAtLastGoodState(StopReason::RodLength, "rod-length error " + formatTime(summary.rodLengthError) +
                                                             " at t = " + formatTime(t1));
+    if (jacobi) {
+      const JacobiState field = jacobi->jacobiAt(end);
+      findConjugatePoint(t0, t1, field.gramRate, field.gramDeterminant);
+    }
     extremes.maxRelativeEnergyDrift = std::max(extremes.maxRelativeEnergyDrift, drift);
     extremes.maxRodLengthError = std::max(extremes.maxRodLengthError, summary.rodLengthError);
     chartZeroTAtStart = chartZeroTAtEnd;
@@ -149,6 +182,7 @@ struct Trajectory::Impl {
     s.energy = kineticEnergy(bound.mass, s.hingeVelocities);
     s.relativeEnergyDrift = std::abs(s.energy - initialEnergy) / initialEnergy;
     s.rodLengthError = rodLengthError(bound.chain, s.hinges);
+    if (jacobi) s.jacobi = jacobi->jacobiAt(y).size;
     return s;
   }
 };
@@ -159,7 +193,9 @@ Trajectory::Trajectory(const Chain& chain, const InitialState& start, const RunC
   validateInitialState(chain, start);
   Impl& run = *impl_;
   run.config = config;
-  run.system = std::make_unique<CountingSystem>(makeSystem(run.bound, start, config));
+  std::unique_ptr<GeodesicSystem> system = makeSystem(run.bound, start, config);
+  run.jacobi = dynamic_cast<const JacobiSystem*>(system.get());
+  run.system = std::make_unique<CountingSystem>(std::move(system));
   run.stepper = makeStepper(config.integrator, config.tolerance, config.step);
   run.start = run.system->initialState();
   const StepInvariants summary = run.system->stepInvariants(
@@ -191,6 +227,7 @@ std::optional<Sample> Trajectory::sampleAt(double t) {
 
 void Trajectory::setCancellation(std::function<bool()> cancelled) { impl_->cancelled = std::move(cancelled); }
 const std::optional<StopInfo>& Trajectory::stop() const { return impl_->stop; }
+const std::vector<double>& Trajectory::conjugateTimes() const { return impl_->conjugateTimes; }
 const InvariantExtremes& Trajectory::invariantExtremes() const { return impl_->extremes; }
 long Trajectory::vectorFieldEvaluations() const { return impl_->system->evaluations; }
 long Trajectory::steps() const { return impl_->steps; }

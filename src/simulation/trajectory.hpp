@@ -28,6 +28,9 @@ struct Sample {
   double energy = 0;  // (1/2) g(v, v)
   double relativeEnergyDrift = 0;
   double rodLengthError = 0;  // max_k | |p_k - p_(k-1)| - 1 |
+  // With RunConfig::jacobi: the size of the Jacobi field across the motion, (det G)^(1/2m) (|J_perp| for 4
+  // rods; simulation/jacobi_system.hpp), zero at conjugate points.
+  std::optional<double> jacobi;
 };
 
 struct StopInfo {
@@ -66,6 +69,10 @@ class Trajectory {
   void setCancellation(std::function<bool()> cancelled);
 
   const std::optional<StopInfo>& stop() const;
+  // With RunConfig::jacobi: the conjugate points found so far (times t > 0 where the Jacobi fields across the
+  // motion are singular), increasing, each located to ~1e-12 in time on the integrator's dense output. The
+  // integration may run one step ahead of the last sample: callers keep those up to the time they sampled.
+  const std::vector<double>& conjugateTimes() const;
   const InvariantExtremes& invariantExtremes() const;  // over the steps integrated so far
   long vectorFieldEvaluations() const;
   long steps() const;

@@ -1,0 +1,186 @@
+#include "simulation/jacobi_system.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "linkage/chain_constants.hpp"
+#include "linkage/chart.hpp"
+#include "simulation/family.hpp"
+
+namespace sl {
+
+namespace {
+
+using Hinges = Eigen::Map<Eigen::Matrix2Xd>;
+using ConstHinges = Eigen::Map<const Eigen::Matrix2Xd>;
+
+// Rod-wise differences of hinge displacements (the pins do not move): dD_k for dq, dV_k for dv.
+Eigen::Matrix2Xd differences(const Eigen::Matrix2Xd& perHinge) {
+  Eigen::Matrix2Xd out;
+  ConstraintSolver::relativeVelocities(perHinge, out);
+  return out;
+}
+
+// Column-wise dot products: one number per rod.
+Eigen::VectorXd rodDots(const Eigen::Matrix2Xd& a, const Eigen::Matrix2Xd& b) {
+  return a.cwiseProduct(b).colwise().sum().transpose();
+}
+
+// G^T mu as hinge vectors for rod vectors D: at p_h, D_(h-1) mu_(h-1) - D_h mu_h (constraint_solver.hpp).
+Eigen::Matrix2Xd transposeTimes(const Eigen::Matrix2Xd& rods, const Eigen::VectorXd& mu) {
+  const Eigen::Index hinges = rods.cols() - 1;
+  Eigen::Matrix2Xd out(2, hinges);
+  for (Eigen::Index h = 1; h <= hinges; ++h) out.col(h - 1) = rods.col(h - 1) * mu(h - 1) - rods.col(h) * mu(h);
+  return out;
+}
+
+double massInner(const AmbientMassMatrix& mass, const Eigen::Matrix2Xd& a, const Eigen::Matrix2Xd& b) {
+  double sum = 0;
+  for (Eigen::Index j = 0; j < a.cols(); ++j) sum += mass.diagonal(j) * a.col(j).dot(b.col(j));
+  for (Eigen::Index j = 0; j + 1 < a.cols(); ++j)
+    sum += mass.coupling(j) * (a.col(j).dot(b.col(j + 1)) + a.col(j + 1).dot(b.col(j)));
+  return sum;
+}
+
+// det and adjugate (transposed cofactors) of a small symmetric matrix: adj(G) stays finite where G is singular,
+// so d/dt det G = tr(adj(G) G') is smooth through conjugate points.
+double determinant(const Eigen::MatrixXd& a) { return a.size() == 0 ? 1.0 : a.determinant(); }
+Eigen::MatrixXd adjugate(const Eigen::MatrixXd& a) {
+  const Eigen::Index m = a.rows();
+  Eigen::MatrixXd adj(m, m);
+  if (m == 1) {
+    adj(0, 0) = 1.0;
+    return adj;
+  }
+  Eigen::MatrixXd minor(m - 1, m - 1);
+  for (Eigen::Index i = 0; i < m; ++i)
+    for (Eigen::Index j = 0; j < m; ++j) {
+      for (Eigen::Index r = 0, rr = 0; r < m; ++r) {
+        if (r == i) continue;
+        for (Eigen::Index c = 0, cc = 0; c < m; ++c) {
+          if (c == j) continue;
+          minor(rr, cc++) = a(r, c);
+        }
+        ++rr;
+      }
+      adj(j, i) = ((i + j) % 2 ? -1.0 : 1.0) * determinant(minor);
+    }
+  return adj;
+}
+
+}  // namespace
+
+JacobiSystem::JacobiSystem(const Chain& chain, const InitialState& start, double projectBeyond)
+    : motion_(chain, start, projectBeyond),
+      chain_(chain),
+      mass_(ambientMassMatrix(chain)),
+      hinges_(chain.hingeCount()),
+      fields_(chain.rods - 3),
+      solver_(chain) {
+  if (fields_ < 1) throw std::invalid_argument("Jacobi fields need at least 4 rods (a direction across the motion)");
+  if (!mass_.isDiagonal) massFactor_.compute(ChainConstants(chain).stackedMass);
+  start_ = motion_.initialState();
+  const std::size_t block = static_cast<std::size_t>(4 * hinges_);
+  start_.resize(block * static_cast<std::size_t>(fields_ + 1), 0.0);
+  // J_i(0) = 0, J_i'(0) = dPsi(e_i): e_i g-orthonormal and g-orthogonal to the velocity.
+  const std::vector<Eigen::VectorXd> frame = orthonormalTangentFrame(chain, start.spherePoint, start.sphereVelocity);
+  if (static_cast<int>(frame.size()) != fields_ + 1)
+    throw std::invalid_argument("the start's tangent space is degenerate (a chart-free frame was not found)");
+  const Eigen::MatrixXd jacobian = sphereJacobian(chain, start.spherePoint);
+  const ConstHinges q(start_.data(), 2, hinges_);
+  Eigen::Matrix2Xd rods, correction;
+  solver_.rodVectors(q, rods);
+  for (int i = 0; i < fields_; ++i) {
+    Hinges dv(start_.data() + block * static_cast<std::size_t>(i + 1) + 2 * hinges_, 2, hinges_);
+    const Eigen::VectorXd stacked = jacobian * frame[static_cast<std::size_t>(i + 1)];
+    dv = ConstHinges(stacked.data(), 2, hinges_);
+    // Onto the projected motion's tangent space (G dv = 0), as the motion's own velocity was.
+    solver_.solve(q, -rodDots(rods, differences(dv)), correction);
+    dv += correction;
+  }
+}
+
+Eigen::Matrix2Xd JacobiSystem::inverseMassTimes(const Eigen::Matrix2Xd& f) const {
+  if (mass_.isDiagonal) return f * mass_.diagonal.cwiseInverse().asDiagonal();
+  const Eigen::VectorXd x = massFactor_.solve(Eigen::Map<const Eigen::VectorXd>(f.data(), f.size()));
+  return Eigen::Map<const Eigen::Matrix2Xd>(x.data(), 2, f.cols());
+}
+
+void JacobiSystem::derivative(const State& y, State& dydt) const {
+  const Eigen::Index h = hinges_;
+  const std::size_t block = static_cast<std::size_t>(4 * h);
+  dydt.resize(y.size());
+  const ConstHinges q(y.data(), 2, h), v(y.data() + 2 * h, 2, h);
+  // The motion, as AmbientSystem::derivative computes it (the same solve, so the same numbers).
+  const Eigen::Matrix2Xd relative = differences(v);
+  Eigen::Matrix2Xd a;
+  solver_.solve(q, -relative.colwise().squaredNorm().transpose(), a);
+  const Eigen::VectorXd mu = solver_.multipliers();
+  Eigen::Matrix2Xd rods;
+  solver_.rodVectors(q, rods);
+  Hinges(dydt.data(), 2, h) = v;
+  Hinges(dydt.data() + 2 * h, 2, h) = a;
+  const Eigen::Matrix2Xd relativeA = differences(a);
+  Eigen::Matrix2Xd x;
+  for (int i = 0; i < fields_; ++i) {
+    const std::size_t offset = block * static_cast<std::size_t>(i + 1);
+    const ConstHinges dq(y.data() + offset, 2, h), dv(y.data() + offset + 2 * h, 2, h);
+    const Eigen::Matrix2Xd dRods = differences(dq), dRelative = differences(dv);
+    const Eigen::Matrix2Xd first = inverseMassTimes(transposeTimes(dRods, mu));  // M^-1 dG^T mu
+    const Eigen::VectorXd rhs =
+        -2.0 * rodDots(relative, dRelative) - rodDots(dRods, relativeA) - rodDots(rods, differences(first));
+    solver_.solve(q, rhs, x);
+    Hinges(dydt.data() + offset, 2, h) = dv;
+    Hinges(dydt.data() + offset + 2 * h, 2, h) = first + x;
+  }
+}
+
+bool JacobiSystem::settleBetweenSteps(State& y) {
+  if (!motion_.settleBetweenSteps(y)) return false;
+  // The motion was projected back onto the constraints: bring each field back to the linearised constraints
+  // there (G dq = 0, G dv + dG v = 0), M-orthogonally, as the motion's velocity was.
+  const Eigen::Index h = hinges_;
+  const std::size_t block = static_cast<std::size_t>(4 * h);
+  const ConstHinges q(y.data(), 2, h), v(y.data() + 2 * h, 2, h);
+  Eigen::Matrix2Xd rods, correction;
+  solver_.rodVectors(q, rods);
+  const Eigen::Matrix2Xd relative = differences(v);
+  for (int i = 0; i < fields_; ++i) {
+    const std::size_t offset = block * static_cast<std::size_t>(i + 1);
+    Hinges dq(y.data() + offset, 2, h), dv(y.data() + offset + 2 * h, 2, h);
+    solver_.solve(q, -rodDots(rods, differences(dq)), correction);
+    dq += correction;
+    solver_.solve(q, -rodDots(rods, differences(dv)) - rodDots(differences(dq), relative), correction);
+    dv += correction;
+  }
+  return true;
+}
+
+JacobiState JacobiSystem::jacobiAt(const State& y) const {
+  const Eigen::Index h = hinges_;
+  const std::size_t block = static_cast<std::size_t>(4 * h);
+  const ConstHinges v(y.data() + 2 * h, 2, h);
+  const double vv = massInner(mass_, v, v);
+  std::vector<Eigen::Matrix2Xd> fields, rates;
+  for (int i = 0; i < fields_; ++i) {
+    const std::size_t offset = block * static_cast<std::size_t>(i + 1);
+    const Eigen::Matrix2Xd dq = ConstHinges(y.data() + offset, 2, h);
+    fields.push_back(dq - (massInner(mass_, dq, v) / vv) * v);  // the part across the motion
+    rates.push_back(ConstHinges(y.data() + offset + 2 * h, 2, h));
+  }
+  Eigen::MatrixXd gram(fields_, fields_), rate(fields_, fields_);
+  for (int i = 0; i < fields_; ++i)
+    for (int j = 0; j < fields_; ++j) {
+      const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
+      gram(i, j) = massInner(mass_, fields[ui], fields[uj]);
+      // <J_i, J_j>' = <dv_i, J_j> + <J_i, dv_j>: dv's normal part is M-orthogonal to the tangent J's.
+      rate(i, j) = massInner(mass_, rates[ui], fields[uj]) + massInner(mass_, fields[ui], rates[uj]);
+    }
+  JacobiState out;
+  out.gramDeterminant = determinant(gram);
+  out.gramRate = (adjugate(gram) * rate).trace();
+  out.size = std::pow(std::max(out.gramDeterminant, 0.0), 0.5 / fields_);
+  return out;
+}
+
+}  // namespace sl

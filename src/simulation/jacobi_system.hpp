@@ -1,0 +1,62 @@
+#pragma once
+// Jacobi fields along a geodesic of the chart-free method (issue 15; spec section 1's constrained system).
+// A Jacobi field is the variation of a family of geodesics: along the motion (q, v) of AmbientSystem,
+// (dq, dv) solves the linearised equations dq' = dv, dv' = da with, from M a = G^T mu and G a = r(v):
+//   M da = dG^T mu + G^T dmu,   G da = dr - dG a,   dr_k = -2 (V_k . dV_k)
+// (D_k the rod vectors, V_k the relative velocities, dD_k and dV_k theirs for dq and dv), i.e.
+//   da = M^-1 dG^T mu + x,  x = M^-1 G^T nu with G x = dr - dG a - G M^-1 dG^T mu,
+// two solves of the same O(n) constraint system as the motion itself. The derivatives are exact (analytic):
+// no finite difference anywhere.
+//
+// For n rods the orthogonal complement of the velocity in the tangent space has m = n - 3 dimensions: the
+// state carries m fields J_i with J_i(0) = 0 and J_i'(0) = e_i, a g-orthonormal basis of it (for 4 rods one
+// field, for 5+ a matrix Jacobi field). Their Gram matrix G_ij = <J_i, J_j> (mass inner product) measures the
+// family's spread: conjugate points are the times t > 0 where it is singular.
+
+#include <vector>
+
+#include "contracts/run_config.hpp"
+#include "linkage/chain.hpp"
+#include "simulation/ambient_system.hpp"
+
+namespace sl {
+
+// What a Jacobi field is at one time.
+struct JacobiState {
+  // (det G)^(1/(2m)): |J_perp| for 4 rods (the orthogonal part of the field), the geometric mean of the
+  // singular values of the matrix field for 5+; zero exactly at conjugate points.
+  double size = 0;
+  double gramDeterminant = 0;  // det G
+  double gramRate = 0;         // d/dt det G: changes sign at each zero of det G (and at its maxima)
+};
+
+class JacobiSystem : public GeodesicSystem {
+ public:
+  // Throws std::invalid_argument for fewer than 4 rods (no direction orthogonal to the motion).
+  JacobiSystem(const Chain& chain, const InitialState& start, double projectBeyond);
+
+  State initialState() const override { return start_; }
+  void derivative(const State& y, State& dydt) const override;
+  bool settleBetweenSteps(State& y) override;
+  PhysicalState physicalState(const State& y) const override { return motion_.physicalState(y); }
+  StepInvariants stepInvariants(const State& y, double previousT) const override {
+    return motion_.stepInvariants(y, previousT);
+  }
+  std::string describe(const State& y) const override { return motion_.describe(y); }
+
+  int fieldCount() const { return fields_; }
+  JacobiState jacobiAt(const State& y) const;
+
+ private:
+  Eigen::Matrix2Xd inverseMassTimes(const Eigen::Matrix2Xd& f) const;
+
+  AmbientSystem motion_;  // the geodesic: the first 4(n-1) numbers of the state
+  Chain chain_;
+  AmbientMassMatrix mass_;
+  Eigen::LDLT<Eigen::MatrixXd> massFactor_;  // for M^-1 when the rods have mass
+  int hinges_, fields_;
+  State start_;
+  mutable ConstraintSolver solver_;
+};
+
+}  // namespace sl
