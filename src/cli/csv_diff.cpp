@@ -1,6 +1,7 @@
 #include "cli/csv_diff.hpp"
 
 #include <cmath>
+#include <algorithm>
 #include <map>
 #include <ostream>
 
@@ -10,9 +11,15 @@ namespace {
 
 using Row = TrajectoryCsv::Row;
 
+// Rows by run; a family's members (the optional member column, trajectory_csv.hpp) each count as a run of their
+// own, "name [member k]".
 std::map<std::string, std::vector<const Row*>> rowsByRun(const TrajectoryCsv& csv) {
   std::map<std::string, std::vector<const Row*>> runs;
-  for (const Row& row : csv.rows) runs[row.run].push_back(&row);
+  const int member = csv.valueIndex("member");
+  for (const Row& row : csv.rows) {
+    const double k = member < 0 ? 0.0 : row.values[size_t(member)];
+    runs[k > 0 ? row.run + " [member " + std::to_string(long(k)) + "]" : row.run].push_back(&row);
+  }
   return runs;
 }
 
@@ -47,26 +54,26 @@ double hingeDistance(const Row& a, const Row& b, const std::vector<std::pair<int
 
 RunDifference compareRun(const std::string& name, const std::vector<const Row*>& before,
                          const std::vector<const Row*>& after, const std::vector<std::pair<int, int>>& columns,
-                         double tolerance) {
+                         std::size_t time, double tolerance) {
   RunDifference result;
   result.run = name;
   const size_t common = std::min(before.size(), after.size());
   for (size_t i = 0; i < common; ++i) {
     const Row& a = *before[i];
     const Row& b = *after[i];
-    if (!same(a.values[0], b.values[0])) {
+    if (!same(a.values[time], b.values[time])) {
       result.structure = "sample times differ from row " + std::to_string(i + 1) + " of the run on";
       return result;
     }
     const double distance = hingeDistance(a, b, columns);
     if (distance > result.worstDistance) {
       result.worstDistance = distance;
-      result.worstTime = a.values[0];
+      result.worstTime = a.values[time];
     }
-    if (distance > tolerance && !result.firstExceedsAt) result.firstExceedsAt = a.values[0];
+    if (distance > tolerance && !result.firstExceedsAt) result.firstExceedsAt = a.values[time];
     if (a.status != b.status) {
       result.structure =
-          "status at t = " + std::to_string(a.values[0]) + ": \"" + a.status + "\" vs \"" + b.status + "\"";
+          "status at t = " + std::to_string(a.values[time]) + ": \"" + a.status + "\" vs \"" + b.status + "\"";
       return result;
     }
   }
@@ -86,6 +93,7 @@ std::vector<RunDifference> compareTrajectories(const TrajectoryCsv& before, cons
     return differences;
   }
   const auto columns = hingeColumns(before);
+  const std::size_t time = static_cast<std::size_t>(std::max(0, before.valueIndex("time")));
   const auto runsBefore = rowsByRun(before), runsAfter = rowsByRun(after);
   for (const auto& [name, rows] : runsBefore) {
     const auto other = runsAfter.find(name);
@@ -93,7 +101,7 @@ std::vector<RunDifference> compareTrajectories(const TrajectoryCsv& before, cons
       differences.push_back({name, 0, 0, std::nullopt, "missing from the second file"});
       continue;
     }
-    differences.push_back(compareRun(name, rows, other->second, columns, tolerance));
+    differences.push_back(compareRun(name, rows, other->second, columns, time, tolerance));
   }
   for (const auto& [name, rows] : runsAfter) {
     if (!runsBefore.count(name)) differences.push_back({name, 0, 0, std::nullopt, "missing from the first file"});

@@ -23,6 +23,7 @@
 #include "contracts/time_grid.hpp"
 #include "output/atomic_file.hpp"
 #include "scene/output_folder.hpp"
+#include "contracts/csv_format.hpp"
 #include "simulation/trajectory_csv.hpp"
 
 namespace sl {
@@ -32,7 +33,8 @@ namespace {
 struct SimulateArguments {
   std::vector<std::string> overrides;  // --set KEY=VALUE
   std::string scene;
-  std::string csv;  // empty: stdout
+  std::string csv;     // empty: stdout
+  std::string events;  // --events: run,member,event,time rows (conjugate points and stops)
   double dt = 0;    // 0: the frame times k / fps
   bool quiet = false;
 };
@@ -73,14 +75,15 @@ class CsvOutput {
 // Rows in chunks, each written out at once: memory stays bounded whatever the duration, the sampling and the
 // number of runs. A run that stops ends with one row at its stop time whose status is the reason
 // (trajectory_csv.hpp); nothing follows it. SIGINT/SIGTERM are noticed within one integration step.
-void writeRun(CsvOutput& out, const std::string& name, Trajectory& trajectory, const std::vector<double>& times) {
+void writeRun(CsvOutput& out, const std::string& name, Trajectory& trajectory, const std::vector<double>& times,
+              const TrajectoryCsvLayout& layout, int member) {
   const size_t chunk = 256;
   for (size_t first = 0; first < times.size(); first += chunk) {
     stopIfInterrupted(out.whatWasWritten().c_str());
     const std::vector<double> part(times.begin() + first, times.begin() + std::min(times.size(), first + chunk));
     std::ostringstream rows;
     try {
-      writeTrajectoryCsv(rows, name, trajectory, part, false);
+      writeTrajectoryCsv(rows, name, trajectory, part, false, layout, member);
     } catch (const RunCancelled&) {
       stopIfInterrupted(out.whatWasWritten().c_str());
       throw;
@@ -100,25 +103,57 @@ void runSimulate(const SimulateArguments& args) {
   } catch (const std::invalid_argument& error) {
     throw CommandExit(kExitBadInput, "--dt: " + std::string(error.what()));
   }
-  if (!args.csv.empty()) {
-    // Checked before any work, like render's outputs: a writable place that is not a folder or a device.
+  // Checked before any work, like render's outputs: a writable place that is not a folder or a device.
+  for (const auto& [option, path] : {std::pair{"--csv", args.csv}, std::pair{"--events", args.events}}) {
+    if (path.empty()) continue;
     std::vector<SceneProblem> problems;
     try {
-      output::outputTarget(args.csv);
+      output::outputTarget(path);
     } catch (const std::invalid_argument& error) {
-      problems.push_back({"--csv", error.what()});
+      problems.push_back({option, error.what()});
     }
-    const std::filesystem::path parent = std::filesystem::path(args.csv).parent_path();
-    for (SceneProblem& problem : checkOutputFolder(parent.empty() ? "." : parent.string(), "--csv"))
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    for (SceneProblem& problem : checkOutputFolder(parent.empty() ? "." : parent.string(), option))
       problems.push_back(problem);
     failOnProblems(args.scene, problems);
     if (!parent.empty()) std::filesystem::create_directories(parent);
   }
-  std::vector<Trajectory> runs = startRuns(scene, runStarts(scene));
+  const std::vector<InitialState> starts = runStarts(scene);
+  std::vector<Trajectory> runs = startRuns(scene, starts);
+  std::vector<std::vector<Trajectory>> families = startFamilies(scene, starts);
+  TrajectoryCsvLayout layout{scene.chain.rods, false, false};
+  for (const RunSpec& run : scene.runs) {
+    layout.memberColumn = layout.memberColumn || run.family.has_value();
+    layout.jacobiColumn = layout.jacobiColumn || run.config.jacobi;
+  }
   CsvOutput out(args.csv);
-  out.write(trajectoryCsvHeader(scene.chain.rods) + "\n");
-  for (size_t i = 0; i < runs.size(); ++i) writeRun(out, scene.runs[i].name, runs[i], times);
+  out.write(trajectoryCsvHeader(layout) + "\n");
+  // Each run, then its family's members, one row group each.
+  for (size_t i = 0; i < runs.size(); ++i) {
+    writeRun(out, scene.runs[i].name, runs[i], times, layout, 0);
+    for (size_t m = 0; m < families[i].size(); ++m)
+      writeRun(out, scene.runs[i].name, families[i][m], times, layout, static_cast<int>(m + 1));
+  }
   out.finish();
+  if (!args.events.empty()) {
+    // Every event up to the last time written: conjugate points (runs with Jacobi fields), then stops.
+    const double last = times.empty() ? 0.0 : times.back();
+    std::string text = "run,member,event,time\n";
+    auto add = [&](const std::string& run, size_t member, const std::string& event, double time) {
+      text += csvField(run) + "," + std::to_string(member) + "," + event + ",";
+      appendShortest(text, time);
+      text += "\n";
+    };
+    for (size_t i = 0; i < runs.size(); ++i) {
+      for (size_t m = 0; m <= families[i].size(); ++m) {
+        const Trajectory& run = m == 0 ? runs[i] : families[i][m - 1];
+        for (const double t : run.conjugateTimes())
+          if (t <= last) add(scene.runs[i].name, m, "conjugate-point", t);
+        if (run.stop() && run.stop()->time <= last) add(scene.runs[i].name, m, nameOf(run.stop()->reason), run.stop()->time);
+      }
+    }
+    output::writeFileAtomically(args.events, text);
+  }
   reportStops(scene, runs, args.quiet);
   summary.print(std::to_string(runs.size()) + " run" + (runs.size() == 1 ? "" : "s") + " x " +
                     std::to_string(times.size()) + " times -> " + (args.csv.empty() ? "standard output" : args.csv),
@@ -134,12 +169,16 @@ void addSimulateCommand(CLI::App& app) {
   command->add_option("scene", args->scene, "scene file (JSON, see scenes/README.md)")->required();
   addSceneOverrideOption(*command, args->overrides);
   command->add_option("--csv", args->csv, "write the CSV here instead of stdout (written whole or not at all)");
+  command->add_option("--events", args->events,
+                      "write run,member,event,time rows: conjugate points (runs with \"jacobi\": true) and stops");
   command->add_option("--dt", args->dt, "sample every DT time units (default: the frame times k / fps)")
       ->check(finitePositive());
   command->add_flag("--quiet", args->quiet, "errors only: no run reports or summary line");
   command->footer(
       "Columns: run,time,phi,t,phidot,tdot,energy,p1x,p1y,...,status (4 rods; chart coordinates c1.. and rates v1..\n"
       "for other n). A run that stops ends with one row at its stop time whose status is the reason.\n"
+      "Scenes with families add a member column after run (0: the run, 1..: its members, a row group each);\n"
+      "scenes with Jacobi fields add a jacobi column before status (|J_perp|; empty for runs without).\n"
       "Run names are quoted as RFC 4180 says when they hold a comma, a quote or a line break.\n"
       "Example: linkage simulate scenes/comparison.json --dt 0.01 --csv renders/comparison.csv");
   command->callback([args] { runSimulate(*args); });

@@ -51,6 +51,10 @@ struct RunFrame {
   std::vector<double> pathTimes;
   Vec3 current;
 
+  // Conjugate points reached so far (runs with "jacobi": true): their times and places on the sphere path.
+  std::vector<double> conjugateTimes;
+  std::vector<Vec3> conjugatePoints;
+
   // The run's family, in member order (the wavefront joins their current points in this order); empty if none.
   std::vector<MemberFrame> members;
 };
@@ -61,6 +65,7 @@ struct PlotSeries {
   ColorRGB color;
   std::vector<double> times;
   std::vector<double> values;  // non-finite or non-positive values on a log axis are skipped, never drawn
+  std::vector<double> markTimes;  // times marked on the time axis (a Jacobi field's zeros: conjugate points)
 };
 
 // Where a plot's legend goes: the corner its data leaves emptiest over the whole animation.

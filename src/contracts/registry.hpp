@@ -100,10 +100,11 @@ inline constexpr std::array<Named<PanelKind>, 4> kPanelKinds{{
     {PanelKind::Text, "text"},
 }};
 
-enum class PlotKind { Divergence, EnergyError };
-inline constexpr std::array<Named<PlotKind>, 2> kPlotKinds{{
+enum class PlotKind { Divergence, EnergyError, Jacobi };
+inline constexpr std::array<Named<PlotKind>, 3> kPlotKinds{{
     {PlotKind::Divergence, "divergence"},
     {PlotKind::EnergyError, "energy"},
+    {PlotKind::Jacobi, "jacobi"},  // |J_perp| of the runs with "jacobi": true, their conjugate points marked
 }};
 
 enum class LinkageLayout { SingleRun, SideBySide, Overlay };

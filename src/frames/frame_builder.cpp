@@ -48,6 +48,17 @@ void thinOut(std::vector<T>& points, std::vector<double>& times) {
   times.resize(kept);
 }
 
+// The path's point at time t (times increasing), linearly between the samples around it.
+Vec3 pointAtTime(const std::vector<Vec3>& path, const std::vector<double>& times, double t) {
+  const auto after = std::lower_bound(times.begin(), times.end(), t);
+  if (after == times.end()) return path.back();
+  const std::size_t i = static_cast<std::size_t>(after - times.begin());
+  if (i == 0 || times[i] == times[i - 1]) return path[i];
+  const double u = (t - times[i - 1]) / (times[i] - times[i - 1]);
+  const Vec3 &a = path[i - 1], &b = path[i];
+  return {a.x + u * (b.x - a.x), a.y + u * (b.y - a.y), a.z + u * (b.z - a.z)};
+}
+
 }  // namespace
 
 ColorRGB runColor(const Scene& scene, size_t run) {
@@ -153,12 +164,19 @@ void FrameBuilder::sampleRunAt(size_t run, double t, bool isFrameTime) {
   frame.current = view_.project(sample->spherePoint);
   frame.path.push_back(frame.current);
   frame.pathTimes.push_back(t);
+  // Conjugate points up to t, placed on the path between the samples around them.
+  for (const double conjugate : runs_[run].conjugateTimes()) {
+    if (conjugate > t || (!frame.conjugateTimes.empty() && conjugate <= frame.conjugateTimes.back())) continue;
+    frame.conjugateTimes.push_back(conjugate);
+    frame.conjugatePoints.push_back(pointAtTime(frame.path, frame.pathTimes, conjugate));
+  }
   fadeOut(frame.path, frame.pathTimes, t, scene_.view.pathFadeSeconds);
   thinOut(frame.path, frame.pathTimes);
   if (!isFrameTime) return;
   frame.hinges = hingeList(sample->hinges);
   history.hingesAtFrame = sample->hinges;
   history.energyErrors.push_back(std::abs(sample->relativeEnergyDrift));
+  history.jacobiSizes.push_back(sample->jacobi.value_or(kNaN));
   // Trails keep one point per frame, for as long as they are visible.
   const size_t kept = static_cast<size_t>(std::ceil(scene_.view.trailFadeSeconds * scene_.output.fps)) + 1;
   for (size_t i = 0; i < scene_.view.trailHinges.size(); ++i) {
@@ -179,6 +197,7 @@ void FrameBuilder::recordPlots(int k) {
   }
   for (RunHistory& history : history_) {
     if (history.energyErrors.size() < plotTimes_.size()) history.energyErrors.push_back(kNaN);
+    if (history.jacobiSizes.size() < plotTimes_.size()) history.jacobiSizes.push_back(kNaN);
   }
 }
 
@@ -203,12 +222,19 @@ FrameState FrameBuilder::snapshot(int k) const {
     if (spec.kind == PlotKind::Divergence) {
       plot.title = "divergence from " + scene_.runs[0].name + " (max hinge distance)";
       for (size_t run = 1; run < runs_.size(); ++run) {
-        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), plotTimes_, divergence_[run - 1]});
+        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), plotTimes_, divergence_[run - 1], {}});
+      }
+    } else if (spec.kind == PlotKind::Jacobi) {
+      plot.title = "Jacobi field across the motion |J_perp| (zeros: conjugate points)";
+      for (size_t run = 0; run < runs_.size(); ++run) {
+        if (!scene_.runs[run].config.jacobi) continue;
+        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), plotTimes_, history_[run].jacobiSizes,
+                               history_[run].frame.conjugateTimes});
       }
     } else {
       plot.title = "relative energy error |E - E0| / E0";
       for (size_t run = 0; run < runs_.size(); ++run) {
-        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), plotTimes_, history_[run].energyErrors});
+        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), plotTimes_, history_[run].energyErrors, {}});
       }
     }
     state.plots.push_back(std::move(plot));

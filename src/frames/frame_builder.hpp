@@ -40,6 +40,7 @@ class FrameBuilder {
     RunFrame frame;                    // the latest state and the path, trails so far
     Eigen::Matrix2Xd hingesAtFrame;    // for the divergence plot; no columns once stopped
     std::vector<double> energyErrors;  // one per frame while running
+    std::vector<double> jacobiSizes;   // one per frame while running (runs with Jacobi fields; else NaN)
   };
 
   void sampleFrame(int k);  // advance the history to frame k (k = sampled_ + 1)

@@ -50,7 +50,7 @@ std::vector<PlotOverview> overviewPlots(const Scene& scene, const std::vector<In
   // Per frame: each run's divergence from run 0 (index 0 unused) and its energy error; NaN where not defined.
   const int frames = scene.frameCount();
   const double nan = std::nan("");
-  std::vector<std::vector<double>> divergence(runCount), energy(runCount);
+  std::vector<std::vector<double>> divergence(runCount), energy(runCount), jacobi(runCount);
   std::vector<bool> stopped(runCount, false);
   for (int k = 0; k < frames; ++k) {
     const double t = scene.frameTime(k);
@@ -59,6 +59,7 @@ std::vector<PlotOverview> overviewPlots(const Scene& scene, const std::vector<In
       if (!stopped[r]) samples[r] = runs[r].sampleAt(t);
       stopped[r] = stopped[r] || !samples[r];
       energy[r].push_back(samples[r] ? std::abs(samples[r]->relativeEnergyDrift) : nan);
+      jacobi[r].push_back(samples[r] ? samples[r]->jacobi.value_or(nan) : nan);
       divergence[r].push_back(r > 0 && samples[0] && samples[r] ? hingeDistance(samples[0]->hinges, samples[r]->hinges)
                                                                  : nan);
     }
@@ -67,7 +68,7 @@ std::vector<PlotOverview> overviewPlots(const Scene& scene, const std::vector<In
   std::vector<PlotOverview> overviews;
   for (const PlotSpec& spec : plots) {
     const bool isDivergence = spec.kind == PlotKind::Divergence;
-    const auto& values = isDivergence ? divergence : energy;
+    const auto& values = isDivergence ? divergence : spec.kind == PlotKind::Jacobi ? jacobi : energy;
     double lo = INFINITY, hi = -INFINITY;
     for (std::size_t r = isDivergence ? 1 : 0; r < runCount; ++r)
       for (double v : values[r])
@@ -101,7 +102,11 @@ std::vector<PlotOverview> overviewPlots(const Scene& scene, const std::vector<In
           points.push_back({u, y});
         }
       }
-      const double series = static_cast<double>(isDivergence ? runCount - 1 : runCount);
+      const double series = static_cast<double>(
+          isDivergence ? runCount - 1
+          : spec.kind == PlotKind::Jacobi
+              ? std::count_if(scene.runs.begin(), scene.runs.end(), [](const RunSpec& run) { return run.config.jacobi; })
+              : runCount);
       overview.legendCorner = emptiestCorner(points, 0.4, std::min(0.6, 0.12 * series + 0.06));
     }
     overviews.push_back(std::move(overview));

@@ -135,6 +135,14 @@ void drawSeries(const PlotSeries& series, const Axis& x, const Axis& y, const Pl
   }
   if (points.size() == 1) batch.disc(points[0].at, 1.6f, points[0].color);
   batch.polyline(points);
+  // Marked times (a Jacobi field's zeros): a ring on the time axis and a faint line up through the plot.
+  for (const double t : series.markTimes) {
+    if (!std::isfinite(t) || t < x.lo || t > x.hi) continue;
+    const P2 foot = area.at(unit(x, t), 0), top = area.at(unit(x, t), 1);
+    batch.capsule(foot, top, 0.6f, toRgba(series.color, 0.45f));
+    batch.disc(foot, 3.2f, toRgba(series.color));
+    batch.disc(foot, 1.6f, palette::withAlpha(palette::gridLight, 1.0f));
+  }
 }
 
 // In the corner the data leaves emptiest over the whole animation (PlotFrame::legendCorner), on a veil of the

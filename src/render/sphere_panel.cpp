@@ -122,6 +122,23 @@ void drawBall(const RunFrame& run, const SphereCamera& camera, const Placement& 
   batch.disc(at, radius, toRgba(run.color), true, 0.55f, world, radius / pixelsPerUnit);
 }
 
+// Conjugate points on the path (runs with Jacobi fields): an ink ring around a dot of the run's colour, where
+// the geodesics leaving the start together meet again.
+void drawConjugatePoints(const RunFrame& run, const SphereCamera& camera, const Placement& placement,
+                         ShapeBatch& batch) {
+  Placement markPlacement = placement;
+  markPlacement.lift = 1.5 * kTubeRadius;
+  for (const Vec3& point : run.conjugatePoints) {
+    const V3 p = markPlacement.place(point);
+    if (!drawable(point) || !camera.inFront(p)) continue;
+    const float pixelsPerUnit = float(camera.pixelsPerUnitAt(p));
+    const float radius = std::max(3.0f, 0.7f * float(kBallRadius) * pixelsPerUnit);
+    const Occludable world = markPlacement.world(p);
+    batch.disc(camera.project(p), radius, palette::ink, false, 0, world, radius / pixelsPerUnit);
+    batch.disc(camera.project(p), 0.6f * radius, toRgba(run.color), true, 0.3f, world, 0.6f * radius / pixelsPerUnit);
+  }
+}
+
 // 3 rods: the configuration circle, the equator.
 void drawEquator(const SphereCamera& camera, ShapeBatch& batch) {
   std::vector<PolylinePoint> points;
@@ -197,6 +214,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   for (const RunFrame& run : context.frame.runs)
     drawPath(run.path, run.pathTimes, toRgba(run.color), kTubeRadius, 1.0f, context, camera, placement,
              throughAntipode, batch);
+  for (const RunFrame& run : context.frame.runs) drawConjugatePoints(run, camera, placement, batch);
   for (const RunFrame& run : context.frame.runs) drawBall(run, camera, placement, batch);
   const SphereLook look = colored ? SphereLook::Colored : space == ViewSpace::Sphere ? SphereLook::Opaque : SphereLook::Glass;
   return {camera, look};

@@ -17,6 +17,15 @@ std::string format(const char* pattern, double value) {
 
 std::string runLine(const RunFrame& run) {
   std::string line = run.name + "  (" + run.method + ")";
+  if (!run.members.empty()) line += "  + " + std::to_string(run.members.size()) + " members";
+  // Conjugate points reached so far (runs with Jacobi fields), the latest few.
+  if (!run.conjugateTimes.empty()) {
+    line += "  conjugate at t =";
+    const std::size_t first = run.conjugateTimes.size() > 3 ? run.conjugateTimes.size() - 3 : 0;
+    if (first > 0) line += " ...";
+    for (std::size_t i = first; i < run.conjugateTimes.size(); ++i)
+      line += (i > first ? ", " : " ") + format("%.4f", run.conjugateTimes[i]);
+  }
   return line;
 }
 

@@ -245,7 +245,7 @@ std::optional<ColorRGB> readColor(const JsonObject& object, const std::string& k
 RunSpec readRun(const json& value, const std::string& path, const Scene& scene, std::vector<SceneProblem>& problems) {
   const JsonObject run(value, path, problems,
                        {"name", "method", "integrator", "tolerance", "step", "color", "watchdog", "linkage", "initial",
-                        "family"});
+                        "family", "jacobi"});
   RunSpec spec;
   spec.name = run.string("name", true).value_or("");
   if (run.has("name") && spec.name.empty()) run.report("name", "is empty; expected a name shown in the panels");
@@ -306,6 +306,12 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
   spec.color = readColor(run, "color");
   if (run.has("watchdog")) readWatchdog(run, spec.config, problems);
   if (run.has("family")) spec.family = readFamily(run, scene.chain.rods, problems);
+  spec.config.jacobi = run.boolean("jacobi").value_or(false);
+  if (spec.config.jacobi && spec.config.method != Method::Ambient)
+    run.report("jacobi", "needs the ambient method (its linearisation gives the Jacobi fields); found \"" +
+                             nameOf(spec.config.method) + "\"");
+  if (spec.config.jacobi && scene.chain.rods < 4)
+    run.report("jacobi", "needs 4 or more rods (3 rods have no direction across the motion)");
   return spec;
 }
 

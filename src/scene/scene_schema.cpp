@@ -88,6 +88,7 @@ json runSchema() {
                                   {"max_steps", positive("bound on the work of a run")}},
                                  "limits that stop a run")},
        {"linkage", linkageSchema(true)},
+       {"jacobi", flag("carry the Jacobi fields and find conjugate points (ambient method)")},
        {"family", closedObject({{"kind", oneOfNames(kFamilyKinds, "fan, parallel or cloud")},
                                 {"count", integer(2, limits::kMaxFamilyMembers, "members beside the run")},
                                 {"spread", {{"type", "number"},

@@ -45,6 +45,7 @@ void addPanel(const json& value, const std::string& path, Scene& scene, std::vec
       kind = pickKind(object.pathOf("panel"), *name, kPanelKinds, problems);
     if (const auto name = object.string("plot")) {
       if (const auto plotKind = pickKind(object.pathOf("plot"), *name, kPlotKinds, problems)) plot.kind = *plotKind;
+      plot.logY = plot.kind != PlotKind::Jacobi;  // a Jacobi field's zeros need a linear axis
     }
     if (const auto scale = object.string("scale")) {
       plot.logY = pickKind(object.pathOf("scale"), *scale, kPlotScales, problems).value_or(true);
@@ -74,6 +75,10 @@ void addPanel(const json& value, const std::string& path, Scene& scene, std::vec
       problems.push_back({path, "a divergence plot compares runs; expected at least 2 runs, found " +
                                     std::to_string(scene.runs.size())});
     }
+    const bool anyJacobi =
+        std::any_of(scene.runs.begin(), scene.runs.end(), [](const RunSpec& run) { return run.config.jacobi; });
+    if (plot.kind == PlotKind::Jacobi && !anyJacobi)
+      problems.push_back({path, "a jacobi plot shows Jacobi fields; expected a run with \"jacobi\": true"});
     panel.plotIndex = static_cast<int>(scene.view.plots.size());
     scene.view.plots.push_back(plot);
   }

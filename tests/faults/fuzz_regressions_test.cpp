@@ -53,7 +53,8 @@ TEST(FuzzDictionary, HoldsEveryNameOfTheRegistry) {
   ASSERT_FALSE(dictionary.empty());
   std::vector<std::string> names;
   for (const std::vector<std::string>& table :
-       {namesOf(kMethods), namesOf(kIntegrators), namesOf(kPanelKinds), namesOf(kPlotKinds), namesOf(kLinkageLayouts)})
+       {namesOf(kMethods), namesOf(kIntegrators), namesOf(kPanelKinds), namesOf(kPlotKinds), namesOf(kLinkageLayouts),
+        namesOf(kFamilyKinds)})
     names.insert(names.end(), table.begin(), table.end());
   for (const std::string& name : names) {
     EXPECT_NE(dictionary.find("\"\\\"" + name + "\\\"\"\n"), std::string::npos) << name << " is not in fuzz/scene.dict";
