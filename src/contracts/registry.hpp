@@ -100,11 +100,12 @@ inline constexpr std::array<Named<PanelKind>, 4> kPanelKinds{{
     {PanelKind::Text, "text"},
 }};
 
-enum class PlotKind { Divergence, EnergyError, Jacobi };
-inline constexpr std::array<Named<PlotKind>, 3> kPlotKinds{{
+enum class PlotKind { Divergence, EnergyError, Jacobi, Spread };
+inline constexpr std::array<Named<PlotKind>, 4> kPlotKinds{{
     {PlotKind::Divergence, "divergence"},
     {PlotKind::EnergyError, "energy"},
     {PlotKind::Jacobi, "jacobi"},  // |J_perp| of the runs with "jacobi": true, their conjugate points marked
+    {PlotKind::Spread, "spread"},  // how far each run's family strays from it (max hinge distance)
 }};
 
 enum class LinkageLayout { SingleRun, SideBySide, Overlay };

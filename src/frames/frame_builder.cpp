@@ -198,6 +198,17 @@ void FrameBuilder::recordPlots(int k) {
   for (RunHistory& history : history_) {
     if (history.energyErrors.size() < plotTimes_.size()) history.energyErrors.push_back(kNaN);
     if (history.jacobiSizes.size() < plotTimes_.size()) history.jacobiSizes.push_back(kNaN);
+    // Spread: members still moving against the run, while it moves (plot_overview.cpp computes the same).
+    double spread = kNaN;
+    for (const MemberFrame& member : history.frame.members) {
+      if (member.stopped || history.hingesAtFrame.size() == 0) continue;
+      Eigen::Matrix2Xd hinges(2, static_cast<Eigen::Index>(member.hinges.size()));
+      for (std::size_t j = 0; j < member.hinges.size(); ++j)
+        hinges.col(static_cast<Eigen::Index>(j)) = Eigen::Vector2d(member.hinges[j].x, member.hinges[j].y);
+      const double distance = hingeDistance(history.hingesAtFrame, hinges);
+      spread = std::isnan(spread) ? distance : std::max(spread, distance);
+    }
+    history.spreads.push_back(spread);
   }
 }
 
@@ -223,6 +234,12 @@ FrameState FrameBuilder::snapshot(int k) const {
       plot.title = "divergence from " + scene_.runs[0].name + " (max hinge distance)";
       for (size_t run = 1; run < runs_.size(); ++run) {
         plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), plotTimes_, divergence_[run - 1], {}});
+      }
+    } else if (spec.kind == PlotKind::Spread) {
+      plot.title = "spread of the family (largest hinge distance from the run)";
+      for (size_t run = 0; run < runs_.size(); ++run) {
+        if (!scene_.runs[run].family) continue;
+        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), plotTimes_, history_[run].spreads, {}});
       }
     } else if (spec.kind == PlotKind::Jacobi) {
       plot.title = "Jacobi field across the motion |J_perp| (zeros: conjugate points)";

@@ -41,6 +41,7 @@ class FrameBuilder {
     Eigen::Matrix2Xd hingesAtFrame;    // for the divergence plot; no columns once stopped
     std::vector<double> energyErrors;  // one per frame while running
     std::vector<double> jacobiSizes;   // one per frame while running (runs with Jacobi fields; else NaN)
+    std::vector<double> spreads;       // one per frame: the family's largest hinge distance from the run
   };
 
   void sampleFrame(int k);  // advance the history to frame k (k = sampled_ + 1)

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "frames/parallel_for.hpp"
 #include "linkage/chain.hpp"
+#include "simulation/family.hpp"
 #include "simulation/trajectory.hpp"
 
 namespace sl {
@@ -50,8 +52,23 @@ std::vector<PlotOverview> overviewPlots(const Scene& scene, const std::vector<In
   // Per frame: each run's divergence from run 0 (index 0 unused) and its energy error; NaN where not defined.
   const int frames = scene.frameCount();
   const double nan = std::nan("");
-  std::vector<std::vector<double>> divergence(runCount), energy(runCount), jacobi(runCount);
+  std::vector<std::vector<double>> divergence(runCount), energy(runCount), jacobi(runCount), spread(runCount);
   std::vector<bool> stopped(runCount, false);
+  // The families, only if a spread plot shows them.
+  const bool wantSpread =
+      std::any_of(plots.begin(), plots.end(), [](const PlotSpec& plot) { return plot.kind == PlotKind::Spread; });
+  std::vector<std::vector<Trajectory>> members(runCount);
+  std::vector<std::pair<std::size_t, std::size_t>> memberJobs;
+  for (std::size_t r = 0; r < runCount && wantSpread; ++r) {
+    if (!scene.runs[r].family) continue;
+    const RunSpec& run = scene.runs[r];
+    for (const InitialState& member : familyStarts(run.chain, starts.at(r), *run.family, run.config)) {
+      members[r].emplace_back(run.chain, member, run.config);
+      members[r].back().setCancellation(cancelled);
+      memberJobs.emplace_back(r, members[r].size() - 1);
+    }
+  }
+  std::vector<std::optional<Sample>> memberSamples(memberJobs.size());
   for (int k = 0; k < frames; ++k) {
     const double t = scene.frameTime(k);
     std::vector<std::optional<Sample>> samples(runCount);
@@ -63,12 +80,26 @@ std::vector<PlotOverview> overviewPlots(const Scene& scene, const std::vector<In
       divergence[r].push_back(r > 0 && samples[0] && samples[r] ? hingeDistance(samples[0]->hinges, samples[r]->hinges)
                                                                  : nan);
     }
+    parallelFor(memberJobs.size(), [&](std::size_t j) {
+      const auto [r, m] = memberJobs[j];
+      if (k == 0 || memberSamples[j]) memberSamples[j] = members[r][m].sampleAt(t);  // a stopped member stays out
+    });
+    for (std::size_t r = 0; r < runCount; ++r) spread[r].push_back(nan);
+    for (std::size_t j = 0; j < memberJobs.size(); ++j) {
+      const std::size_t r = memberJobs[j].first;
+      if (!samples[r] || !memberSamples[j]) continue;
+      const double distance = hingeDistance(samples[r]->hinges, memberSamples[j]->hinges);
+      spread[r].back() = std::isnan(spread[r].back()) ? distance : std::max(spread[r].back(), distance);
+    }
   }
 
   std::vector<PlotOverview> overviews;
   for (const PlotSpec& spec : plots) {
     const bool isDivergence = spec.kind == PlotKind::Divergence;
-    const auto& values = isDivergence ? divergence : spec.kind == PlotKind::Jacobi ? jacobi : energy;
+    const auto& values = isDivergence                     ? divergence
+                         : spec.kind == PlotKind::Jacobi ? jacobi
+                         : spec.kind == PlotKind::Spread ? spread
+                                                         : energy;
     double lo = INFINITY, hi = -INFINITY;
     for (std::size_t r = isDivergence ? 1 : 0; r < runCount; ++r)
       for (double v : values[r])
@@ -106,6 +137,8 @@ std::vector<PlotOverview> overviewPlots(const Scene& scene, const std::vector<In
           isDivergence ? runCount - 1
           : spec.kind == PlotKind::Jacobi
               ? std::count_if(scene.runs.begin(), scene.runs.end(), [](const RunSpec& run) { return run.config.jacobi; })
+          : spec.kind == PlotKind::Spread
+              ? std::count_if(scene.runs.begin(), scene.runs.end(), [](const RunSpec& run) { return run.family.has_value(); })
               : runCount);
       overview.legendCorner = emptiestCorner(points, 0.4, std::min(0.6, 0.12 * series + 0.06));
     }

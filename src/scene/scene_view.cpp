@@ -79,6 +79,10 @@ void addPanel(const json& value, const std::string& path, Scene& scene, std::vec
         std::any_of(scene.runs.begin(), scene.runs.end(), [](const RunSpec& run) { return run.config.jacobi; });
     if (plot.kind == PlotKind::Jacobi && !anyJacobi)
       problems.push_back({path, "a jacobi plot shows Jacobi fields; expected a run with \"jacobi\": true"});
+    const bool anyFamily =
+        std::any_of(scene.runs.begin(), scene.runs.end(), [](const RunSpec& run) { return run.family.has_value(); });
+    if (plot.kind == PlotKind::Spread && !anyFamily)
+      problems.push_back({path, "a spread plot shows how families spread; expected a run with a \"family\""});
     panel.plotIndex = static_cast<int>(scene.view.plots.size());
     scene.view.plots.push_back(plot);
   }

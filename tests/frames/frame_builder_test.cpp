@@ -194,26 +194,38 @@ TEST(FrameBuilder, FamilyMembersAreSampledWithTheRunInEveryShard) {
     "runs": [{"name": "fan", "method": "ambient", "integrator": "dopri5", "tolerance": 1e-10,
               "family": {"kind": "fan", "count": 5, "spread": 0.4}},
              {"name": "alone", "method": "ambient", "integrator": "dopri5", "tolerance": 1e-10}],
-    "output": {"fps": 10}, "view": {"panels": ["sphere", "linkage"], "path_samples_per_frame": 3}})",
+    "output": {"fps": 10}, "view": {"panels": ["sphere", "linkage", {"panel": "plot", "plot": "spread"}],
+                                    "path_samples_per_frame": 3}})",
                                  "t.json");
   FrameBuilder builder = builderFor(scene);
   const std::vector<InitialState> starts = familyStarts(scene.runs[0].chain, startsOf(scene)[0], *scene.runs[0].family,
                                                         scene.runs[0].config);
   std::vector<Trajectory> direct;
   for (const InitialState& start : starts) direct.emplace_back(scene.runs[0].chain, start, scene.runs[0].config);
+  Trajectory runAlone(scene.runs[0].chain, startsOf(scene)[0], scene.runs[0].config);
   std::vector<FrameState> all;
   for (int k = 0; k < builder.frameCount(); ++k) {
     all.push_back(builder.frame(k));
     const FrameState& state = all.back();
     ASSERT_EQ(state.runs[0].members.size(), 5u);
     EXPECT_TRUE(state.runs[1].members.empty());
+    // The spread plot: the largest hinge distance of a member from the run, within the whole animation's range.
+    const Sample run = *runAlone.sampleAt(scene.frameTime(k));
+    double spread = 0;
+    ASSERT_EQ(state.plots[0].series.size(), 1u);
     for (std::size_t m = 0; m < 5; ++m) {
       const MemberFrame& member = state.runs[0].members[m];
       const Sample expected = *direct[m].sampleAt(scene.frameTime(k));
+      spread = std::max(spread, hingeDistance(run.hinges, expected.hinges));
       EXPECT_FALSE(member.stopped);
       for (int h = 0; h < 3; ++h) EXPECT_NEAR(member.hinges[size_t(h)].x, expected.hinges(0, h), 1e-14);
       EXPECT_EQ(member.path.size(), size_t(k == 0 ? 1 : 1 + 3 * k));
       EXPECT_NEAR(member.current.z, expected.spherePoint(2), 1e-14);
+    }
+    EXPECT_NEAR(state.plots[0].series[0].values.back(), spread, 1e-14);
+    if (k > 0) {
+      EXPECT_LE(spread, (*state.plots[0].valueRange)[1] * (1 + 1e-12));
+      EXPECT_GE(spread, (*state.plots[0].valueRange)[0] * (1 - 1e-12));
     }
   }
   // Members leave one point in different directions: the wavefront is spread out after a while.
