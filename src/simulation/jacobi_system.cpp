@@ -26,14 +26,6 @@ Eigen::VectorXd rodDots(const Eigen::Matrix2Xd& a, const Eigen::Matrix2Xd& b) {
   return a.cwiseProduct(b).colwise().sum().transpose();
 }
 
-// G^T mu as hinge vectors for rod vectors D: at p_h, D_(h-1) mu_(h-1) - D_h mu_h (constraint_solver.hpp).
-Eigen::Matrix2Xd transposeTimes(const Eigen::Matrix2Xd& rods, const Eigen::VectorXd& mu) {
-  const Eigen::Index hinges = rods.cols() - 1;
-  Eigen::Matrix2Xd out(2, hinges);
-  for (Eigen::Index h = 1; h <= hinges; ++h) out.col(h - 1) = rods.col(h - 1) * mu(h - 1) - rods.col(h) * mu(h);
-  return out;
-}
-
 double massInner(const AmbientMassMatrix& mass, const Eigen::Matrix2Xd& a, const Eigen::Matrix2Xd& b) {
   double sum = 0;
   for (Eigen::Index j = 0; j < a.cols(); ++j) sum += mass.diagonal(j) * a.col(j).dot(b.col(j));
@@ -100,38 +92,45 @@ JacobiSystem::JacobiSystem(const Chain& chain, const InitialState& start, double
   }
 }
 
-Eigen::Matrix2Xd JacobiSystem::inverseMassTimes(const Eigen::Matrix2Xd& f) const {
-  if (mass_.isDiagonal) return f * mass_.diagonal.cwiseInverse().asDiagonal();
+void JacobiSystem::inverseMassTimes(const Eigen::Matrix2Xd& f, Eigen::Matrix2Xd& out) const {
+  if (mass_.isDiagonal) {
+    out = f * mass_.diagonal.cwiseInverse().asDiagonal();
+    return;
+  }
   const Eigen::VectorXd x = massFactor_.solve(Eigen::Map<const Eigen::VectorXd>(f.data(), f.size()));
-  return Eigen::Map<const Eigen::Matrix2Xd>(x.data(), 2, f.cols());
+  out = Eigen::Map<const Eigen::Matrix2Xd>(x.data(), 2, f.cols());
 }
 
 void JacobiSystem::derivative(const State& y, State& dydt) const {
-  const Eigen::Index h = hinges_;
+  const Eigen::Index h = hinges_, n = h + 1;
   const std::size_t block = static_cast<std::size_t>(4 * h);
   dydt.resize(y.size());
   const ConstHinges q(y.data(), 2, h), v(y.data() + 2 * h, 2, h);
   // The motion, as AmbientSystem::derivative computes it (the same solve, so the same numbers).
-  const Eigen::Matrix2Xd relative = differences(v);
-  Eigen::Matrix2Xd a;
-  solver_.solve(q, -relative.colwise().squaredNorm().transpose(), a);
-  const Eigen::VectorXd mu = solver_.multipliers();
-  Eigen::Matrix2Xd rods;
-  solver_.rodVectors(q, rods);
+  ConstraintSolver::relativeVelocities(v, relative_);
+  rhs_ = -relative_.colwise().squaredNorm().transpose();
+  solver_.solve(q, rhs_, acceleration_);
+  mu_ = solver_.multipliers();
+  solver_.rodVectors(q, rods_);
   Hinges(dydt.data(), 2, h) = v;
-  Hinges(dydt.data() + 2 * h, 2, h) = a;
-  const Eigen::Matrix2Xd relativeA = differences(a);
-  Eigen::Matrix2Xd x;
+  Hinges(dydt.data() + 2 * h, 2, h) = acceleration_;
+  ConstraintSolver::relativeVelocities(acceleration_, relativeAcceleration_);
+  force_.resize(2, h);
   for (int i = 0; i < fields_; ++i) {
     const std::size_t offset = block * static_cast<std::size_t>(i + 1);
     const ConstHinges dq(y.data() + offset, 2, h), dv(y.data() + offset + 2 * h, 2, h);
-    const Eigen::Matrix2Xd dRods = differences(dq), dRelative = differences(dv);
-    const Eigen::Matrix2Xd first = inverseMassTimes(transposeTimes(dRods, mu));  // M^-1 dG^T mu
-    const Eigen::VectorXd rhs =
-        -2.0 * rodDots(relative, dRelative) - rodDots(dRods, relativeA) - rodDots(rods, differences(first));
-    solver_.solve(q, rhs, x);
+    ConstraintSolver::relativeVelocities(dq, dRods_);
+    ConstraintSolver::relativeVelocities(dv, dRelative_);
+    for (Eigen::Index p = 1; p <= h; ++p)  // dG^T mu at hinge p
+      force_.col(p - 1) = dRods_.col(p - 1) * mu_(p - 1) - dRods_.col(p) * mu_(p);
+    inverseMassTimes(force_, first_);  // M^-1 dG^T mu
+    ConstraintSolver::relativeVelocities(first_, relativeFirst_);
+    for (Eigen::Index k = 0; k < n; ++k)
+      rhs_(k) = -2.0 * relative_.col(k).dot(dRelative_.col(k)) - dRods_.col(k).dot(relativeAcceleration_.col(k)) -
+                rods_.col(k).dot(relativeFirst_.col(k));
+    solver_.solve(q, rhs_, correction_);
     Hinges(dydt.data() + offset, 2, h) = dv;
-    Hinges(dydt.data() + offset + 2 * h, 2, h) = first + x;
+    Hinges(dydt.data() + offset + 2 * h, 2, h) = first_ + correction_;
   }
 }
 

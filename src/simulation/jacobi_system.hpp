@@ -48,7 +48,7 @@ class JacobiSystem : public GeodesicSystem {
   JacobiState jacobiAt(const State& y) const;
 
  private:
-  Eigen::Matrix2Xd inverseMassTimes(const Eigen::Matrix2Xd& f) const;
+  void inverseMassTimes(const Eigen::Matrix2Xd& f, Eigen::Matrix2Xd& out) const;
 
   AmbientSystem motion_;  // the geodesic: the first 4(n-1) numbers of the state
   Chain chain_;
@@ -57,6 +57,10 @@ class JacobiSystem : public GeodesicSystem {
   int hinges_, fields_;
   State start_;
   mutable ConstraintSolver solver_;
+  // Work space of derivative(): sized once, so an evaluation allocates nothing.
+  mutable Eigen::Matrix2Xd rods_, relative_, acceleration_, relativeAcceleration_, dRods_, dRelative_, force_, first_,
+      relativeFirst_, correction_;
+  mutable Eigen::VectorXd rhs_, mu_;
 };
 
 }  // namespace sl
