@@ -48,10 +48,12 @@ float pathAlpha(const ViewSettings& settings, double age) {
   return static_cast<float>(std::clamp(1.0 - age / settings.pathFadeSeconds, 0.0, 1.0));
 }
 
-// A path as a tube of `radius` (world units, at least `minHalfWidth` pixels) in `color`, fading with age.
+// A path as a tube of `radius` (world units, at least `minHalfWidth` pixels) in `color`, fading with age. Thin
+// paths (a family's members, many at once) are flat lines with points closer than a pixel merged: the same
+// picture at a fraction of the fill.
 void drawPath(const std::vector<Vec3>& path, const std::vector<double>& times, Rgba color, double radius,
               float minHalfWidth, const PanelContext& context, const SphereCamera& camera, const Placement& placement,
-              bool throughAntipode, ShapeBatch& batch) {
+              bool throughAntipode, ShapeBatch& batch, bool thin = false) {
   std::vector<PolylinePoint> points;
   points.reserve(path.size() + 1);
   for (std::size_t i = 0; i < path.size(); ++i) {
@@ -61,14 +63,18 @@ void drawPath(const std::vector<Vec3>& path, const std::vector<double>& times, R
     const bool hidden = alpha <= 0.0f || !drawable(path[i]) || !camera.inFront(p);
     const bool jump = throughAntipode && i > 0 && distance(path[i - 1], path[i]) > kMaxPathChord;
     if (hidden || jump) {  // a gap: draw what came before, start afresh (with this point, unless hidden)
-      batch.polyline(points, true, 0.35f);
+      batch.polyline(points, !thin, 0.35f);
       points.clear();
     }
     if (hidden) continue;
+    const P2 at = camera.project(p);
+    const bool last = i + 1 == path.size();
+    if (thin && !points.empty() && !last && std::abs(at.x - points.back().at.x) + std::abs(at.y - points.back().at.y) < 1.5f)
+      continue;
     const float halfWidth = std::max(minHalfWidth, float(radius * camera.pixelsPerUnitAt(p)));
-    points.push_back({camera.project(p), halfWidth, palette::withAlpha(color, color.a * alpha), placement.world(p)});
+    points.push_back({at, halfWidth, palette::withAlpha(color, color.a * alpha), placement.world(p)});
   }
-  batch.polyline(points, true, 0.35f);
+  batch.polyline(points, !thin, 0.35f);
 }
 
 // A run's family: each member's path as a thin tube in the run's colour ramp, then the wavefront, the curve
@@ -79,7 +85,7 @@ void drawFamily(const RunFrame& run, const PanelContext& context, const SphereCa
   const std::size_t count = run.members.size();
   for (std::size_t m = 0; m < count; ++m) {
     drawPath(run.members[m].path, run.members[m].pathTimes, memberColor(run.color, m, count, 0.85f),
-             0.3 * kTubeRadius, 0.6f, context, camera, placement, throughAntipode, batch);
+             0.3 * kTubeRadius, 0.6f, context, camera, placement, throughAntipode, batch, true);
   }
   std::vector<PolylinePoint> front;
   auto flush = [&] {
