@@ -17,7 +17,7 @@ namespace {
 // One colour per status, in stabilityStatusNames() order; a status beyond the list is drawn grey.
 std::string statusColor(size_t code) {
   static const std::vector<std::string> colors = {"#1a9850", "#fdae61", "#d73027", "#f46d43", "#000000", "#7b3294",
-                                                  "#2c7bb6", "#abd9e9", "#bababa", "#ffffbf", "#878787"};
+                                                  "#2c7bb6", "#abd9e9", "#bababa", "#8c510a", "#ffffbf", "#878787"};
   return code < colors.size() ? colors[code] : "#878787";
 }
 

@@ -61,7 +61,16 @@ inline constexpr std::array<IntegratorTraits, 4> kIntegrators{{
 
 // === Why a run stops (the watchdogs of simulation/trajectory.cpp, and a method's own failure)
 
-enum class StopReason { NonFinite, PoleFoldBack, FieldBlowUp, EnergyBlowUp, StepSizeCollapse, RodLength, MaxSteps };
+enum class StopReason {
+  NonFinite,
+  PoleFoldBack,
+  FieldBlowUp,
+  EnergyBlowUp,
+  StepSizeCollapse,
+  RodLength,
+  MaxSteps,
+  ConstraintRankLoss
+};
 
 struct StopReasonTraits {
   StopReason kind;
@@ -69,7 +78,7 @@ struct StopReasonTraits {
   std::string_view meaning;  // one line for docs and help texts
 };
 
-inline constexpr std::array<StopReasonTraits, 7> kStopReasons{{
+inline constexpr std::array<StopReasonTraits, 8> kStopReasons{{
     {StopReason::NonFinite, "non-finite", "the state became NaN or infinite"},
     {StopReason::PoleFoldBack, "pole-fold-back", "a single-chart method crossed a pole of its chart"},
     {StopReason::FieldBlowUp, "field-blow-up",
@@ -79,6 +88,9 @@ inline constexpr std::array<StopReasonTraits, 7> kStopReasons{{
     {StopReason::StepSizeCollapse, "step-size-collapse", "the integrator's step shrank to nothing"},
     {StopReason::RodLength, "rod-length", "a rod's length drifted past the watchdog's limit"},
     {StopReason::MaxSteps, "max-steps", "the run used up its step budget"},
+    {StopReason::ConstraintRankLoss, "constraint-rank-loss",
+     "every rod lies on one line (the chain folded flat or stretched straight): the rod constraints lose rank and "
+     "the motion is not determined there"},
 }};
 
 // === Families of geodesics from a run's start (simulation/family.hpp)

@@ -1,6 +1,8 @@
 #pragma once
 // How a run is configured and where a motion starts: what the scene says and the simulation takes.
 
+#include <utility>
+
 #include <Eigen/Dense>
 
 #include "contracts/registry.hpp"
@@ -41,20 +43,40 @@ struct FamilySpec {
 
 // The start of the motion as a scene states it; simulation/initial_state.hpp turns it into an InitialState.
 struct InitialSpec {
-  enum class Kind { ChartCoordinates, Drag };
+  // Hinges: positions and velocities of the interior hinges (any chain, slack ones included; ambient method),
+  // given point by point or as a named shape with a push (issue 16: long chains).
+  enum class Kind { ChartCoordinates, Drag, Hinges };
+  enum class Shape { Given, Arc };  // Arc: the hinges on the circular arc through both pins, rods as its chords
   Kind kind = Kind::ChartCoordinates;
   Eigen::VectorXd coords;         // chart 0 coordinates, outermost first ((phi, t) for 4 rods)
   Eigen::VectorXd velocity;       // their rates
   Eigen::VectorXd dragPoint;      // a point of R^(n-1), normalised onto S^(n-2)
   Eigen::VectorXd dragDirection;  // projected onto the tangent space at dragPoint
   bool unitSpeed = false;         // rescale the velocity so that g(v, v) = 1
+  Shape shape = Shape::Given;
+  Eigen::Matrix2Xd hinges;           // Given: p1..p(n-1)
+  Eigen::Matrix2Xd hingeVelocities;  // Given: their velocities (zero columns allowed); empty with a push
+  int pushHinge = 0;                 // a push: hinge k (1..n-1) gets pushVelocity ...
+  Eigen::Vector2d pushVelocity = Eigen::Vector2d::Zero();
+  long pushSeed = -1;                // ... or, seed >= 0, every hinge a random velocity of size pushSize
+  double pushSize = 1;
 };
 
 // The start of a motion, chart-free: a point x of the unit sphere S^(n-2) in R^(n-1) and a tangent
-// vector xdot (x . xdot = 0). Chart coordinates and drag starts are converted into this.
+// vector xdot (x . xdot = 0). Chart coordinates and drag starts are converted into this. A start given by
+// hinges (slack or long chains, ambient method) has the hinge positions and velocities instead, on the rod
+// constraints, and no sphere point.
 struct InitialState {
+  InitialState() = default;
+  InitialState(Eigen::VectorXd point, Eigen::VectorXd velocity)
+      : spherePoint(std::move(point)), sphereVelocity(std::move(velocity)) {}
+
   Eigen::VectorXd spherePoint;
   Eigen::VectorXd sphereVelocity;
+  Eigen::Matrix2Xd hinges;           // a start by hinges: p1..p(n-1), |p_k - p_(k-1)| = 1
+  Eigen::Matrix2Xd hingeVelocities;  // tangent to the rod constraints
+
+  bool byHinges() const { return hinges.cols() > 0; }
 };
 
 }  // namespace sl

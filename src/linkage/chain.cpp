@@ -18,11 +18,12 @@ Chain Chain::uniform(int rods, double baseLength) {
 
 bool Chain::hasRodMass() const { return (rodMasses.array() != 0.0).any(); }
 
-void Chain::validate() const {
+void Chain::validate(bool allowSlack) const {
   if (rods < 3) throw std::invalid_argument("a chain needs at least 3 rods, got " + std::to_string(rods));
-  if (!std::isfinite(baseLength) || !(baseLength > rods - 2) || !(baseLength < rods))
-    throw std::invalid_argument("L must lie in (n-2, n) = (" + std::to_string(rods - 2) + ", " + std::to_string(rods) +
-                                "), got " + std::to_string(baseLength));
+  const double lowest = allowSlack ? 0.0 : rods - 2;
+  if (!std::isfinite(baseLength) || !(baseLength > lowest) || !(baseLength < rods))
+    throw std::invalid_argument("L must lie in (" + std::to_string(lowest) + ", n) = (" + std::to_string(lowest) +
+                                ", " + std::to_string(rods) + "), got " + std::to_string(baseLength));
   if (hingeMasses.size() != rods - 1)
     throw std::invalid_argument("expected " + std::to_string(rods - 1) + " hinge masses");
   if (rodMasses.size() != rods) throw std::invalid_argument("expected " + std::to_string(rods) + " rod masses");

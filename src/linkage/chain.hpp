@@ -1,5 +1,7 @@
 #pragma once
-// The chain model (spec section 1): n unit rods, p0 = 0 and pn = (L, 0) pinned, n-2 < L < n.
+// The chain model (spec section 1): n unit rods, p0 = 0 and pn = (L, 0) pinned, n-2 < L < n. A slack chain
+// (0 < L <= n-2, issue 16) is a chain too, but its configuration space is no longer a sphere: only the
+// chart-free ambient method moves it.
 // Mass lives at the n-1 interior hinges (M_j) and uniformly along the rods (m_k).
 
 #include <Eigen/Dense>
@@ -18,9 +20,10 @@ struct Chain {
   int hingeCount() const { return rods - 1; }
   int sphereDimension() const { return rods - 2; }  // configuration space S^(n-2)
   bool hasRodMass() const;
+  bool isSlack() const { return baseLength <= rods - 2; }  // no configuration sphere, no chart
 
-  // Throws std::invalid_argument naming the rule that fails.
-  void validate() const;
+  // Throws std::invalid_argument naming the rule that fails. allowSlack admits 0 < L <= n-2 (ambient method).
+  void validate(bool allowSlack = false) const;
 };
 
 // The ambient kinetic metric on (R^2)^(n-1), block-tridiagonal with scalar blocks (spec section 1):

@@ -1,13 +1,15 @@
 #include "linkage/chain_constants.hpp"
 
+#include <cmath>
+
 #include "linkage/chart.hpp"
 #include "linkage/kinetic_metric.hpp"
 
 namespace sl {
 
 ChainConstants::ChainConstants(const Chain& c)
-    : chain((c.validate(), c)),
-      amplitude(chainAmplitude(c.rods, c.baseLength)),
+    : chain((c.validate(true), c)),
+      amplitude(c.isSlack() ? std::nan("") : chainAmplitude(c.rods, c.baseLength)),  // a slack chain has no chart
       mass(ambientMassMatrix(c)),
       stackedMass(stackedMassMatrix(c)) {}
 

@@ -58,6 +58,14 @@ AmbientSystem::AmbientSystem(const Chain& chain, const InitialState& start, doub
   const Eigen::Index hinges = chain.hingeCount();
   start_.assign(static_cast<size_t>(4 * hinges), 0.0);
   Eigen::Map<Eigen::Matrix2Xd> q(start_.data(), 2, hinges), v(start_.data() + 2 * hinges, 2, hinges);
+  if (start.byHinges()) {  // already on the constraints (initialStateFromHinges); projecting again changes nothing
+    q = start.hinges;
+    v = start.hingeVelocities;
+    projectPositions(q);
+    projectVelocities(q, v);
+    projections_ = 0;
+    return;
+  }
   // Positions and velocities in one forward-AD pass along xdot (O(n^2), unlike the full Jacobian).
   using Dual = Eigen::AutoDiffScalar<Eigen::Matrix<double, 1, 1>>;
   VectorX<Dual> x(start.spherePoint.size());
@@ -118,6 +126,7 @@ PhysicalState AmbientSystem::physicalState(const State& y) const {
   PhysicalState o;
   o.hinges = Eigen::Map<const Eigen::Matrix2Xd>(y.data(), 2, hinges);
   o.hingeVelocities = Eigen::Map<const Eigen::Matrix2Xd>(y.data() + 2 * hinges, 2, hinges);
+  if (chain_.isSlack()) return o;  // no configuration sphere: hinges only
   o.spherePoint = spherePointFromHinges(chain_, o.hinges);
   o.sphereVelocity = sphereVelocityFromHingeVelocities(chain_, o.spherePoint, o.hingeVelocities);
   return o;
@@ -142,7 +151,7 @@ StepInvariants AmbientSystem::stepInvariants(const State& y, double previousT) c
   StepInvariants summary;
   summary.energy = kineticEnergy(mass_, v);
   summary.rodLengthError = rodLengthError(chain_, q);
-  summary.chartZeroT = chartZeroAngleForUnwrapping(chain_, q, previousT);
+  summary.chartZeroT = chain_.isSlack() ? previousT : chartZeroAngleForUnwrapping(chain_, q, previousT);
   return summary;
 }
 

@@ -92,7 +92,10 @@ void ConstraintSolver::solveTridiagonal(const Eigen::VectorXd& rhs, Eigen::Matri
   for (Eigen::Index r = 1; r < n; ++r) {
     lower_(r - 1) = upper_(r - 1) / pivot;
     pivot = diagonal_(r) - upper_(r - 1) * lower_(r - 1);
-    if (!(pivot > 0)) throw std::runtime_error("rod constraints are degenerate (chain stretched straight)");
+    // Relative to the row's own size: every rod on one line gives pivot 0 up to rounding.
+    if (!(pivot > 1e-12 * diagonal_(r)))
+      throw ConstraintRankLoss("the rod constraints lose rank: every rod lies on one line (folded flat or stretched "
+                               "straight)");
     mu_(r) = (rhs(r) - upper_(r - 1) * mu_(r - 1)) / pivot;
   }
   for (Eigen::Index r = n - 2; r >= 0; --r) mu_(r) -= lower_(r) * mu_(r + 1);
@@ -112,7 +115,7 @@ void ConstraintSolver::solveKkt(const Eigen::VectorXd& rhs, Eigen::Matrix2Xd& co
     }
   kkt_->lu.factorize(K);
   if (kkt_->lu.info() != Eigen::Success)
-    throw std::runtime_error("rod constraints are degenerate (KKT factorisation failed)");
+    throw ConstraintRankLoss("the rod constraints lose rank (KKT factorisation failed): every rod lies on one line");
   kkt_->rhs.setZero();
   for (Eigen::Index r = 0; r < n; ++r) kkt_->rhs(Kkt::mu(r)) = rhs(r);
   kkt_->solution = kkt_->lu.solve(kkt_->rhs);

@@ -9,6 +9,7 @@
 //   interleaved per hinge (bandwidth 3), by Eigen's SparseLU (pattern analysed once).
 
 #include <memory>
+#include <stdexcept>
 
 #include <Eigen/Dense>
 
@@ -16,14 +17,20 @@
 
 namespace sl {
 
+// The rod constraints lost rank: every rod on one line (a chain folded flat or stretched straight), where
+// G M^-1 G^T is singular and no acceleration is determined. A run stops there (StopReason::ConstraintRankLoss).
+struct ConstraintRankLoss : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 class ConstraintSolver {
  public:
   explicit ConstraintSolver(const Chain& chain);
   ~ConstraintSolver();
   ConstraintSolver(ConstraintSolver&&) noexcept;
 
-  // hinges: 2 x (n-1); rhs: n entries; correction: 2 x (n-1). Throws std::runtime_error if the system is
-  // singular (a fully stretched chain).
+  // hinges: 2 x (n-1); rhs: n entries; correction: 2 x (n-1). Throws ConstraintRankLoss if the system is
+  // singular to working precision (every rod on one line).
   void solve(const Eigen::Matrix2Xd& hinges, const Eigen::VectorXd& rhs, Eigen::Matrix2Xd& correction);
   // The multipliers mu of the last solve (one per rod): correction = M^-1 G^T mu, where (G^T mu) at hinge p_h is
   // D_(h-1) mu_(h-1) - D_h mu_h. The Jacobi fields' linearisation needs them (simulation/jacobi_system.hpp).

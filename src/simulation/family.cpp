@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <random>
 #include <stdexcept>
 #include <string>
 
 #include "simulation/initial_state.hpp"
+#include "simulation/normal_draws.hpp"
 #include "simulation/trajectory.hpp"
 
 namespace sl {
@@ -38,26 +38,6 @@ namespace {
 
 // Evenly over [-width/2, width/2]: member k of count (count >= 2).
 double evenOffset(double width, int k, int count) { return width * (double(k) / double(count - 1) - 0.5); }
-
-// Standard normal numbers from 64-bit draws, written out (Box-Muller) so that the same seed gives the same
-// cloud with every standard library (std::normal_distribution's algorithm is not specified).
-class NormalDraws {
- public:
-  explicit NormalDraws(unsigned long seed) : bits_(seed) {}
-  double next() {
-    const double u1 = (double(bits_() >> 11) + 0.5) * 0x1.0p-53;  // in (0, 1)
-    const double u2 = double(bits_() >> 11) * 0x1.0p-53;
-    return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * 3.141592653589793 * u2);
-  }
-  Eigen::VectorXd vector(Eigen::Index size) {
-    Eigen::VectorXd v(size);
-    for (Eigen::Index i = 0; i < size; ++i) v(i) = next();
-    return v;
-  }
-
- private:
-  std::mt19937_64 bits_;
-};
 
 std::vector<InitialState> fan(const Chain& chain, const InitialState& start, const FamilySpec& family) {
   const double speed = std::sqrt(speedSquared(chain, start));

@@ -6,6 +6,8 @@
 
 #include "linkage/chart.hpp"
 #include "linkage/sphere_coordinates.hpp"
+#include "simulation/constraint_solver.hpp"
+#include "simulation/normal_draws.hpp"
 
 namespace sl {
 
@@ -25,6 +27,7 @@ InitialState initialStateFromChart(const Chain& chain, const Eigen::VectorXd& co
 }
 
 double speedSquared(const Chain& chain, const InitialState& start) {
+  if (start.byHinges()) return 2.0 * kineticEnergy(ambientMassMatrix(chain), start.hingeVelocities);
   const Eigen::VectorXd stacked = sphereJacobian(chain, start.spherePoint) * start.sphereVelocity;
   return 2.0 * kineticEnergy(ambientMassMatrix(chain),
                              Eigen::Map<const Eigen::Matrix2Xd>(stacked.data(), 2, chain.hingeCount()));
@@ -70,6 +73,16 @@ InitialState initialStateFromDrag(const Chain& chain, const Eigen::VectorXd& poi
 }
 
 void validateInitialState(const Chain& chain, const InitialState& start) {
+  if (start.byHinges()) {
+    if (start.hinges.cols() != chain.hingeCount() || start.hingeVelocities.cols() != chain.hingeCount())
+      throw std::invalid_argument("a start by hinges needs n-1 = " + std::to_string(chain.hingeCount()) +
+                                  " hinge positions and velocities");
+    if (!start.hinges.allFinite() || !start.hingeVelocities.allFinite())
+      throw std::invalid_argument("a start by hinges has a non-finite component");
+    if (rodLengthError(chain, start.hinges) > 1e-9)
+      throw std::invalid_argument("the start's hinges are not on the rod constraints");
+    return;
+  }
   requireSize(start.spherePoint, chain.rods - 1, "initial sphere point");
   requireSize(start.sphereVelocity, chain.rods - 1, "initial sphere velocity");
   if (std::abs(start.spherePoint.norm() - 1.0) > 1e-9)
@@ -79,7 +92,96 @@ void validateInitialState(const Chain& chain, const InitialState& start) {
     throw std::invalid_argument("initial sphere velocity must be tangent (x . xdot = 0)");
 }
 
-InitialState initialStateFromSpec(const Chain& chain, const InitialSpec& spec) {
+Eigen::Matrix2Xd arcHinges(int rods, double baseLength) {
+  // Turning angle theta of the whole arc: n chords of length 1 on a circle of radius R subtend theta / n each,
+  // R = 1 / (2 sin(theta / 2n)), and the arc's chord 2 R sin(theta / 2) = sin(theta / 2) / sin(theta / 2n)
+  // falls from n (theta -> 0, taut) to 0 (theta = 2 pi): bisect it onto L.
+  const double pi = std::acos(-1.0);
+  auto chord = [&](double theta) { return std::sin(0.5 * theta) / std::sin(0.5 * theta / rods); };
+  double low = 1e-12, high = 2 * pi - 1e-12;
+  for (int i = 0; i < 200; ++i) {
+    const double middle = 0.5 * (low + high);
+    (chord(middle) > baseLength ? low : high) = middle;
+  }
+  const double theta = 0.5 * (low + high), radius = 0.5 / std::sin(0.5 * theta / rods);
+  // The centre above the chord's midpoint; p0 at angle -pi/2 - theta/2 from it, each rod turning theta / n.
+  const double centreY = radius * std::cos(0.5 * theta), start = -0.5 * pi - 0.5 * theta;
+  Eigen::Matrix2Xd hinges(2, rods - 1);
+  for (int k = 1; k < rods; ++k) {
+    const double angle = start + theta * k / rods;
+    hinges.col(k - 1) = Eigen::Vector2d(0.5 * baseLength + radius * std::cos(angle), centreY + radius * std::sin(angle));
+  }
+  return hinges;
+}
+
+InitialState initialStateFromHinges(const Chain& chain, const InitialSpec& spec, StartAdjustment& adjustment) {
+  const Eigen::Index count = chain.hingeCount();
+  InitialState start;
+  start.hinges = spec.shape == InitialSpec::Shape::Arc ? arcHinges(chain.rods, chain.baseLength) : spec.hinges;
+  if (start.hinges.cols() != count)
+    throw std::invalid_argument("expected n-1 = " + std::to_string(count) + " hinge positions");
+  if (spec.hingeVelocities.cols() > 0) {
+    start.hingeVelocities = spec.hingeVelocities;
+  } else if (spec.pushSeed >= 0) {
+    NormalDraws draws(static_cast<unsigned long>(spec.pushSeed));
+    const Eigen::VectorXd random = draws.vector(2 * count);
+    start.hingeVelocities = spec.pushSize * Eigen::Map<const Eigen::Matrix2Xd>(random.data(), 2, count);
+  } else {
+    start.hingeVelocities = Eigen::Matrix2Xd::Zero(2, count);
+    if (spec.pushHinge >= 1 && spec.pushHinge <= count) start.hingeVelocities.col(spec.pushHinge - 1) = spec.pushVelocity;
+  }
+  if (start.hingeVelocities.cols() != count)
+    throw std::invalid_argument("expected n-1 = " + std::to_string(count) + " hinge velocities");
+  if (!start.hinges.allFinite() || !start.hingeVelocities.allFinite())
+    throw std::invalid_argument("the hinges or their velocities have a non-finite component");
+  // Onto the constraints: positions by Newton (each step the mass-orthogonal least correction), then velocities.
+  ConstraintSolver solver(chain);
+  const Eigen::Matrix2Xd given = start.hinges, givenVelocities = start.hingeVelocities;
+  Eigen::Matrix2Xd rods, correction, relative;
+  bool placed = false;
+  for (int iteration = 0; iteration < 50 && !placed; ++iteration) {
+    solver.rodVectors(start.hinges, rods);
+    const Eigen::VectorXd residual = -0.5 * (rods.colwise().squaredNorm().array() - 1.0).matrix().transpose();
+    placed = residual.cwiseAbs().maxCoeff() < 1e-15;
+    if (placed) break;
+    try {
+      solver.solve(start.hinges, residual, correction);
+    } catch (const ConstraintRankLoss&) {
+      throw std::invalid_argument("the hinges put every rod on one line (folded flat or stretched straight), where "
+                                  "the motion is not determined; expected hinges off that line");
+    }
+    start.hinges += correction;
+  }
+  if (!start.hinges.allFinite() || rodLengthError(chain, start.hinges) > 1e-12)
+    throw std::invalid_argument("the hinges cannot be placed on the rod constraints from these positions (each rod "
+                                "joins neighbours 1 apart, the first from (0, 0), the last to (L, 0))");
+  solver.rodVectors(start.hinges, rods);
+  ConstraintSolver::relativeVelocities(start.hingeVelocities, relative);
+  try {
+    solver.solve(start.hinges, -(rods.cwiseProduct(relative)).colwise().sum().transpose(), correction);
+  } catch (const ConstraintRankLoss&) {
+    throw std::invalid_argument("the hinges put every rod on one line (folded flat or stretched straight), where "
+                                "the motion is not determined; expected hinges off that line");
+  }
+  start.hingeVelocities += correction;
+  adjustment.positions = (start.hinges - given).colwise().norm().maxCoeff();
+  const double largest = givenVelocities.colwise().norm().maxCoeff();
+  adjustment.velocities = largest > 0 ? (start.hingeVelocities - givenVelocities).colwise().norm().maxCoeff() / largest : 0;
+  const double speed2 = speedSquared(chain, start);
+  if (!(speed2 > 0) || !std::isfinite(speed2))
+    throw std::invalid_argument("the hinge velocities move nothing along the rod constraints (or overflow)");
+  if (spec.unitSpeed) start.hingeVelocities /= std::sqrt(speed2);
+  return start;
+}
+
+InitialState initialStateFromSpec(const Chain& chain, const InitialSpec& spec, StartAdjustment* adjustment) {
+  if (spec.kind == InitialSpec::Kind::Hinges) {
+    StartAdjustment ignored;
+    return initialStateFromHinges(chain, spec, adjustment ? *adjustment : ignored);
+  }
+  if (chain.isSlack())
+    throw std::invalid_argument("a slack chain (L <= n-2) has no configuration sphere and no chart; expected a start "
+                                "by \"hinges\"");
   if (spec.kind == InitialSpec::Kind::Drag) {
     return initialStateFromDrag(chain, spec.dragPoint, spec.dragDirection, spec.unitSpeed);
   }

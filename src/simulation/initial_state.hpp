@@ -18,9 +18,24 @@ InitialState initialStateFromChart(const Chain& chain, const Eigen::VectorXd& co
 InitialState initialStateFromDrag(const Chain& chain, const Eigen::VectorXd& point, const Eigen::VectorXd& direction,
                                   bool unitSpeed);
 
-// The start a scene states (chart coordinates and rates of chart 0, or a drag), as the chart-free
-// InitialState of its runs; unit_speed rescales the velocity so that g(v, v) = 1.
-InitialState initialStateFromSpec(const Chain& chain, const InitialSpec& spec);
+// The start a scene states (chart coordinates and rates of chart 0, a drag, or hinges), as the chart-free
+// InitialState of its runs; unit_speed rescales the velocity so that g(v, v) = 1. For a start by hinges,
+// `adjustment` (if given) receives how far the start had to move onto the rod constraints.
+struct StartAdjustment {
+  double positions = 0;   // the largest hinge displacement, in rod lengths
+  double velocities = 0;  // the largest hinge velocity change, relative to the largest velocity given
+};
+InitialState initialStateFromSpec(const Chain& chain, const InitialSpec& spec, StartAdjustment* adjustment = nullptr);
+
+// A start by hinge positions and velocities (InitialSpec::Kind::Hinges; any chain, slack ones included):
+// the named shape or the given points, the push or the given velocities, then positions projected onto the
+// rod constraints (Newton, mass-orthogonal) and velocities onto their tangent space, as the ambient method's
+// own projections do. Throws std::invalid_argument if the hinges cannot be placed or nothing moves.
+InitialState initialStateFromHinges(const Chain& chain, const InitialSpec& spec, StartAdjustment& adjustment);
+
+// The hinges of the named shape Arc: on the circular arc through both pins (sagging below them), the rods its
+// equal chords.
+Eigen::Matrix2Xd arcHinges(int rods, double baseLength);
 
 // g(v, v) of a start: |dPsi(xdot)|^2 in the ambient kinetic metric M.
 double speedSquared(const Chain& chain, const InitialState& start);

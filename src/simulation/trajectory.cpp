@@ -8,6 +8,7 @@
 #include "linkage/sphere_coordinates.hpp"
 #include "simulation/ambient_system.hpp"
 #include "simulation/chart_system.hpp"
+#include "simulation/constraint_solver.hpp"
 #include "simulation/initial_state.hpp"
 #include "simulation/jacobi_system.hpp"
 #include "simulation/steppers.hpp"
@@ -46,6 +47,10 @@ std::unique_ptr<GeodesicSystem> makeSystem(const ChainConstants& bound, const In
                                            const RunConfig& config) {
   if (config.jacobi && config.method != Method::Ambient)
     throw std::invalid_argument("Jacobi fields are computed with the ambient method only");
+  if ((bound.chain.isSlack() || start.byHinges()) && config.method != Method::Ambient)
+    throw std::invalid_argument("a slack chain or a start by hinges has no chart: only the ambient method moves it");
+  if (config.jacobi && start.byHinges())
+    throw std::invalid_argument("Jacobi fields start from a point of the configuration sphere (coords or drag)");
   if (config.method == Method::Ambient) {
     // Project once the rods drift past a tenth of the tolerance (never below rounding level).
     const double projectBeyond = std::max(1e-14, 0.1 * std::min(config.tolerance, config.maxRodLengthError));
@@ -135,6 +140,9 @@ struct Trajectory::Impl {
     };
     try {
       stepper->doStep(*system);
+    } catch (const ConstraintRankLoss& e) {
+      return haltAtLastGoodState(StopReason::ConstraintRankLoss, std::string(e.what()) + " in the step from t = " +
+                                                                     formatTime(t0));
     } catch (const std::exception& e) {
       return haltAtLastGoodState(StopReason::StepSizeCollapse, std::string("integrator gave up: ") + e.what());
     }
@@ -176,9 +184,12 @@ struct Trajectory::Impl {
     s.sphereVelocity = o.sphereVelocity;
     s.hinges = o.hinges;
     s.hingeVelocities = o.hingeVelocities;
-    s.coords = o.chartZeroCoords ? *o.chartZeroCoords : coordinatesFromSpherePoint(o.spherePoint, chartZeroTAtStart);
-    s.rates = o.chartZeroRates ? *o.chartZeroRates : coordinateRatesFromSphereVelocity(s.coords, o.sphereVelocity);
-    if (!s.rates.allFinite()) s.rates.setZero();  // chart 0's singular set: no rates there (never NaN)
+    if (o.spherePoint.size() > 0) {  // a slack chain has no sphere, no chart: hinges only
+      s.coords =
+          o.chartZeroCoords ? *o.chartZeroCoords : coordinatesFromSpherePoint(o.spherePoint, chartZeroTAtStart);
+      s.rates = o.chartZeroRates ? *o.chartZeroRates : coordinateRatesFromSphereVelocity(s.coords, o.sphereVelocity);
+      if (!s.rates.allFinite()) s.rates.setZero();  // chart 0's singular set: no rates there (never NaN)
+    }
     s.energy = kineticEnergy(bound.mass, s.hingeVelocities);
     s.relativeEnergyDrift = std::abs(s.energy - initialEnergy) / initialEnergy;
     s.rodLengthError = rodLengthError(bound.chain, s.hinges);

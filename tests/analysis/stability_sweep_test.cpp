@@ -193,12 +193,13 @@ TEST(StabilityStatus, NamesKeepTheirOrderAndCodes) {
                                              "step-size-collapse",
                                              "rod-length",
                                              "max-steps",
+                                             "constraint-rank-loss",
                                              "reference-stopped",
                                              "other"};
   EXPECT_EQ(stabilityStatusNames(), expected);
-  for (const auto& reason : kStopReasons) EXPECT_LT(stabilityStatusCode(std::string(reason.name)), 9) << reason.name;
-  EXPECT_EQ(stabilityStatusCode("reference-stopped"), 9);
-  EXPECT_EQ(stabilityStatusCode("no such status"), 10);
+  for (const auto& reason : kStopReasons) EXPECT_LT(stabilityStatusCode(std::string(reason.name)), 10) << reason.name;
+  EXPECT_EQ(stabilityStatusCode("reference-stopped"), 10);
+  EXPECT_EQ(stabilityStatusCode("no such status"), 11);
 }
 
 TEST(StabilitySweep, ThePublishedMethodsAreSweptWithRk4AndTheOthersWithTheDefaultIntegrator) {

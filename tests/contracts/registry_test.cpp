@@ -32,7 +32,7 @@ void expectComplete(const Table& table, int kindCount) {
 TEST(Registry, TablesAreComplete) {
   expectComplete(kMethods, static_cast<int>(Method::Ambient) + 1);
   expectComplete(kIntegrators, static_cast<int>(Integrator::BulirschStoer) + 1);
-  expectComplete(kStopReasons, static_cast<int>(StopReason::MaxSteps) + 1);
+  expectComplete(kStopReasons, static_cast<int>(StopReason::ConstraintRankLoss) + 1);
   expectComplete(kPanelKinds, static_cast<int>(PanelKind::Text) + 1);
   expectComplete(kPlotKinds, static_cast<int>(PlotKind::Spread) + 1);
   expectComplete(kFamilyKinds, static_cast<int>(FamilyKind::Cloud) + 1);

@@ -10,6 +10,8 @@
 #include "linkage/sphere_coordinates.hpp"
 #include "simulation/ambient_system.hpp"
 #include "simulation/constraint_solver.hpp"
+#include "simulation/initial_state.hpp"
+#include "simulation/trajectory.hpp"
 #include "support.hpp"
 
 namespace sl {
@@ -131,6 +133,100 @@ TEST(Ambient, CheapChartAngleMatchesTheChartInverse) {
       EXPECT_NEAR(chartZeroAngleForUnwrapping(chain, hingePositionsAt(chain, x), 0.0), expected, 1e-7)
           << rods << " rods";
     }
+}
+
+}  // namespace
+}  // namespace sl
+
+// Long and slack chains (issue 16): starts by hinges, the arc shape, the projection onto the constraints, the
+// invariants of a slack chain's motion, and the stop where the rod constraints lose rank.
+namespace sl {
+namespace {
+
+TEST(HingeStarts, TheArcPutsEveryRodAtLengthOneBetweenThePins) {
+  for (const auto& [rods, L] : {std::pair{4, 3.5}, std::pair{10, 5.0}, std::pair{200, 150.0}, std::pair{1000, 990.0}}) {
+    const Eigen::Matrix2Xd hinges = arcHinges(rods, L);
+    Chain chain = Chain::uniform(rods, L);
+    EXPECT_LT(rodLengthError(chain, hinges), 1e-9) << rods;
+    EXPECT_LT(hinges.row(1).maxCoeff(), 0.0) << "sags below the pins";
+  }
+}
+
+TEST(HingeStarts, GivenPointsAreMovedOntoTheConstraintsAndTheMoveIsReported) {
+  const Chain chain = Chain::uniform(5, 2.5);  // slack: L <= n-2
+  InitialSpec spec;
+  spec.kind = InitialSpec::Kind::Hinges;
+  spec.hinges = arcHinges(5, 2.5);
+  spec.hinges(1, 2) += 0.01;  // off the constraints
+  spec.pushHinge = 2;
+  spec.pushVelocity = Eigen::Vector2d(0.0, 1.0);
+  StartAdjustment moved;
+  const InitialState start = initialStateFromHinges(chain, spec, moved);
+  EXPECT_LT(rodLengthError(chain, start.hinges), 1e-13);
+  EXPECT_GT(moved.positions, 1e-3);
+  EXPECT_LT(moved.positions, 0.02);
+  // Velocities tangent to the constraints: each rod's length does not change to first order.
+  Eigen::Matrix2Xd rods, relative;
+  ConstraintSolver(chain).rodVectors(start.hinges, rods);
+  ConstraintSolver::relativeVelocities(start.hingeVelocities, relative);
+  EXPECT_LT(rods.cwiseProduct(relative).colwise().sum().cwiseAbs().maxCoeff(), 1e-13);
+  EXPECT_GT(moved.velocities, 0.0);  // the push had a part along the rods
+  // Exactly on the arc with a tangent push nothing moves.
+  InitialSpec arc = spec;
+  arc.shape = InitialSpec::Shape::Arc;
+  StartAdjustment first, none;
+  arc.hingeVelocities = initialStateFromHinges(chain, arc, first).hingeVelocities;
+  initialStateFromHinges(chain, arc, none);
+  EXPECT_LT(none.positions, 1e-12);
+  EXPECT_LT(none.velocities, 1e-12);
+}
+
+TEST(SlackChains, KeepEnergyAndRodLengthsAndHaveNoSphere) {
+  for (const int rods : {6, 50}) {
+    const Chain chain = Chain::uniform(rods, rods / 2.0);
+    InitialSpec spec;
+    spec.kind = InitialSpec::Kind::Hinges;
+    spec.shape = InitialSpec::Shape::Arc;
+    spec.pushSeed = 3;
+    StartAdjustment moved;
+    const InitialState start = initialStateFromHinges(chain, spec, moved);
+    RunConfig config = testing::config("ambient", "rkf78", 1e-12);
+    Trajectory run(chain, start, config);
+    for (const double t : testing::evenTimes(5.0, 10)) {
+      const std::optional<Sample> s = run.sampleAt(t);
+      ASSERT_TRUE(s) << run.stop()->detail;
+      EXPECT_EQ(s->spherePoint.size(), 0);
+      EXPECT_EQ(s->coords.size(), 0);
+      EXPECT_LT(s->relativeEnergyDrift, 1e-9);
+      EXPECT_LT(s->rodLengthError, 1e-10);
+    }
+    EXPECT_THROW(Trajectory(chain, start, testing::config("christoffel")), std::invalid_argument);
+  }
+}
+
+TEST(SlackChains, ConstraintsLoseRankWhereEveryRodLiesOnOneLine) {
+  // 4 rods, L = 2, folded flat: (0,0) (1,0) (2,0) (1,0) (2,0).
+  const Chain chain = Chain::uniform(4, 2.0);
+  Eigen::Matrix2Xd flat(2, 3), correction;
+  flat << 1, 2, 1, 0, 0, 0;
+  ConstraintSolver solver(chain);
+  EXPECT_THROW(solver.solve(flat, Eigen::VectorXd::Ones(4), correction), ConstraintRankLoss);
+  Eigen::Matrix2Xd bent = flat;
+  bent(1, 1) = 1e-3;  // lifted a little: solvable
+  EXPECT_NO_THROW(solver.solve(bent, Eigen::VectorXd::Ones(4), correction));
+  // A start there is refused as a start, with the reason.
+  InitialSpec spec;
+  spec.kind = InitialSpec::Kind::Hinges;
+  spec.hinges = flat;
+  spec.pushHinge = 2;
+  spec.pushVelocity = Eigen::Vector2d(0, 1);
+  StartAdjustment moved;
+  try {
+    initialStateFromHinges(chain, spec, moved);
+    ADD_FAILURE() << "a start on a fold was accepted";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("one line"), std::string::npos) << error.what();
+  }
 }
 
 }  // namespace
