@@ -187,7 +187,10 @@ void runRender(const RenderArguments& args) {
   Renderer renderer(scene.view, scene.output.size);
   const nlohmann::json info = manifestInfo(plan);
   sweepOutputFolders(plan);  // first: a killed render's leftovers must not count against the free space
-  const std::vector<InitialState> starts = runStarts(scene);
+  std::vector<std::string> notes;
+  const std::vector<InitialState> starts = runStarts(scene, &notes);
+  if (!args.quiet)
+    for (const std::string& note : notes) std::cerr << "linkage render: note: " << note << "\n";
   std::optional<FrameBuilder> built;
   try {
     built.emplace(scene, starts, startRuns(scene, starts), startFamilies(scene, starts), interruptRequested);

@@ -1,5 +1,6 @@
 #include "cli/scene_input.hpp"
 
+#include <cstdio>
 #include <stdexcept>
 
 #include <CLI/CLI.hpp>
@@ -32,12 +33,22 @@ void addSceneOverrideOption(CLI::App& command, std::vector<std::string>& overrid
       ->allow_extra_args(false);
 }
 
-std::vector<InitialState> runStarts(const Scene& scene) {
+std::vector<InitialState> runStarts(const Scene& scene, std::vector<std::string>* notes) {
   std::vector<InitialState> starts;
   for (size_t i = 0; i < scene.runs.size(); ++i) {
     const RunSpec& run = scene.runs[i];
     try {
-      starts.push_back(initialStateFromSpec(run.chain, run.initial));
+      StartAdjustment moved;
+      starts.push_back(initialStateFromSpec(run.chain, run.initial, &moved));
+      const std::string where = run.ownInitial ? "runs[" + std::to_string(i) + "].initial" : "initial";
+      if (notes && (moved.positions > 1e-9 || moved.velocities > 1e-9)) {
+        char text[200];
+        std::snprintf(text, sizeof text,
+                      "the start of run \"%s\" (%s) was moved onto the rod constraints: hinges by up to %.3g, "
+                      "velocities by up to %.3g of the largest",
+                      run.name.c_str(), where.c_str(), moved.positions, moved.velocities);
+        notes->push_back(text);
+      }
     } catch (const std::invalid_argument& error) {
       // A start the scene shares is reported once, where it is written.
       failOnProblems(scene.file, {{run.ownInitial ? "runs[" + std::to_string(i) + "].initial" : "initial", error.what()}});

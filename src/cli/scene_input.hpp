@@ -29,7 +29,8 @@ void failOnProblems(const std::string& file, const std::vector<SceneProblem>& pr
 // Each run's start as an InitialState (the scene's "initial", or the run's own, on the run's own linkage), and
 // one Trajectory per run from it. A start or run the simulation refuses is a problem of the scene:
 // CommandExit(kExitBadInput) naming the file and the JSON path ("initial" or "runs[i].initial", "runs[i]").
-std::vector<InitialState> runStarts(const Scene& scene);
+// `notes` (if given) receives a line for each start by hinges that had to move onto the rod constraints.
+std::vector<InitialState> runStarts(const Scene& scene, std::vector<std::string>* notes = nullptr);
 std::vector<Trajectory> startRuns(const Scene& scene, const std::vector<InitialState>& starts);
 // The members of each run's family (none for a run without one), from the run's start; a family that cannot
 // start is a problem of runs[i].family.

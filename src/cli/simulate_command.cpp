@@ -118,13 +118,17 @@ void runSimulate(const SimulateArguments& args) {
     failOnProblems(args.scene, problems);
     if (!parent.empty()) std::filesystem::create_directories(parent);
   }
-  const std::vector<InitialState> starts = runStarts(scene);
+  std::vector<std::string> notes;
+  const std::vector<InitialState> starts = runStarts(scene, &notes);
+  if (!args.quiet)
+    for (const std::string& note : notes) std::cerr << "linkage simulate: note: " << note << "\n";
   std::vector<Trajectory> runs = startRuns(scene, starts);
   std::vector<std::vector<Trajectory>> families = startFamilies(scene, starts);
   TrajectoryCsvLayout layout{scene.chain.rods, false, false};
   for (const RunSpec& run : scene.runs) {
     layout.memberColumn = layout.memberColumn || run.family.has_value();
     layout.jacobiColumn = layout.jacobiColumn || run.config.jacobi;
+    layout.chartColumns = layout.chartColumns && !run.chain.isSlack();
   }
   CsvOutput out(args.csv);
   out.write(trajectoryCsvHeader(layout) + "\n");

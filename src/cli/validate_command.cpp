@@ -25,7 +25,9 @@ void runValidate(const ValidateArguments& args) {
   if (!scene.output.video.empty())
     for (SceneProblem& problem : checkVideoPath(scene.output.video, "output.video")) problems.push_back(problem);
   failOnProblems(file, problems);
-  const std::vector<InitialState> starts = runStarts(scene);
+  std::vector<std::string> notes;
+  const std::vector<InitialState> starts = runStarts(scene, &notes);
+  for (const std::string& note : notes) std::cerr << "linkage validate: note: " << note << "\n";
   // Every start, run and family, as render and simulate set them up.
   startRuns(scene, starts);
   startFamilies(scene, starts);

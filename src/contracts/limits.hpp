@@ -18,7 +18,8 @@ inline constexpr double kMaxMass = 1e6;
 // The camera's orbit: 10 turns a second is already a blur.
 inline constexpr double kMaxOrbitDegreesPerSecond = 3600;
 inline constexpr int kMinRods = 3;
-inline constexpr int kMaxRods = 12;
+inline constexpr int kMaxRods = 12;          // the chart methods: their charts stay well conditioned up to here
+inline constexpr int kMaxAmbientRods = 1000;  // the chart-free ambient method (O(n) per step; issue 16)
 inline constexpr int kMaxFps = 1000;
 inline constexpr int kMaxPathSamplesPerFrame = 100;
 // A run's family (issue 15): members beside the run, their spread and a cloud's perturbation size.

@@ -7,20 +7,18 @@ namespace sl {
 
 namespace {
 
-// The Householder reflection taking the unit vector a to the last axis (identity if a already is it).
-Eigen::MatrixXd reflectionOnto(const Eigen::VectorXd& a) {
+// The unit vector w of the Householder reflection I - 2 w w^T taking the unit vector a to the last axis (zero, the
+// identity, if a already is it).
+Eigen::VectorXd reflectionOnto(const Eigen::VectorXd& a) {
   const Eigen::Index size = a.size();
-  Eigen::VectorXd axis = Eigen::VectorXd::Unit(size, size - 1);
-  Eigen::VectorXd w = a - axis;
-  if (w.norm() < 1e-15) return Eigen::MatrixXd::Identity(size, size);
-  w.normalize();
-  return Eigen::MatrixXd::Identity(size, size) - 2.0 * w * w.transpose();
+  Eigen::VectorXd w = a - Eigen::VectorXd::Unit(size, size - 1);
+  return w.norm() < 1e-15 ? Eigen::VectorXd::Zero(size) : Eigen::VectorXd(w.normalized());
 }
 
 }  // namespace
 
 ConfigurationView::ConfigurationView(int rods, const Eigen::VectorXd& startPoint) : rods_(rods) {
-  if (rods_ >= 5) toNorthPole_ = reflectionOnto(startPoint.normalized());
+  if (rods_ >= 5 && startPoint.size() > 0) reflection_ = reflectionOnto(startPoint.normalized());
 }
 
 ViewSpace ConfigurationView::space() const {
@@ -31,7 +29,8 @@ ViewSpace ConfigurationView::space() const {
 Vec3 ConfigurationView::project(const Eigen::VectorXd& x) const {
   if (rods_ == 3) return {x(0), x(1), 0.0};
   if (rods_ == 4) return {x(0), x(1), x(2)};
-  const Eigen::VectorXd y = toNorthPole_ * x;  // the start is e_last
+  // The start is e_last (no start point given: x as it is).
+  const Eigen::VectorXd y = reflection_.size() == x.size() ? Eigen::VectorXd(x - 2.0 * reflection_.dot(x) * reflection_) : x;
   const Eigen::Index last = y.size() - 1;
   const double across = y.head(last).norm();                             // sin(theta)
   const double theta = std::atan2(across, y(last));                      // the angle from the start, in [0, pi]

@@ -10,6 +10,7 @@
 //            would send the neighbourhood of the antipode to infinity, and paths off the panel.)
 //            A path through the antipode reappears on the opposite side of the boundary; the renderer
 //            leaves a gap there. For n > 5 the first three of the n-2 directions are shown.
+// A slack chain (L <= n-2) has no sphere: constructed with an empty start point, the view draws nothing.
 
 #include <Eigen/Dense>
 
@@ -25,7 +26,9 @@ class ConfigurationView {
 
  private:
   int rods_;
-  Eigen::MatrixXd toNorthPole_;  // an orthogonal map taking the start point to the last axis e_(n-2)
+  // The Householder reflection I - 2 w w^T taking the start point to the last axis e_(n-2) (w = 0: identity),
+  // applied in O(n): chains of a thousand rods have a 999-dimensional sphere.
+  Eigen::VectorXd reflection_;
 };
 
 }  // namespace sl

@@ -74,7 +74,7 @@ FrameBuilder::FrameBuilder(const Scene& scene, const std::vector<InitialState>& 
     : scene_(scene),
       runs_(std::move(runs)),
       families_(std::move(families)),
-      view_(scene.chain.rods, starts.at(0).spherePoint),
+      view_(scene.chain.rods, starts.at(0).spherePoint),  // empty for a slack chain: no sphere to draw
       frameCount_(scene.frameCount()),
       history_(runs_.size()),
       divergence_(runs_.empty() ? 0 : runs_.size() - 1),
@@ -161,6 +161,10 @@ void FrameBuilder::sampleRunAt(size_t run, double t, bool isFrameTime) {
     history.hingesAtFrame.resize(2, 0);
     return;
   }
+  if (sample->spherePoint.size() == 0) {  // a slack chain: no configuration sphere, the linkage alone
+    if (isFrameTime) recordFrameState(history, *sample);
+    return;
+  }
   frame.current = view_.project(sample->spherePoint);
   frame.path.push_back(frame.current);
   frame.pathTimes.push_back(t);
@@ -172,12 +176,16 @@ void FrameBuilder::sampleRunAt(size_t run, double t, bool isFrameTime) {
   }
   fadeOut(frame.path, frame.pathTimes, t, scene_.view.pathFadeSeconds);
   thinOut(frame.path, frame.pathTimes);
-  if (!isFrameTime) return;
-  frame.hinges = hingeList(sample->hinges);
-  history.hingesAtFrame = sample->hinges;
-  history.energyErrors.push_back(std::abs(sample->relativeEnergyDrift));
-  history.jacobiSizes.push_back(sample->jacobi.value_or(kNaN));
-  // Trails keep one point per frame, for as long as they are visible.
+  if (isFrameTime) recordFrameState(history, *sample);
+}
+
+// At a frame time: the linkage, the plots' values and the trails (one point per frame, while visible).
+void FrameBuilder::recordFrameState(RunHistory& history, const Sample& sample) {
+  RunFrame& frame = history.frame;
+  frame.hinges = hingeList(sample.hinges);
+  history.hingesAtFrame = sample.hinges;
+  history.energyErrors.push_back(std::abs(sample.relativeEnergyDrift));
+  history.jacobiSizes.push_back(sample.jacobi.value_or(kNaN));
   const size_t kept = static_cast<size_t>(std::ceil(scene_.view.trailFadeSeconds * scene_.output.fps)) + 1;
   for (size_t i = 0; i < scene_.view.trailHinges.size(); ++i) {
     std::vector<Vec2>& trail = frame.trails[i];

@@ -46,6 +46,7 @@ class FrameBuilder {
 
   void sampleFrame(int k);  // advance the history to frame k (k = sampled_ + 1)
   void sampleRunAt(size_t run, double t, bool isFrameTime);
+  void recordFrameState(RunHistory& history, const Sample& sample);
   void sampleMembers(int k);
   double pathSampleTime(int k, int j, int substeps) const;  // every family member up to frame k, members spread over the cores
   void recordPlots(int k);

@@ -39,15 +39,20 @@ void drawChain(const RunFrame& run, const PlaneView& view, double base, float ro
   for (const Vec2& h : run.hinges)
     if (std::isfinite(h.x) && std::isfinite(h.y)) joints.push_back(view(h));  // a broken state is not drawn
   joints.push_back(view(base, 0));
+  // Joints as balls while a rod is long enough on screen to show them apart (8 px); a long chain's hinges
+  // would only blot it, and its rods, hairlines then, are drawn in the run's colour to stand out.
+  const bool jointsApart = view.scale >= 8;
+  const Rgba rodColor = jointsApart ? palette::silver : toRgba(run.color);
   for (std::size_t k = 0; k + 1 < joints.size(); ++k)
-    batch.capsule(joints[k], joints[k + 1], rod, palette::silver, true, 0.6f);
-  for (std::size_t k = 1; k + 1 < joints.size(); ++k) {
+    batch.capsule(joints[k], joints[k + 1], rod, rodColor, jointsApart, 0.6f);
+  for (std::size_t k = 1; jointsApart && k + 1 < joints.size(); ++k) {
     batch.disc(joints[k], 1.75f * rod, palette::jointSilver, true, 0.5f);
     batch.disc(joints[k], 0.85f * rod, toRgba(run.color), true, 0.4f);
   }
+  const float pinRadius = std::max(2.2f * rod, 3.3f);  // the pins stay visible however long the chain
   for (const P2& pin : {joints.front(), joints.back()}) {
-    batch.disc(pin, 2.2f * rod, palette::pinCharcoal, true, 0.3f);
-    batch.disc(pin, 0.7f * rod, palette::silver);
+    batch.disc(pin, pinRadius, palette::pinCharcoal, true, 0.3f);
+    batch.disc(pin, pinRadius * (0.7f / 2.2f), palette::silver);
   }
 }
 
@@ -68,7 +73,9 @@ void drawFeather(const RunFrame& run, const PlaneView& view, double base, float 
 void drawRun(const PanelContext& context, const RunFrame* run, const PixelRect& area, bool label, ShapeBatch& batch) {
   // One scale for every run (runs may differ in L): each is drawn on its own pins.
   const PlaneView view = fitFrameView(context.frame, area);
-  const float rod = std::max(1.5f, float(0.045 * view.scale));  // rod half width
+  // Rod half width: 4.5% of a rod's length on screen, at least 1.5 px while rods are long enough to carry it
+  // (a chain of hundreds of rods is drawn with hairline rods instead of a solid band).
+  const float rod = std::max(std::min(1.5f, std::max(0.9f, float(0.12 * view.scale))), float(0.045 * view.scale));
   const double base = run ? run->baseLength : context.frame.rods - 1;
   drawFloor(view, base, rod, batch);
   if (!run) return;

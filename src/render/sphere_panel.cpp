@@ -145,6 +145,31 @@ void drawConjugatePoints(const RunFrame& run, const SphereCamera& camera, const 
   }
 }
 
+// 5+ rods: the ball view explained (frames/configuration_view.hpp): the start marked at the centre, the ring of
+// radius 1/2 (the great sphere at a right angle from the start) outlined, and a caption saying what the radius
+// means and, for n > 5, which directions are shown.
+void drawBallGuide(const PanelContext& context, const SphereCamera& camera, ShapeBatch& batch) {
+  const V3 centre{0, 0, 0};
+  const P2 at = camera.project(centre);
+  const float half = float(0.5 * camera.pixelsPerUnitAt(centre));
+  std::vector<PolylinePoint> ring;
+  for (int k = 0; k <= 96; ++k) {
+    const double a = 2 * std::acos(-1.0) * k / 96;
+    ring.push_back({{at.x + half * float(std::cos(a)), at.y + half * float(std::sin(a))}, 0.8f,
+                    palette::withAlpha(palette::softInk, 0.55f), {}});
+  }
+  batch.polyline(ring);
+  const float arm = std::max(3.0f, 0.03f * half);
+  batch.capsule({at.x - arm, at.y}, {at.x + arm, at.y}, 0.9f, palette::ink);
+  batch.capsule({at.x, at.y - arm}, {at.x, at.y + arm}, 0.9f, palette::ink);
+  const int rods = context.frame.rods;
+  std::string caption = "S^" + std::to_string(rods - 2) + " in a ball: + the start, radius = angle from it / pi, ring = 90 deg";
+  if (rods > 5) caption += "; first 3 of " + std::to_string(rods - 2) + " directions";
+  const float pad = 0.02f * context.rect.height;
+  context.font.draw(batch, context.font.fitted(caption, TextSize::Small, context.rect.width - 2 * pad), TextSize::Small,
+                    context.rect.x + pad, context.rect.y + context.rect.height - pad, palette::softInk);
+}
+
 // 3 rods: the configuration circle, the equator.
 void drawEquator(const SphereCamera& camera, ShapeBatch& batch) {
   std::vector<PolylinePoint> points;
@@ -199,6 +224,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   SphereCamera camera(context.settings.camera, context.frame.time, sphereRect);
   const Placement placement{space == ViewSpace::Sphere, kTubeRadius};
   if (space == ViewSpace::Circle) drawEquator(camera, batch);
+  if (space == ViewSpace::Ball) drawBallGuide(context, camera, batch);
   if (decoration) {
     const float pad = 0.02f * context.rect.height;
     const Placement onSurface{true, 0.004};

@@ -56,9 +56,10 @@ void readLinkage(const json& value, const std::string& path, bool forRun, Chain&
                                  std::to_string(chain.rods) + " (a run may set its own L and masses)");
     }
   } else if (const auto rods = linkage.integer("rods", true)) {
-    if (*rods < limits::kMinRods || *rods > limits::kMaxRods) {
+    if (*rods < limits::kMinRods || *rods > limits::kMaxAmbientRods) {
       linkage.report("rods", "found " + std::to_string(*rods) + "; expected an integer from 3 to " +
-                                 std::to_string(limits::kMaxRods) + " (fewer than 3 rods cannot move)");
+                                 std::to_string(limits::kMaxAmbientRods) + " (fewer than 3 rods cannot move; above " +
+                                 std::to_string(limits::kMaxRods) + " the ambient method only)");
     } else {
       chain.rods = static_cast<int>(*rods);
       rodsKnown = true;
@@ -66,10 +67,13 @@ void readLinkage(const json& value, const std::string& path, bool forRun, Chain&
   }
   const int n = chain.rods;
   if (const auto base = linkage.number("L", !forRun)) {
-    if (rodsKnown && (*base <= n - 2 || *base >= n)) {
+    // n-2 < L < n: the configuration space is a sphere; 0 < L <= n-2: a slack chain, for the ambient method
+    // (checked with the runs' methods, readRun).
+    if (rodsKnown && (*base <= 0 || *base >= n)) {
       std::ostringstream allowed;
-      allowed << "a length strictly between n-2 = " << n - 2 << " and n = " << n
-              << " (outside it the configuration space is not a sphere)";
+      allowed << "a length strictly between 0 and n = " << n
+              << " (n-2 < L < n: the configuration space is a sphere; 0 < L <= n-2: a slack chain, ambient method "
+                 "only)";
       linkage.report("L", "found " + describeJson((*linkage.member("L"))) + "; expected " + allowed.str());
     }
     chain.baseLength = *base;
@@ -130,19 +134,105 @@ void readDrag(const JsonObject& initial, int rods, InitialSpec& spec, std::vecto
   }
 }
 
+// A list of n-1 points [[x, y], ...] under `key`, or nullopt (problems recorded).
+std::optional<Eigen::Matrix2Xd> readPoints(const JsonObject& object, const std::string& key, int count) {
+  const json* value = object.member(key);
+  const std::string what = "an array of n-1 = " + std::to_string(count) + " points [x, y]";
+  if (!value->is_array() || value->size() != static_cast<std::size_t>(count)) {
+    object.report(key, "found " + describeJson(*value) + "; expected " + what);
+    return std::nullopt;
+  }
+  Eigen::Matrix2Xd points(2, count);
+  for (int k = 0; k < count; ++k) {
+    const json& point = (*value)[static_cast<std::size_t>(k)];
+    if (!point.is_array() || point.size() != 2 || !point[0].is_number() || !point[1].is_number()) {
+      object.report(key, "found " + describeJson(point) + " at index " + std::to_string(k) + "; expected " + what);
+      return std::nullopt;
+    }
+    points(0, k) = point[0].get<double>();
+    points(1, k) = point[1].get<double>();
+  }
+  if (!points.allFinite()) {
+    object.report(key, "holds a non-finite number; expected finite coordinates");
+    return std::nullopt;
+  }
+  return points;
+}
+
+// A start by hinges (issue 16; any chain, slack ones included; ambient method): "hinges" is "arc" or the n-1
+// points, then "velocities" (n-1 vectors) or a "push": {"hinge": k, "velocity": [vx, vy]} or {"seed": s,
+// "size": v} (a random velocity of size about v at every hinge). Both are projected onto the rod constraints
+// when the run starts (simulation/initial_state.hpp), and the commands say if they had to move.
+void readHingeStart(const JsonObject& initial, int rods, InitialSpec& spec, std::vector<SceneProblem>& problems) {
+  spec.kind = InitialSpec::Kind::Hinges;
+  const int count = rods - 1;
+  if (!initial.has("hinges")) {
+    initial.reportMissing("hinges", "\"arc\" or the n-1 hinge positions [[x, y], ...]");
+  } else if (initial.member("hinges")->is_string()) {
+    const std::string shape = initial.member("hinges")->get<std::string>();
+    if (shape == "arc")
+      spec.shape = InitialSpec::Shape::Arc;
+    else
+      initial.report("hinges", "found \"" + shape + "\"; expected \"arc\" or the n-1 hinge positions");
+  } else if (const auto points = readPoints(initial, "hinges", count)) {
+    spec.hinges = *points;
+  }
+  if (initial.has("velocities") == initial.has("push")) {
+    initial.report(initial.has("push") ? "push" : "velocities",
+                   "expected exactly one of \"velocities\" (n-1 vectors) and \"push\"");
+    return;
+  }
+  if (initial.has("velocities")) {
+    if (const auto velocities = readPoints(initial, "velocities", count)) spec.hingeVelocities = *velocities;
+    return;
+  }
+  const JsonObject push(*initial.member("push"), initial.pathOf("push"), problems, {"hinge", "velocity", "seed", "size"});
+  if (!push.isObject()) return;
+  if (push.has("seed") || push.has("size")) {
+    if (push.has("hinge") || push.has("velocity"))
+      push.report("seed", "given with hinge/velocity; expected a push on one hinge or a random push (seed, size)");
+    if (const auto seed = push.integer("seed", true)) {
+      if (*seed < 0) push.report("seed", "found " + std::to_string(*seed) + "; expected an integer >= 0");
+      spec.pushSeed = std::max(0L, *seed);
+    }
+    if (const auto size = push.number("size"); size && push.checkRange("size", *size, 1e-12, 1e6, "a size above 0"))
+      spec.pushSize = *size;
+    return;
+  }
+  if (const auto hinge = push.integer("hinge", true)) {
+    if (*hinge < 1 || *hinge > count)
+      push.report("hinge", "found " + std::to_string(*hinge) + "; expected a hinge from 1 to n-1 = " +
+                               std::to_string(count));
+    else
+      spec.pushHinge = static_cast<int>(*hinge);
+  }
+  if (const auto velocity = push.numbers("velocity", true);
+      velocity && push.checkSize("velocity", *velocity, 2, "a velocity [vx, vy]")) {
+    if (velocity->cwiseAbs().maxCoeff() > 1e6) push.report("velocity", "expected components of at most 1e6");
+    spec.pushVelocity = *velocity;
+  }
+}
+
 // Reads an "initial" object at `path` (the scene's start, or a run's own) for a chain of `rods` rods. A run's
 // start replaces the scene's whole: it is one start, in any form the scene's may take.
 void readInitial(const json& value, const std::string& path, int rods, InitialSpec& spec,
                  std::vector<SceneProblem>& problems) {
-  const JsonObject initial(value, path, problems, {"coords", "velocity", "drag", "unit_speed"});
+  const JsonObject initial(value, path, problems,
+                           {"coords", "velocity", "drag", "unit_speed", "hinges", "velocities", "push"});
   if (!initial.isObject()) return;
   spec = InitialSpec{};
   spec.unitSpeed = initial.boolean("unit_speed").value_or(false);
   const bool hasDrag = initial.has("drag");
   const bool hasCoords = initial.has("coords") || initial.has("velocity");
-  if (hasDrag && hasCoords) {
-    initial.report("drag",
-                   "given together with coords/velocity; expected one start: either coords and velocity, or drag");
+  const bool hasHinges = initial.has("hinges") || initial.has("velocities") || initial.has("push");
+  if (int(hasDrag) + int(hasCoords) + int(hasHinges) > 1) {
+    initial.report(hasDrag ? "drag" : "hinges",
+                   "given together with another form of start; expected one start: coords and velocity, or drag, "
+                   "or hinges with velocities or a push");
+    return;
+  }
+  if (hasHinges) {
+    readHingeStart(initial, rods, spec, problems);
     return;
   }
   if (hasDrag) {
@@ -305,11 +395,40 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
   }
   spec.color = readColor(run, "color");
   if (run.has("watchdog")) readWatchdog(run, spec.config, problems);
+  // What only the ambient method can move: a slack chain, a start by hinges, more than kMaxRods rods.
+  const bool chartFree = spec.chain.isSlack() || spec.initial.kind == InitialSpec::Kind::Hinges;
+  if (spec.config.method != Method::Ambient && run.has("method")) {
+    if (spec.chain.isSlack())
+      run.report("method", "found \"" + nameOf(spec.config.method) + "\" for a slack chain (L = " +
+                               shortest(spec.chain.baseLength) + " <= n-2): it has no chart; expected ambient");
+    else if (spec.initial.kind == InitialSpec::Kind::Hinges)
+      run.report("method", "found \"" + nameOf(spec.config.method) +
+                               "\" for a start by hinges; expected ambient (the chart methods start from coords or "
+                               "a drag)");
+    else if (scene.chain.rods > limits::kMaxRods)
+      run.report("method", "found \"" + nameOf(spec.config.method) + "\" for " + std::to_string(scene.chain.rods) +
+                               " rods; the chart methods are limited to " + std::to_string(limits::kMaxRods) +
+                               " rods (their charts stay well conditioned there); expected ambient");
+  }
+  if (spec.chain.isSlack() && spec.initial.kind != InitialSpec::Kind::Hinges) {
+    const SceneProblem problem{spec.ownInitial ? run.pathOf("initial") : "initial",
+                               "a slack chain (L = " + shortest(spec.chain.baseLength) +
+                                   " <= n-2) has no configuration sphere, so no chart or drag start; expected a start "
+                                   "by \"hinges\""};
+    if (std::none_of(problems.begin(), problems.end(), [&](const SceneProblem& p) { return p.jsonPath == problem.jsonPath; }))
+      problems.push_back(problem);
+  }
   if (run.has("family")) spec.family = readFamily(run, scene.chain.rods, problems);
+  if (spec.family && chartFree)
+    run.report("family", "a family starts from a point of the configuration sphere; expected a start by coords or "
+                         "drag on a chain with n-2 < L < n");
   spec.config.jacobi = run.boolean("jacobi").value_or(false);
   if (spec.config.jacobi && spec.config.method != Method::Ambient)
     run.report("jacobi", "needs the ambient method (its linearisation gives the Jacobi fields); found \"" +
                              nameOf(spec.config.method) + "\"");
+  if (spec.config.jacobi && chartFree)
+    run.report("jacobi", "Jacobi fields start from a point of the configuration sphere; expected a start by coords "
+                         "or drag on a chain with n-2 < L < n");
   if (spec.config.jacobi && scene.chain.rods < 4)
     run.report("jacobi", "needs 4 or more rods (3 rods have no direction across the motion)");
   return spec;

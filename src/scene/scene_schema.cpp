@@ -50,10 +50,16 @@ json integer(long minimum, long maximum, const std::string& description) {
 json text(const std::string& description) { return {{"type", "string"}, {"description", description}}; }
 json flag(const std::string& description) { return {{"type", "boolean"}, {"description", description}}; }
 
+json points(const std::string& description) {
+  return {{"type", "array"},
+          {"items", {{"type", "array"}, {"items", {{"type", "number"}}}, {"minItems", 2}, {"maxItems", 2}}},
+          {"description", description}};
+}
+
 json linkageSchema(bool forRun) {
-  json properties{{"rods", integer(limits::kMinRods, limits::kMaxRods, forRun ? "the scene's n (a run cannot change it)"
+  json properties{{"rods", integer(limits::kMinRods, limits::kMaxAmbientRods, forRun ? "the scene's n (a run cannot change it)"
                                                                             : "n, unit rods")},
-                  {"L", positive("distance between the pins, n-2 < L < n")},
+                  {"L", positive("distance between the pins, 0 < L < n (L <= n-2: a slack chain, ambient method)")},
                   {"hinge_masses", numbers("n-1 point masses at the interior hinges", 0, limits::kMaxMass)},
                   {"rod_masses", numbers("n uniform rod masses", 0, limits::kMaxMass)}};
   if (forRun) return closedObject(properties, "this run's own L and masses (default: the scene's linkage)");
@@ -67,7 +73,15 @@ json initialSchema(const std::string& description) {
        {"drag", closedObject({{"point", numbers("a point of R^(n-1)")},
                               {"direction", numbers("a release direction in R^(n-1)")}},
                              "start as the spec's demo", json::array({"point", "direction"}))},
-       {"unit_speed", flag("rescale the velocity to kinetic energy 1/2")}},
+       {"unit_speed", flag("rescale the velocity to kinetic energy 1/2")},
+       {"hinges", {{"oneOf", json::array({{{"enum", json::array({"arc"})}}, points("n-1 hinge positions [x, y]")})},
+                   {"description", "a start by hinges (ambient method): \"arc\" or the positions"}}},
+       {"velocities", points("n-1 hinge velocities [vx, vy]")},
+       {"push", closedObject({{"hinge", integer(1, limits::kMaxAmbientRods - 1, "the hinge pushed")},
+                              {"velocity", fixedNumbers(2, -1e6, 1e6, "its velocity [vx, vy]")},
+                              {"seed", integer(0, 9223372036854775807L, "a random push: its seed")},
+                              {"size", positive("a random push: its size")}},
+                             "instead of velocities: one hinge pushed, or every hinge at random")}},
       description);
 }
 

@@ -70,6 +70,12 @@ void addPanel(const json& value, const std::string& path, Scene& scene, std::vec
   }
   if (!kind) return;
   panel.kind = *kind;
+  const bool slack =
+      scene.chain.isSlack() ||
+      std::any_of(scene.runs.begin(), scene.runs.end(), [](const RunSpec& run) { return run.chain.isSlack(); });
+  if (panel.kind == PanelKind::Sphere && slack)
+    problems.push_back({path, "a slack chain (L <= n-2) has no configuration sphere to draw; expected linkage, plot "
+                              "or text panels"});
   if (panel.kind == PanelKind::Plot) {
     if (plot.kind == PlotKind::Divergence && scene.runs.size() < 2) {
       problems.push_back({path, "a divergence plot compares runs; expected at least 2 runs, found " +
@@ -92,7 +98,12 @@ void addPanel(const json& value, const std::string& path, Scene& scene, std::vec
 void readPanels(const JsonObject& view, Scene& scene, std::vector<SceneProblem>& problems) {
   const json* panels = view.member("panels");
   if (panels == nullptr) {
-    for (const char* name : {"sphere", "linkage"}) addPanel(json(name), "view.panels", scene, problems);
+    // A slack chain has no sphere: its linkage alone.
+    const bool slack =
+        scene.chain.isSlack() ||
+        std::any_of(scene.runs.begin(), scene.runs.end(), [](const RunSpec& run) { return run.chain.isSlack(); });
+    for (const char* name : {"sphere", "linkage"})
+      if (!(slack && std::string(name) == "sphere")) addPanel(json(name), "view.panels", scene, problems);
     return;
   }
   if (!panels->is_array() || panels->empty()) {
@@ -189,6 +200,11 @@ void readSphereSurface(const JsonObject& view, Scene& scene, std::vector<ScenePr
       surface.colorBy = *kind;
   }
   surface.stiffness = object.boolean("stiffness").value_or(false);
+  if (scene.chain.isSlack() && surface.decorated()) {
+    object.report(surface.colorBy != SphereColoring::None ? "color_by" : "stiffness",
+                  "a slack chain (L <= n-2) has no configuration sphere to colour or decorate");
+    surface = {};
+  }
   if (scene.chain.rods != 4 && surface.decorated()) {
     const std::string why = "found " + std::to_string(scene.chain.rods) +
                             " rods; curvature, bending and stiffness are drawn for 4 rods only (the configuration "

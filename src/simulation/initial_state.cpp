@@ -171,6 +171,8 @@ InitialState initialStateFromHinges(const Chain& chain, const InitialSpec& spec,
   if (!(speed2 > 0) || !std::isfinite(speed2))
     throw std::invalid_argument("the hinge velocities move nothing along the rod constraints (or overflow)");
   if (spec.unitSpeed) start.hingeVelocities /= std::sqrt(speed2);
+  // A chain with a configuration sphere (n-2 < L < n): the start's point on it too, for the views.
+  if (!chain.isSlack()) start.spherePoint = spherePointFromHinges(chain, start.hinges);
   return start;
 }
 

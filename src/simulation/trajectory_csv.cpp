@@ -20,8 +20,8 @@ std::vector<std::string> trajectoryCsvColumns(const TrajectoryCsvLayout& layout)
   std::vector<std::string> columns = {"run"};
   if (layout.memberColumn) columns.push_back("member");
   columns.push_back("time");
-  const int k = rods - 2;
-  if (rods == 4) {
+  const int k = layout.chartColumns ? rods - 2 : 0;
+  if (rods == 4 && layout.chartColumns) {
     columns.insert(columns.end(), {"phi", "t", "phidot", "tdot"});
   } else {
     for (int i = 1; i <= k; ++i) columns.push_back("c" + std::to_string(i));
@@ -52,8 +52,10 @@ std::string trajectoryCsvRow(const std::string& run, const Sample& s, const std:
   };
   if (layout.memberColumn) line += ',' + std::to_string(member);
   add(s.time);
-  for (Eigen::Index i = 0; i < s.coords.size(); ++i) add(s.coords(i));
-  for (Eigen::Index i = 0; i < s.rates.size(); ++i) add(s.rates(i));
+  if (layout.chartColumns) {
+    for (Eigen::Index i = 0; i < s.coords.size(); ++i) add(s.coords(i));
+    for (Eigen::Index i = 0; i < s.rates.size(); ++i) add(s.rates(i));
+  }
   add(s.energy);
   for (Eigen::Index j = 0; j < s.hinges.cols(); ++j) add(s.hinges(0, j)), add(s.hinges(1, j));
   if (layout.jacobiColumn) {

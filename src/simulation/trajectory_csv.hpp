@@ -22,6 +22,7 @@ struct TrajectoryCsvLayout {
   int rods = 4;
   bool memberColumn = false;
   bool jacobiColumn = false;
+  bool chartColumns = true;  // false when a run's chain is slack (no chart): run,time,energy,p1x,...,status
 };
 
 std::vector<std::string> trajectoryCsvColumns(const TrajectoryCsvLayout& layout);  // run .. status
