@@ -20,7 +20,15 @@ long parseCount(const std::string& text) {
 
 FrameRange parseFrameRange(const std::string& text, int frameCount) {
   const std::string allowed = "expected A:B with 0 <= A < B <= " + std::to_string(frameCount) +
-                              " (the scene has frames 0.." + std::to_string(frameCount - 1) + ")";
+                              " (the scene has frames 0.." + std::to_string(frameCount - 1) +
+                              "), or K/N with 1 <= K <= N <= " + std::to_string(frameCount);
+  if (const size_t slash = text.find('/'); slash != std::string::npos) {
+    const long shard = parseCount(text.substr(0, slash)), shards = parseCount(text.substr(slash + 1));
+    if (shard < 1 || shards < shard || shards > frameCount)
+      throw CommandExit(kExitBadInput, "--frames: found \"" + text + "\"; " + allowed);
+    const auto boundary = [&](long k) { return static_cast<int>(k * static_cast<long>(frameCount) / shards); };
+    return {boundary(shard - 1), boundary(shard)};
+  }
   const size_t colon = text.find(':');
   if (colon == std::string::npos) throw CommandExit(kExitBadInput, "--frames: found \"" + text + "\"; " + allowed);
   const std::string left = text.substr(0, colon), right = text.substr(colon + 1);

@@ -1,6 +1,7 @@
 #pragma once
-// The --frames A:B option: a half-open range of frame numbers, so that shards [0:200) [200:400) ...
-// split one animation. "A:" runs to the end, ":B" starts at 0.
+// The --frames option: a half-open range A:B of frame numbers, so that shards [0:200) [200:400) ... split one
+// animation ("A:" runs to the end, ":B" starts at 0); or K/N, shard K of N equal contiguous parts (K = 1..N,
+// frames floor((K-1) F / N) .. floor(K F / N) - 1 of F), as a job array numbers its tasks.
 
 #include <string>
 

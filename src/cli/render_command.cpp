@@ -268,8 +268,9 @@ void addRenderCommand(CLI::App& app) {
   addSceneOverrideOption(*command, args->overrides);
   command->add_option("--out", args->out, "frame folder (default: the scene's output.folder, renders/<name>)");
   command->add_option("--frames", args->frames,
-                      "half-open range A:B of frames to render (A: or :B allowed); shards of one "
-                      "animation give byte-identical files");
+                      "half-open range A:B of frames to render (A: or :B allowed), or K/N: shard K of N equal "
+                      "parts (K = 1..N, as a job array numbers its tasks); shards of one animation give "
+                      "byte-identical files");
   command->add_option("--video", args->video,
                       "also encode a video with ffmpeg, its format by the extension: .mp4 (H.264), .webm (VP9), "
                       ".gif (palette-optimised), e.g. renders/default.mp4");

@@ -120,6 +120,29 @@ TEST(RenderCli, ShardsByTheReadmeRecipeEqualAWholeRenderByteForByte) {
   EXPECT_TRUE(a == b) << "shard union differs from the whole render";
 }
 
+// --frames K/N, as a job array's tasks give it (scripts/slurm/render-array.sbatch): N contiguous shards, any
+// order, equal to the whole render byte for byte; bad K/N refused with the allowed range.
+TEST(RenderCli, ShardsKOfNCoverTheAnimationOnceAndEqualAWholeRender) {
+  TempFolder folder;
+  const std::string scene = shippedScene("default.json");
+  for (const char* shard : {"3/3", "1/3", "2/3"}) {
+    const ProcessResult part =
+        runLinkage({"render", scene, "--size", "160x90", "--frames", shard, "--out", "shards", "--quiet"}, folder.path());
+    ASSERT_EQ(part.code, 0) << shard << ": " << part.err;
+    if (std::string(shard) == "3/3") {  // frames 400..600 of 601
+      EXPECT_TRUE(fs::exists(folder.path() / "shards" / "frame_00400.png"));
+      EXPECT_FALSE(fs::exists(folder.path() / "shards" / "frame_00399.png"));
+    }
+  }
+  ASSERT_EQ(runLinkage({"render", scene, "--size", "160x90", "--out", "whole", "--quiet"}, folder.path()).code, 0);
+  EXPECT_TRUE(folderContents(folder.path() / "shards") == folderContents(folder.path() / "whole"));
+  for (const char* bad : {"0/3", "4/3", "1/0", "1/602", "a/3"}) {
+    const ProcessResult refused = runLinkage({"render", scene, "--frames", bad, "--out", "x"}, folder.path());
+    EXPECT_EQ(refused.code, 2) << bad;
+    EXPECT_NE(refused.err.find("or K/N with 1 <= K <= N <= 601"), std::string::npos) << refused.err;
+  }
+}
+
 // Starts `linkage arguments...` in folder, sends SIGTERM once `started` says so (polled for at most 15 s), and
 // waits for it to end.
 ProcessResult renderUntilTerminated(const std::vector<std::string>& arguments, const fs::path& folder,
