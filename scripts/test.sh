@@ -3,8 +3,12 @@
 # fast tests again under AddressSanitizer + UndefinedBehaviorSanitizer (build-asan, -O1), then the scene
 # fuzzer briefly (libFuzzer, 10^4 executions), so that every target the project has is built and run.
 #
-#   scripts/test.sh                      all three passes (what CI runs)
+#   scripts/test.sh                      all passes (what CI runs)
 #   SL_SKIP_SANITIZE=1 scripts/test.sh   the normal pass only (a quick local check)
+#   SL_SKIP_SLURM=1 scripts/test.sh      everything but the Slurm cluster test
+#
+# Last, the cluster recipes on a real one-node Slurm (scripts/slurm-test.sh: installs slurm-wlm and munge if
+# missing, about two minutes).
 #
 # The sanitizer pass leaves out the tests labelled "slow" (the process-fault tests, which drive the binary
 # through signals and full disks: the normal pass covers them); the stages' own suites and the fault tests
@@ -36,3 +40,7 @@ unset ASAN_OPTIONS UBSAN_OPTIONS
 
 # The scene fuzzer builds (clang, libFuzzer) and runs 10^4 inputs from its corpus; longer runs: scripts/fuzz.sh.
 scripts/fuzz.sh --runs 10000 --build build-fuzz
+
+# The README's Slurm recipes (scripts/slurm/*.sbatch) on a throwaway one-node cluster: render and sweep arrays
+# byte-identical to single runs, a cancelled task resubmitted.
+[[ "${SL_SKIP_SLURM:-0}" == 1 ]] || scripts/slurm-test.sh
