@@ -24,6 +24,16 @@ namespace sl {
 
 namespace {
 
+// A word for a POSIX shell: as it is when it is safe, else in single quotes.
+std::string shellWord(const std::string& word) {
+  const bool safe = !word.empty() && word.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                                                            "0123456789-_./,:=+") == std::string::npos;
+  if (safe) return word;
+  std::string quoted = "'";
+  for (const char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
 struct StabilityArguments {
   std::vector<std::string> methods;  // as given; parsed into options
   std::string integrator;            // as given, empty: each method's sweep default
@@ -34,7 +44,27 @@ struct StabilityArguments {
   bool charts = true;
   bool quiet = false;
   std::string out = "renders/stability";
+  int plan = 0;                 // --plan N: print the N shard jobs instead of running
+  std::string givenOptions;     // the options as given, for the plan's command lines (set by the callback)
 };
+
+// A sweep planned as N independent shard jobs writing into one shared --out: the job array, the same as plain
+// commands (any scheduler, GNU parallel), the merge, and how the cells divide.
+void printPlan(const StabilityArguments& args) {
+  const long cells = static_cast<long>(args.options.grid) * args.options.grid;
+  const int shards = args.plan;
+  const std::string options = args.givenOptions;
+  std::cout << "# " << shards << " shards of " << cells << " cells (" << cells / shards << " to " << (cells + shards - 1) / shards
+            << " each: shard K takes the cells c with c mod " << shards << " = K - 1), into " << args.out << "\n"
+            << "# on Slurm (scripts/slurm/stability-array.sbatch; a failed shard: SHARDS=" << shards
+            << " sbatch --array=K ...):\n"
+            << "sbatch --array=1-" << shards << " scripts/slurm/stability-array.sbatch" << options << "\n"
+            << "# anywhere else, one command per shard (each writes only its own "
+            << "stability-" << args.options.kind << ".shard-K-of-" << shards << ".csv):\n";
+  for (int k = 1; k <= shards; ++k) std::cout << "linkage stability" << options << " --shard " << k << "/" << shards << "\n";
+  std::cout << "# when all are done (the last shard merges by itself; this names any shard still missing):\n"
+            << "linkage stability" << options << " --merge\n";
+}
 
 // The full sweep's files: CSV, summary (also printed) and charts.
 void writeSweepOutputs(const CsvTable& rows, const StabilityArguments& args) {
@@ -74,6 +104,13 @@ void runStability(StabilityArguments& args) {
     gridTimesThrough(options.duration, options.sampleInterval);
   } catch (const std::invalid_argument& error) {
     throw CLI::ValidationError("--interval", error.what());
+  }
+  if (args.plan > 0) {
+    if (args.plan > static_cast<long>(options.grid) * options.grid)
+      throw CommandExit(kExitBadInput, "linkage stability --plan: found " + std::to_string(args.plan) +
+                                           "; expected at most one shard per cell (" +
+                                           std::to_string(options.grid * options.grid) + ")");
+    return printPlan(args);
   }
   if (args.charts && !gnuplotAvailable())
     throw std::runtime_error("charts need gnuplot with pngcairo: apt-get install gnuplot-nox (or pass --no-charts)");
@@ -160,7 +197,25 @@ void addStabilityCommand(CLI::App& app) {
   stability->add_flag("!--no-charts", args->charts, "skip the gnuplot heat maps");
   stability->add_flag("--quiet", args->quiet, "no progress on stderr");
   stability->add_option("--out", args->out, "output folder")->capture_default_str();
-  stability->callback([args] { runStability(*args); });
+  stability->add_option("--plan", args->plan, "print the sweep as N shard jobs (a job array, plain commands, the merge)")
+      ->check(CLI::Range(1, 1 << 20))
+      ->type_name("N");
+  stability->callback([args, stability] {
+    // The options as given (but --plan, --shard, --merge), quoted for a shell: the plan's command lines.
+    args->givenOptions.clear();
+    for (const CLI::Option* option : stability->get_options()) {
+      const std::string name = option->get_name();
+      if (option->count() == 0 || name == "--plan" || name == "--shard" || name == "--merge" || name == "--help")
+        continue;
+      args->givenOptions += " " + name;
+      if (option->get_items_expected_max() == 0) continue;  // a flag: its name says it all
+      std::string values;  // a list option (--methods) as one comma-separated word
+      for (const std::string& value : option->results()) values += (values.empty() ? "" : ",") + value;
+      args->givenOptions += " " + shellWord(values);
+    }
+    if (stability->get_option("--out")->count() == 0) args->givenOptions += " --out " + shellWord(args->out);
+    runStability(*args);
+  });
 }
 
 }  // namespace sl
