@@ -34,7 +34,7 @@ void drawTrails(const RunFrame& run, const PlaneView& view, float rod, ShapeBatc
   }
 }
 
-void drawChain(const RunFrame& run, const PlaneView& view, double base, float rod, ShapeBatch& batch) {
+void drawChain(const RunFrame& run, const PlaneView& view, double base, float rod, float outline, ShapeBatch& batch) {
   std::vector<P2> joints{view(0, 0)};
   for (const Vec2& h : run.hinges)
     if (std::isfinite(h.x) && std::isfinite(h.y)) joints.push_back(view(h));  // a broken state is not drawn
@@ -43,6 +43,11 @@ void drawChain(const RunFrame& run, const PlaneView& view, double base, float ro
   // would only blot it, and its rods, hairlines then, are drawn in the run's colour to stand out.
   const bool jointsApart = view.scale >= 8;
   const Rgba rodColor = jointsApart ? palette::silver : toRgba(run.color);
+  // In overlay, each run's rods sit on an outline of its colour, narrower for each later run: runs that coincide
+  // show as nested rings of their colours around the silver.
+  if (outline > 0)
+    for (std::size_t k = 0; k + 1 < joints.size(); ++k)
+      batch.capsule(joints[k], joints[k + 1], rod + outline, toRgba(run.color));
   for (std::size_t k = 0; k + 1 < joints.size(); ++k)
     batch.capsule(joints[k], joints[k + 1], rod, rodColor, jointsApart, 0.6f);
   for (std::size_t k = 1; jointsApart && k + 1 < joints.size(); ++k) {
@@ -70,7 +75,9 @@ void drawFeather(const RunFrame& run, const PlaneView& view, double base, float 
   }
 }
 
-void drawRun(const PanelContext& context, const RunFrame* run, const PixelRect& area, bool label, ShapeBatch& batch) {
+// outline: the width of the run's coloured outline around its rods (overlay), 0 for none.
+void drawRun(const PanelContext& context, const RunFrame* run, const PixelRect& area, bool label, float outline,
+             ShapeBatch& batch) {
   // One scale for every run (runs may differ in L): each is drawn on its own pins.
   const PlaneView view = fitFrameView(context.frame, area);
   // Rod half width: 4.5% of a rod's length on screen, at least 1.5 px while rods are long enough to carry it
@@ -81,7 +88,7 @@ void drawRun(const PanelContext& context, const RunFrame* run, const PixelRect& 
   if (!run) return;
   drawTrails(*run, view, rod, batch);
   drawFeather(*run, view, base, rod, batch);
-  drawChain(*run, view, base, rod, batch);
+  drawChain(*run, view, base, rod, outline * rod, batch);
   if (label) {
     const std::string name = context.font.fitted(run->name, TextSize::Small, area.width);
     const float width = context.font.width(name, TextSize::Small);
@@ -97,14 +104,15 @@ void drawLinkagePanel(const PanelContext& context, ShapeBatch& batch) {
   const auto layout = context.settings.linkageLayout;
   if (runs.empty() || layout == LinkageLayout::SingleRun) {
     const int chosen = std::clamp(context.settings.linkageRun, 0, std::max(0, int(runs.size()) - 1));
-    drawRun(context, runs.empty() ? nullptr : &runs[chosen], context.rect, false, batch);
+    drawRun(context, runs.empty() ? nullptr : &runs[chosen], context.rect, false, 0, batch);
   } else if (layout == LinkageLayout::Overlay) {
-    for (const RunFrame& run : runs) drawRun(context, &run, context.rect, false, batch);
+    for (std::size_t k = 0; k < runs.size(); ++k)
+      drawRun(context, &runs[k], context.rect, false, 1.6f * runStyleWidth(k, runs.size()), batch);
   } else {
     const float column = context.rect.width / float(runs.size());
     for (std::size_t k = 0; k < runs.size(); ++k) {
       const PixelRect area{context.rect.x + column * float(k), context.rect.y, column, context.rect.height};
-      drawRun(context, &runs[k], area, true, batch);
+      drawRun(context, &runs[k], area, true, 0, batch);
     }
   }
 }

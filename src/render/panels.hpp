@@ -28,6 +28,12 @@ void drawTextPanel(const PanelContext& context, ShapeBatch& batch);
 // Run colour of the frame state as a shape colour.
 inline Rgba toRgba(const ColorRGB& c, float alpha = 1) { return {c.r, c.g, c.b, alpha}; }
 
+// The line style of run k of `count` beside its colour: its width relative to the first run's, narrowing from 1
+// to 0.45, so that coinciding runs nest (paths on the sphere, linkage outlines in overlay) and each stays visible.
+inline float runStyleWidth(std::size_t k, std::size_t count) {
+  return count > 1 ? 1.0f - 0.55f * float(k) / float(count - 1) : 1.0f;
+}
+
 // Member m of a family of `count`: the run's colour ramped from darker (first member) to lighter (last), so the
 // order of the members, and so the wavefront's orientation, can be read off the picture.
 inline Rgba memberColor(const ColorRGB& c, std::size_t m, std::size_t count, float alpha = 1) {

@@ -118,10 +118,15 @@ void drawBall(const RunFrame& run, const SphereCamera& camera, const Placement& 
   Placement ballPlacement = placement;
   ballPlacement.lift = kBallRadius;
   const V3 centre = ballPlacement.place(run.current);
-  if (!drawable(run.current) || !camera.inFront(centre)) return;
+  if (!drawable(run.current)) return;
   const float pixelsPerUnit = float(camera.pixelsPerUnitAt(centre));
   const float radius = std::max(2.5f, float(kBallRadius) * pixelsPerUnit);
   const P2 at = camera.project(centre);
+  // First a ghost that nothing hides: where the sphere is in front of the ball (behind it, or past its outline)
+  // the state is still seen through it; where the ball shows, the ball covers its ghost.
+  batch.disc(at, radius, toRgba(run.color, 0.35f));
+  if (run.stopped) batch.disc(at, 0.45f * radius, palette::withAlpha(palette::stopRed, 0.5f));
+  if (!camera.inFront(centre)) return;
   const Occludable world = ballPlacement.world(centre);
   // A stopped run's ball sits on a red halo (a larger ball behind it, hidden with it by the sphere).
   if (run.stopped) batch.disc(at, radius + 2.5f, palette::stopRed, true, 0.2f, world, (radius + 2.5f) / pixelsPerUnit);
@@ -242,10 +247,12 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
     }
   }
   const bool throughAntipode = space == ViewSpace::Ball;
-  for (const RunFrame& run : context.frame.runs) drawFamily(run, context, camera, placement, throughAntipode, batch);
-  for (const RunFrame& run : context.frame.runs)
-    drawPath(run.path, run.pathTimes, toRgba(run.color), kTubeRadius, 1.0f, context, camera, placement,
-             throughAntipode, batch);
+  const auto& runs = context.frame.runs;
+  for (const RunFrame& run : runs) drawFamily(run, context, camera, placement, throughAntipode, batch);
+  // Each later run's tube is narrower (runStyleWidth), so a run exactly under another still shows around it.
+  for (std::size_t k = 0; k < runs.size(); ++k)
+    drawPath(runs[k].path, runs[k].pathTimes, toRgba(runs[k].color), kTubeRadius * runStyleWidth(k, runs.size()),
+             1.8f * runStyleWidth(k, runs.size()), context, camera, placement, throughAntipode, batch);
   for (const RunFrame& run : context.frame.runs) drawConjugatePoints(run, camera, placement, batch);
   for (const RunFrame& run : context.frame.runs) drawBall(run, camera, placement, batch);
   const SphereLook look = colored ? SphereLook::Colored : space == ViewSpace::Sphere ? SphereLook::Opaque : SphereLook::Glass;

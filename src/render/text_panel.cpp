@@ -47,7 +47,8 @@ void drawTextPanel(const PanelContext& c, ShapeBatch& batch) {
   y += 0.15f * titleLine + line;
   float x = c.rect.x + pad;
   const float swatch = 0.3f * c.font.ascent(TextSize::Normal);
-  for (const RunFrame& run : c.frame.runs) {
+  for (std::size_t k = 0; k < c.frame.runs.size(); ++k) {
+    const RunFrame& run = c.frame.runs[k];
     std::string text = runLine(run);
     std::string stop = run.stopped ? "  stopped at t = " + format("%.3g", run.stopTime) + ": " + run.stopReason : "";
     const float width = 2.5f * swatch + c.font.width(text + stop, TextSize::Normal) + 2 * pad;
@@ -55,7 +56,10 @@ void drawTextPanel(const PanelContext& c, ShapeBatch& batch) {
       x = c.rect.x + pad;
       y += line;
     }
-    batch.disc({x + swatch, y - 0.35f * c.font.ascent(TextSize::Normal)}, swatch, toRgba(run.color), true, 0.4f);
+    // The swatch shows the run's colour and its line style: a stroke as thick as its path on the sphere.
+    const float mid = y - 0.35f * c.font.ascent(TextSize::Normal);
+    const float half = swatch * runStyleWidth(k, c.frame.runs.size());
+    batch.capsule({x + half, mid}, {x + 2.0f * swatch - half, mid}, half, toRgba(run.color), true, 0.4f);
     float end = c.font.draw(batch, text, TextSize::Normal, x + 2.5f * swatch, y, palette::ink);
     if (run.stopped) end = c.font.draw(batch, stop, TextSize::Normal, end, y, palette::stopRed);
     x = end + 2 * pad;

@@ -93,6 +93,41 @@ TEST_F(PixelProbe, PathBehindTheSphereIsHidden) {
   EXPECT_TRUE(isCream(c)) << c.r << " " << c.g << " " << c.b;
 }
 
+bool isRunBlue(Rgb8 c) { return c.b > c.r + 40 && c.b > c.g + 10; }
+
+// Issue 12: two runs on exactly the same path both show: across the path, the first run's colour at the tube's
+// edge and the second's in its middle (each later run is drawn narrower).
+TEST_F(PixelProbe, CoincidingRunsBothShowAcrossThePath) {
+  FrameState two = frame;
+  two.runs.push_back(two.runs[0]);
+  two.runs[1].name = "same path";
+  two.runs[1].color = {0.0f, 0.45f, 0.70f};
+  const Image picture = renderer.render(two);
+  const Vec3 p = onSphere(7.5 * kDeg, 30 * kDeg);
+  const render::P2 at = camera.project({p.x * 1.014, p.y * 1.014, p.z * 1.014});
+  bool red = false, blue = false;
+  for (int dy = -8; dy <= 8; ++dy) {  // the path runs roughly across the panel here: step across it
+    const Rgb8 c = pixel(picture, int(at.x), int(at.y) + dy);
+    red = red || isRunRed(c);
+    blue = blue || isRunBlue(c);
+  }
+  EXPECT_TRUE(red) << "the first run is hidden under the second";
+  EXPECT_TRUE(blue);
+  EXPECT_TRUE(isRunBlue(pixel(picture, int(at.x), int(at.y))));
+}
+
+// Issue 12: the current state behind the sphere is ghosted through it instead of vanishing.
+TEST_F(PixelProbe, CurrentStateBehindTheSphereIsGhostedThroughIt) {
+  const Vec3 behind = onSphere(7.5 * kDeg, 187.5 * kDeg);  // the path's end, on the far side
+  const render::P2 at = camera.project({behind.x * 1.055, behind.y * 1.055, behind.z * 1.055});
+  const Rgb8 c = pixel(image, int(at.x), int(at.y));
+  FrameState without = frame;
+  without.runs[0].current = {NAN, NAN, NAN};  // no state drawn at all
+  const Rgb8 bare = pixel(renderer.render(without), int(at.x), int(at.y));
+  EXPECT_TRUE(isCream(bare)) << bare.r << " " << bare.g << " " << bare.b;
+  EXPECT_GT(int(bare.g) - int(c.g), 20) << "no ghost: " << c.r << " " << c.g << " " << c.b;  // burgundy tint
+}
+
 TEST_F(PixelProbe, PinsAreCharcoal) {
   const auto view = render::fitFrameView(frame, panelRect(settings, PanelKind::Linkage));
   for (double x : {0.0, frame.runs[0].baseLength}) {
