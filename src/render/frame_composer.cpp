@@ -67,6 +67,13 @@ DrawList FrameComposer::compose(const FrameState& frame) const {
     }
     list.panels.push_back(std::move(drawing));
   }
+  const bool hasText = std::any_of(panels_.begin(), panels_.end(), [](const PanelSpec& p) { return p.kind == PanelKind::Text; });
+  if (view_.titleLine && !hasText) {  // every frame says what it shows and when, text panel or not
+    PanelDrawing drawing;
+    drawing.rect = {0, 0, float(size_.width), float(size_.height)};
+    drawTitleLine(PanelContext{frame, view_, font_, drawing.rect}, drawing.shapes);
+    list.panels.push_back(std::move(drawing));
+  }
   return list;
 }
 

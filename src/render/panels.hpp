@@ -24,6 +24,9 @@ void drawLinkagePanel(const PanelContext& context, ShapeBatch& batch);
 SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch);
 void drawPlotPanel(const PanelContext& context, int plotIndex, ShapeBatch& batch);
 void drawTextPanel(const PanelContext& context, ShapeBatch& batch);
+// The title and the time across the top of the frame (context.rect: the whole frame), for layouts without a text
+// panel (ViewSettings::titleLine).
+void drawTitleLine(const PanelContext& context, ShapeBatch& batch);
 
 // Run colour of the frame state as a shape colour.
 inline Rgba toRgba(const ColorRGB& c, float alpha = 1) { return {c.r, c.g, c.b, alpha}; }

@@ -66,4 +66,22 @@ void drawTextPanel(const PanelContext& c, ShapeBatch& batch) {
   }
 }
 
+void drawTitleLine(const PanelContext& c, ShapeBatch& batch) {
+  const float pad = 0.015f * c.rect.width;
+  const float line = c.font.lineHeight(TextSize::Normal);
+  const float y = c.rect.y + 0.3f * line + c.font.ascent(TextSize::Normal);
+  const std::string time = "t = " + format("%.2f", c.frame.time) + " / " + format("%.2f", c.frame.duration);
+  const float timeWidth = c.font.width(time, TextSize::Normal);
+  const std::string title = c.font.fitted(c.frame.title, TextSize::Normal, c.rect.width - timeWidth - 4 * pad);
+  // On a veil of the background, so that a panel reaching up under the line never makes it unreadable.
+  const float titleWidth = c.font.width(title, TextSize::Normal);
+  const ColorRGB& b = c.settings.background;
+  const Rgba veil{b.r, b.g, b.b, 0.75f};
+  batch.rect(c.rect.x + 0.5f * pad, c.rect.y, c.rect.x + 1.5f * pad + titleWidth, c.rect.y + 1.3f * line, veil);
+  batch.rect(c.rect.x + c.rect.width - 1.5f * pad - timeWidth, c.rect.y, c.rect.x + c.rect.width - 0.5f * pad,
+             c.rect.y + 1.3f * line, veil);
+  c.font.draw(batch, title, TextSize::Normal, c.rect.x + pad, y, palette::ink);
+  c.font.draw(batch, time, TextSize::Normal, c.rect.x + c.rect.width - pad - timeWidth, y, palette::ink);
+}
+
 }  // namespace sl::render

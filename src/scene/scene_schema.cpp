@@ -152,6 +152,7 @@ json viewSchema() {
        {"path_samples_per_frame", integer(1, limits::kMaxPathSamplesPerFrame, "sphere-path points per frame")},
        {"background", fixedNumbers(3, 0, 1, "[r, g, b] in 0..1")},
        {"antialias", flag("analytic anti-aliasing")},
+       {"title_line", flag("title and time across the top when there is no text panel (default true)")},
        {"sphere", closedObject({{"color_by", oneOfNames(kSphereColorings, "colour the sphere (4 rods)")},
                                 {"stiffness", flag("stiffness ellipses (4 rods)")}},
                                "the sphere panel's surface")}},

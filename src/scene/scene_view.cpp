@@ -220,7 +220,8 @@ void readSphereSurface(const JsonObject& view, Scene& scene, std::vector<ScenePr
 void readView(const json& value, Scene& scene, std::vector<SceneProblem>& problems) {
   const JsonObject view(value, "view", problems,
                         {"panels", "camera", "linkage_layout", "linkage_run", "trails", "trail_fade_seconds",
-                         "path_fade_seconds", "path_samples_per_frame", "background", "antialias", "sphere"});
+                         "path_fade_seconds", "path_samples_per_frame", "background", "antialias", "sphere",
+                         "title_line"});
   if (!view.isObject()) return;
   ViewSettings& render = scene.view;
   readPanels(view, scene, problems);
@@ -235,6 +236,7 @@ void readView(const json& value, Scene& scene, std::vector<SceneProblem>& proble
     render.background = {float((*rgb)(0)), float((*rgb)(1)), float((*rgb)(2))};
   }
   render.antialias = view.boolean("antialias").value_or(render.antialias);
+  render.titleLine = view.boolean("title_line").value_or(render.titleLine);
 }
 
 }  // namespace sl::detail

@@ -40,6 +40,21 @@ TEST(DrawList, OnePanelDrawingPerPanelInLayoutOrder) {
   EXPECT_FALSE(list.panels[3].shapes.vertices().empty());
 }
 
+// Issue 12: without a text panel, the title and the time go across the top of the frame, glyphs in its top
+// line only; a text panel, or view.title_line false, leaves them out.
+TEST(DrawList, ATitleLineWhenThereIsNoTextPanel) {
+  ViewSettings noText = fourPanels();
+  noText.panels.erase(noText.panels.begin());
+  const DrawList withLine = FrameComposer(noText, {640, 360}).compose(syntheticFrame(2.0, 120));
+  ASSERT_EQ(withLine.panels.size(), 4u);  // three panels and the title line
+  const ShapeBatch& line = withLine.panels.back().shapes;
+  EXPECT_TRUE(hasProgram(line, ShapeProgram::Glyph));
+  for (const ShapeVertex& v : line.vertices()) EXPECT_LT(v.y, 0.1f * 360) << "a glyph below the top line";
+  noText.titleLine = false;
+  EXPECT_EQ(FrameComposer(noText, {640, 360}).compose(syntheticFrame(2.0, 120)).panels.size(), 3u);
+  EXPECT_EQ(FrameComposer(fourPanels(), {640, 360}).compose(syntheticFrame(2.0, 120)).panels.size(), 4u);
+}
+
 TEST(DrawList, ShapesStayNearTheirPanel) {
   const FrameComposer composer(fourPanels(), {640, 360});
   const DrawList list = composer.compose(syntheticFrame(5.0, 300));
