@@ -121,7 +121,12 @@ void drawAxes(const PanelContext& c, const PlotArea& area, const Axis& x, const 
   batch.capsule(corner, area.at(0, 1), 0.7f, palette::softInk);
 }
 
-void drawSeries(const PlotSeries& series, const Axis& x, const Axis& y, const PlotArea& area, ShapeBatch& batch) {
+// Line half width: 1.1 px up to about 720-pixel frames, then growing with the text (3.4 px at 3840x2160), so
+// curves keep their weight beside the labels at every frame size.
+float seriesHalfWidth(const FontAtlas& font) { return std::max(1.1f, 0.075f * font.lineHeight(TextSize::Small)); }
+
+void drawSeries(const PlotSeries& series, const Axis& x, const Axis& y, const PlotArea& area, float halfWidth,
+                ShapeBatch& batch) {
   std::vector<PolylinePoint> points;
   const std::size_t count = std::min(series.times.size(), series.values.size());
   for (std::size_t i = 0; i < count; ++i) {
@@ -131,9 +136,9 @@ void drawSeries(const PlotSeries& series, const Axis& x, const Axis& y, const Pl
       points.clear();
       continue;
     }
-    points.push_back({area.at(unit(x, t), unit(y, v)), 1.1f, toRgba(series.color), {}});
+    points.push_back({area.at(unit(x, t), unit(y, v)), halfWidth, toRgba(series.color), {}});
   }
-  if (points.size() == 1) batch.disc(points[0].at, 1.6f, points[0].color);
+  if (points.size() == 1) batch.disc(points[0].at, std::max(1.6f, 1.45f * halfWidth), points[0].color);
   batch.polyline(points);
   // Marked times (a Jacobi field's zeros): a ring on the time axis and a faint line up through the plot.
   for (const double t : series.markTimes) {
@@ -162,7 +167,8 @@ void drawLegend(const PanelContext& c, const PlotFrame& plot, const PlotArea& ar
   float y = top + line - 2;
   for (const auto& series : plot.series) {
     const float x = right - c.font.width(series.label, TextSize::Small);
-    batch.capsule({x - 22, y - 0.35f * ascent}, {x - 6, y - 0.35f * ascent}, 1.3f, toRgba(series.color));
+    batch.capsule({x - 22, y - 0.35f * ascent}, {x - 6, y - 0.35f * ascent}, std::max(1.3f, 1.1f * seriesHalfWidth(c.font)),
+                  toRgba(series.color));
     c.font.draw(batch, series.label, TextSize::Small, x, y, palette::ink);
     y += line;
   }
@@ -191,7 +197,7 @@ void drawPlotPanel(const PanelContext& c, int plotIndex, ShapeBatch& batch) {
   drawAxes(c, area, x, y, batch);
   bool anyDrawn = false;
   for (const auto& series : plot.series) {
-    drawSeries(series, x, y, area, batch);
+    drawSeries(series, x, y, area, seriesHalfWidth(c.font), batch);
     for (double v : series.values) anyDrawn = anyDrawn || drawable(v, plot.logY);
   }
   if (!anyDrawn && !plot.emptyNote.empty()) {  // a plot that stays empty says why
