@@ -78,10 +78,8 @@ std::vector<std::vector<Trajectory>> startFamilies(const Scene& scene, const std
     const RunSpec& run = scene.runs[i];
     if (!run.family) continue;
     try {
-      for (const InitialState& member : familyStarts(run.chain, starts.at(i), *run.family, run.config)) {
-        families[i].emplace_back(run.chain, member, run.config);
-        families[i].back().setCancellation(interruptRequested);
-      }
+      families[i] = familyMembers(run.chain, starts.at(i), *run.family, run.config);
+      for (Trajectory& member : families[i]) member.setCancellation(interruptRequested);
     } catch (const std::invalid_argument& error) {
       failOnProblems(scene.file, {{"runs[" + std::to_string(i) + "].family", error.what()}});
       throw;

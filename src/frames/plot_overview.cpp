@@ -62,10 +62,10 @@ std::vector<PlotOverview> overviewPlots(const Scene& scene, const std::vector<In
   for (std::size_t r = 0; r < runCount && wantSpread; ++r) {
     if (!scene.runs[r].family) continue;
     const RunSpec& run = scene.runs[r];
-    for (const InitialState& member : familyStarts(run.chain, starts.at(r), *run.family, run.config)) {
-      members[r].emplace_back(run.chain, member, run.config);
-      members[r].back().setCancellation(cancelled);
-      memberJobs.emplace_back(r, members[r].size() - 1);
+    members[r] = familyMembers(run.chain, starts.at(r), *run.family, run.config);
+    for (std::size_t m = 0; m < members[r].size(); ++m) {
+      members[r][m].setCancellation(cancelled);
+      memberJobs.emplace_back(r, m);
     }
   }
   std::vector<std::optional<Sample>> memberSamples(memberJobs.size());

@@ -121,4 +121,14 @@ std::vector<InitialState> familyStarts(const Chain& chain, const InitialState& s
   return members;
 }
 
+std::vector<Trajectory> familyMembers(const Chain& chain, const InitialState& start, const FamilySpec& family,
+                                      const RunConfig& config) {
+  RunConfig memberConfig = config;
+  memberConfig.jacobi = false;
+  std::vector<Trajectory> members;
+  for (const InitialState& member : familyStarts(chain, start, family, memberConfig))
+    members.emplace_back(chain, member, memberConfig);
+  return members;
+}
+
 }  // namespace sl

@@ -7,6 +7,7 @@
 
 #include "contracts/run_config.hpp"
 #include "linkage/chain.hpp"
+#include "simulation/trajectory.hpp"
 
 namespace sl {
 
@@ -24,5 +25,10 @@ std::vector<Eigen::VectorXd> orthonormalTangentFrame(const Chain& chain, const E
 // orthogonal geodesic stopped before reaching it).
 std::vector<InitialState> familyStarts(const Chain& chain, const InitialState& start, const FamilySpec& family,
                                        const RunConfig& config);
+
+// The members' motions, in member order: the run's chain, method, integrator and watchdogs, without the run's
+// Jacobi fields (a family shows how geodesics spread; only the run itself carries its linearisation).
+std::vector<Trajectory> familyMembers(const Chain& chain, const InitialState& start, const FamilySpec& family,
+                                      const RunConfig& config);
 
 }  // namespace sl

@@ -48,8 +48,7 @@ std::vector<std::vector<Trajectory>> familiesOf(const Scene& scene) {
   for (std::size_t i = 0; i < scene.runs.size(); ++i) {
     const RunSpec& run = scene.runs[i];
     if (!run.family) continue;
-    for (const InitialState& member : familyStarts(run.chain, starts[i], *run.family, run.config))
-      families[i].emplace_back(run.chain, member, run.config);
+    families[i] = familyMembers(run.chain, starts[i], *run.family, run.config);
   }
   return families;
 }

@@ -142,6 +142,19 @@ TEST(Family, FanAtAChartPoleIsIntegratedThroughItByTheExactAndAmbientMethods) {
   }
 }
 
+TEST(Family, MembersShareTheRunsSettingsButNotItsJacobiFields) {
+  const Chain chain = Chain::uniform(4, 3.0);
+  RunConfig run = config("ambient", "rkf78", 1e-12);
+  run.jacobi = true;
+  std::vector<Trajectory> members = familyMembers(chain, genericStart(chain), {FamilyKind::Fan, 3, 0.4}, run);
+  ASSERT_EQ(members.size(), 3u);
+  Trajectory alone(chain, familyStarts(chain, genericStart(chain), {FamilyKind::Fan, 3, 0.4}, run)[0],
+                   config("ambient", "rkf78", 1e-12));
+  const Sample member = *members[0].sampleAt(2.0);
+  EXPECT_FALSE(member.jacobi);
+  EXPECT_EQ(member.hinges, alone.sampleAt(2.0)->hinges);  // the same integration, step for step
+}
+
 TEST(Family, RefusesWhatCannotBeAFamily) {
   const Chain chain = Chain::uniform(4, 3.0);
   const InitialState start = genericStart(chain);
