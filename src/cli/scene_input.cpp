@@ -7,6 +7,7 @@
 
 #include "cli/exit_codes.hpp"
 #include "cli/interrupt.hpp"
+#include "scene/json_fields.hpp"
 #include "simulation/family.hpp"
 #include "simulation/initial_state.hpp"
 
@@ -33,14 +34,24 @@ void addSceneOverrideOption(CLI::App& command, std::vector<std::string>& overrid
       ->allow_extra_args(false);
 }
 
+namespace {
+
+// "runs[i]", or "runs[i].key": where a run's problem is written in the scene (the loader's indexPath).
+std::string runPath(size_t i, const std::string& key = "") {
+  return indexPath("runs", i) + (key.empty() ? "" : "." + key);
+}
+
+}  // namespace
+
 std::vector<InitialState> runStarts(const Scene& scene, std::vector<std::string>* notes) {
   std::vector<InitialState> starts;
   for (size_t i = 0; i < scene.runs.size(); ++i) {
     const RunSpec& run = scene.runs[i];
+    // A start the scene shares is reported once, where it is written.
+    const std::string where = run.ownInitial ? runPath(i, "initial") : "initial";
     try {
       StartAdjustment moved;
       starts.push_back(initialStateFromSpec(run.chain, run.initial, &moved));
-      const std::string where = run.ownInitial ? "runs[" + std::to_string(i) + "].initial" : "initial";
       if (notes && (moved.positions > 1e-9 || moved.velocities > 1e-9)) {
         char text[200];
         std::snprintf(text, sizeof text,
@@ -50,8 +61,7 @@ std::vector<InitialState> runStarts(const Scene& scene, std::vector<std::string>
         notes->push_back(text);
       }
     } catch (const std::invalid_argument& error) {
-      // A start the scene shares is reported once, where it is written.
-      failOnProblems(scene.file, {{run.ownInitial ? "runs[" + std::to_string(i) + "].initial" : "initial", error.what()}});
+      failOnProblems(scene.file, {{where, error.what()}});
       throw;
     }
   }
@@ -65,7 +75,7 @@ std::vector<Trajectory> startRuns(const Scene& scene, const std::vector<InitialS
       runs.emplace_back(scene.runs[i].chain, starts.at(i), scene.runs[i].config);
       runs.back().setCancellation(interruptRequested);  // SIGINT/SIGTERM answered within one step
     } catch (const std::invalid_argument& error) {
-      failOnProblems(scene.file, {{"runs[" + std::to_string(i) + "]", error.what()}});
+      failOnProblems(scene.file, {{runPath(i), error.what()}});
       throw;
     }
   }
@@ -81,7 +91,7 @@ std::vector<std::vector<Trajectory>> startFamilies(const Scene& scene, const std
       families[i] = familyMembers(run.chain, starts.at(i), *run.family, run.config);
       for (Trajectory& member : families[i]) member.setCancellation(interruptRequested);
     } catch (const std::invalid_argument& error) {
-      failOnProblems(scene.file, {{"runs[" + std::to_string(i) + "].family", error.what()}});
+      failOnProblems(scene.file, {{runPath(i, "family"), error.what()}});
       throw;
     }
   }

@@ -22,6 +22,15 @@ void drawFloor(const PlaneView& view, double base, float rod, ShapeBatch& batch)
   }
 }
 
+// The pin at the origin, the hinges, the pin at (L, 0), on screen; a broken state's hinges are not drawn.
+std::vector<P2> chainJoints(const std::vector<Vec2>& hinges, const PlaneView& view, double base) {
+  std::vector<P2> joints{view(0, 0)};
+  for (const Vec2& h : hinges)
+    if (std::isfinite(h.x) && std::isfinite(h.y)) joints.push_back(view(h));
+  joints.push_back(view(base, 0));
+  return joints;
+}
+
 void drawTrails(const RunFrame& run, const PlaneView& view, float rod, ShapeBatch& batch) {
   for (const auto& trail : run.trails) {
     std::vector<PolylinePoint> points;
@@ -35,10 +44,7 @@ void drawTrails(const RunFrame& run, const PlaneView& view, float rod, ShapeBatc
 }
 
 void drawChain(const RunFrame& run, const PlaneView& view, double base, float rod, float outline, ShapeBatch& batch) {
-  std::vector<P2> joints{view(0, 0)};
-  for (const Vec2& h : run.hinges)
-    if (std::isfinite(h.x) && std::isfinite(h.y)) joints.push_back(view(h));  // a broken state is not drawn
-  joints.push_back(view(base, 0));
+  const std::vector<P2> joints = chainJoints(run.hinges, view, base);
   // Joints as balls while a rod is long enough on screen to show them apart (8 px); a long chain's hinges
   // would only blot it, and its rods, hairlines then, are drawn in the run's colour to stand out.
   const bool jointsApart = view.scale >= 8;
@@ -66,10 +72,7 @@ void drawFeather(const RunFrame& run, const PlaneView& view, double base, float 
   const std::size_t count = run.members.size();
   const float alpha = std::clamp(6.0f / float(count), 0.12f, 0.5f);  // many members: fainter each
   for (std::size_t m = 0; m < count; ++m) {
-    std::vector<P2> joints{view(0, 0)};
-    for (const Vec2& h : run.members[m].hinges)
-      if (std::isfinite(h.x) && std::isfinite(h.y)) joints.push_back(view(h));
-    joints.push_back(view(base, 0));
+    const std::vector<P2> joints = chainJoints(run.members[m].hinges, view, base);
     for (std::size_t k = 0; k + 1 < joints.size(); ++k)
       batch.capsule(joints[k], joints[k + 1], std::max(0.6f, 0.3f * rod), memberColor(run.color, m, count, alpha));
   }

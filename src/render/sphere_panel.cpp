@@ -77,7 +77,7 @@ void drawPath(const std::vector<Vec3>& path, const std::vector<double>& times, R
   batch.polyline(points, !thin, 0.35f);
 }
 
-// A run's family: each member's path as a thin tube in the run's colour ramp, then the wavefront, the curve
+// A run's family: each member's path as a thin line in the run's colour ramp, then the wavefront, the curve
 // through the members' current points in member order, as a dark line over them, and a dot per member (a
 // stopped member's dot on a red halo, as a stopped run's ball).
 void drawFamily(const RunFrame& run, const PanelContext& context, const SphereCamera& camera,
