@@ -26,13 +26,6 @@ Eigen::VectorXd rodDots(const Eigen::Matrix2Xd& a, const Eigen::Matrix2Xd& b) {
   return a.cwiseProduct(b).colwise().sum().transpose();
 }
 
-double massInner(const AmbientMassMatrix& mass, const Eigen::Matrix2Xd& a, const Eigen::Matrix2Xd& b) {
-  double sum = 0;
-  for (Eigen::Index j = 0; j < a.cols(); ++j) sum += mass.diagonal(j) * a.col(j).dot(b.col(j));
-  for (Eigen::Index j = 0; j + 1 < a.cols(); ++j)
-    sum += mass.coupling(j) * (a.col(j).dot(b.col(j + 1)) + a.col(j + 1).dot(b.col(j)));
-  return sum;
-}
 
 // det and adjugate (transposed cofactors) of a small symmetric matrix: adj(G) stays finite where G is singular,
 // so d/dt det G = tr(adj(G) G') is smooth through conjugate points.
@@ -159,21 +152,21 @@ JacobiState JacobiSystem::jacobiAt(const State& y) const {
   const Eigen::Index h = hinges_;
   const std::size_t block = static_cast<std::size_t>(4 * h);
   const ConstHinges v(y.data() + 2 * h, 2, h);
-  const double vv = massInner(mass_, v, v);
+  const double vv = mass_.innerProduct(v, v);
   std::vector<Eigen::Matrix2Xd> fields, rates;
   for (int i = 0; i < fields_; ++i) {
     const std::size_t offset = block * static_cast<std::size_t>(i + 1);
     const Eigen::Matrix2Xd dq = ConstHinges(y.data() + offset, 2, h);
-    fields.push_back(dq - (massInner(mass_, dq, v) / vv) * v);  // the part across the motion
+    fields.push_back(dq - (mass_.innerProduct(dq, v) / vv) * v);  // the part across the motion
     rates.push_back(ConstHinges(y.data() + offset + 2 * h, 2, h));
   }
   Eigen::MatrixXd gram(fields_, fields_), rate(fields_, fields_);
   for (int i = 0; i < fields_; ++i)
     for (int j = 0; j < fields_; ++j) {
       const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
-      gram(i, j) = massInner(mass_, fields[ui], fields[uj]);
+      gram(i, j) = mass_.innerProduct(fields[ui], fields[uj]);
       // <J_i, J_j>' = <dv_i, J_j> + <J_i, dv_j>: dv's normal part is M-orthogonal to the tangent J's.
-      rate(i, j) = massInner(mass_, rates[ui], fields[uj]) + massInner(mass_, fields[ui], rates[uj]);
+      rate(i, j) = mass_.innerProduct(rates[ui], fields[uj]) + mass_.innerProduct(fields[ui], rates[uj]);
     }
   JacobiState out;
   out.gramDeterminant = determinant(gram);
