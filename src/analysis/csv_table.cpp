@@ -1,5 +1,7 @@
 #include "analysis/csv_table.hpp"
 
+#include <algorithm>
+
 #include "contracts/csv_format.hpp"
 
 #include <charconv>
@@ -64,6 +66,28 @@ std::string csvText(const CsvTable& table) {
   std::ostringstream out;
   writeCsv(out, table);
   return out.str();
+}
+
+std::string alignedText(const CsvTable& table, const std::string& separator) {
+  std::vector<size_t> widths(table.columns.size(), 0);
+  auto measure = [&](const std::vector<std::string>& fields) {
+    for (size_t c = 0; c < fields.size() && c < widths.size(); ++c) widths[c] = std::max(widths[c], fields[c].size());
+  };
+  measure(table.columns);
+  for (const auto& row : table.rows) measure(row);
+  std::string out;
+  auto line = [&](const std::vector<std::string>& fields) {
+    std::string text;
+    for (size_t c = 0; c < fields.size() && c < widths.size(); ++c) {
+      if (c) text += separator;
+      text += fields[c] + std::string(widths[c] - fields[c].size(), ' ');
+    }
+    while (!text.empty() && text.back() == ' ') text.pop_back();  // no trailing blanks
+    out += text + "\n";
+  };
+  line(table.columns);
+  for (const auto& row : table.rows) line(row);
+  return out;
 }
 
 CsvTable readCsv(std::istream& in, const std::string& source) {

@@ -32,4 +32,8 @@ std::string csvText(const CsvTable& table);
 CsvTable readCsv(std::istream& in, const std::string& source);
 CsvTable readCsvFile(const std::string& path);
 
+// The table for a terminal: every column padded to its widest field (header included), columns separated by
+// `separator`, numbers as written. Widths count bytes: the fields are ASCII (names, numbers, units).
+std::string alignedText(const CsvTable& table, const std::string& separator = "  ");
+
 }  // namespace sl

@@ -197,30 +197,19 @@ std::string cheapestSettingsText(const std::vector<CheapestSetting>& cheapest, c
   auto cell = [](const CheapestSetting& c) -> std::string {
     if (!c.reached) return "never";
     char text[96];
-    std::snprintf(text, sizeof text, "%s=%-6g %7.2f ms (cpu %.2f)", settingKind(c.integrator).c_str(), c.setting,
+    std::snprintf(text, sizeof text, "%s=%g  %.2f ms (cpu %.2f)", settingKind(c.integrator).c_str(), c.setting,
                   c.worstWallSeconds * 1e3, c.worstCpuSeconds * 1e3);
     return text;
   };
-  std::string out;
-  char line[160];
-  std::snprintf(line, sizeof line, "%-16s %-10s", "method", "integrator");
-  out += line;
-  for (double target : targets) {
-    std::snprintf(line, sizeof line, " | error <= %-22g", target);
-    out += line;
-  }
-  out += "\n";
+  CsvTable table;
+  table.columns = {"method", "integrator"};
+  for (double target : targets) table.columns.push_back("| error <= " + formatNumber(target));
   for (size_t i = 0; i < cheapest.size(); i += targets.size()) {
-    std::snprintf(line, sizeof line, "%-16s %-10s", nameOf(cheapest[i].method).c_str(),
-                  nameOf(cheapest[i].integrator).c_str());
-    out += line;
-    for (size_t t = 0; t < targets.size(); ++t) {
-      std::snprintf(line, sizeof line, " | %-31s", cell(cheapest[i + t]).c_str());
-      out += line;
-    }
-    out += "\n";
+    std::vector<std::string> row = {nameOf(cheapest[i].method), nameOf(cheapest[i].integrator)};
+    for (size_t t = 0; t < targets.size(); ++t) row.push_back("| " + cell(cheapest[i + t]));
+    table.rows.push_back(std::move(row));
   }
-  return out;
+  return alignedText(table, " ");
 }
 
 }  // namespace sl

@@ -12,38 +12,54 @@ namespace sl {
 
 namespace {
 
-constexpr double kFailedBand = 30;  // where failed points are drawn (the y axis ends at 1e2)
+constexpr double kFailedBand = 30;  // where failed points are drawn, above a rule at 10 (the y axis ends at 1e2)
 constexpr double kFloor = 1e-17;    // zero drift or error is drawn here on the log axis
+constexpr size_t kMaxSeriesPerPanel = 8;  // beyond this a chart becomes small multiples, one panel per integrator
 
-// The published methods in browns, the exact chart-based ones in blue and green, the chart-free one in purple.
-std::string methodColor(Method method) {
+}  // namespace
+
+// Okabe-Ito colours (distinguishable with the common colour-vision deficiencies) and a marker per method, so
+// that a method reads by its shape too: the published methods in vermillion and reddish purple with triangles,
+// the exact chart-based ones in blue and green with circles and squares, the chart-free one black diamonds.
+// The integrator sets the dash: rkf78 solid and thicker, dopri5 long dashes, bulirsch-stoer dash-dot, rk4
+// (fixed step) dots.
+SeriesStyle workPrecisionStyle(Method method, Integrator integrator) {
+  SeriesStyle style;
   switch (method) {
     case Method::ChristoffelFd:
-      return "#d95f02";
+      style.color = "#D55E00", style.pointType = 9;  // filled triangle up
+      break;
     case Method::EmbeddedFd:
-      return "#a6761d";
+      style.color = "#CC79A7", style.pointType = 11;  // filled triangle down
+      break;
     case Method::Christoffel:
-      return "#1f78b4";
+      style.color = "#0072B2", style.pointType = 6;  // open circle
+      break;
     case Method::Embedded:
-      return "#33a02c";
+      style.color = "#009E73", style.pointType = 4;  // open square
+      break;
     case Method::Ambient:
-      return "#6a3d9a";
+      style.color = "#000000", style.pointType = 12;  // open diamond
+      break;
   }
-  return "#444444";  // unreachable: the switch names every method, and -Wswitch flags a new one
+  switch (integrator) {
+    case Integrator::Rk4:
+      style.dashType = 3, style.lineWidth = 1.5;
+      break;
+    case Integrator::Dopri5:
+      style.dashType = 2, style.lineWidth = 1.5;
+      break;
+    case Integrator::Rkf78:
+      style.dashType = 1, style.lineWidth = 2.5;
+      break;
+    case Integrator::BulirschStoer:
+      style.dashType = 4, style.lineWidth = 1.5;
+      break;
+  }
+  return style;
 }
 
-// Dash, point type and width by integrator: fixed step dashed, adaptive solid (rkf78 thick), others dash-dot.
-std::string integratorStyle(Integrator integrator) {
-  if (!traits(integrator).adaptive) return "dt 2 pt 6 lw 1.5";
-  switch (integrator) {
-    case Integrator::Dopri5:
-      return "dt 1 pt 8 lw 1.5";
-    case Integrator::Rkf78:
-      return "dt 1 pt 4 lw 2.5";
-    default:
-      return "dt 4 pt 12 lw 2";  // bulirsch-stoer and any other: dash-dot, diamonds
-  }
-}
+namespace {
 
 struct Axis {
   std::string label;
@@ -78,41 +94,105 @@ std::vector<ChartSpec> chartSpecs() {
 // One series: the points of one method x integrator at increasing cost.
 using Series = std::vector<const WorkPrecisionPoint*>;
 
-std::string chartScript(const std::string& title, const ChartSpec& spec, const std::vector<Series>& series,
-                        const std::string& pngPath) {
-  std::string script = gnuplotPngPreamble(pngPath, 1100, 720);
-  script += "set title " + gnuplotQuote(title + ": " + spec.title) + " noenhanced\n";
-  script +=
-      "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset grid xtics ytics mxtics mytics lc rgb "
-      "'#dddddd'\n";
-  script += "set xlabel " + gnuplotQuote(spec.x.label) + "\nset ylabel " + gnuplotQuote(spec.y.label) + "\n";
-  script += "set yrange [1e-17:1e2]\nset key outside right top noenhanced\n";
-  script += "set arrow from graph 0, first 10 to graph 1, first 10 nohead lc rgb '#bbbbbb' dt 3\n";
-  script += "set label 'failed' at graph 0.01, first 45 tc rgb '#cc0000'\n";
-  std::vector<std::string> failed;
+// Powers of ten around [low, high] (positive values), for axes trimmed to the data.
+std::pair<double, double> decadesAround(double low, double high) {
+  return {std::pow(10.0, std::floor(std::log10(low))), std::pow(10.0, std::ceil(std::log10(high)))};
+}
+
+// The plot commands of one panel: a line per series, then a "failed" entry per method that failed there
+// (crosses in the method's colour on the band above the rule).
+std::string panelPlot(const ChartSpec& spec, const std::vector<const Series*>& series, const std::string& tag,
+                      std::string& datablocks) {
   std::string plot = "plot ";
+  std::vector<std::pair<Method, std::vector<std::string>>> failed;  // per method, first-appearance order
   for (size_t i = 0; i < series.size(); ++i) {
     std::vector<std::string> lines;
-    for (const auto* p : series[i]) {
+    for (const auto* p : *series[i]) {
       const Measurement& m = p->measurement;
       const std::string x = formatNumber(spec.x.value(m));
-      if (m.failed())
-        failed.push_back(x + " " + formatNumber(kFailedBand) + " 0x" + methodColor(p->method).substr(1));
-      else
+      if (!m.failed()) {
         lines.push_back(x + " " + formatNumber(spec.y.value(m)));
+        continue;
+      }
+      auto it = std::find_if(failed.begin(), failed.end(), [&](const auto& f) { return f.first == p->method; });
+      if (it == failed.end()) it = failed.insert(failed.end(), {p->method, {}});
+      it->second.push_back(x + " " + formatNumber(kFailedBand));
     }
     if (lines.empty()) lines.push_back("NaN NaN");
-    const std::string block = "s" + std::to_string(i);
-    script += gnuplotDatablock(block, lines);
-    const auto& first = *series[i].front();
-    plot += "$" + block + " using 1:2 with linespoints lc rgb '" + methodColor(first.method) + "' " +
-            integratorStyle(first.integrator) + " title " +
+    const std::string block = tag + "s" + std::to_string(i);
+    datablocks += gnuplotDatablock(block, lines);
+    const auto& first = *series[i]->front();
+    const SeriesStyle style = workPrecisionStyle(first.method, first.integrator);
+    plot += "$" + block + " using 1:2 with linespoints lc rgb '" + style.color + "' pt " +
+            std::to_string(style.pointType) + " dt " + std::to_string(style.dashType) + " lw " +
+            formatNumber(style.lineWidth) + " title " +
             gnuplotQuote(nameOf(first.method) + " " + nameOf(first.integrator)) + ", ";
   }
-  if (failed.empty()) failed.push_back("NaN NaN 0");
-  script += gnuplotDatablock("failed", failed);
-  plot += "$failed using 1:2:3 with points pt 2 ps 2 lw 2 lc rgb variable title 'failed'\n";
-  return script + plot;
+  for (size_t k = 0; k < failed.size(); ++k) {
+    const std::string block = tag + "f" + std::to_string(k);
+    datablocks += gnuplotDatablock(block, failed[k].second);
+    plot += "$" + block + " using 1:2 with points pt 2 ps 1.8 lw 2 lc rgb '" +
+            workPrecisionStyle(failed[k].first, Integrator::Rkf78).color + "' title " +
+            gnuplotQuote("failed: " + nameOf(failed[k].first)) + ", ";
+  }
+  plot.resize(plot.size() - 2);
+  return plot + "\n";
+}
+
+// One chart: a single panel, or with more than kMaxSeriesPerPanel series one panel per integrator on shared
+// axes. Both axes are trimmed to whole decades around the data; failures sit on a band above the rule at 10,
+// named on the y axis.
+std::string chartScript(const std::string& title, const ChartSpec& spec, const std::vector<Series>& series,
+                        const std::string& pngPath) {
+  std::vector<std::vector<const Series*>> panels;
+  std::vector<std::string> panelTitles;
+  if (series.size() <= kMaxSeriesPerPanel) {
+    panels.emplace_back();
+    for (const auto& s : series) panels.back().push_back(&s);
+    panelTitles.push_back("");
+  } else {
+    for (const auto& integrator : kIntegrators) {
+      std::vector<const Series*> chosen;
+      for (const auto& s : series)
+        if (s.front()->integrator == integrator.kind) chosen.push_back(&s);
+      if (chosen.empty()) continue;
+      panels.push_back(chosen);
+      panelTitles.push_back(std::string(integrator.name));
+    }
+  }
+  double xLow = INFINITY, xHigh = 0, yLow = INFINITY;
+  for (const auto& s : series)
+    for (const auto* p : s) {
+      const double x = spec.x.value(p->measurement);
+      if (x > 0) xLow = std::min(xLow, x), xHigh = std::max(xHigh, x);
+      if (!p->measurement.failed()) yLow = std::min(yLow, spec.y.value(p->measurement));
+    }
+  if (!(xHigh > 0)) xLow = 1, xHigh = 10;
+  const auto [xFrom, xTo] = decadesAround(xLow, xHigh * 1.0001);
+  const double yFrom = std::isfinite(yLow) ? std::min(decadesAround(yLow, yLow).first, 1e-2) : 1e-2;
+
+  const int columns = panels.size() > 1 ? 2 : 1, rows = static_cast<int>((panels.size() + 1) / 2);
+  std::string script = gnuplotPngPreamble(pngPath, panels.size() > 1 ? 1600 : 1100, panels.size() > 1 ? 460 * rows + 60 : 720);
+  std::string datablocks, body;
+  const std::string heading = title + ": " + spec.title;
+  if (panels.size() > 1)
+    body += "set multiplot layout " + std::to_string(rows) + "," + std::to_string(columns) + " title " +
+            gnuplotQuote(heading + " (one panel per integrator)") + " noenhanced\n";
+  else
+    body += "set title " + gnuplotQuote(heading) + " noenhanced\n";
+  body +=
+      "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset grid xtics ytics lc rgb '#dddddd'\n";
+  body += "set xlabel " + gnuplotQuote(spec.x.label) + "\nset ylabel " + gnuplotQuote(spec.y.label) + "\n";
+  body += "set xrange [" + formatNumber(xFrom) + ":" + formatNumber(xTo) + "]\nset yrange [" + formatNumber(yFrom) +
+          ":1e2]\n";
+  body += "set ytics add ('failed' " + formatNumber(kFailedBand) + ")\nset key outside right top noenhanced\n";
+  body += "set arrow from graph 0, first 10 to graph 1, first 10 nohead lc rgb '#bbbbbb' dt 3\n";
+  for (size_t k = 0; k < panels.size(); ++k) {
+    if (panels.size() > 1) body += "set title " + gnuplotQuote(panelTitles[k]) + " noenhanced\n";
+    body += panelPlot(spec, panels[k], "p" + std::to_string(k), datablocks);
+  }
+  if (panels.size() > 1) body += "unset multiplot\n";
+  return script + datablocks + body;
 }
 
 // Series in first-appearance order, points by decreasing setting (increasing cost).

@@ -75,7 +75,7 @@ void writeSweepOutputs(const CsvTable& rows, const StabilityArguments& args) {
   const std::string summaryText = csvText(summary);
   output::writeFileAtomically((std::filesystem::path(args.out) / ("stability-" + kind + "-summary.csv")).string(),
                               summaryText);
-  std::cout << summaryText << "wrote " << csvPath << "\n";
+  std::cout << alignedText(summary) << "wrote " << csvPath << "\n";
   if (args.charts)
     for (const auto& png : writeStabilityCharts(rows, kind, args.out)) std::cout << "wrote " << png << "\n";
 }

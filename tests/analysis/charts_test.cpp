@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -75,6 +76,65 @@ TEST(WorkPrecisionCharts, DrawsThreeChartsPerStartAndTheWorstCase) {
     EXPECT_TRUE(isPng(png)) << png;
     EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(png).replace_extension(".gp"))) << png;
   }
+}
+
+TEST(WorkPrecisionCharts, EveryMethodHasItsOwnColourAndMarkerAndEveryIntegratorItsOwnDash) {
+  std::set<std::string> colors;
+  std::set<int> markers, dashes;
+  for (const auto& method : kMethods) {
+    const SeriesStyle style = workPrecisionStyle(method.kind, Integrator::Rkf78);
+    colors.insert(style.color);
+    markers.insert(style.pointType);
+  }
+  for (const auto& integrator : kIntegrators) dashes.insert(workPrecisionStyle(Method::Ambient, integrator.kind).dashType);
+  EXPECT_EQ(colors.size(), kMethods.size());
+  EXPECT_EQ(markers.size(), kMethods.size());
+  EXPECT_EQ(dashes.size(), kIntegrators.size());
+}
+
+// Every method x integrator, two settings, one start; every -fd run fails.
+std::vector<WorkPrecisionPoint> everySeries() {
+  std::vector<WorkPrecisionPoint> points;
+  for (const auto& method : kMethods)
+    for (const auto& integrator : kIntegrators)
+      for (double setting : {1e-6, 1e-9}) {
+        WorkPrecisionPoint p{"generic", method.kind, integrator.kind, setting, Method::Ambient, {}};
+        p.measurement.maxError = setting * 10;
+        p.measurement.maxEnergyDrift = setting;
+        p.measurement.evaluations = static_cast<long>(-100 * std::log10(setting));
+        p.measurement.wallSeconds = p.measurement.evaluations * 1e-6;
+        if (method.kind == Method::ChristoffelFd || method.kind == Method::EmbeddedFd)
+          p.measurement.status = StopReason::PoleFoldBack;
+        points.push_back(p);
+      }
+  return points;
+}
+
+TEST(WorkPrecisionCharts, TwentySeriesBecomeOnePanelPerIntegratorWithAFailureEntryPerMethodAndTrimmedAxes) {
+  if (!gnuplotAvailable()) GTEST_SKIP() << "gnuplot with pngcairo not installed (apt-get install gnuplot-nox)";
+  const std::string folder = sl::testing::freshTestFolder("wp-multiples");
+  writeWorkPrecisionCharts(everySeries(), folder);
+  const std::string script = fileBytes(folder + "/wp-generic-error-time.gp");
+  EXPECT_NE(script.find("set multiplot layout 2,2"), std::string::npos) << script;
+  size_t plots = 0;
+  for (size_t at = script.find("\nplot "); at != std::string::npos; at = script.find("\nplot ", at + 1)) ++plots;
+  EXPECT_EQ(plots, kIntegrators.size());
+  for (const std::string name : {"christoffel-fd", "embedded-fd"}) {
+    const std::string entry = "title 'failed: " + name + "'";
+    size_t count = 0;
+    for (size_t at = script.find(entry); at != std::string::npos; at = script.find(entry, at + 1)) ++count;
+    EXPECT_EQ(count, kIntegrators.size()) << entry;  // once per panel, in the method's colour
+  }
+  EXPECT_EQ(script.find("failed: ambient"), std::string::npos);
+  // Errors from 1e-8 to 1e-5: the y axis starts at 1e-8, not at the old fixed 1e-17.
+  EXPECT_NE(script.find("set yrange [1e-08:1e2]"), std::string::npos) << script;
+  // Four series or fewer stay one chart.
+  std::vector<WorkPrecisionPoint> few;
+  for (const auto& p : everySeries())
+    if (p.integrator == Integrator::Rkf78) few.push_back(p);
+  const std::string single = sl::testing::freshTestFolder("wp-single");
+  writeWorkPrecisionCharts(few, single);
+  EXPECT_EQ(fileBytes(single + "/wp-generic-error-time.gp").find("multiplot"), std::string::npos);
 }
 
 }  // namespace

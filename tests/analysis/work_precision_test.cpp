@@ -38,6 +38,25 @@ TEST(CheapestSettings, PicksTheFewestEvaluationsReachingTheTargetOnEveryStart) {
   EXPECT_NE(cheapestSettingsText(cheapest, {1e-6, 1e-9, 1e-12, 1e-14}).find("never"), std::string::npos);
 }
 
+// The console table's columns line up on every row, whatever the lengths of the names and cells (the
+// bulirsch-stoer rows and long cells once pushed theirs right).
+TEST(CheapestSettings, TheTableColumnsLineUpOnEveryRow) {
+  std::vector<WorkPrecisionPoint> points;
+  for (const Integrator integrator : {Integrator::Rk4, Integrator::BulirschStoer})
+    for (double setting : {1e-3, 1e-9}) points.push_back(point("a", integrator, setting, setting / 10, 123456));
+  const std::vector<double> targets = {1e-6, 1e-9};
+  const std::string text = cheapestSettingsText(cheapestSettings(points, targets), targets);
+  std::vector<std::vector<size_t>> bars;
+  for (size_t start = 0, end; (end = text.find('\n', start)) != std::string::npos; start = end + 1) {
+    const std::string line = text.substr(start, end - start);
+    bars.emplace_back();
+    for (size_t at = line.find('|'); at != std::string::npos; at = line.find('|', at + 1)) bars.back().push_back(at);
+  }
+  ASSERT_EQ(bars.size(), 3u) << text;  // header and two integrators
+  for (const auto& row : bars) EXPECT_EQ(row, bars.front()) << text;
+  EXPECT_EQ(bars.front().size(), targets.size());
+}
+
 TEST(CheapestSettings, AFailedOrMissingStartDisqualifiesASetting) {
   const std::vector<WorkPrecisionPoint> points = {
       point("a", Integrator::Rk4, 0.01, 1e-11, 8000),
