@@ -5,6 +5,7 @@
 // sphere-panel points are 3D points of the view (unit sphere for 4 rods, see ViewSpace).
 
 #include <array>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -66,6 +67,8 @@ struct PlotSeries {
   std::vector<double> times;
   std::vector<double> values;  // non-finite or non-positive values on a log axis are skipped, never drawn
   std::vector<double> markTimes;  // times marked on the time axis (a Jacobi field's zeros: conjugate points)
+  // When the run behind the line stopped, once it has (infinite while it runs): a red cross where the line ends.
+  double stopTime = std::numeric_limits<double>::infinity();
 };
 
 // Where a plot's legend goes: the corner its data leaves emptiest over the whole animation.

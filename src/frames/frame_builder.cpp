@@ -12,6 +12,11 @@ namespace sl {
 
 namespace {
 
+// When a run stopped, as far as the frame shows it: infinite while it runs (PlotSeries::stopTime).
+double stopTimeSoFar(const RunFrame& run) {
+  return run.stopped ? run.stopTime : std::numeric_limits<double>::infinity();
+}
+
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::vector<Vec2> hingeList(const Eigen::Matrix2Xd& hinges) {
@@ -241,25 +246,28 @@ FrameState FrameBuilder::snapshot(int k) const {
     if (spec.kind == PlotKind::Divergence) {
       plot.title = "divergence from " + scene_.runs[0].name + " (max hinge distance)";
       for (size_t run = 1; run < runs_.size(); ++run) {
-        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), plotTimes_, divergence_[run - 1], {}});
+        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), plotTimes_, divergence_[run - 1], {},
+                               std::min(stopTimeSoFar(history_[0].frame), stopTimeSoFar(history_[run].frame))});
       }
     } else if (spec.kind == PlotKind::Spread) {
       plot.title = "spread of the family (largest hinge distance from the run)";
       for (size_t run = 0; run < runs_.size(); ++run) {
         if (!scene_.runs[run].family) continue;
-        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), plotTimes_, history_[run].spreads, {}});
+        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), plotTimes_, history_[run].spreads, {},
+                               stopTimeSoFar(history_[run].frame)});
       }
     } else if (spec.kind == PlotKind::Jacobi) {
       plot.title = "Jacobi field across the motion |J_perp| (zeros: conjugate points)";
       for (size_t run = 0; run < runs_.size(); ++run) {
         if (!scene_.runs[run].config.jacobi) continue;
         plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), plotTimes_, history_[run].jacobiSizes,
-                               history_[run].frame.conjugateTimes});
+                               history_[run].frame.conjugateTimes, stopTimeSoFar(history_[run].frame)});
       }
     } else {
       plot.title = "relative energy error |E - E0| / E0";
       for (size_t run = 0; run < runs_.size(); ++run) {
-        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), plotTimes_, history_[run].energyErrors, {}});
+        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), plotTimes_, history_[run].energyErrors, {},
+                               stopTimeSoFar(history_[run].frame)});
       }
     }
     state.plots.push_back(std::move(plot));

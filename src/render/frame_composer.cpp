@@ -36,8 +36,13 @@ FrameComposer::FrameComposer(const ViewSettings& view, ImageSize size)
     : view_(view),
       size_(checkedSize(size)),
       panels_(effectivePanels(view)),
-      rects_(layoutPanels(panels_, size_.width, size_.height)),
-      font_(kFontPath, textHeights(size_)) {}
+      font_(kFontPath, textHeights(size_)),
+      rects_(layoutPanels(panels_, size_.width, size_.height, titleLineShown() ? titleLineHeight(font_) : 0)) {}
+
+bool FrameComposer::titleLineShown() const {
+  return view_.titleLine &&
+         std::none_of(panels_.begin(), panels_.end(), [](const PanelSpec& p) { return p.kind == PanelKind::Text; });
+}
 
 DrawList FrameComposer::compose(const FrameState& frame) const {
   DrawList list;
@@ -67,8 +72,7 @@ DrawList FrameComposer::compose(const FrameState& frame) const {
     }
     list.panels.push_back(std::move(drawing));
   }
-  const bool hasText = std::any_of(panels_.begin(), panels_.end(), [](const PanelSpec& p) { return p.kind == PanelKind::Text; });
-  if (view_.titleLine && !hasText) {  // every frame says what it shows and when, text panel or not
+  if (titleLineShown()) {  // every frame says what it shows and when, text panel or not
     PanelDrawing drawing;
     drawing.rect = {0, 0, float(size_.width), float(size_.height)};
     drawTitleLine(PanelContext{frame, view_, font_, drawing.rect}, drawing.shapes);

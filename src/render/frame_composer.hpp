@@ -25,11 +25,15 @@ class FrameComposer {
   const std::vector<PixelRect>& rects() const { return rects_; }
 
  private:
+  // Without a text panel the title and the time go across the top (unless view.title_line is off), in a band
+  // the automatic layout keeps free.
+  bool titleLineShown() const;
+
   ViewSettings view_;
   ImageSize size_;
   std::vector<PanelSpec> panels_;
-  std::vector<PixelRect> rects_;
   FontAtlas font_;
+  std::vector<PixelRect> rects_;
 };
 
 }  // namespace sl::render

@@ -14,7 +14,7 @@ std::vector<PanelSpec> effectivePanels(const ViewSettings& settings) {
   return {sphere, linkage, text};
 }
 
-std::vector<PixelRect> layoutPanels(const std::vector<PanelSpec>& panels, int width, int height) {
+std::vector<PixelRect> layoutPanels(const std::vector<PanelSpec>& panels, int width, int height, float reservedTop) {
   const float w = static_cast<float>(width), h = static_cast<float>(height);
   std::vector<PixelRect> rects(panels.size());
   std::vector<std::size_t> bands, others;
@@ -33,7 +33,7 @@ std::vector<PixelRect> layoutPanels(const std::vector<PanelSpec>& panels, int wi
   // Text scales with the shorter side (frame_composer.cpp), so its bands do too: a portrait frame is not a
   // landscape one stretched.
   const float bandHeight = std::round(0.14f * std::min(w, h));
-  float top = 0;
+  float top = std::round(reservedTop);
   for (std::size_t i : bands) {
     rects[i] = {0, top, w, bandHeight};
     top += bandHeight;

@@ -14,6 +14,8 @@ namespace sl::render {
 // The panels to draw: settings.panels, or sphere + linkage + text when none are given.
 std::vector<PanelSpec> effectivePanels(const ViewSettings& settings);
 
-std::vector<PixelRect> layoutPanels(const std::vector<PanelSpec>& panels, int width, int height);
+// `reservedTop` pixels across the top stay free of automatically placed panels (the title line's band).
+std::vector<PixelRect> layoutPanels(const std::vector<PanelSpec>& panels, int width, int height,
+                                    float reservedTop = 0);
 
 }  // namespace sl::render

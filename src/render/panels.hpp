@@ -2,6 +2,7 @@
 // The four panel kinds. Each turns a FrameState into shapes inside its pixel rectangle; the sphere
 // panel also returns its camera and how the sphere itself is drawn (by the impostor shader).
 
+#include <cmath>
 #include <optional>
 
 #include "contracts/frame_state.hpp"
@@ -27,6 +28,8 @@ void drawTextPanel(const PanelContext& context, ShapeBatch& batch);
 // The title and the time across the top of the frame (context.rect: the whole frame), for layouts without a text
 // panel (ViewSettings::titleLine).
 void drawTitleLine(const PanelContext& context, ShapeBatch& batch);
+// The height of that line's band (the layout keeps it free).
+inline float titleLineHeight(const FontAtlas& font) { return std::ceil(1.3f * font.lineHeight(TextSize::Normal)); }
 
 // Run colour of the frame state as a shape colour.
 inline Rgba toRgba(const ColorRGB& c, float alpha = 1) { return {c.r, c.g, c.b, alpha}; }

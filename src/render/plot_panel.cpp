@@ -125,6 +125,23 @@ void drawAxes(const PanelContext& c, const PlotArea& area, const Axis& x, const 
 // curves keep their weight beside the labels at every frame size.
 float seriesHalfWidth(const FontAtlas& font) { return std::max(1.1f, 0.075f * font.lineHeight(TextSize::Small)); }
 
+// Where the run behind a line stopped: a red cross on the line's last drawable value up to the stop time, or on the
+// time axis when it has none (a log axis and exact zeros, say).
+void drawStop(const PlotSeries& series, const Axis& x, const Axis& y, const PlotArea& area, float halfWidth,
+              ShapeBatch& batch) {
+  if (!std::isfinite(series.stopTime) || series.stopTime < x.lo || series.stopTime > x.hi) return;
+  P2 at = area.at(unit(x, series.stopTime), 0);
+  const std::size_t count = std::min(series.times.size(), series.values.size());
+  for (std::size_t i = count; i-- > 0;) {
+    if (series.times[i] > series.stopTime || !drawable(series.values[i], y.log)) continue;
+    at = area.at(unit(x, series.times[i]), unit(y, series.values[i]));
+    break;
+  }
+  const float arm = std::max(3.5f, 3.2f * halfWidth), width = std::max(0.9f, 0.8f * halfWidth);
+  batch.capsule({at.x - arm, at.y - arm}, {at.x + arm, at.y + arm}, width, palette::stopRed);
+  batch.capsule({at.x - arm, at.y + arm}, {at.x + arm, at.y - arm}, width, palette::stopRed);
+}
+
 void drawSeries(const PlotSeries& series, const Axis& x, const Axis& y, const PlotArea& area, float halfWidth,
                 ShapeBatch& batch) {
   std::vector<PolylinePoint> points;
@@ -140,6 +157,7 @@ void drawSeries(const PlotSeries& series, const Axis& x, const Axis& y, const Pl
   }
   if (points.size() == 1) batch.disc(points[0].at, std::max(1.6f, 1.45f * halfWidth), points[0].color);
   batch.polyline(points);
+  drawStop(series, x, y, area, halfWidth, batch);
   // Marked times (a Jacobi field's zeros): a ring on the time axis and a faint line up through the plot.
   for (const double t : series.markTimes) {
     if (!std::isfinite(t) || t < x.lo || t > x.hi) continue;

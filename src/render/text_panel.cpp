@@ -1,6 +1,7 @@
 // The text panel: title, simulation time, each run's name and method in its colour, and why a run
 // stopped once it has.
 
+#include <cmath>
 #include <cstdio>
 
 #include "render/palette.hpp"
@@ -29,6 +30,41 @@ std::string runLine(const RunFrame& run) {
   return line;
 }
 
+// A run's swatch before its text at baseline y: its colour and its line style, a stroke as thick as its path on
+// the sphere (runStyleWidth).
+void drawSwatch(const PanelContext& c, std::size_t k, TextSize size, float x, float y, ShapeBatch& batch) {
+  const float swatch = 0.3f * c.font.ascent(size);
+  const float mid = y - 0.35f * c.font.ascent(size);
+  const float half = swatch * runStyleWidth(k, c.frame.runs.size());
+  batch.capsule({x + half, mid}, {x + 2.0f * swatch - half, mid}, half, toRgba(c.frame.runs[k].color), true, 0.4f);
+}
+
+// The runs, each its swatch, name, method and (once stopped) why, flowing left to right from the baseline
+// after `top` and wrapping. Draws into `batch` if given; returns the bottom of the last row either way.
+float flowRuns(const PanelContext& c, TextSize size, float pad, float top, ShapeBatch* batch) {
+  const float line = c.font.lineHeight(size);
+  const float swatch = 0.3f * c.font.ascent(size);
+  float x = c.rect.x + pad, y = top + line;
+  for (std::size_t k = 0; k < c.frame.runs.size(); ++k) {
+    const RunFrame& run = c.frame.runs[k];
+    const std::string text = runLine(run);
+    const std::string stop = run.stopped ? "  stopped at t = " + format("%.3g", run.stopTime) + ": " + run.stopReason : "";
+    const float width = 2.5f * swatch + c.font.width(text + stop, size) + 2 * pad;
+    if (width > c.rect.width) return INFINITY;  // one run alone is wider than the panel: this size does not fit
+    if (x > c.rect.x + pad && x + width > c.rect.x + c.rect.width) {
+      x = c.rect.x + pad;
+      y += line;
+    }
+    if (batch) {
+      drawSwatch(c, k, size, x, y, *batch);
+      float end = c.font.draw(*batch, text, size, x + 2.5f * swatch, y, palette::ink);
+      if (run.stopped) c.font.draw(*batch, stop, size, end, y, palette::stopRed);
+    }
+    x += width;
+  }
+  return y + (line - c.font.ascent(size));
+}
+
 }  // namespace
 
 void drawTextPanel(const PanelContext& c, ShapeBatch& batch) {
@@ -43,26 +79,32 @@ void drawTextPanel(const PanelContext& c, ShapeBatch& batch) {
               c.rect.x + pad, y, palette::ink);
   c.font.draw(batch, time, TextSize::Normal, c.rect.x + c.rect.width - pad - timeWidth, y, palette::ink);
 
-  // Runs flow left to right, wrapping to the next line.
-  y += 0.15f * titleLine + line;
-  float x = c.rect.x + pad;
-  const float swatch = 0.3f * c.font.ascent(TextSize::Normal);
-  for (std::size_t k = 0; k < c.frame.runs.size(); ++k) {
-    const RunFrame& run = c.frame.runs[k];
-    std::string text = runLine(run);
-    std::string stop = run.stopped ? "  stopped at t = " + format("%.3g", run.stopTime) + ": " + run.stopReason : "";
-    const float width = 2.5f * swatch + c.font.width(text + stop, TextSize::Normal) + 2 * pad;
-    if (x > c.rect.x + pad && x + width > c.rect.x + c.rect.width) {
-      x = c.rect.x + pad;
-      y += line;
+  // Runs flow left to right, wrapping to the next line, in normal text or, if that overflows the panel, small
+  // text; when even that overflows (small frames, many runs) they share one row, each its name fitted to an
+  // equal part and, once stopped, the stop time (the reason needs the room of a larger frame).
+  const float firstRow = y + 0.15f * titleLine;
+  const float bottom = c.rect.y + c.rect.height;
+  for (const TextSize size : {TextSize::Normal, TextSize::Small}) {
+    if (flowRuns(c, size, pad, firstRow, nullptr) <= bottom) {
+      flowRuns(c, size, pad, firstRow, &batch);
+      return;
     }
-    // The swatch shows the run's colour and its line style: a stroke as thick as its path on the sphere.
-    const float mid = y - 0.35f * c.font.ascent(TextSize::Normal);
-    const float half = swatch * runStyleWidth(k, c.frame.runs.size());
-    batch.capsule({x + half, mid}, {x + 2.0f * swatch - half, mid}, half, toRgba(run.color), true, 0.4f);
-    float end = c.font.draw(batch, text, TextSize::Normal, x + 2.5f * swatch, y, palette::ink);
-    if (run.stopped) end = c.font.draw(batch, stop, TextSize::Normal, end, y, palette::stopRed);
-    x = end + 2 * pad;
+  }
+  const auto& runs = c.frame.runs;
+  if (runs.empty()) return;
+  const float share = (c.rect.width - pad) / float(runs.size());
+  const float rowY = firstRow + c.font.lineHeight(TextSize::Small);
+  const float swatch = 0.3f * c.font.ascent(TextSize::Small);
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const RunFrame& run = runs[k];
+    const float x = c.rect.x + pad + share * float(k);
+    const std::string stop = run.stopped ? " stopped t=" + format("%.3g", run.stopTime) : "";
+    const float room = share - 2.5f * swatch - pad;
+    const std::string stopText = c.font.fitted(stop, TextSize::Small, 0.6f * room);
+    const std::string name = c.font.fitted(run.name, TextSize::Small, room - c.font.width(stopText, TextSize::Small));
+    drawSwatch(c, k, TextSize::Small, x, rowY, batch);
+    const float end = c.font.draw(batch, name, TextSize::Small, x + 2.5f * swatch, rowY, palette::ink);
+    if (!stopText.empty()) c.font.draw(batch, stopText, TextSize::Small, end, rowY, palette::stopRed);
   }
 }
 
@@ -77,9 +119,10 @@ void drawTitleLine(const PanelContext& c, ShapeBatch& batch) {
   const float titleWidth = c.font.width(title, TextSize::Normal);
   const ColorRGB& b = c.settings.background;
   const Rgba veil{b.r, b.g, b.b, 0.75f};
-  batch.rect(c.rect.x + 0.5f * pad, c.rect.y, c.rect.x + 1.5f * pad + titleWidth, c.rect.y + 1.3f * line, veil);
+  const float band = titleLineHeight(c.font);
+  batch.rect(c.rect.x + 0.5f * pad, c.rect.y, c.rect.x + 1.5f * pad + titleWidth, c.rect.y + band, veil);
   batch.rect(c.rect.x + c.rect.width - 1.5f * pad - timeWidth, c.rect.y, c.rect.x + c.rect.width - 0.5f * pad,
-             c.rect.y + 1.3f * line, veil);
+             c.rect.y + band, veil);
   c.font.draw(batch, title, TextSize::Normal, c.rect.x + pad, y, palette::ink);
   c.font.draw(batch, time, TextSize::Normal, c.rect.x + c.rect.width - pad - timeWidth, y, palette::ink);
 }

@@ -2,8 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "fixtures/synthetic_frame.hpp"
 #include "render/frame_composer.hpp"
+#include "render/palette.hpp"
 #include "render/shape_batch.hpp"
 
 namespace sl::render {
@@ -53,6 +57,53 @@ TEST(DrawList, ATitleLineWhenThereIsNoTextPanel) {
   noText.titleLine = false;
   EXPECT_EQ(FrameComposer(noText, {640, 360}).compose(syntheticFrame(2.0, 120)).panels.size(), 3u);
   EXPECT_EQ(FrameComposer(fourPanels(), {640, 360}).compose(syntheticFrame(2.0, 120)).panels.size(), 4u);
+}
+
+bool isStopRed(const ShapeVertex& v) {
+  return std::abs(v.r - palette::stopRed.r) < 1e-6f && std::abs(v.g - palette::stopRed.g) < 1e-6f &&
+         std::abs(v.b - palette::stopRed.b) < 1e-6f;
+}
+
+// Issue 12: a run's stop is shown where it happened in its plots: red shapes (the cross) inside the plot area at
+// the stop time's x, and none while every run still moves.
+TEST(DrawList, AStoppedRunIsCrossedOutInItsPlotWhereItStopped) {
+  ViewSettings view = fourPanels();
+  const FrameComposer composer(view, {640, 360});
+  SyntheticOptions stopping;
+  stopping.stopSecondRun = true;
+  const FrameState frame = syntheticFrame(7.0, 420, stopping);  // the second run stopped at t = 5 of 10
+  ASSERT_TRUE(std::isfinite(frame.plots[1].series[1].stopTime));
+  const DrawList list = composer.compose(frame);
+  const PanelDrawing& plot = list.panels[3];
+  std::vector<float> xs;
+  for (const ShapeVertex& v : plot.shapes.vertices())
+    if (isStopRed(v)) xs.push_back(v.x);
+  ASSERT_FALSE(xs.empty()) << "no stop cross in the plot";
+  const auto [lo, hi] = std::minmax_element(xs.begin(), xs.end());
+  // The plot's time axis spans 0..10 across most of the panel: t = 5 lies near its middle.
+  const float middle = plot.rect.x + 0.5f * plot.rect.width;
+  EXPECT_NEAR(0.5f * (*lo + *hi), middle, 0.12f * plot.rect.width);
+  EXPECT_LT(*hi - *lo, 0.1f * plot.rect.width) << "the cross is a mark, not a line";
+
+  const DrawList running = composer.compose(syntheticFrame(7.0, 420));
+  for (const ShapeVertex& v : running.panels[3].shapes.vertices()) EXPECT_FALSE(isStopRed(v));
+}
+
+// Issue 12: the automatic layout keeps the title line's band free, so the title and the time never sit on a panel
+// (default-like scenes without a text panel), at every frame size.
+TEST(DrawList, TheTitleLineHasABandOfItsOwn) {
+  ViewSettings view;
+  view.panels = {{PanelKind::Sphere, std::nullopt, 0}, {PanelKind::Linkage, std::nullopt, 0}};
+  for (const ImageSize size : {ImageSize{320, 180}, ImageSize{640, 360}, ImageSize{1920, 1080}, ImageSize{1080, 1920}}) {
+    const FrameComposer composer(view, size);
+    const DrawList list = composer.compose(syntheticFrame(2.0, 120));
+    ASSERT_EQ(list.panels.size(), 3u);
+    float panelsTop = float(size.height);
+    for (std::size_t i = 0; i < 2; ++i) panelsTop = std::min(panelsTop, list.panels[i].rect.y);
+    EXPECT_GT(panelsTop, 0) << size.width << "x" << size.height;
+    for (const ShapeVertex& v : list.panels.back().shapes.vertices())
+      ASSERT_LE(v.y, panelsTop + 0.5f) << "title line over a panel at " << size.width << "x" << size.height;
+  }
 }
 
 TEST(DrawList, ShapesStayNearTheirPanel) {

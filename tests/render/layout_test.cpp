@@ -92,6 +92,25 @@ TEST(PanelLayout, AutomaticLayoutTilesTheFrame) {
   EXPECT_EQ(rects[1].x, 0);                // the sphere on the left
 }
 
+// A reserved band across the top (the title line's) stays free of automatically placed panels, which still tile
+// the rest of the frame; explicit rects are the scene's own.
+TEST(PanelLayout, AReservedTopBandStaysFree) {
+  std::vector<PanelSpec> panels(3);
+  panels[0].kind = PanelKind::Sphere;
+  panels[1].kind = PanelKind::Linkage;
+  panels[2].kind = PanelKind::Plot;
+  for (auto [w, h] : {std::pair{1280, 720}, std::pair{720, 1280}}) {
+    const auto rects = layoutPanels(panels, w, h, 24.4f);
+    double area = 0;
+    for (const auto& r : rects) {
+      EXPECT_GE(r.y, 24);
+      EXPECT_LE(r.y + r.height, h);
+      area += double(r.width) * r.height;
+    }
+    EXPECT_DOUBLE_EQ(area, double(w) * (h - 24));
+  }
+}
+
 TEST(PanelLayout, ExplicitRectsAreKept) {
   std::vector<PanelSpec> panels(1);
   panels[0].rect = std::array<double, 4>{0.25, 0.5, 0.5, 0.5};
