@@ -43,13 +43,29 @@ std::string unusablePathReason(const std::string& path) {
   return "";
 }
 
+// The number of rods other checks measure against: the scene's, or none while its "rods" is invalid. A check whose
+// expectation depends on n (the sizes of masses and starts, rules by rod count) is skipped then: the invalid
+// "rods" is reported on its own, and comparing with a made-up n would add problems that are not there.
+using RodCount = std::optional<int>;
+
+// checkSize against a count that depends on n (`expected` is empty while n is unknown: the value passes).
+bool fitsChain(const JsonObject& object, const std::string& key, const Eigen::VectorXd& value,
+               std::optional<long> expected, const std::string& what) {
+  return !expected || object.checkSize(key, value, *expected, what);
+}
+
+std::optional<long> chainSize(RodCount rods, int offset) {
+  return rods ? std::optional<long>(*rods + offset) : std::nullopt;
+}
+
 // Reads a "linkage" object at `path` into `chain`. The scene's linkage sets n and L and gives the masses their
 // defaults (unit hinges, massless rods); a run's linkage (forRun) starts from the scene's chain and may change L
-// and the masses, never n: every run of a scene is drawn and compared with the same number of rods.
-void readLinkage(const json& value, const std::string& path, bool forRun, Chain& chain,
-                 std::vector<SceneProblem>& problems) {
+// and the masses, never n: every run of a scene is drawn and compared with the same number of rods. Returns the
+// number of rods the rest of the scene is checked against (for a run: `sceneRods`, the scene's).
+RodCount readLinkage(const json& value, const std::string& path, RodCount sceneRods, bool forRun, Chain& chain,
+                     std::vector<SceneProblem>& problems) {
   const JsonObject linkage(value, path, problems, {"rods", "L", "hinge_masses", "rod_masses"});
-  bool rodsKnown = forRun;  // L is judged against n only when n itself is valid
+  bool rodsKnown = forRun && sceneRods.has_value();  // sizes and L are judged against n only when n is valid
   if (forRun) {
     if (const auto rods = linkage.integer("rods"); rods && *rods != chain.rods) {
       linkage.report("rods", "found " + std::to_string(*rods) + "; a run keeps the scene's number of rods, " +
@@ -83,21 +99,23 @@ void readLinkage(const json& value, const std::string& path, bool forRun, Chain&
     chain.rodMasses = Eigen::VectorXd::Zero(n);
   }
   if (const auto masses = linkage.numbers("hinge_masses")) {
-    if (linkage.checkSize("hinge_masses", *masses, n - 1, "one per interior hinge, n-1")) {
+    if (fitsChain(linkage, "hinge_masses", *masses, rodsKnown ? std::optional<long>(n - 1) : std::nullopt,
+                  "one per interior hinge, n-1")) {
       if (masses->minCoeff() < 0 || masses->maxCoeff() > limits::kMaxMass)
         linkage.report("hinge_masses", "expected masses from 0 to " + shortest(limits::kMaxMass));
       chain.hingeMasses = *masses;
     }
   }
   if (const auto masses = linkage.numbers("rod_masses")) {
-    if (linkage.checkSize("rod_masses", *masses, n, "one per rod, n")) {
+    if (fitsChain(linkage, "rod_masses", *masses, rodsKnown ? std::optional<long>(n) : std::nullopt,
+                  "one per rod, n")) {
       if (masses->minCoeff() < 0 || masses->maxCoeff() > limits::kMaxMass)
         linkage.report("rod_masses", "expected masses from 0 to " + shortest(limits::kMaxMass));
       chain.rodMasses = *masses;
     }
   }
   // A hinge may carry no point mass when a rod beside it has mass: the kinetic energy still sees it move.
-  for (Eigen::Index j = 0; j < chain.hingeMasses.size() && j + 1 < chain.rodMasses.size(); ++j) {
+  for (Eigen::Index j = 0; rodsKnown && j < chain.hingeMasses.size() && j + 1 < chain.rodMasses.size(); ++j) {
     if (chain.hingeMasses(j) == 0 && chain.rodMasses(j) == 0 && chain.rodMasses(j + 1) == 0) {
       linkage.report("hinge_masses", "hinge " + std::to_string(j + 1) +
                                          " carries no mass, and neither do the rods beside it; expected a positive "
@@ -105,13 +123,14 @@ void readLinkage(const json& value, const std::string& path, bool forRun, Chain&
       break;
     }
   }
+  return rodsKnown ? RodCount(n) : std::nullopt;
 }
 
-void readDrag(const JsonObject& initial, int rods, InitialSpec& spec, std::vector<SceneProblem>& problems) {
+void readDrag(const JsonObject& initial, RodCount rods, InitialSpec& spec, std::vector<SceneProblem>& problems) {
   const JsonObject drag(*initial.member("drag"), initial.pathOf("drag"), problems, {"point", "direction"});
-  const long size = rods - 1;
-  const std::string what = "a vector of R^(n-1), n-1 = " + std::to_string(size);
-  if (const auto point = drag.numbers("point", true); point && drag.checkSize("point", *point, size, what)) {
+  const std::optional<long> size = chainSize(rods, -1);
+  const std::string what = "a vector of R^(n-1), n-1 = " + std::to_string(size.value_or(0));
+  if (const auto point = drag.numbers("point", true); point && fitsChain(drag, "point", *point, size, what)) {
     // Only the point's direction matters: normalise here, overflow-free (a plain norm of [1e200, ...] is
     // inf and the "unit" point would be zero; of [1e-320, 0, 0] it is 0 and a valid point looks zero).
     if ((point->array() == 0).all()) {
@@ -121,27 +140,23 @@ void readDrag(const JsonObject& initial, int rods, InitialSpec& spec, std::vecto
     }
   }
   if (const auto direction = drag.numbers("direction", true);
-      direction && drag.checkSize("direction", *direction, size, what)) {
+      direction && fitsChain(drag, "direction", *direction, size, what)) {
     spec.dragDirection = *direction;
   }
-  if (spec.dragPoint.size() == size && spec.dragDirection.size() == size && spec.dragPoint.norm() > 0) {
-    const Eigen::VectorXd x = spec.dragPoint.normalized();
-    const Eigen::VectorXd tangent = spec.dragDirection - x * x.dot(spec.dragDirection);
-    if (spec.unitSpeed && tangent.norm() <= 1e-12 * std::max(1.0, spec.dragDirection.norm())) {
-      drag.report("direction",
-                  "has no component tangent to the sphere at the point; unit_speed needs a release direction");
-    }
-  }
+  // Whether the direction crosses the sphere at the point is decided when the start is set up
+  // (initialStateFromDrag), for validate and render alike, with this start's path.
 }
 
-// A list of n-1 points [[x, y], ...] under `key`, or nullopt (problems recorded).
-std::optional<Eigen::Matrix2Xd> readPoints(const JsonObject& object, const std::string& key, int count) {
+// A list of n-1 points [[x, y], ...] under `key` (any number of them while n is unknown), or nullopt (problems
+// recorded).
+std::optional<Eigen::Matrix2Xd> readPoints(const JsonObject& object, const std::string& key, RodCount rods) {
   const json* value = object.member(key);
-  const std::string what = "an array of n-1 = " + std::to_string(count) + " points [x, y]";
-  if (!value->is_array() || value->size() != static_cast<std::size_t>(count)) {
+  const std::string what = "an array of n-1 = " + std::to_string(rods.value_or(1) - 1) + " points [x, y]";
+  if (!value->is_array() || (rods && value->size() != static_cast<std::size_t>(*rods - 1))) {
     object.report(key, "found " + describeJson(*value) + "; expected " + what);
     return std::nullopt;
   }
+  const int count = static_cast<int>(value->size());
   Eigen::Matrix2Xd points(2, count);
   for (int k = 0; k < count; ++k) {
     const json& point = (*value)[static_cast<std::size_t>(k)];
@@ -163,9 +178,8 @@ std::optional<Eigen::Matrix2Xd> readPoints(const JsonObject& object, const std::
 // points, then "velocities" (n-1 vectors) or a "push": {"hinge": k, "velocity": [vx, vy]} or {"seed": s,
 // "size": v} (a random velocity of size about v at every hinge). Both are projected onto the rod constraints
 // when the run starts (simulation/initial_state.hpp), and the commands say if they had to move.
-void readHingeStart(const JsonObject& initial, int rods, InitialSpec& spec, std::vector<SceneProblem>& problems) {
+void readHingeStart(const JsonObject& initial, RodCount rods, InitialSpec& spec, std::vector<SceneProblem>& problems) {
   spec.kind = InitialSpec::Kind::Hinges;
-  const int count = rods - 1;
   if (!initial.has("hinges")) {
     initial.reportMissing("hinges", "\"arc\" or the n-1 hinge positions [[x, y], ...]");
   } else if (initial.member("hinges")->is_string()) {
@@ -174,7 +188,7 @@ void readHingeStart(const JsonObject& initial, int rods, InitialSpec& spec, std:
       spec.shape = InitialSpec::Shape::Arc;
     else
       initial.report("hinges", "found \"" + shape + "\"; expected \"arc\" or the n-1 hinge positions");
-  } else if (const auto points = readPoints(initial, "hinges", count)) {
+  } else if (const auto points = readPoints(initial, "hinges", rods)) {
     spec.hinges = *points;
   }
   if (initial.has("velocities") == initial.has("push")) {
@@ -183,7 +197,7 @@ void readHingeStart(const JsonObject& initial, int rods, InitialSpec& spec, std:
     return;
   }
   if (initial.has("velocities")) {
-    if (const auto velocities = readPoints(initial, "velocities", count)) spec.hingeVelocities = *velocities;
+    if (const auto velocities = readPoints(initial, "velocities", rods)) spec.hingeVelocities = *velocities;
     return;
   }
   const JsonObject push(*initial.member("push"), initial.pathOf("push"), problems, {"hinge", "velocity", "seed", "size"});
@@ -200,9 +214,9 @@ void readHingeStart(const JsonObject& initial, int rods, InitialSpec& spec, std:
     return;
   }
   if (const auto hinge = push.integer("hinge", true)) {
-    if (*hinge < 1 || *hinge > count)
+    if (*hinge < 1 || (rods && *hinge > *rods - 1))
       push.report("hinge", "found " + std::to_string(*hinge) + "; expected a hinge from 1 to n-1 = " +
-                               std::to_string(count));
+                               std::to_string(rods.value_or(1) - 1));
     else
       spec.pushHinge = static_cast<int>(*hinge);
   }
@@ -215,7 +229,7 @@ void readHingeStart(const JsonObject& initial, int rods, InitialSpec& spec, std:
 
 // Reads an "initial" object at `path` (the scene's start, or a run's own) for a chain of `rods` rods. A run's
 // start replaces the scene's whole: it is one start, in any form the scene's may take.
-void readInitial(const json& value, const std::string& path, int rods, InitialSpec& spec,
+void readInitial(const json& value, const std::string& path, RodCount rods, InitialSpec& spec,
                  std::vector<SceneProblem>& problems) {
   const JsonObject initial(value, path, problems,
                            {"coords", "velocity", "drag", "unit_speed", "hinges", "velocities", "push"});
@@ -240,13 +254,13 @@ void readInitial(const json& value, const std::string& path, int rods, InitialSp
     readDrag(initial, rods, spec, problems);
     return;
   }
-  const long size = rods - 2;
-  const std::string what = "chart coordinates, outermost first, n-2 = " + std::to_string(size);
-  if (const auto coords = initial.numbers("coords", true); coords && initial.checkSize("coords", *coords, size, what)) {
+  const std::optional<long> size = chainSize(rods, -2);
+  const std::string what = "chart coordinates, outermost first, n-2 = " + std::to_string(size.value_or(0));
+  if (const auto coords = initial.numbers("coords", true); coords && fitsChain(initial, "coords", *coords, size, what)) {
     spec.coords = *coords;
   }
   if (const auto velocity = initial.numbers("velocity", true);
-      velocity && initial.checkSize("velocity", *velocity, size, what)) {
+      velocity && fitsChain(initial, "velocity", *velocity, size, what)) {
     spec.velocity = *velocity;
     if (velocity->norm() == 0) {
       initial.report("velocity", "is zero; expected a non-zero velocity (a linkage at rest has no motion to show)");
@@ -256,7 +270,7 @@ void readInitial(const json& value, const std::string& path, int rods, InitialSp
 
 // "family": a fan, parallel family or cloud of geodesics around the run (FamilySpec). Keys that mean nothing to
 // the kind are refused, as "step" is with an adaptive integrator.
-std::optional<FamilySpec> readFamily(const JsonObject& run, int rods, std::vector<SceneProblem>& problems) {
+std::optional<FamilySpec> readFamily(const JsonObject& run, RodCount rods, std::vector<SceneProblem>& problems) {
   const JsonObject object(*run.member("family"), run.pathOf("family"), problems,
                           {"kind", "count", "spread", "epsilon", "seed"});
   if (!object.isObject()) return std::nullopt;
@@ -297,8 +311,8 @@ std::optional<FamilySpec> readFamily(const JsonObject& run, int rods, std::vecto
     else
       family.seed = static_cast<unsigned long>(*seed);
   }
-  if (!isCloud && rods < 4)
-    object.report("kind", "found " + kindName + " for " + std::to_string(rods) +
+  if (!isCloud && rods && *rods < 4)
+    object.report("kind", "found " + kindName + " for " + std::to_string(*rods) +
                               " rods; a fan or parallel family needs a tangent plane (4 or more rods); expected "
                               "\"cloud\"");
   if (problems.size() != before) return std::nullopt;
@@ -332,7 +346,8 @@ std::optional<ColorRGB> readColor(const JsonObject& object, const std::string& k
   return ColorRGB{float((*rgb)(0)), float((*rgb)(1)), float((*rgb)(2))};
 }
 
-RunSpec readRun(const json& value, const std::string& path, const Scene& scene, std::vector<SceneProblem>& problems) {
+RunSpec readRun(const json& value, const std::string& path, const Scene& scene, RodCount rods,
+                std::vector<SceneProblem>& problems) {
   const JsonObject run(value, path, problems,
                        {"name", "method", "integrator", "tolerance", "step", "color", "watchdog", "linkage", "initial",
                         "family", "jacobi"});
@@ -344,9 +359,8 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
   spec.initial = scene.initial;
   spec.ownLinkage = run.has("linkage");
   spec.ownInitial = run.has("initial");
-  if (spec.ownLinkage) readLinkage(*run.member("linkage"), run.pathOf("linkage"), true, spec.chain, problems);
-  if (spec.ownInitial)
-    readInitial(*run.member("initial"), run.pathOf("initial"), scene.chain.rods, spec.initial, problems);
+  if (spec.ownLinkage) readLinkage(*run.member("linkage"), run.pathOf("linkage"), rods, true, spec.chain, problems);
+  if (spec.ownInitial) readInitial(*run.member("initial"), run.pathOf("initial"), rods, spec.initial, problems);
   if (const auto method = run.string("method")) {
     if (const auto kind = detail::pickKind(run.pathOf("method"), *method, kMethods, problems)) {
       spec.config.method = *kind;
@@ -355,7 +369,7 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
       const Chain& chain = spec.chain;
       const bool specsChain =
           chain.rods == 4 && (chain.hingeMasses.array() == 1.0).all() && (chain.rodMasses.array() == 0.0).all();
-      if (traits(*kind).published && !specsChain) {
+      if (traits(*kind).published && rods && !specsChain) {
         run.report("method", "found \"" + *method +
                                  "\", the spec's published method for 4 rods with unit hinge masses and "
                                  "massless rods; this chain differs: expected christoffel, embedded or ambient");
@@ -396,21 +410,22 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
   spec.color = readColor(run, "color");
   if (run.has("watchdog")) readWatchdog(run, spec.config, problems);
   // What only the ambient method can move: a slack chain, a start by hinges, more than kMaxRods rods.
-  const bool chartFree = spec.chain.isSlack() || spec.initial.kind == InitialSpec::Kind::Hinges;
+  const bool slack = rods && spec.chain.isSlack();
+  const bool chartFree = slack || spec.initial.kind == InitialSpec::Kind::Hinges;
   if (spec.config.method != Method::Ambient && run.has("method")) {
-    if (spec.chain.isSlack())
+    if (slack)
       run.report("method", "found \"" + nameOf(spec.config.method) + "\" for a slack chain (L = " +
                                shortest(spec.chain.baseLength) + " <= n-2): it has no chart; expected ambient");
     else if (spec.initial.kind == InitialSpec::Kind::Hinges)
       run.report("method", "found \"" + nameOf(spec.config.method) +
                                "\" for a start by hinges; expected ambient (the chart methods start from coords or "
                                "a drag)");
-    else if (scene.chain.rods > limits::kMaxRods)
+    else if (rods && *rods > limits::kMaxRods)
       run.report("method", "found \"" + nameOf(spec.config.method) + "\" for " + std::to_string(scene.chain.rods) +
                                " rods; the chart methods are limited to " + std::to_string(limits::kMaxRods) +
                                " rods (their charts stay well conditioned there); expected ambient");
   }
-  if (spec.chain.isSlack() && spec.initial.kind != InitialSpec::Kind::Hinges) {
+  if (slack && spec.initial.kind != InitialSpec::Kind::Hinges) {
     const SceneProblem problem{spec.ownInitial ? run.pathOf("initial") : "initial",
                                "a slack chain (L = " + shortest(spec.chain.baseLength) +
                                    " <= n-2) has no configuration sphere, so no chart or drag start; expected a start "
@@ -418,7 +433,7 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
     if (std::none_of(problems.begin(), problems.end(), [&](const SceneProblem& p) { return p.jsonPath == problem.jsonPath; }))
       problems.push_back(problem);
   }
-  if (run.has("family")) spec.family = readFamily(run, scene.chain.rods, problems);
+  if (run.has("family")) spec.family = readFamily(run, rods, problems);
   if (spec.family && chartFree)
     run.report("family", "a family starts from a point of the configuration sphere; expected a start by coords or "
                          "drag on a chain with n-2 < L < n");
@@ -429,12 +444,12 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
   if (spec.config.jacobi && chartFree)
     run.report("jacobi", "Jacobi fields start from a point of the configuration sphere; expected a start by coords "
                          "or drag on a chain with n-2 < L < n");
-  if (spec.config.jacobi && scene.chain.rods < 4)
+  if (spec.config.jacobi && rods && *rods < 4)
     run.report("jacobi", "needs 4 or more rods (3 rods have no direction across the motion)");
   return spec;
 }
 
-void readRuns(const json* value, Scene& scene, std::vector<SceneProblem>& problems) {
+void readRuns(const json* value, Scene& scene, RodCount rods, std::vector<SceneProblem>& problems) {
   if (value == nullptr) {
     problems.push_back({"runs", "missing; expected an array of runs, each with a name and a method"});
     return;
@@ -446,7 +461,7 @@ void readRuns(const json* value, Scene& scene, std::vector<SceneProblem>& proble
   std::set<std::string> names;
   for (size_t i = 0; i < value->size(); ++i) {
     const std::string path = indexPath("runs", i);
-    RunSpec run = readRun((*value)[i], path, scene, problems);
+    RunSpec run = readRun((*value)[i], path, scene, rods, problems);
     if (!run.name.empty() && !names.insert(run.name).second) {
       problems.push_back({path + ".name", "\"" + run.name + "\" is used by an earlier run; expected unique names"});
     }
@@ -571,18 +586,19 @@ Scene parseScene(const std::string& text, const std::string& file, const std::ve
   if (const auto duration = top.number("duration", true); duration && top.checkPositive("duration", *duration)) {
     scene.duration = *duration;
   }
+  RodCount rods;
   if (top.has("linkage"))
-    readLinkage(*top.member("linkage"), "linkage", false, scene.chain, problems);
+    rods = readLinkage(*top.member("linkage"), "linkage", std::nullopt, false, scene.chain, problems);
   else
     top.reportMissing("linkage", "an object with rods and L");
   if (top.has("initial"))
-    readInitial(*top.member("initial"), "initial", scene.chain.rods, scene.initial, problems);
+    readInitial(*top.member("initial"), "initial", rods, scene.initial, problems);
   else
     top.reportMissing("initial", "an object with coords and velocity, or drag");
-  readRuns(top.member("runs"), scene, problems);
+  readRuns(top.member("runs"), scene, rods, problems);
   readOutput(top.has("output") ? *top.member("output") : json::object(), scene, problems);
   for (SceneProblem& problem : checkFrameCount(scene.duration, scene.output.fps)) problems.push_back(problem);
-  detail::readView(top.has("view") ? *top.member("view") : json::object(), scene, problems);
+  detail::readView(top.has("view") ? *top.member("view") : json::object(), scene, rods.has_value(), problems);
 
   if (!problems.empty()) throw SceneError(file, std::move(problems));
   return scene;

@@ -14,7 +14,8 @@
 namespace sl::detail {
 
 // Reads "view" into scene.view; needs scene.runs and scene.chain already read.
-void readView(const nlohmann::json& view, Scene& scene, std::vector<SceneProblem>& problems);
+// `rodsKnown`: the scene's "rods" is valid, so rules by rod count apply (scene_loader.cpp, RodCount).
+void readView(const nlohmann::json& view, Scene& scene, bool rodsKnown, std::vector<SceneProblem>& problems);
 
 // "found "word" (did you mean ...); expected one of a, b, c" at path.
 void reportUnknownName(const std::string& path, const std::string& word, const std::vector<std::string>& names,

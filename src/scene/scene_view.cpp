@@ -32,7 +32,14 @@ PlotSpec defaultPlot(const Scene& scene) {
   return {scene.runs.size() >= 2 ? PlotKind::Divergence : PlotKind::EnergyError, true, std::nullopt};
 }
 
-void addPanel(const json& value, const std::string& path, Scene& scene, std::vector<SceneProblem>& problems) {
+// A chain with no configuration sphere among the scene's and its runs' (judged only once n is known).
+bool hasSlackChain(const Scene& scene, bool rodsKnown) {
+  return rodsKnown && (scene.chain.isSlack() || std::any_of(scene.runs.begin(), scene.runs.end(),
+                                                            [](const RunSpec& run) { return run.chain.isSlack(); }));
+}
+
+void addPanel(const json& value, const std::string& path, Scene& scene, bool rodsKnown,
+              std::vector<SceneProblem>& problems) {
   PanelSpec panel;
   PlotSpec plot = defaultPlot(scene);
   std::optional<PanelKind> kind;
@@ -70,10 +77,7 @@ void addPanel(const json& value, const std::string& path, Scene& scene, std::vec
   }
   if (!kind) return;
   panel.kind = *kind;
-  const bool slack =
-      scene.chain.isSlack() ||
-      std::any_of(scene.runs.begin(), scene.runs.end(), [](const RunSpec& run) { return run.chain.isSlack(); });
-  if (panel.kind == PanelKind::Sphere && slack)
+  if (panel.kind == PanelKind::Sphere && hasSlackChain(scene, rodsKnown))
     problems.push_back({path, "a slack chain (L <= n-2) has no configuration sphere to draw; expected linkage, plot "
                               "or text panels"});
   if (panel.kind == PanelKind::Plot) {
@@ -95,22 +99,20 @@ void addPanel(const json& value, const std::string& path, Scene& scene, std::vec
   scene.view.panels.push_back(panel);
 }
 
-void readPanels(const JsonObject& view, Scene& scene, std::vector<SceneProblem>& problems) {
+void readPanels(const JsonObject& view, Scene& scene, bool rodsKnown, std::vector<SceneProblem>& problems) {
   const json* panels = view.member("panels");
   if (panels == nullptr) {
     // A slack chain has no sphere: its linkage alone.
-    const bool slack =
-        scene.chain.isSlack() ||
-        std::any_of(scene.runs.begin(), scene.runs.end(), [](const RunSpec& run) { return run.chain.isSlack(); });
+    const bool slack = hasSlackChain(scene, rodsKnown);
     for (const char* name : {"sphere", "linkage"})
-      if (!(slack && std::string(name) == "sphere")) addPanel(json(name), "view.panels", scene, problems);
+      if (!(slack && std::string(name) == "sphere")) addPanel(json(name), "view.panels", scene, rodsKnown, problems);
     return;
   }
   if (!panels->is_array() || panels->empty()) {
     view.report("panels", "found " + describeJson(*panels) + "; expected a non-empty array of panels");
     return;
   }
-  for (size_t i = 0; i < panels->size(); ++i) addPanel((*panels)[i], indexPath("view.panels", i), scene, problems);
+  for (size_t i = 0; i < panels->size(); ++i) addPanel((*panels)[i], indexPath("view.panels", i), scene, rodsKnown, problems);
 }
 
 void readCamera(const JsonObject& view, CameraSpec& camera, std::vector<SceneProblem>& problems) {
@@ -191,7 +193,7 @@ void readFades(const JsonObject& view, Scene& scene) {
 
 // "sphere": how the sphere panel's surface is coloured and decorated. The geometry behind it (curvature,
 // bending, stiffness; docs/geometry.md) is that of a surface, so 4 rods only.
-void readSphereSurface(const JsonObject& view, Scene& scene, std::vector<SceneProblem>& problems) {
+void readSphereSurface(const JsonObject& view, Scene& scene, bool rodsKnown, std::vector<SceneProblem>& problems) {
   const JsonObject object(*view.member("sphere"), view.pathOf("sphere"), problems, {"color_by", "stiffness"});
   if (!object.isObject()) return;
   SphereSurfaceSpec& surface = scene.view.sphereSurface;
@@ -200,12 +202,12 @@ void readSphereSurface(const JsonObject& view, Scene& scene, std::vector<ScenePr
       surface.colorBy = *kind;
   }
   surface.stiffness = object.boolean("stiffness").value_or(false);
-  if (scene.chain.isSlack() && surface.decorated()) {
+  if (rodsKnown && scene.chain.isSlack() && surface.decorated()) {
     object.report(surface.colorBy != SphereColoring::None ? "color_by" : "stiffness",
                   "a slack chain (L <= n-2) has no configuration sphere to colour or decorate");
     surface = {};
   }
-  if (scene.chain.rods != 4 && surface.decorated()) {
+  if (rodsKnown && scene.chain.rods != 4 && surface.decorated()) {
     const std::string why = "found " + std::to_string(scene.chain.rods) +
                             " rods; curvature, bending and stiffness are drawn for 4 rods only (the configuration "
                             "space is then a surface, S^2)";
@@ -217,16 +219,16 @@ void readSphereSurface(const JsonObject& view, Scene& scene, std::vector<ScenePr
 
 }  // namespace
 
-void readView(const json& value, Scene& scene, std::vector<SceneProblem>& problems) {
+void readView(const json& value, Scene& scene, bool rodsKnown, std::vector<SceneProblem>& problems) {
   const JsonObject view(value, "view", problems,
                         {"panels", "camera", "linkage_layout", "linkage_run", "trails", "trail_fade_seconds",
                          "path_fade_seconds", "path_samples_per_frame", "background", "antialias", "sphere",
                          "title_line"});
   if (!view.isObject()) return;
   ViewSettings& render = scene.view;
-  readPanels(view, scene, problems);
+  readPanels(view, scene, rodsKnown, problems);
   if (view.has("camera")) readCamera(view, render.camera, problems);
-  if (view.has("sphere")) readSphereSurface(view, scene, problems);
+  if (view.has("sphere")) readSphereSurface(view, scene, rodsKnown, problems);
   readLinkageChoice(view, scene, problems);
   readTrails(view, scene);
   readFades(view, scene);

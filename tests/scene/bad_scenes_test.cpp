@@ -55,6 +55,16 @@ TEST(BadScenes, EachNamesItsJsonPathAndWhatIsWrong) {
   }
 }
 
+// Issue 13.19: an invalid "rods" is the only problem of a scene whose other sizes fit the n it meant; nothing is
+// compared with a made-up n (masses, starts in every form, runs' linkages, families, Jacobi fields, the sphere).
+TEST(BadScenes, AnInvalidRodCountIsNotMeasuredAgainstAMadeUpOne) {
+  for (const char* file : {"rods_beyond_limit_sized_for_it.json", "rods_not_integer_sized_for_five.json"}) {
+    const std::vector<SceneProblem> problems = problemsOf(kBadDir + file);
+    ASSERT_EQ(problems.size(), 1u) << formatProblems(file, problems);
+    EXPECT_EQ(problems[0].jsonPath, "linkage.rods");
+  }
+}
+
 TEST(BadScenes, SeveralProblemsAreAllReported) { EXPECT_EQ(problemsOf(kBadDir + "several_problems.json").size(), 3u); }
 
 TEST(BadScenes, MessageStartsWithTheFileName) {
