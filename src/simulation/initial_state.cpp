@@ -52,7 +52,12 @@ void requireFiniteMotion(const Chain& chain, const InitialState& start, const ch
     throw std::invalid_argument(std::string(what) +
                                 " is so large that the kinetic energy overflows; expected a smaller velocity (or "
                                 "unit_speed)");
-  if (!(speed2 > 0)) throw std::invalid_argument(std::string(what) + " is zero: nothing moves");
+  if (!(speed2 > 0))
+    throw std::invalid_argument(std::string(what) +
+                                (start.sphereVelocity.cwiseAbs().maxCoeff() > 0
+                                     ? " is so small that the kinetic energy underflows to zero; expected a larger "
+                                       "velocity (or unit_speed)"
+                                     : " is zero: nothing moves"));
 }
 
 }  // namespace
@@ -61,14 +66,28 @@ InitialState initialStateFromDrag(const Chain& chain, const Eigen::VectorXd& poi
                                   bool unitSpeed) {
   requireSize(point, chain.rods - 1, "drag start point");
   requireSize(direction, chain.rods - 1, "drag direction");
-  if (point.norm() == 0.0) throw std::invalid_argument("drag start point is zero; it must be a point of the sphere");
+  if ((point.array() == 0).all())
+    throw std::invalid_argument("drag start point is zero; it must be a point of the sphere");
   InitialState start;
-  start.spherePoint = point.normalized();
-  start.sphereVelocity = direction - start.spherePoint * start.spherePoint.dot(direction);
-  if (unitSpeed)
+  start.spherePoint = point.stableNormalized();
+  // The tangent part is taken of the direction brought to size 1 first (its largest component), so that
+  // [1e308, 1e308, 1e308] does not overflow on the way and [1e-300, 0, 0] does not vanish. A direction along the
+  // point leaves only rounding noise, which would be a frozen linkage or, with unit_speed, noise blown up to an
+  // arbitrary direction: refused at a relative threshold.
+  const double largest = direction.cwiseAbs().maxCoeff();
+  const Eigen::VectorXd unit = largest > 0 ? Eigen::VectorXd(direction / largest) : direction;
+  const Eigen::VectorXd tangent = unit - start.spherePoint * start.spherePoint.dot(unit);
+  if (!(tangent.stableNorm() > 1e-12 * unit.stableNorm()))
+    throw std::invalid_argument(
+        "the drag direction has no component tangent to the sphere at the point (it is zero or along the point); "
+        "expected a release direction across it");
+  if (unitSpeed) {
+    start.sphereVelocity = tangent;
     toUnitSpeed(chain, start, "the drag direction, once its part along the point is removed,");
-  else
+  } else {
+    start.sphereVelocity = tangent * largest;  // may overflow to inf: refused next, with the reason
     requireFiniteMotion(chain, start, "the drag direction's part tangent to the sphere");
+  }
   return start;
 }
 

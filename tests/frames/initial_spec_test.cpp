@@ -55,5 +55,60 @@ TEST(InitialSpec, DragNormalisesThePointAndKeepsTheTangentPart) {
   EXPECT_NEAR(speedSquared(chain, unit), 1.0, 1e-12);
 }
 
+InitialSpec dragSpec(Eigen::Vector3d point, Eigen::Vector3d direction, bool unitSpeed) {
+  InitialSpec spec;
+  spec.kind = InitialSpec::Kind::Drag;
+  spec.dragPoint = point;
+  spec.dragDirection = direction;
+  spec.unitSpeed = unitSpeed;
+  return spec;
+}
+
+// Issue 13.11: a drag direction's scale never decides whether the start moves. With unit_speed, huge and tiny
+// directions give the same unit-speed start as a plain one; without it, a huge one is refused for its
+// overflowing energy and a tiny one for its underflowing energy, each with the reason.
+TEST(InitialSpec, DragDirectionsOfAnyScale) {
+  const Chain chain = Chain::uniform(4, 3.0);
+  const Eigen::Vector3d point(0.3, 0.4, 0.8), across(1, -1, 0.2);
+  const InitialState plain = initialStateFromSpec(chain, dragSpec(point, across, true));
+  for (const double scale : {1e308, 1e-300}) {  // (subnormal inputs carry fewer digits themselves)
+    SCOPED_TRACE(scale);
+    const InitialState scaled = initialStateFromSpec(chain, dragSpec(point, scale * across, true));
+    ASSERT_TRUE(scaled.sphereVelocity.allFinite());
+    EXPECT_LT((scaled.sphereVelocity - plain.sphereVelocity).norm(), 1e-12);
+  }
+  const Eigen::Vector3d huge(1e308, 1e308, 1e308);
+  EXPECT_NEAR(speedSquared(chain, initialStateFromSpec(chain, dragSpec(point, huge, true))), 1.0, 1e-12);
+  try {
+    initialStateFromSpec(chain, dragSpec(point, huge, false));
+    FAIL() << "a drag whose kinetic energy overflows was accepted";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("overflows"), std::string::npos) << error.what();
+  }
+  try {
+    initialStateFromSpec(chain, dragSpec(point, 1e-300 * across, false));
+    FAIL() << "a drag whose kinetic energy underflows to zero was accepted";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("underflows"), std::string::npos) << error.what();
+  }
+}
+
+// Issue 13.11: a direction along the point leaves only rounding noise across the sphere: refused with and without
+// unit_speed (a frozen linkage, or noise blown up to an arbitrary direction), whatever its scale.
+TEST(InitialSpec, DragAlongThePointIsRefused) {
+  const Chain chain = Chain::uniform(4, 3.0);
+  const Eigen::Vector3d point(0.3, 0.4, 0.8);
+  for (const double scale : {1.0, -7.0, 1e-300, 1e300})
+    for (const bool unitSpeed : {false, true}) {
+      SCOPED_TRACE(std::to_string(scale) + (unitSpeed ? " unit_speed" : ""));
+      try {
+        initialStateFromSpec(chain, dragSpec(point, scale * point, unitSpeed));
+        FAIL() << "a drag along the point was accepted";
+      } catch (const std::invalid_argument& error) {
+        EXPECT_NE(std::string(error.what()).find("no component tangent"), std::string::npos) << error.what();
+      }
+    }
+}
+
 }  // namespace
 }  // namespace sl
