@@ -1,5 +1,8 @@
 // `linkage`: scene files in, trajectories, frames and videos out. Each subcommand lives in its own file.
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
@@ -30,9 +33,33 @@ void printVersion() {
             << "GL renderer: " << gl << "\n";
 }
 
+// Every command's standard output is complete or the command fails (docs/hardening.md, principle 1): what is
+// still buffered is flushed and the stream closed here, and an error on the way (a full disk, /dev/full, a closed
+// pipe) turns a success into exit 3 with the reason. A command that already failed keeps its own status and
+// message.
+int finishStandardOutput(int code) {
+  errno = 0;
+  std::cout.flush();  // std::cout writes through stdout (synced with stdio): this flushes both
+  const bool flushFailed = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout);
+  const int flushErrno = errno;
+  errno = 0;
+  const bool closeFailed = std::fclose(stdout) != 0 && errno != EBADF;  // EBADF: there was no stdout to close
+  const int error = flushErrno != 0 ? flushErrno : errno;
+  if (!(flushFailed || closeFailed) || (code != sl::kExitOk && code != sl::kExitMismatch)) return code;
+  std::cerr << "linkage: cannot write to standard output: " << (error != 0 ? std::strerror(error) : "write error")
+            << "; what went out is incomplete\n";
+  return sl::kExitFailure;
+}
+
+int runCommand(int argc, char** argv);
+
 }  // namespace
 
-int main(int argc, char** argv) {
+int main(int argc, char** argv) { return finishStandardOutput(runCommand(argc, argv)); }
+
+namespace {
+
+int runCommand(int argc, char** argv) {
   CLI::App app{
       "linkage: geodesics of planar linkages on their configuration spheres, rendered to frames and video.\n"
       "Write or copy a scene file (scenes/README.md), then run one command.",
@@ -82,3 +109,5 @@ int main(int argc, char** argv) {
   }
   return sl::kExitOk;
 }
+
+}  // namespace

@@ -89,6 +89,23 @@ TEST(HostileCli, WriteErrorsOnStandardOutputAreFailures) {
   EXPECT_NE(full.err.find("cannot write the CSV to standard output"), std::string::npos) << full.err;
 }
 
+// Principle 1 of issue 13: every command that writes to standard output fails when it cannot (its output is
+// flushed and checked before exit), and succeeds on the same command into a file.
+TEST(HostileCli, EveryCommandsStandardOutputIsCheckedBeforeExit) {
+  TempFolder folder;
+  const std::string scene = shellQuoted(shippedScene("default.json"));
+  for (const std::string& command :
+       {std::string("schema"), std::string("list-methods"), std::string("--version"), std::string("--help"),
+        "validate " + scene, "geometry --summary --set linkage.L=3 " + scene}) {
+    SCOPED_TRACE(command);
+    const ProcessResult full = runShell(shellQuoted(linkageBinary()) + " " + command + " > /dev/full", folder.path());
+    EXPECT_EQ(full.code, 3) << full.err;
+    EXPECT_NE(full.err.find("standard output"), std::string::npos) << full.err;
+    const ProcessResult file = runShell(shellQuoted(linkageBinary()) + " " + command + " > out.txt", folder.path());
+    EXPECT_EQ(file.code, 0) << file.err;
+  }
+}
+
 // 13.7 and 13.20: SIGTERM is answered within a second, even inside one long sample; stdout says it is cut.
 TEST(HostileCli, SimulateAnswersSigtermWithinASecond) {
   TempFolder folder;
