@@ -87,7 +87,9 @@ VideoSink::VideoSink(const VideoSettings& settings, FrameManifest& manifest)
   posix_spawnattr_init(&attributes);
   posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
   posix_spawnattr_setpgroup(&attributes, 0);
-  temporary_ = temporaryPathFor(settings.path) + std::filesystem::path(settings.path).extension().string();
+  // Beside the file the video will become: through a symbolic link that is its target's folder, so the final
+  // rename never crosses file systems (the extension stays the requested one: ffmpeg reads the format off it).
+  temporary_ = temporaryPathFor(outputTarget(settings.path)) + std::filesystem::path(settings.path).extension().string();
   std::vector<std::string> args = ffmpegArguments(settings, temporary_);
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());

@@ -148,6 +148,27 @@ TEST(HostileCli, LinksAreWrittenThroughAndDevicesRefused) {
   EXPECT_TRUE(fs::is_character_file("/dev/null"));
 }
 
+// 13.6: a video written through a symbolic link lands in the link's target, also on another file system (the
+// temporary is made beside the target, so the final rename never crosses file systems), and the link stays.
+TEST(HostileCli, AVideoThroughALinkLandsInItsTargetOnAnyFileSystem) {
+  TempFolder folder;
+  // /dev/shm is a tmpfs on Linux: another file system than the temporary folder's, where there is one.
+  const fs::path elsewhere = fs::is_directory("/dev/shm") ? fs::path("/dev/shm") / folder.path().filename()
+                                                          : folder.path() / "elsewhere";
+  fs::create_directories(elsewhere);
+  fs::create_symlink(elsewhere / "target.mp4", folder.path() / "link.mp4");
+  const ProcessResult result =
+      runLinkage({"render", shippedScene("default.json"), "--set", "duration=0.3", "--size", "160x90", "--video",
+                  "link.mp4", "--no-png", "--quiet"},
+                 folder.path());
+  EXPECT_EQ(result.code, 0) << result.err;
+  EXPECT_TRUE(fs::is_symlink(folder.path() / "link.mp4"));
+  EXPECT_GT(fs::file_size(elsewhere / "target.mp4"), 1000u);
+  for (const auto& entry : fs::directory_iterator(elsewhere))
+    EXPECT_EQ(entry.path().filename(), "target.mp4") << "left behind: " << entry.path();
+  fs::remove_all(elsewhere);
+}
+
 // 13.17 and 13.18: the program reads its own CSV whatever the run names; diff handles NaN, CRLF, missing files,
 // frame sizes and frames changed behind the manifest's back.
 TEST(HostileCli, DiffReadsEveryCsvTheProgramWritesAndSaysWhatIsWrong) {
