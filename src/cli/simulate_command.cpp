@@ -112,10 +112,9 @@ void runSimulate(const SimulateArguments& args) {
     } catch (const std::invalid_argument& error) {
       problems.push_back({option, error.what()});
     }
-    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-    for (SceneProblem& problem : checkOutputFolder(parent.empty() ? "." : parent.string(), option))
-      problems.push_back(problem);
+    for (SceneProblem& problem : checkOutputFile(path, option)) problems.push_back(problem);
     failOnProblems(args.scene, problems);
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
     if (!parent.empty()) std::filesystem::create_directories(parent);
   }
   std::vector<std::string> notes;

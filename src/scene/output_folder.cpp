@@ -40,7 +40,21 @@ std::string whyNoFileIn(const fs::path& directory) {
 
 }  // namespace
 
+std::string unusablePathReason(const std::string& path) {
+  if (path.find('\0') != std::string::npos) return "holds a NUL character";
+  std::size_t start = 0;
+  while (start <= path.size()) {
+    const std::size_t end = std::min(path.find('/', start), path.size());
+    if (end - start > 255)
+      return "has a component of " + std::to_string(end - start) + " bytes; file systems allow 255";
+    start = end + 1;
+  }
+  return "";
+}
+
 std::vector<SceneProblem> checkOutputFolder(const std::string& folder, const std::string& jsonPath) {
+  if (const std::string reason = unusablePathReason(folder); !reason.empty())
+    return {{jsonPath, "\"" + folder + "\" " + reason + "; expected a usable folder path"}};
   std::error_code error;
   fs::path existing = fs::absolute(folder, error);
   while (!existing.empty() && !fs::exists(existing, error)) {
@@ -57,24 +71,34 @@ std::vector<SceneProblem> checkOutputFolder(const std::string& folder, const std
   return {};
 }
 
-std::vector<SceneProblem> checkVideoPath(const std::string& video, const std::string& jsonPath) {
-  const std::string found = "found \"" + video + "\"";
-  std::string formats;
-  for (const VideoFormatTraits& format : kVideoFormats) formats += (formats.empty() ? "." : ", .") + std::string(format.name);
-  if (video.empty() || video.back() == '/') return {{jsonPath, found + "; expected a video file name, not a folder"}};
-  if (video.find('\0') != std::string::npos) return {{jsonPath, "holds a NUL character; expected a file name"}};
+std::vector<SceneProblem> checkOutputFile(const std::string& file, const std::string& jsonPath) {
+  const std::string found = "found \"" + file + "\"";
+  if (file.empty() || file.back() == '/') return {{jsonPath, found + "; expected a file name, not a folder"}};
+  if (const std::string reason = unusablePathReason(file); !reason.empty())
+    return {{jsonPath, "\"" + file + "\" " + reason + "; expected a usable file path"}};
   std::error_code error;
-  if (fs::is_directory(video, error)) return {{jsonPath, found + ": that is a folder; expected a video file name in it"}};
-  if (!videoFormatOfPath(video))
-    return {{jsonPath, found + "; expected a file name ending in " + formats + " (the format follows the extension)"}};
-  const std::string name = fs::path(video).filename().string();
+  if (fs::is_directory(file, error)) return {{jsonPath, found + ": that is a folder; expected a file name in it"}};
+  const std::string name = fs::path(file).filename().string();
   if (name.size() > kMaxOutputNameBytes)
     return {{jsonPath, found + "; the file name has " + std::to_string(name.size()) + " bytes, at most " +
                            std::to_string(kMaxOutputNameBytes) + " are allowed (room for the temporary beside it)"}};
+  const fs::path parent = fs::path(file).parent_path();
+  return checkOutputFolder(parent.empty() ? "." : parent.string(), jsonPath);
+}
+
+std::vector<SceneProblem> checkVideoPath(const std::string& video, const std::string& jsonPath) {
+  if (std::vector<SceneProblem> problems = checkOutputFile(video, jsonPath); !problems.empty()) return problems;
+  const std::string found = "found \"" + video + "\"";
+  if (!videoFormatOfPath(video)) {
+    std::string formats;
+    for (const VideoFormatTraits& format : kVideoFormats)
+      formats += (formats.empty() ? "." : ", .") + std::string(format.name);
+    return {{jsonPath, found + "; expected a file name ending in " + formats + " (the format follows the extension)"}};
+  }
+  std::error_code error;
   if (fs::exists(video, error) && !fs::is_regular_file(video, error))
     return {{jsonPath, found + ": it exists and is not a regular file; refusing to replace it"}};
-  const fs::path parent = fs::path(video).parent_path();
-  return checkOutputFolder(parent.empty() ? "." : parent.string(), jsonPath);
+  return {};
 }
 
 }  // namespace sl

@@ -30,19 +30,6 @@ bool isSafeName(const std::string& name) {
          });
 }
 
-// What no file system takes: a NUL byte (it would cut the path short), or a component longer than NAME_MAX.
-std::string unusablePathReason(const std::string& path) {
-  if (path.find('\0') != std::string::npos) return "holds a NUL character";
-  std::size_t start = 0;
-  while (start <= path.size()) {
-    const std::size_t end = std::min(path.find('/', start), path.size());
-    if (end - start > 255)
-      return "has a component of " + std::to_string(end - start) + " bytes; file systems allow 255";
-    start = end + 1;
-  }
-  return "";
-}
-
 // The number of rods other checks measure against: the scene's, or none while its "rods" is invalid. A check whose
 // expectation depends on n (the sizes of masses and starts, rules by rod count) is skipped then: the invalid
 // "rods" is reported on its own, and comparing with a made-up n would add problems that are not there.

@@ -148,6 +148,33 @@ TEST(HostileCli, LinksAreWrittenThroughAndDevicesRefused) {
   EXPECT_TRUE(fs::is_character_file("/dev/null"));
 }
 
+// 13.12 and 13.13: output paths given on the command line that cannot work are refused before any work (exit 2,
+// the option named, nothing created): components over 255 bytes, file names without room for the temporary,
+// folders where a file is expected, unknown video formats.
+TEST(HostileCli, OutputPathsOnTheCommandLineAreCheckedBeforeAnyWork) {
+  TempFolder folder;
+  const std::string scene = shippedScene("default.json");
+  const std::string component(300, 'a'), name(230, 'b');
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"render", scene, "--out", component + "/frames"}, "--out"},
+      {{"render", scene, "--video", component + "/v.mp4", "--no-png"}, "--video"},
+      {{"render", scene, "--video", name + ".mp4", "--no-png"}, "--video"},
+      {{"render", scene, "--video", "v.txt", "--no-png"}, "--video"},
+      {{"render", scene, "--video", "sub/", "--no-png"}, "--video"},
+      {{"simulate", scene, "--csv", name + ".csv"}, "--csv"},
+      {{"simulate", scene, "--csv", "sub/"}, "--csv"},
+      {{"simulate", scene, "--events", name + ".csv"}, "--events"},
+      {{"simulate", scene, "--events", component + "/e.csv"}, "--events"},
+  };
+  for (const auto& [args, option] : cases) {
+    SCOPED_TRACE(args[2] + " " + args[3].substr(0, 20));
+    const ProcessResult result = runLinkage(args, folder.path());
+    EXPECT_EQ(result.code, 2) << result.err;
+    EXPECT_NE(result.err.find(option + ": "), std::string::npos) << result.err;
+  }
+  EXPECT_TRUE(fs::is_empty(folder.path())) << "a refused command created something";
+}
+
 // 13.6: a video written through a symbolic link lands in the link's target, also on another file system (the
 // temporary is made beside the target, so the final rename never crosses file systems), and the link stays.
 TEST(HostileCli, AVideoThroughALinkLandsInItsTargetOnAnyFileSystem) {
