@@ -212,9 +212,14 @@ void runRender(const RenderArguments& args) {
   if (plan.png) {
     // A whole render replaces what the folder held (the edit-render loop); shards and --resume only join.
     const bool whole = args.frames.empty() && !plan.resume;
-    pngManifest = std::make_unique<output::FrameManifest>(
-        plan.folder, info, "manifest.json", output::FrameManifest::Existing::merge,
-        whole ? output::FrameManifest::Claim::supersede : output::FrameManifest::Claim::join);
+    try {
+      pngManifest = std::make_unique<output::FrameManifest>(
+          plan.folder, info, "manifest.json", output::FrameManifest::Existing::merge,
+          whole ? output::FrameManifest::Claim::supersede : output::FrameManifest::Claim::join, interruptRequested);
+    } catch (const output::LockWaitCancelled&) {  // a signal while another render held the folder
+      stopIfInterrupted("nothing was written yet");
+      throw;
+    }
     if (const auto earlier = pngManifest->supersededInfo(); earlier && !plan.quiet) {
       std::cerr << "replacing the earlier render in " << plan.folder << " ("
                 << earlier->value("scene", std::string("unknown scene")) << ", " << pngManifest->supersededFrames()

@@ -38,13 +38,14 @@ double maxLockWaitSeconds() {
   return limits::kMaxLockWaitSeconds;
 }
 
-void lockWithTimeout(int fd, int operation, const std::string& path) {
+void lockWithTimeout(int fd, int operation, const std::string& path, bool (*cancelled)() = nullptr) {
   using Clock = std::chrono::steady_clock;
   const double maxWait = maxLockWaitSeconds();
   const auto start = Clock::now();
   bool announced = false;
   while (::flock(fd, operation | LOCK_NB) != 0) {
     if (errno != EWOULDBLOCK && errno != EINTR) throw std::runtime_error("cannot lock " + path + ": " + std::strerror(errno));
+    if (cancelled && cancelled()) throw LockWaitCancelled("stopped waiting for " + path);
     const double waited = std::chrono::duration<double>(Clock::now() - start).count();
     if (waited > maxWait)
       throw std::runtime_error("gave up after " + std::to_string(int(maxWait)) + " s waiting for " +
@@ -68,11 +69,11 @@ int openLockFile(const std::string& path) {
 // processes. The manifest itself cannot carry the lock: each write replaces it with a new file.
 class ManifestLock {
  public:
-  ManifestLock(const std::string& folder, const std::string& manifestName) {
+  ManifestLock(const std::string& folder, const std::string& manifestName, bool (*cancelled)() = nullptr) {
     const std::string path = folder + "/." + manifestName + ".lock";
     fd_ = openLockFile(path);
     try {
-      lockWithTimeout(fd_, LOCK_EX, path);
+      lockWithTimeout(fd_, LOCK_EX, path, cancelled);
     } catch (...) {
       ::close(fd_);
       throw;
@@ -124,7 +125,7 @@ FrameEntry fromJson(const nlohmann::json& j) {
 }  // namespace
 
 FrameManifest::FrameManifest(std::string folder, nlohmann::json info, std::string fileName, Existing existing,
-                             Claim claim)
+                             Claim claim, bool (*cancelled)())
     : folder_(std::move(folder)),
       fileName_(std::move(fileName)),
       info_(std::move(info)),
@@ -135,9 +136,9 @@ FrameManifest::FrameManifest(std::string folder, nlohmann::json info, std::strin
   const std::string activePath = folder_ + "/." + fileName_ + ".active";
   activeFd_ = openLockFile(activePath);
   try {
-    lockWithTimeout(activeFd_, LOCK_SH, activePath);  // waits only while a render takes the folder over
+    lockWithTimeout(activeFd_, LOCK_SH, activePath, cancelled);  // waits only while a render takes the folder over
     {
-      ManifestLock lock(folder_, fileName_);
+      ManifestLock lock(folder_, fileName_, cancelled);
       const nlohmann::json manifest = readAnyLocked();
       if (claim == Claim::supersede && manifest.at("info") != info_) supersedeLocked(manifest);
       // The manifest's file exists from the start: if the file system later runs out of inodes, the entries

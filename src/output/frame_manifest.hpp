@@ -39,6 +39,7 @@
 #include <mutex>
 #include <optional>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -54,12 +55,20 @@ struct FrameEntry {
   bool operator==(const FrameEntry&) const = default;
 };
 
+// A lock wait given up at the caller's request (FrameManifest's `cancelled`).
+struct LockWaitCancelled : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 class FrameManifest {
  public:
   enum class Existing { merge, replace };
   enum class Claim { join, supersede };
+  // `cancelled`, if given, is asked while the constructor waits for a lock (another render holds the folder): when
+  // it says yes, the wait ends with LockWaitCancelled, so SIGINT/SIGTERM are answered within a second before any
+  // frame is written. Later waits (flushes) are not cancelled: they save finished frames.
   FrameManifest(std::string folder, nlohmann::json info, std::string fileName = "manifest.json",
-                Existing existing = Existing::merge, Claim claim = Claim::join);
+                Existing existing = Existing::merge, Claim claim = Claim::join, bool (*cancelled)() = nullptr);
   ~FrameManifest();  // flushes; never throws
   FrameManifest(const FrameManifest&) = delete;
   FrameManifest& operator=(const FrameManifest&) = delete;

@@ -1,6 +1,11 @@
 // Hostile options, outputs and inputs from the command line (issue 13): each test pins one class of defect so
 // that it cannot come back. Crashes, hangs and silent loss first; then what validate must refuse; then files.
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -106,29 +111,91 @@ TEST(HostileCli, EveryCommandsStandardOutputIsCheckedBeforeExit) {
   }
 }
 
-// 13.7 and 13.20: SIGTERM is answered within a second, even inside one long sample; stdout says it is cut.
-TEST(HostileCli, SimulateAnswersSigtermWithinASecond) {
-  TempFolder folder;
+// A scene that is slow on purpose: a tiny tolerance over a long time with one frame per second, so that
+// computing the motion alone takes far longer than any test waits.
+void writeSlowScene(const fs::path& file) {
   std::string scene = readFile(shippedScene("default.json"));
-  // Slow on purpose: a tiny tolerance over a long time with one frame per 100 s (one sample = a long integration).
   scene.replace(scene.find("\"duration\": 20.0"), 16, "\"duration\": 100000.0");
   scene.replace(scene.find("\"tolerance\": 1e-10"), 18, "\"tolerance\": 1e-16");
   scene.replace(scene.find("\"fps\": 30"), 9, "\"fps\": 1");
-  writeFile(folder.path() / "slow.json", scene);
-  const ProcessResult result = runShell(
-      shellQuoted(linkageBinary()) + " simulate slow.json > out.csv 2> err.txt & pid=$!; sleep 1.5; "
-                                "start=$(date +%s%N); kill -TERM $pid; wait $pid; rc=$?; end=$(date +%s%N); "
-                                "echo $rc $(( (end - start) / 1000000 ))",
-      folder.path(), 120);
-  ASSERT_EQ(result.code, 0) << result.err;
-  int rc = 0;
-  long milliseconds = 0;
-  ASSERT_EQ(std::sscanf(result.out.c_str(), "%d %ld", &rc, &milliseconds), 2) << result.out;
-  EXPECT_EQ(rc, 130);
-  EXPECT_LT(milliseconds, 1000) << "SIGTERM answered after " << milliseconds << " ms";
+  writeFile(file, scene);
+}
+
+struct SignalAnswer {
+  int code = -1;
+  long milliseconds = -1;  // from the signal to the exit
+};
+
+// Runs `linkage <arguments>` in `folder` (stdout to out.txt, stderr to err.txt), sends `signal` after `delay`
+// seconds and measures how long the program takes to exit.
+SignalAnswer signalAfter(const std::string& arguments, const fs::path& folder, const char* signal = "TERM",
+                         const char* delay = "1.5") {
+  const ProcessResult result = runShell(shellQuoted(linkageBinary()) + " " + arguments + " > out.txt 2> err.txt & pid=$!; sleep " +
+                                            delay + "; start=$(date +%s%N); kill -" + signal +
+                                            " $pid; wait $pid; rc=$?; end=$(date +%s%N); "
+                                            "echo $rc $(( (end - start) / 1000000 ))",
+                                        folder, 120);
+  SignalAnswer answer;
+  EXPECT_EQ(result.code, 0) << result.err;
+  EXPECT_EQ(std::sscanf(result.out.c_str(), "%d %ld", &answer.code, &answer.milliseconds), 2) << result.out;
+  return answer;
+}
+
+// 13.7 and 13.20: SIGTERM is answered within a second, even inside one long sample; stdout says it is cut.
+TEST(HostileCli, SimulateAnswersSigtermWithinASecond) {
+  TempFolder folder;
+  writeSlowScene(folder.path() / "slow.json");
+  const SignalAnswer answer = signalAfter("simulate slow.json", folder.path());
+  EXPECT_EQ(answer.code, 130);
+  EXPECT_LT(answer.milliseconds, 1000) << "SIGTERM answered after " << answer.milliseconds << " ms";
   const std::string err = readFile(folder.path() / "err.txt");
   EXPECT_NE(err.find("stopped by SIGTERM"), std::string::npos) << err;
   EXPECT_NE(err.find("the CSV on standard output is incomplete"), std::string::npos) << err;
+}
+
+// 13.7: render answers SIGTERM and SIGINT within a second even when one frame's motion takes long to compute (it
+// took 23 s), leaving no temporary behind.
+TEST(HostileCli, RenderAnswersSignalsWithinASecond) {
+  TempFolder folder;
+  writeSlowScene(folder.path() / "slow.json");
+  for (const char* signal : {"TERM", "INT"}) {
+    SCOPED_TRACE(signal);
+    const SignalAnswer answer = signalAfter("render slow.json --out frames", folder.path(), signal);
+    EXPECT_EQ(answer.code, 130);
+    EXPECT_LT(answer.milliseconds, 1000) << "SIG" << signal << " answered after " << answer.milliseconds << " ms";
+    const std::string err = readFile(folder.path() / "err.txt");
+    EXPECT_NE(err.find(std::string("stopped by SIG") + signal), std::string::npos) << err;
+    for (const auto& entry : fs::directory_iterator(folder.path() / "frames"))  // frames so far are whole
+      EXPECT_EQ(entry.path().string().find(".tmp."), std::string::npos) << "left behind: " << entry.path();
+  }
+}
+
+// 13.8 from the command line: a render waiting for a folder another process holds says so, answers SIGTERM
+// within a second while it waits, and gives up after LINKAGE_LOCK_WAIT seconds with the reason (exit 3).
+TEST(HostileCli, ARenderWaitingForALockSaysSoAndCanBeStopped) {
+  TempFolder folder;
+  const std::string scene = shippedScene("default.json");
+  fs::create_directories(folder.path() / "frames");
+  // The test holds the folder's manifest lock, as a shard stopped with SIGSTOP would.
+  const std::string lockPath = (folder.path() / "frames" / ".manifest.json.lock").string();
+  const int lock = ::open(lockPath.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  ASSERT_GE(lock, 0);
+  ASSERT_EQ(::flock(lock, LOCK_EX), 0);
+  const std::string render = "render " + shellQuoted(scene) + " --out frames --size 160x90 --set duration=0.2";
+  const SignalAnswer answer = signalAfter(render, folder.path(), "TERM", "2.5");
+  EXPECT_EQ(answer.code, 130);
+  EXPECT_LT(answer.milliseconds, 1000) << "SIGTERM answered after " << answer.milliseconds << " ms";
+  const std::string err = readFile(folder.path() / "err.txt");
+  EXPECT_NE(err.find("waiting for frames/.manifest.json.lock, held by another process"), std::string::npos) << err;
+  EXPECT_NE(err.find("stopped by SIGTERM"), std::string::npos) << err;
+
+  const ProcessResult bounded =
+      runShell("LINKAGE_LOCK_WAIT=1 " + shellQuoted(linkageBinary()) + " " + render, folder.path(), 60);
+  EXPECT_EQ(bounded.code, 3) << bounded.err;
+  EXPECT_NE(bounded.err.find("gave up after 1 s waiting for frames/.manifest.json.lock"), std::string::npos)
+      << bounded.err;
+  EXPECT_FALSE(fs::exists(folder.path() / "frames" / "frame_00000.png"));
+  ::close(lock);
 }
 
 // 13.6: outputs through a symbolic link go to its target (the link stays); devices and folders are refused.
