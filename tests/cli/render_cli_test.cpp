@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <csignal>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -83,6 +84,43 @@ TEST(RenderCli, EditAndRenderAgainReplacesTheEarlierRender) {
   EXPECT_EQ(shard.code, 3);
   EXPECT_NE(shard.err.find("a whole render (without --frames or --resume) replaces it"), std::string::npos)
       << shard.err;
+}
+
+// Issue 13.4: two different scenes rendered into one folder at the same time. Whatever the timing, the folder ends
+// up holding one whole render that exited 0, whose manifest matches every file on disk (diff checks each file's
+// hash against it), and nothing else: a render that lost the folder says so and exits non-zero.
+TEST(RenderCli, TwoScenesRenderingIntoOneFolderAtOnceNeverMix) {
+  TempFolder folder;
+  std::string scene = readFile(shippedScene("default.json"));
+  scene = replaceAll(scene, "\"duration\": 20.0", "\"duration\": 1.0");
+  writeFile(folder / "a.json", scene);
+  writeFile(folder / "b.json", replaceAll(scene, "\"L\": 3.0", "\"L\": 3.2"));
+  for (const char* name : {"a", "b"}) {
+    const ProcessResult alone = runLinkage(
+        {"render", std::string(name) + ".json", "--size", "160x90", "--out", std::string("alone-") + name, "--quiet"},
+        folder.path());
+    ASSERT_EQ(alone.code, 0) << alone.err;
+  }
+  const std::string binary = shellQuoted(linkageBinary());
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    SCOPED_TRACE(attempt);
+    fs::remove_all(folder.path() / "shared");
+    const ProcessResult both = runShell(
+        binary + " render a.json --size 160x90 --out shared --quiet 2> a.err & a=$!; " + binary +
+            " render b.json --size 160x90 --out shared --quiet 2> b.err & b=$!; wait $a; ra=$?; wait $b; rb=$?; "
+            "echo $ra $rb",
+        folder.path(), 120);
+    ASSERT_EQ(both.code, 0) << both.err;
+    int codeA = -1, codeB = -1;
+    ASSERT_EQ(std::sscanf(both.out.c_str(), "%d %d", &codeA, &codeB), 2) << both.out;
+    EXPECT_TRUE(codeA == 0 || codeB == 0) << readFile(folder.path() / "a.err") << readFile(folder.path() / "b.err");
+    const bool isA = runLinkage({"diff", "shared", "alone-a"}, folder.path()).code == 0;
+    const bool isB = runLinkage({"diff", "shared", "alone-b"}, folder.path()).code == 0;
+    EXPECT_TRUE(isA != isB) << "the folder holds neither whole render, or both";
+    EXPECT_EQ(isA ? codeA : codeB, 0) << "the render the folder holds did not succeed";
+    for (const auto& entry : fs::directory_iterator(folder.path() / "shared"))
+      EXPECT_EQ(entry.path().string().find(".tmp."), std::string::npos) << "left behind: " << entry.path();
+  }
 }
 
 TEST(RenderCli, DefaultFolderIsRendersSlashSceneName) {
