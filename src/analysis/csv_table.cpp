@@ -15,17 +15,13 @@
 namespace sl {
 
 std::string formatNumber(double value) {
-  if (std::isnan(value)) return "nan";
-  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
+  std::string text;
+  appendCsvNumber(text, value);  // a failed run's error, say, is no value: an empty field
+  return text;
 }
 
 double parseNumber(const std::string& text) {
-  if (text == "nan") return std::nan("");
-  if (text == "inf") return INFINITY;
-  if (text == "-inf") return -INFINITY;
+  if (text.empty()) return std::nan("");
   double value = 0;
   const auto result = std::from_chars(text.data(), text.data() + text.size(), value);
   if (result.ec != std::errc() || result.ptr != text.data() + text.size())
@@ -68,7 +64,11 @@ std::string csvText(const CsvTable& table) {
   return out.str();
 }
 
-std::string alignedText(const CsvTable& table, const std::string& separator) {
+std::string alignedText(const CsvTable& written, const std::string& separator) {
+  CsvTable table = written;
+  for (auto& row : table.rows)
+    for (std::string& field : row)
+      if (field.empty()) field = "-";  // no value: a dash, so columns stay readable on a terminal
   std::vector<size_t> widths(table.columns.size(), 0);
   auto measure = [&](const std::vector<std::string>& fields) {
     for (size_t c = 0; c < fields.size() && c < widths.size(); ++c) widths[c] = std::max(widths[c], fields[c].size());

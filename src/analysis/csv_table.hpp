@@ -8,10 +8,12 @@
 
 namespace sl {
 
-// Shortest decimal that reads back to the same double; "nan", "inf", "-inf" for non-finite values.
+// Shortest decimal that reads back to the same double; an empty field for a non-finite value (no value: a CSV
+// never holds nan or inf, docs/hardening.md).
 std::string formatNumber(double value);
 
-// Parses formatNumber's output (and any decimal); throws std::invalid_argument naming the text.
+// Parses formatNumber's output (and any decimal; an empty field is NaN, no value); throws std::invalid_argument
+// naming the text.
 double parseNumber(const std::string& text);
 
 struct CsvTable {
@@ -33,7 +35,7 @@ CsvTable readCsv(std::istream& in, const std::string& source);
 CsvTable readCsvFile(const std::string& path);
 
 // The table for a terminal: every column padded to its widest field (header included), columns separated by
-// `separator`, numbers as written. Widths count bytes: the fields are ASCII (names, numbers, units).
+// `separator`, numbers as written, an empty field (no value) as "-". Widths count bytes: the fields are ASCII (names, numbers, units).
 std::string alignedText(const CsvTable& table, const std::string& separator = "  ");
 
 }  // namespace sl

@@ -1,5 +1,9 @@
 #include "analysis/gnuplot.hpp"
 
+#include "analysis/csv_table.hpp"
+
+#include <cmath>
+
 #include <sys/wait.h>
 #include <cstdio>
 #include <filesystem>
@@ -20,6 +24,8 @@ std::string gnuplotDatablock(const std::string& name, const std::vector<std::str
   for (const auto& line : lines) block += line + "\n";
   return block + "EOD\n";
 }
+
+std::string gnuplotNumber(double value) { return std::isfinite(value) ? formatNumber(value) : "NaN"; }
 
 std::string gnuplotQuote(const std::string& text) {
   std::string quoted = "'";

@@ -14,6 +14,10 @@ bool gnuplotAvailable();
 // A datablock definition: "$name << EOD\n" + lines + "EOD\n". Lines are whitespace-separated columns.
 std::string gnuplotDatablock(const std::string& name, const std::vector<std::string>& lines);
 
+// A number in a datablock column: shortest round-trip digits, or NaN (gnuplot's undefined value, so the point is
+// skipped and the columns stay aligned) for a non-finite one.
+std::string gnuplotNumber(double value);
+
 // Quotes text for a gnuplot string literal (single quotes; embedded quotes doubled).
 std::string gnuplotQuote(const std::string& text);
 

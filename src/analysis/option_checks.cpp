@@ -16,7 +16,8 @@ std::invalid_argument unknownNameError(const std::string& option, const std::str
 void requirePositive(const std::string& option, const std::vector<double>& values) {
   for (double value : values)
     if (!(value > 0) || !std::isfinite(value))
-      throw std::invalid_argument(option + ": expected positive finite numbers, found " + formatNumber(value));
+      throw std::invalid_argument(option + ": expected positive finite numbers, found " +
+                                  (std::isfinite(value) ? formatNumber(value) : std::isnan(value) ? "nan" : "inf"));
 }
 
 }  // namespace sl

@@ -51,7 +51,8 @@ std::string mapScript(const CsvTable& rows, const std::string& kind, const std::
     const double value = rows.number(r, valueColumn), error = rows.number(r, "max_error");
     const bool ok = status == nameOf(Verdict::Ok);
     const double logError = ok ? std::clamp(std::log10(std::max(value, 1e-300)), -16.0, 0.0) : NAN;
-    lines.push_back(rows.text(r, "x") + " " + rows.text(r, "y") + " " + formatNumber(logError) + " " +
+    lines.push_back(gnuplotNumber(rows.number(r, "x")) + " " + gnuplotNumber(rows.number(r, "y")) + " " +
+                    gnuplotNumber(logError) + " " +
                     std::to_string(stabilityStatusCode(status)));
     cells += 1;
     within9 += ok && error <= 1e-9;

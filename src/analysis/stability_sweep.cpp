@@ -99,9 +99,10 @@ std::vector<std::vector<std::string>> cellRows(const StabilityOptions& options, 
     rows.clear();
     for (const Method method : methods) {
       const RunConfig config = sweepConfig(options, method);
-      rows.push_back({std::to_string(cellIndex), std::to_string(i), std::to_string(j), "nan", "nan", nameOf(method),
+      // Empty fields: no value (the cell's start could not be made, so neither its point nor any error).
+      rows.push_back({std::to_string(cellIndex), std::to_string(i), std::to_string(j), "", "", nameOf(method),
                       nameOf(config.integrator), formatNumber(config.accuracySetting()),
-                      nameOf(Verdict::ReferenceStopped), "0", "nan", "nan", "nan", "nan", "0",
+                      nameOf(Verdict::ReferenceStopped), "0", "", "", "", "", "0",
                       nameOf(referenceMethodFor(method)), error.what()});
     }
   }

@@ -109,9 +109,9 @@ std::string panelPlot(const ChartSpec& spec, const std::vector<const Series*>& s
     std::vector<std::string> lines;
     for (const auto* p : *series[i]) {
       const Measurement& m = p->measurement;
-      const std::string x = formatNumber(spec.x.value(m));
+      const std::string x = gnuplotNumber(spec.x.value(m));
       if (!m.failed()) {
-        lines.push_back(x + " " + formatNumber(spec.y.value(m)));
+        lines.push_back(x + " " + gnuplotNumber(spec.y.value(m)));
         continue;
       }
       auto it = std::find_if(failed.begin(), failed.end(), [&](const auto& f) { return f.first == p->method; });

@@ -50,7 +50,7 @@ std::string sampleRow(const CurvatureSample& s) {
   std::string row;
   for (double v : {s.phi, s.t, s.gaussianCurvature, s.bending, s.stiffnessMax, s.stiffnessMin, s.stiffnessAngle}) {
     if (!row.empty()) row += ',';
-    appendShortest(row, v);
+    appendCsvNumber(row, v);
   }
   return row;
 }
@@ -147,7 +147,7 @@ std::string sweepCsv(const std::vector<CurvatureSummary>& sweep) {
     for (double v : {s.baseLength, s.area, s.totalCurvature, s.curvatureMin.value, s.curvatureMin.phi, s.curvatureMin.t,
                      s.curvatureMax.value, s.curvatureMax.phi, s.curvatureMax.t, s.bendingMax.value}) {
       if (!row.empty()) row += ',';
-      appendShortest(row, v);
+      appendCsvNumber(row, v);
     }
     text += row + "\n";
   }

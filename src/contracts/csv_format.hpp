@@ -4,6 +4,7 @@
 // fields quoted as RFC 4180 says when they hold a comma, a quote or a line break.
 
 #include <charconv>
+#include <cmath>
 #include <istream>
 #include <stdexcept>
 #include <string>
@@ -22,6 +23,12 @@ inline std::string shortest(double value) {
   std::string text;
   appendShortest(text, value);
   return text;
+}
+
+// A number as a CSV field: shortest round-trip digits, or nothing (an empty field: no value) for a non-finite one.
+// A CSV of this program never holds nan or inf (docs/hardening.md).
+inline void appendCsvNumber(std::string& line, double value) {
+  if (std::isfinite(value)) appendShortest(line, value);
 }
 
 inline std::string csvField(std::string_view text) {

@@ -48,7 +48,7 @@ std::string trajectoryCsvRow(const std::string& run, const Sample& s, const std:
   std::string line = csvField(run);  // a name may hold a comma or a line break: quoted (RFC 4180)
   auto add = [&line](double v) {
     line += ',';
-    appendShortest(line, v);
+    appendCsvNumber(line, v);
   };
   if (layout.memberColumn) line += ',' + std::to_string(member);
   add(s.time);
