@@ -22,6 +22,10 @@ inline constexpr int kMaxRods = 12;          // the chart methods: their charts 
 inline constexpr int kMaxAmbientRods = 1000;  // the chart-free ambient method (O(n) per step; issue 16)
 inline constexpr int kMaxFps = 1000;
 inline constexpr int kMaxPathSamplesPerFrame = 100;
+// A run's sphere path keeps at most this many points (older ones thinned to every other), the newest
+// kRecentPathPoints at full resolution: its memory is bounded whatever the duration and sampling.
+inline constexpr std::size_t kMaxPathPoints = 20000;
+inline constexpr std::size_t kRecentPathPoints = 2000;
 // A run's family (issue 15): members beside the run, their spread and a cloud's perturbation size.
 inline constexpr int kMaxFamilyMembers = 256;
 inline constexpr double kMaxFamilySpread = 3.141592653589793;  // a fan's whole angle, a parallel family's width

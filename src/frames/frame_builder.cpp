@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "contracts/limits.hpp"
 #include "frames/parallel_for.hpp"
 #include "frames/sphere_decoration.hpp"
 
@@ -40,8 +41,8 @@ void fadeOut(std::vector<T>& points, std::vector<double>& times, double now, dou
 // sequence of samples only, so every shard thins alike.
 template <class T>
 void thinOut(std::vector<T>& points, std::vector<double>& times) {
-  if (points.size() <= kMaxPathPoints) return;
-  const std::size_t older = points.size() - kRecentPathPoints;
+  if (points.size() <= limits::kMaxPathPoints) return;
+  const std::size_t older = points.size() - limits::kRecentPathPoints;
   std::size_t kept = 0;
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (i < older && i % 2 == 1) continue;

@@ -65,11 +65,6 @@ class FrameBuilder {
   std::vector<PlotOverview> plotOverviews_;                   // per plot: the whole animation's range, legend
 };
 
-// A run's sphere path keeps at most this many points (older ones thinned to every other), the newest
-// kRecentPathPoints at full resolution: memory per run is bounded (docs/hardening.md).
-inline constexpr std::size_t kMaxPathPoints = 20000;
-inline constexpr std::size_t kRecentPathPoints = 2000;
-
 // The default colour of run i (a colour-blind-safe palette), unless the scene gives one.
 ColorRGB runColor(const Scene& scene, size_t run);
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "contracts/registry.hpp"
+#include "contracts/limits.hpp"
 #include "frames/frame_builder.hpp"
 #include "linkage/chain.hpp"
 #include "scene/scene_loader.hpp"
@@ -324,11 +325,11 @@ TEST(FrameBuilder, PathHistoryIsBounded) {
   FrameBuilder builder = builderFor(scene);
   const FrameState last = builder.frame(builder.frameCount() - 1);
   const RunFrame& run = last.runs[0];
-  EXPECT_LE(run.path.size(), kMaxPathPoints);
-  EXPECT_GT(run.path.size(), kMaxPathPoints / 2);
+  EXPECT_LE(run.path.size(), limits::kMaxPathPoints);
+  EXPECT_GT(run.path.size(), limits::kMaxPathPoints / 2);
   ASSERT_EQ(run.path.size(), run.pathTimes.size());
   const double spacing = 1.0 / (30 * 100);
-  for (std::size_t i = run.pathTimes.size() - kRecentPathPoints + 1; i < run.pathTimes.size(); ++i)
+  for (std::size_t i = run.pathTimes.size() - limits::kRecentPathPoints + 1; i < run.pathTimes.size(); ++i)
     EXPECT_NEAR(run.pathTimes[i] - run.pathTimes[i - 1], spacing, 1e-9) << i;
   EXPECT_EQ(run.pathTimes.front(), 0.0);  // the start is kept
   EXPECT_EQ(run.pathTimes.back(), 120.0);
