@@ -22,6 +22,10 @@ inline constexpr int kMaxRods = 12;          // the chart methods: their charts 
 inline constexpr int kMaxAmbientRods = 1000;  // the chart-free ambient method (O(n) per step; issue 16)
 inline constexpr int kMaxFps = 1000;
 inline constexpr int kMaxPathSamplesPerFrame = 100;
+// Hinge trails (view.trails): how many hinges, and how long a trail stays visible; together with kMaxFps they
+// bound a run's trail memory (32 x 60 s x 1000 fps x 16 bytes = 31 MB).
+inline constexpr int kMaxTrails = 32;
+inline constexpr double kMaxTrailFadeSeconds = 60;
 // A run's sphere path keeps at most this many points (older ones thinned to every other), the newest
 // kRecentPathPoints at full resolution: its memory is bounded whatever the duration and sampling.
 inline constexpr std::size_t kMaxPathPoints = 20000;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "contracts/csv_format.hpp"
 #include "contracts/limits.hpp"
 #include "scene/did_you_mean.hpp"
 #include "scene/json_fields.hpp"
@@ -156,10 +157,16 @@ void readLinkageChoice(const JsonObject& view, Scene& scene, std::vector<ScenePr
   }
 }
 
-void readTrails(const JsonObject& view, Scene& scene) {
+void readTrails(const JsonObject& view, Scene& scene, bool rodsKnown) {
   const auto hinges = view.numbers("trails");
   if (!hinges) return;
-  const int count = scene.chain.hingeCount();
+  if (hinges->size() > limits::kMaxTrails) {
+    view.report("trails", "found " + std::to_string(hinges->size()) + " hinges; expected at most " +
+                              std::to_string(limits::kMaxTrails) + " (each trail is drawn and kept per frame)");
+    return;
+  }
+  // While n is unknown (an invalid "rods") only the form is checked: the largest hinge number depends on n.
+  const double count = rodsKnown ? scene.chain.hingeCount() : double(limits::kMaxAmbientRods - 1);
   for (Eigen::Index i = 0; i < hinges->size(); ++i) {
     const double hinge = (*hinges)(i);
     // Range first: converting a double beyond int's range to int is undefined behaviour.
@@ -178,7 +185,9 @@ void readFades(const JsonObject& view, Scene& scene) {
       fade && view.checkRange("path_fade_seconds", *fade, 0, 1e9, "0 (never fades) or a positive time")) {
     render.pathFadeSeconds = *fade;
   }
-  if (const auto fade = view.number("trail_fade_seconds"); fade && view.checkPositive("trail_fade_seconds", *fade)) {
+  if (const auto fade = view.number("trail_fade_seconds");
+      fade && view.checkRange("trail_fade_seconds", *fade, 1e-9, limits::kMaxTrailFadeSeconds,
+                              "a positive time of at most " + shortest(limits::kMaxTrailFadeSeconds) + " s")) {
     render.trailFadeSeconds = *fade;
   }
   if (const auto samples = view.integer("path_samples_per_frame")) {
@@ -230,7 +239,7 @@ void readView(const json& value, Scene& scene, bool rodsKnown, std::vector<Scene
   if (view.has("camera")) readCamera(view, render.camera, problems);
   if (view.has("sphere")) readSphereSurface(view, scene, rodsKnown, problems);
   readLinkageChoice(view, scene, problems);
-  readTrails(view, scene);
+  readTrails(view, scene, rodsKnown);
   readFades(view, scene);
   if (const auto rgb = view.numbers("background"); rgb && view.checkSize("background", *rgb, 3, "red, green, blue")) {
     if (rgb->minCoeff() < 0 || rgb->maxCoeff() > 1)

@@ -1,4 +1,6 @@
 // Loading good scenes: every key lands where the rest of the program reads it.
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -8,6 +10,7 @@
 #include "contracts/registry.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/scene_files.hpp"
+#include "support/temp_folder.hpp"
 
 namespace sl {
 namespace {
@@ -213,6 +216,30 @@ TEST(SceneLoader, MissingFileIsAProblemNotACrash) {
     FAIL() << "no error";
   } catch (const SceneError& error) {
     EXPECT_NE(std::string(error.what()).find("/nonexistent/scene.json: cannot open"), std::string::npos);
+  }
+}
+
+// Issue 13.19: a scene file past kMaxSceneBytes is refused by its size, after one bounded read (a 100 MB file took
+// 2 GB of memory); one of exactly that size is read and judged as JSON.
+TEST(SceneLoader, FilesBeyondTheSizeLimitAreRefusedWithoutBeingReadWhole) {
+  testing::TempFolder folder;
+  const std::string big = folder / "big.json";
+  {
+    std::ofstream out(big, std::ios::binary);
+    out << std::string(limits::kMaxSceneBytes + 1, ' ');
+  }
+  try {
+    loadScene(big);
+    FAIL() << "no error";
+  } catch (const SceneError& error) {
+    EXPECT_NE(std::string(error.what()).find("larger than 16 MiB"), std::string::npos) << error.what();
+  }
+  std::filesystem::resize_file(big, limits::kMaxSceneBytes);
+  try {
+    loadScene(big);
+    FAIL() << "no error";
+  } catch (const SceneError& error) {
+    EXPECT_NE(std::string(error.what()).find("malformed JSON"), std::string::npos) << error.what();
   }
 }
 
