@@ -71,9 +71,6 @@ struct PlotSeries {
   double stopTime = std::numeric_limits<double>::infinity();
 };
 
-// Where a plot's legend goes: the corner its data leaves emptiest over the whole animation.
-enum class LegendCorner { TopRight, TopLeft, BottomRight, BottomLeft };
-
 struct PlotFrame {
   std::string title;  // e.g. "divergence |p_a - p_b|" or "relative energy error"
   bool logY = true;
@@ -81,7 +78,6 @@ struct PlotFrame {
   // The y axis's data range over the whole animation (or the scene's y_range), so it does not jump either;
   // empty when no value of the whole animation can be drawn.
   std::optional<std::array<double, 2>> valueRange;
-  LegendCorner legendCorner = LegendCorner::TopRight;
   std::string emptyNote;  // why the plot stays empty for the whole animation, if it does
   std::vector<PlotSeries> series;
 };

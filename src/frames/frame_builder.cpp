@@ -242,7 +242,6 @@ FrameState FrameBuilder::snapshot(int k) const {
     plot.logY = spec.logY;
     plot.timeMax = scene_.duration;
     plot.valueRange = plotOverviews_[p].valueRange;
-    plot.legendCorner = plotOverviews_[p].legendCorner;
     plot.emptyNote = plotOverviews_[p].emptyNote;
     if (spec.kind == PlotKind::Divergence) {
       plot.title = "divergence from " + scene_.runs[0].name + " (max hinge distance)";

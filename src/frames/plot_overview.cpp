@@ -22,22 +22,6 @@ std::string stopText(const std::string& name, const std::optional<StopInfo>& sto
 
 }  // namespace
 
-LegendCorner emptiestCorner(const std::vector<std::array<double, 2>>& points, double legendWidth,
-                            double legendHeight) {
-  constexpr std::array<LegendCorner, 4> order{LegendCorner::TopRight, LegendCorner::TopLeft, LegendCorner::BottomRight,
-                                              LegendCorner::BottomLeft};
-  std::array<long, 4> counts{};
-  for (const auto& [u, v] : points) {
-    const bool right = u >= 1 - legendWidth, left = u <= legendWidth;
-    const bool top = v >= 1 - legendHeight, bottom = v <= legendHeight;
-    counts[0] += right && top;
-    counts[1] += left && top;
-    counts[2] += right && bottom;
-    counts[3] += left && bottom;
-  }
-  return order[static_cast<std::size_t>(std::min_element(counts.begin(), counts.end()) - counts.begin())];
-}
-
 std::vector<PlotOverview> overviewPlots(const Scene& scene, const std::vector<InitialState>& starts,
                                         const std::function<bool()>& cancelled) {
   const std::vector<PlotSpec>& plots = scene.view.plots;
@@ -119,28 +103,6 @@ std::vector<PlotOverview> overviewPlots(const Scene& scene, const std::vector<In
       overview.emptyNote = !why.empty() ? "nothing to plot: " + why
                            : spec.logY  ? "nothing to plot: every value is 0 (a log axis cannot show it)"
                                         : "nothing to plot";
-    }
-    if (overview.valueRange) {
-      const auto [a, b] = *overview.valueRange;
-      std::vector<std::array<double, 2>> points;
-      for (std::size_t r = isDivergence ? 1 : 0; r < runCount; ++r) {
-        for (int k = 0; k < frames; ++k) {
-          const double v = values[r][static_cast<std::size_t>(k)];
-          if (!drawable(v, spec.logY)) continue;
-          const double u = scene.duration > 0 ? scene.frameTime(k) / scene.duration : 0;
-          const double y = spec.logY && a > 0 ? (std::log10(v) - std::log10(a)) / std::max(std::log10(b / a), 1e-12)
-                                              : (v - a) / std::max(b - a, 1e-300);
-          points.push_back({u, y});
-        }
-      }
-      const double series = static_cast<double>(
-          isDivergence ? runCount - 1
-          : spec.kind == PlotKind::Jacobi
-              ? std::count_if(scene.runs.begin(), scene.runs.end(), [](const RunSpec& run) { return run.config.jacobi; })
-          : spec.kind == PlotKind::Spread
-              ? std::count_if(scene.runs.begin(), scene.runs.end(), [](const RunSpec& run) { return run.family.has_value(); })
-              : runCount);
-      overview.legendCorner = emptiestCorner(points, 0.4, std::min(0.6, 0.12 * series + 0.06));
     }
     overviews.push_back(std::move(overview));
   }

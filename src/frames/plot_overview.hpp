@@ -1,7 +1,6 @@
 #pragma once
 // What each plot panel shows over the whole animation, known before the first frame: the y range (so the
-// axes never jump), the legend's corner (where the data leaves the most room over the whole animation) and,
-// for a plot that stays empty, why. Computed from fresh trajectories of the scene's runs sampled at every frame
+// axes never jump) and, for a plot that stays empty, why. Computed from fresh trajectories of the scene's runs sampled at every frame
 // time; integration never depends on which times are asked for, so the values are exactly those the frames
 // plot. Every shard computes the same overview.
 
@@ -19,7 +18,6 @@ namespace sl {
 
 struct PlotOverview {
   std::optional<std::array<double, 2>> valueRange;
-  LegendCorner legendCorner = LegendCorner::TopRight;
   std::string emptyNote;
 };
 
@@ -28,8 +26,5 @@ struct PlotOverview {
 std::vector<PlotOverview> overviewPlots(const Scene& scene, const std::vector<InitialState>& starts,
                                         const std::function<bool()>& cancelled = {});
 
-// The corner of the unit square (u right, v up) whose legend-sized region holds the fewest points; ties go in
-// the order TopRight, TopLeft, BottomRight, BottomLeft. `legendHeight` is a fraction of the plot's height.
-LegendCorner emptiestCorner(const std::vector<std::array<double, 2>>& points, double legendWidth, double legendHeight);
 
 }  // namespace sl

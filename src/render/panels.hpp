@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <optional>
+#include <string>
 
 #include "contracts/frame_state.hpp"
 #include "contracts/view_settings.hpp"
@@ -24,6 +25,20 @@ struct PanelContext {
 void drawLinkagePanel(const PanelContext& context, ShapeBatch& batch);
 SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch);
 void drawPlotPanel(const PanelContext& context, int plotIndex, ShapeBatch& batch);
+
+// Where a plot panel puts its parts (render/plot_panel.cpp), in pixels: the title's baseline, the legend's first
+// baseline and left end (beside the title or in rows of its own below it; `legendShown` false when it does not fit),
+// the bottom of the legend's last row, and the plot area, which nothing but the data and its grid covers.
+struct PlotLayout {
+  TextSize titleSize;
+  std::string title;  // fitted to the panel
+  float titleBaseline;
+  bool legendShown;
+  float legendX, legendBaseline, legendBottom;
+  float areaX0, areaY0, areaX1, areaY1;
+  bool areaShown;  // false when the panel has room for the title only
+};
+PlotLayout layoutPlot(const PanelContext& context, const PlotFrame& plot);
 void drawTextPanel(const PanelContext& context, ShapeBatch& batch);
 // The title and the time across the top of the frame (context.rect: the whole frame), for layouts without a text
 // panel (ViewSettings::titleLine).

@@ -52,11 +52,12 @@ Axis spanAxis(double lo, double hi, int count) {
   return axis;
 }
 
-Axis logAxis(double lo, double hi) {
+// Decades from below lo to above hi, a labelled tick every `stride` decades so that at most `maxTicks` show.
+Axis logAxis(double lo, double hi, int maxTicks) {
   double a = std::floor(std::log10(lo)), b = std::ceil(std::log10(hi));
   if (b <= a) b = a + 1;
   Axis axis{std::pow(10.0, a), std::pow(10.0, b), true, {}};
-  const int stride = std::max(1, int(std::ceil((b - a) / 6)));
+  const int stride = std::max(1, int(std::ceil((b - a) / std::max(1, maxTicks - 1))));
   for (double e = a; e <= b; e += stride) axis.ticks.push_back(std::pow(10.0, e));
   return axis;
 }
@@ -80,17 +81,20 @@ std::string tickLabel(const Axis& axis, double v) {
   return text;
 }
 
-Axis valueAxis(const PlotFrame& plot) {
+// The y axis with at most `maxTicks` labelled ticks (what the plot's height has room for).
+Axis valueAxis(const PlotFrame& plot, int maxTicks) {
+  const int steps = std::clamp(maxTicks - 1, 1, 4);
   if (plot.valueRange) {  // the whole animation's: the axis stays still from the first frame to the last
     const auto [lo, hi] = *plot.valueRange;
-    if (plot.logY ? lo > 0 && hi >= lo : hi >= lo) return plot.logY ? logAxis(lo, hi) : linearAxis(lo, hi, 4);
+    if (plot.logY ? lo > 0 && hi >= lo : hi >= lo)
+      return plot.logY ? logAxis(lo, hi, maxTicks) : linearAxis(lo, hi, steps);
   }
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const auto& series : plot.series)
     for (double v : series.values)
       if (drawable(v, plot.logY)) lo = std::min(lo, v), hi = std::max(hi, v);
-  if (!(lo <= hi)) return plot.logY ? logAxis(1e-16, 1) : linearAxis(0, 1, 4);
-  return plot.logY ? logAxis(lo, hi) : linearAxis(lo, hi, 4);
+  if (!(lo <= hi)) return plot.logY ? logAxis(1e-16, 1, maxTicks) : linearAxis(0, 1, steps);
+  return plot.logY ? logAxis(lo, hi, maxTicks) : linearAxis(lo, hi, steps);
 }
 
 struct PlotArea {
@@ -106,7 +110,7 @@ void drawAxes(const PanelContext& c, const PlotArea& area, const Axis& x, const 
     const P2 left = area.at(0, unit(y, v)), right = area.at(1, unit(y, v));
     batch.capsule(left, right, 0.5f, palette::gridLight);
     const std::string label = tickLabel(y, v);
-    c.font.draw(batch, label, TextSize::Small, left.x - 6 - c.font.width(label, TextSize::Small),
+    c.font.draw(batch, label, TextSize::Small, left.x - 0.5f * small - c.font.width(label, TextSize::Small),
                 left.y + 0.45f * small, palette::softInk);
   }
   for (double t : x.ticks) {
@@ -114,7 +118,7 @@ void drawAxes(const PanelContext& c, const PlotArea& area, const Axis& x, const 
     batch.capsule(bottom, top, 0.5f, palette::gridLight);
     const std::string label = tickLabel(x, t);
     c.font.draw(batch, label, TextSize::Small, bottom.x - 0.5f * c.font.width(label, TextSize::Small),
-                bottom.y + 6 + small, palette::softInk);
+                bottom.y + 0.5f * small + small, palette::softInk);
   }
   const P2 corner = area.at(0, 0);
   batch.capsule(corner, area.at(1, 0), 0.7f, palette::softInk);
@@ -168,54 +172,115 @@ void drawSeries(const PlotSeries& series, const Axis& x, const Axis& y, const Pl
   }
 }
 
-// In the corner the data leaves emptiest over the whole animation (PlotFrame::legendCorner), on a veil of the
-// background colour: lines that run under it stay faintly visible, and the labels stay readable.
-void drawLegend(const PanelContext& c, const PlotFrame& plot, const PlotArea& area, ShapeBatch& batch) {
-  if (plot.series.empty()) return;
-  const float line = c.font.lineHeight(TextSize::Small), ascent = c.font.ascent(TextSize::Small);
-  float widest = 0;
-  for (const auto& series : plot.series) widest = std::max(widest, c.font.width(series.label, TextSize::Small));
-  const float height = line * float(plot.series.size()) + 0.35f * ascent;
-  const bool onRight = plot.legendCorner == LegendCorner::TopRight || plot.legendCorner == LegendCorner::BottomRight;
-  const bool onTop = plot.legendCorner == LegendCorner::TopRight || plot.legendCorner == LegendCorner::TopLeft;
-  const float right = onRight ? area.x1 - 8 : area.x0 + 8 + widest + 22 + 6, left = right - widest - 22;
-  const float top = onTop ? area.y0 + 2 : area.y1 - 2 - height;
-  const ColorRGB veil = c.settings.background;
-  batch.rect(left - 6, top, right + 6, top + height, {veil.r, veil.g, veil.b, 0.85f});
-  float y = top + line - 2;
-  for (const auto& series : plot.series) {
-    const float x = right - c.font.width(series.label, TextSize::Small);
-    batch.capsule({x - 22, y - 0.35f * ascent}, {x - 6, y - 0.35f * ascent}, std::max(1.3f, 1.1f * seriesHalfWidth(c.font)),
-                  toRgba(series.color));
-    c.font.draw(batch, series.label, TextSize::Small, x, y, palette::ink);
-    y += line;
+// Series k of `count`: its line's half width. Each later series is narrower (runStyleWidth), so a line exactly
+// under another still shows along both of its edges; the legend's swatches show the same strokes.
+float seriesWidth(const FontAtlas& font, std::size_t k, std::size_t count) {
+  return std::max(0.8f, 1.4f * seriesHalfWidth(font) * runStyleWidth(k, count));
+}
+
+// The legend as a row of swatches and names, laid out from `x` to `right` on the baseline `y`, wrapping onto
+// further rows `lineStep` apart; draws only if `batch` is given. Returns the baseline of its last row, or NaN when
+// it needs more than `maxRows` rows.
+float layLegend(const PanelContext& c, const PlotFrame& plot, float x, float right, float y, float lineStep,
+                int maxRows, ShapeBatch* batch) {
+  const float ascent = c.font.ascent(TextSize::Small), swatch = 1.6f * ascent, gap = 0.9f * ascent;
+  const float left = x;
+  int rows = 1;
+  for (std::size_t k = 0; k < plot.series.size(); ++k) {
+    const PlotSeries& series = plot.series[k];
+    const float width = swatch + 0.4f * ascent + c.font.width(series.label, TextSize::Small);
+    if (x > left && x + width > right) {
+      if (++rows > maxRows) return std::numeric_limits<float>::quiet_NaN();
+      x = left;
+      y += lineStep;
+    }
+    if (x + width > right) return std::numeric_limits<float>::quiet_NaN();  // one name alone is too wide
+    if (batch) {
+      const float mid = y - 0.35f * ascent, half = seriesWidth(c.font, k, plot.series.size());
+      batch->capsule({x + half, mid}, {x + swatch - half, mid}, half, toRgba(series.color));
+      c.font.draw(*batch, series.label, TextSize::Small, x + swatch + 0.4f * ascent, y, palette::ink);
+    }
+    x += width + gap;
   }
+  return y;
+}
+
+// How many y labels the plot's height has room for.
+int maxYTicks(const PlotLayout& layout, float line) {
+  return std::max(2, int((layout.areaY1 - layout.areaY0) / (1.25f * line)) + 1);
+}
+
+// The width of the widest time label (the duration's).
+float timeLabelWidth(const PanelContext& c, const PlotFrame& plot) {
+  return c.font.width(tickLabel(spanAxis(plot.timeMin, plot.timeMax, 5), plot.timeMax), TextSize::Small);
 }
 
 }  // namespace
+
+// Layout, top to bottom: the title, the legend (outside the plot area, so it never covers data), the plot area
+// with its y tick labels on the left, the x tick labels and the axis name "t" below and right. Every margin follows
+// the text size, so the plot keeps its proportions from 320x180 to 3840x2160. A panel shorter than about eight
+// lines of small text is drawn compact: the title in small text with the legend beside it if it fits (the runs'
+// colours are also in the text panel), fewer ticks.
+PlotLayout layoutPlot(const PanelContext& c, const PlotFrame& plot) {
+  const float line = c.font.lineHeight(TextSize::Small), ascent = c.font.ascent(TextSize::Small);
+  const bool compact = c.rect.height < 8 * line;
+  PlotLayout layout;
+  layout.titleSize = compact ? TextSize::Small : TextSize::Normal;
+  const float pad = 0.5f * ascent, right = c.rect.x + c.rect.width - pad;
+  layout.titleBaseline = c.rect.y + pad + c.font.ascent(layout.titleSize);
+  layout.title = c.font.fitted(plot.title, layout.titleSize, c.rect.width - 2 * pad);
+
+  // The legend beside the title when both fit in one row, else in rows of its own below it (at most two in a
+  // full-size panel, none in a compact one).
+  layout.legendX = c.rect.x + pad + c.font.width(layout.title, layout.titleSize) + 2 * ascent;
+  layout.legendBaseline = layout.legendBottom = layout.titleBaseline;
+  layout.legendShown =
+      !plot.series.empty() && !std::isnan(layLegend(c, plot, layout.legendX, right, layout.titleBaseline, line, 1, nullptr));
+  if (!layout.legendShown && !compact && !plot.series.empty()) {
+    layout.legendX = c.rect.x + pad;
+    layout.legendBaseline = layout.titleBaseline + 1.15f * line;
+    const float last = layLegend(c, plot, layout.legendX, right, layout.legendBaseline, line, 2, nullptr);
+    layout.legendShown = !std::isnan(last);
+    if (layout.legendShown) layout.legendBottom = last;
+  }
+
+  // The plot area; room on the left for the y labels, on the right for the last x label's half and the axis name.
+  const float bottomRoom = (compact ? 1.35f : 2.2f) * line;
+  layout.areaY0 = layout.legendBottom + 0.6f * line;
+  layout.areaY1 = c.rect.y + c.rect.height - bottomRoom;
+  const Axis y = valueAxis(plot, maxYTicks(layout, line));
+  float labelWidth = 0;
+  for (double v : y.ticks) labelWidth = std::max(labelWidth, c.font.width(tickLabel(y, v), TextSize::Small));
+  const float rightRoom = std::max(0.5f * timeLabelWidth(c, plot), c.font.width("t", TextSize::Small) + 0.6f * ascent) + pad;
+  layout.areaX0 = c.rect.x + pad + labelWidth + 0.6f * ascent;
+  layout.areaX1 = c.rect.x + c.rect.width - rightRoom;
+  layout.areaShown = layout.areaX1 - layout.areaX0 >= 2 * ascent && layout.areaY1 - layout.areaY0 >= ascent;
+  return layout;
+}
 
 void drawPlotPanel(const PanelContext& c, int plotIndex, ShapeBatch& batch) {
   const auto& plots = c.frame.plots;
   PlotFrame empty;
   empty.title = "(no plot data)";
   const PlotFrame& plot = plotIndex >= 0 && plotIndex < int(plots.size()) ? plots[plotIndex] : empty;
-  const float line = c.font.lineHeight(TextSize::Small);
-  const Axis y = valueAxis(plot);
-  const Axis x = spanAxis(plot.timeMin, plot.timeMax, 5);
-  float labelWidth = 0;
-  for (double v : y.ticks) labelWidth = std::max(labelWidth, c.font.width(tickLabel(y, v), TextSize::Small));
-  const PlotArea area{c.rect.x + labelWidth + 14, c.rect.y + 1.9f * line, c.rect.x + c.rect.width - 16,
-                      c.rect.y + c.rect.height - 2.4f * line};
-  if (area.x1 - area.x0 < 10 || area.y1 - area.y0 < 10) return;  // too small to draw anything useful
-  c.font.draw(batch, c.font.fitted(plot.title, TextSize::Normal, c.rect.x + c.rect.width - area.x0 - 4), TextSize::Normal,
-              area.x0, c.rect.y + 1.3f * line, palette::ink);
+  const float line = c.font.lineHeight(TextSize::Small), ascent = c.font.ascent(TextSize::Small);
+  const PlotLayout layout = layoutPlot(c, plot);
+  c.font.draw(batch, layout.title, layout.titleSize, c.rect.x + 0.5f * ascent, layout.titleBaseline, palette::ink);
+  if (!layout.areaShown) return;  // no room for a plot: the title only
+  const PlotArea area{layout.areaX0, layout.areaY0, layout.areaX1, layout.areaY1};
+  const Axis y = valueAxis(plot, maxYTicks(layout, line));
+  // The x axis runs over the whole animation; its labels need about three and a half label widths each.
+  const int xSteps =
+      std::clamp(int((area.x1 - area.x0) / (3.5f * std::max(timeLabelWidth(c, plot), ascent))), 1, 5);
+  const Axis x = spanAxis(plot.timeMin, plot.timeMax, xSteps);
   // The axis name beyond its end, level with the axis: clear of every tick label below it.
-  c.font.draw(batch, "t", TextSize::Small, area.x1 + 4, area.y1 + 0.35f * c.font.ascent(TextSize::Small),
-              palette::softInk);
+  c.font.draw(batch, "t", TextSize::Small, area.x1 + 0.4f * ascent, area.y1 + 0.35f * ascent, palette::softInk);
   drawAxes(c, area, x, y, batch);
   bool anyDrawn = false;
-  for (const auto& series : plot.series) {
-    drawSeries(series, x, y, area, seriesHalfWidth(c.font), batch);
+  for (std::size_t k = 0; k < plot.series.size(); ++k) {
+    const PlotSeries& series = plot.series[k];
+    drawSeries(series, x, y, area, seriesWidth(c.font, k, plot.series.size()), batch);
     for (double v : series.values) anyDrawn = anyDrawn || drawable(v, plot.logY);
   }
   if (!anyDrawn && !plot.emptyNote.empty()) {  // a plot that stays empty says why
@@ -223,7 +288,8 @@ void drawPlotPanel(const PanelContext& c, int plotIndex, ShapeBatch& batch) {
     c.font.draw(batch, note, TextSize::Small, 0.5f * (area.x0 + area.x1 - c.font.width(note, TextSize::Small)),
                 0.5f * (area.y0 + area.y1), palette::softInk);
   }
-  drawLegend(c, plot, area, batch);
+  if (layout.legendShown)
+    layLegend(c, plot, layout.legendX, c.rect.x + c.rect.width - 0.5f * ascent, layout.legendBaseline, line, 2, &batch);
 }
 
 }  // namespace sl::render

@@ -114,13 +114,16 @@ void drawFamily(const RunFrame& run, const PanelContext& context, const SphereCa
   }
 }
 
-void drawBall(const RunFrame& run, const SphereCamera& camera, const Placement& placement, ShapeBatch& batch) {
+// The current state of a run, `style` its runStyleWidth: a later run's ball is smaller, so a run exactly under
+// another still shows as a ring around it, as its path does.
+void drawBall(const RunFrame& run, float style, const SphereCamera& camera, const Placement& placement,
+              ShapeBatch& batch) {
   Placement ballPlacement = placement;
   ballPlacement.lift = kBallRadius;
   const V3 centre = ballPlacement.place(run.current);
   if (!drawable(run.current)) return;
   const float pixelsPerUnit = float(camera.pixelsPerUnitAt(centre));
-  const float radius = std::max(2.5f, float(kBallRadius) * pixelsPerUnit);
+  const float radius = std::max(2.5f, float(kBallRadius) * pixelsPerUnit) * (0.45f + 0.55f * style);
   const P2 at = camera.project(centre);
   // First a ghost that nothing hides: where the sphere is in front of the ball (behind it, or past its outline)
   // the state is still seen through it; where the ball shows, the ball covers its ghost.
@@ -254,7 +257,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
     drawPath(runs[k].path, runs[k].pathTimes, toRgba(runs[k].color), kTubeRadius * runStyleWidth(k, runs.size()),
              1.8f * runStyleWidth(k, runs.size()), context, camera, placement, throughAntipode, batch);
   for (const RunFrame& run : context.frame.runs) drawConjugatePoints(run, camera, placement, batch);
-  for (const RunFrame& run : context.frame.runs) drawBall(run, camera, placement, batch);
+  for (std::size_t k = 0; k < runs.size(); ++k) drawBall(runs[k], runStyleWidth(k, runs.size()), camera, placement, batch);
   const SphereLook look = colored ? SphereLook::Colored : space == ViewSpace::Sphere ? SphereLook::Opaque : SphereLook::Glass;
   return {camera, look};
 }

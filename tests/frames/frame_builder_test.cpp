@@ -274,7 +274,7 @@ TEST(FrameBuilder, StoppedRunIsFrozenWithItsReason) {
 }
 
 // Steady axes: every frame's plot carries the same y range, that of the values the whole animation plots
-// (checked against the last frame's full series), and the legend's corner does not move either.
+// (checked against the last frame's full series).
 TEST(FrameBuilder, PlotRangesAreTheWholeAnimationsFromTheFirstFrame) {
   const Scene scene = twoRunScene();
   FrameBuilder builder = builderFor(scene);
@@ -284,7 +284,6 @@ TEST(FrameBuilder, PlotRangesAreTheWholeAnimationsFromTheFirstFrame) {
   for (std::size_t p = 0; p < 2; ++p) {
     ASSERT_TRUE(first.plots[p].valueRange) << p;
     EXPECT_EQ(first.plots[p].valueRange, last.plots[p].valueRange);
-    EXPECT_EQ(first.plots[p].legendCorner, last.plots[p].legendCorner);
     double lo = INFINITY, hi = -INFINITY;
     for (const PlotSeries& series : last.plots[p].series)
       for (double v : series.values)
@@ -333,16 +332,6 @@ TEST(FrameBuilder, PathHistoryIsBounded) {
     EXPECT_NEAR(run.pathTimes[i] - run.pathTimes[i - 1], spacing, 1e-9) << i;
   EXPECT_EQ(run.pathTimes.front(), 0.0);  // the start is kept
   EXPECT_EQ(run.pathTimes.back(), 120.0);
-}
-
-TEST(PlotOverview, LegendGoesToTheEmptiestCorner) {
-  // Data along the top edge and in the bottom-right: the bottom-left is free.
-  std::vector<std::array<double, 2>> points;
-  for (int i = 0; i <= 100; ++i) points.push_back({i / 100.0, 0.95});
-  points.push_back({0.9, 0.1});
-  EXPECT_EQ(emptiestCorner(points, 0.4, 0.3), LegendCorner::BottomLeft);
-  EXPECT_EQ(emptiestCorner({}, 0.4, 0.3), LegendCorner::TopRight);  // ties: top right first
-  EXPECT_EQ(emptiestCorner({{0.9, 0.9}}, 0.4, 0.3), LegendCorner::TopLeft);
 }
 
 TEST(FrameBuilder, RefusesFramesOutOfOrder) {

@@ -8,6 +8,7 @@
 #include "fixtures/synthetic_frame.hpp"
 #include "render/frame_composer.hpp"
 #include "render/palette.hpp"
+#include "render/panels.hpp"
 #include "render/shape_batch.hpp"
 
 namespace sl::render {
@@ -104,6 +105,61 @@ TEST(DrawList, TheTitleLineHasABandOfItsOwn) {
     for (const ShapeVertex& v : list.panels.back().shapes.vertices())
       ASSERT_LE(v.y, panelsTop + 0.5f) << "title line over a panel at " << size.width << "x" << size.height;
   }
+}
+
+// Issue 12: a plot's parts never overlap and stay inside its panel at every frame size: title, then legend, then
+// the plot area (which the legend never covers), with room for the y labels, the last x label and "t"; plots of the
+// comparison layout (two plots beside the sphere) keep a plot area even at 320x180.
+TEST(PlotLayoutTest, TitleLegendAndAreaNeverOverlapAtAnySize) {
+  ViewSettings view;
+  view.panels = {{PanelKind::Text, std::nullopt, 0},   {PanelKind::Sphere, std::nullopt, 0},
+                 {PanelKind::Linkage, std::nullopt, 0}, {PanelKind::Plot, std::nullopt, 0},
+                 {PanelKind::Plot, std::nullopt, 1}};
+  const FrameState frame = syntheticFrame(7.0, 420);
+  for (const ImageSize size : {ImageSize{320, 180}, ImageSize{640, 360}, ImageSize{1280, 720}, ImageSize{1920, 1080},
+                               ImageSize{3840, 2160}, ImageSize{1080, 1920}}) {
+    const FrameComposer composer(view, size);
+    for (const int p : {3, 4}) {
+      SCOPED_TRACE(std::to_string(size.width) + "x" + std::to_string(size.height) + " plot " + std::to_string(p));
+      const PixelRect rect = composer.rects()[std::size_t(p)];
+      const PanelContext context{frame, view, composer.font(), rect};
+      const PlotLayout layout = layoutPlot(context, frame.plots[std::size_t(p - 3)]);
+      ASSERT_TRUE(layout.areaShown);
+      EXPECT_GT(layout.areaX1 - layout.areaX0, 0.4f * rect.width);
+      EXPECT_GT(layout.areaY1 - layout.areaY0, 0.2f * rect.height);
+      EXPECT_GE(layout.titleBaseline - composer.font().ascent(layout.titleSize), rect.y);
+      EXPECT_LE(composer.font().width(layout.title, layout.titleSize), rect.width);
+      EXPECT_GE(layout.areaX0, rect.x);
+      EXPECT_LE(layout.areaX1 + composer.font().width("t", TextSize::Small), rect.x + rect.width);
+      EXPECT_LE(layout.areaY1 + composer.font().lineHeight(TextSize::Small), rect.y + rect.height);
+      if (size.width >= 640) {
+        EXPECT_TRUE(layout.legendShown);
+      }
+      if (layout.legendShown) {
+        EXPECT_LT(layout.legendBottom + 0.25f * composer.font().lineHeight(TextSize::Small), layout.areaY0)
+            << "the legend reaches into the plot area";
+      }
+    }
+  }
+}
+
+// Issue 12: a plot's lines nest like the runs' paths: each later series is narrower, so a line exactly under
+// another still shows along both its edges.
+TEST(PlotLayoutTest, CoincidingSeriesBothShow) {
+  ViewSettings view = fourPanels();
+  FrameState frame = syntheticFrame(7.0, 420);
+  frame.plots[1].series[1].values = frame.plots[1].series[0].values;  // run 2's energy error = the reference's
+  frame.plots[1].series[1].times = frame.plots[1].series[0].times;
+  const DrawList list = FrameComposer(view, {640, 360}).compose(frame);
+  float widthFirst = 0, widthSecond = 0;
+  const ColorRGB first = frame.plots[1].series[0].color, second = frame.plots[1].series[1].color;
+  for (const ShapeVertex& v : list.panels[3].shapes.vertices()) {
+    if (v.kind != float(ShapeKind::Capsule)) continue;
+    if (v.r == first.r && v.g == first.g && v.b == first.b) widthFirst = std::max(widthFirst, v.size);
+    if (v.r == second.r && v.g == second.g && v.b == second.b) widthSecond = std::max(widthSecond, v.size);
+  }
+  ASSERT_GT(widthSecond, 0);
+  EXPECT_GT(widthFirst, widthSecond + 0.5f) << "the first line would hide under the second";
 }
 
 TEST(DrawList, ShapesStayNearTheirPanel) {
