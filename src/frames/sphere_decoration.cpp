@@ -21,7 +21,7 @@ SphereField colourField(const ConfigurationSurface& surface, SphereColoring colo
   for (int j = 0; j < field.tCount; ++j) ts[j] = -kPi + (j + 0.5) * 2 * kPi / field.tCount;
   const std::vector<CurvatureSample> samples = curvatureGrid(surface, phis, ts);
   const bool curvature = coloring == SphereColoring::Curvature;
-  field.label = curvature ? "Gaussian curvature K" : "bending |II|\u00b2";
+  field.label = curvature ? "K, Gaussian curvature" : "|II|\u00b2, bending";  // the symbol first: it survives fitting
   field.diverging = curvature;
   field.values.reserve(samples.size());
   field.min = INFINITY;

@@ -121,11 +121,14 @@ void drawColorBar(const ColorScale& scale, const std::string& label, const std::
     font.draw(batch, text, TextSize::Small, x0 - tick - 0.3f * line - font.width(text, TextSize::Small),
               y + 0.4f * ascent, ink);
   }
-  font.draw(batch, label, TextSize::Small, std::max(area.x, x1 - font.width(label, TextSize::Small)),
-            area.y + 0.4f * line + ascent, ink);
-  if (!note.empty())
-    font.draw(batch, note, TextSize::Small, std::max(area.x, x1 - font.width(note, TextSize::Small)),
-              bottom + 0.4f * line + ascent, palette::softInk);
+  // Label and note right-aligned to the bar, shortened with an ellipsis where the strip is narrower than they are.
+  const std::string title = font.fitted(label, TextSize::Small, area.width);
+  font.draw(batch, title, TextSize::Small, x1 - font.width(title, TextSize::Small), area.y + 0.4f * line + ascent, ink);
+  if (!note.empty()) {
+    const std::string shown = font.fitted(note, TextSize::Small, area.width);
+    font.draw(batch, shown, TextSize::Small, x1 - font.width(shown, TextSize::Small), bottom + 0.4f * line + ascent,
+              palette::softInk);
+  }
 }
 
 }  // namespace sl::render

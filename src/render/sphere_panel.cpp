@@ -153,9 +153,23 @@ void drawConjugatePoints(const RunFrame& run, const SphereCamera& camera, const 
   }
 }
 
-// 5+ rods: the ball view explained (frames/configuration_view.hpp): the start marked at the centre, the ring of
-// radius 1/2 (the great sphere at a right angle from the start) outlined, and a caption saying what the radius
-// means and, for n > 5, which directions are shown.
+// Phrases packed greedily into lines no wider than `width` ("; " between phrases on one line), each line fitted.
+std::vector<std::string> packPhrases(const std::vector<std::string>& phrases, const FontAtlas& font, TextSize size,
+                                     float width) {
+  std::vector<std::string> lines;
+  for (const std::string& phrase : phrases) {
+    if (!lines.empty() && font.width(lines.back() + "; " + phrase, size) <= width)
+      lines.back() += "; " + phrase;
+    else
+      lines.push_back(phrase);
+  }
+  for (std::string& line : lines) line = font.fitted(line, size, width);
+  return lines;
+}
+
+// 5+ rods: the ball view explained (frames/configuration_view.hpp): the ring of radius 1/2 (the great sphere at a
+// right angle from the start) outlined, and a caption, wrapped to the panel, saying what the start mark, the
+// radius, the ring and the rim mean and, for n > 5, which directions are shown.
 void drawBallGuide(const PanelContext& context, const SphereCamera& camera, ShapeBatch& batch) {
   const V3 centre{0, 0, 0};
   const P2 at = camera.project(centre);
@@ -167,15 +181,37 @@ void drawBallGuide(const PanelContext& context, const SphereCamera& camera, Shap
                     palette::withAlpha(palette::softInk, 0.55f), {}});
   }
   batch.polyline(ring);
-  const float arm = std::max(3.0f, 0.03f * half);
-  batch.capsule({at.x - arm, at.y}, {at.x + arm, at.y}, 0.9f, palette::ink);
-  batch.capsule({at.x, at.y - arm}, {at.x, at.y + arm}, 0.9f, palette::ink);
   const int rods = context.frame.rods;
-  std::string caption = "S^" + std::to_string(rods - 2) + " in a ball: + the start, radius = angle from it / pi, ring = 90 deg";
-  if (rods > 5) caption += "; first 3 of " + std::to_string(rods - 2) + " directions";
-  const float pad = 0.02f * context.rect.height;
-  context.font.draw(batch, context.font.fitted(caption, TextSize::Small, context.rect.width - 2 * pad), TextSize::Small,
-                    context.rect.x + pad, context.rect.y + context.rect.height - pad, palette::softInk);
+  std::vector<std::string> phrases = {"S^" + std::to_string(rods - 2) + " drawn in a ball", "+ the start",
+                                      "distance from it = angle / pi", "ring = 90 deg", "rim = the antipode"};
+  if (rods > 5) phrases.push_back("first 3 of " + std::to_string(rods - 2) + " directions");
+  const float pad = 0.02f * context.rect.height, line = context.font.lineHeight(TextSize::Small);
+  std::vector<std::string> lines = packPhrases(phrases, context.font, TextSize::Small, context.rect.width - 2 * pad);
+  if (lines.size() > 2) {  // a small panel: the essentials in at most two lines, clear of the ball
+    lines = packPhrases({"+ start", "radius = angle / pi", "ring 90 deg"}, context.font, TextSize::Small,
+                        context.rect.width - 2 * pad);
+    lines.resize(std::min<std::size_t>(lines.size(), 2));
+  }
+  float y = context.rect.y + context.rect.height - pad - line * float(lines.size() - 1);
+  for (const std::string& text : lines) {
+    context.font.draw(batch, text, TextSize::Small, context.rect.x + pad, y, palette::softInk);
+    y += line;
+  }
+}
+
+// The start of a 5+ rod path, the ball's centre: a cross drawn over the paths, on a halo of the background so it
+// stays visible where a path runs through it.
+void drawBallStart(const PanelContext& context, const SphereCamera& camera, ShapeBatch& batch) {
+  const V3 centre{0, 0, 0};
+  const P2 at = camera.project(centre);
+  const float arm = std::max(4.0f, 0.035f * float(camera.pixelsPerUnitAt(centre)));
+  const float width = std::max(0.9f, 0.12f * arm);
+  const ColorRGB& b = context.settings.background;
+  const Rgba halo{b.r, b.g, b.b, 0.9f};
+  batch.capsule({at.x - arm, at.y}, {at.x + arm, at.y}, width + 1.2f, halo);
+  batch.capsule({at.x, at.y - arm}, {at.x, at.y + arm}, width + 1.2f, halo);
+  batch.capsule({at.x - arm, at.y}, {at.x + arm, at.y}, width, palette::ink);
+  batch.capsule({at.x, at.y - arm}, {at.x, at.y + arm}, width, palette::ink);
 }
 
 // 3 rods: the configuration circle, the equator.
@@ -238,8 +274,9 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
     const Placement onSurface{true, 0.004};
     drawEllipses(decoration->ellipses, camera, onSurface, context.rect, batch);
     if (!decoration->ellipseCaption.empty()) {
-      context.font.draw(batch, decoration->ellipseCaption, TextSize::Small, context.rect.x + pad,
-                        context.rect.y + context.rect.height - pad, palette::softInk);
+      const float width = context.rect.width - 2 * pad - (colored ? colorBarStrip(context.rect) : 0);
+      context.font.draw(batch, context.font.fitted(decoration->ellipseCaption, TextSize::Small, width), TextSize::Small,
+                        context.rect.x + pad, context.rect.y + context.rect.height - pad, palette::softInk);
     }
     if (colored) {
       const SphereField& field = *decoration->field;
@@ -257,6 +294,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
     drawPath(runs[k].path, runs[k].pathTimes, toRgba(runs[k].color), kTubeRadius * runStyleWidth(k, runs.size()),
              1.8f * runStyleWidth(k, runs.size()), context, camera, placement, throughAntipode, batch);
   for (const RunFrame& run : context.frame.runs) drawConjugatePoints(run, camera, placement, batch);
+  if (space == ViewSpace::Ball) drawBallStart(context, camera, batch);
   for (std::size_t k = 0; k < runs.size(); ++k) drawBall(runs[k], runStyleWidth(k, runs.size()), camera, placement, batch);
   const SphereLook look = colored ? SphereLook::Colored : space == ViewSpace::Sphere ? SphereLook::Opaque : SphereLook::Glass;
   return {camera, look};

@@ -74,6 +74,15 @@ TEST(ColorBar, StaysInsideItsArea) {
     EXPECT_GE(v.y, area.y - 1);
     EXPECT_LE(v.y, area.y + area.height + 1);
   }
+  // Issue 12: in a strip narrower than its label and note (small frames), both are shortened, never cut by the panel.
+  ShapeBatch narrow;
+  const PixelRect strip{580, 20, 50, 300};
+  drawColorBar({-0.27, 4.15, true}, "K, Gaussian curvature", "each sign on its own scale", strip, composer.font(), narrow);
+  ASSERT_GT(narrow.vertices().size(), 96u * 6);
+  for (const ShapeVertex& v : narrow.vertices()) {
+    EXPECT_GE(v.x, strip.x - 1);
+    EXPECT_LE(v.x, strip.x + strip.width + 2);
+  }
   // Too small to read: nothing rather than an illegible bar.
   ShapeBatch tiny;
   drawColorBar({-1, 1, true}, "K", "", {0, 0, 40, 30}, composer.font(), tiny);

@@ -150,6 +150,24 @@ TEST_F(PixelProbe, NoAntialiasingStillDrawsTheSameScene) {
 
 // The ball view (5+ rods): a path through the antipode jumps from one side of the boundary to the other; the
 // jump is a gap, not a line across the ball. The same line sampled densely is drawn (so the probe can see it).
+// Issue 12: the start of a 5+ rod path (the ball's centre) is marked over the path, not hidden under it.
+TEST_F(PixelProbe, BallViewMarksTheStartOverThePath) {
+  FrameState ball = probeFrame();
+  ball.viewSpace = ViewSpace::Ball;
+  RunFrame& run = ball.runs[0];
+  run.path.clear();
+  run.pathTimes.clear();
+  for (int k = 0; k <= 200; ++k) {  // straight through the centre
+    run.path.push_back({-0.9 + 0.009 * k, 0.0, 0.0});
+    run.pathTimes.push_back(ball.time);
+  }
+  run.current = run.path.back();
+  const render::P2 centre = camera.project({0, 0, 0});
+  const Rgb8 mark = pixel(renderer.render(ball), int(centre.x), int(centre.y));
+  EXPECT_FALSE(isRunRed(mark)) << "the path hides the start: " << mark.r << " " << mark.g << " " << mark.b;
+  EXPECT_LT(mark.r + mark.g + mark.b, 3 * 90) << "expected the dark start mark";
+}
+
 TEST_F(PixelProbe, BallViewLeavesAGapWhereThePathJumpsThroughTheAntipode) {
   auto ballFrame = [&](bool jump) {
     FrameState ball = probeFrame();
@@ -165,10 +183,11 @@ TEST_F(PixelProbe, BallViewLeavesAGapWhereThePathJumpsThroughTheAntipode) {
     run.current = run.path.back();
     return ball;
   };
-  const render::P2 centre = camera.project({0, 0, 0});
-  const Rgb8 drawn = pixel(renderer.render(ballFrame(false)), int(centre.x), int(centre.y));
+  // Probed beside the centre, where the start's cross is drawn over the path.
+  const render::P2 probe = camera.project({0.4, 0, 0});
+  const Rgb8 drawn = pixel(renderer.render(ballFrame(false)), int(probe.x), int(probe.y));
   EXPECT_TRUE(isRunRed(drawn)) << drawn.r << " " << drawn.g << " " << drawn.b;
-  const Rgb8 gap = pixel(renderer.render(ballFrame(true)), int(centre.x), int(centre.y));
+  const Rgb8 gap = pixel(renderer.render(ballFrame(true)), int(probe.x), int(probe.y));
   EXPECT_FALSE(isRunRed(gap)) << "a line crosses the ball: " << gap.r << " " << gap.g << " " << gap.b;
 }
 
