@@ -40,6 +40,7 @@ struct RunFrame {
   bool stopped = false;    // the run stopped at or before this frame's time
   double stopTime = 0;     // when it stopped (valid if stopped)
   std::string stopReason;  // why, e.g. "pole-fold-back" (valid if stopped)
+  std::string stopWhy;     // what that means, in a sentence (the reason's meaning in contracts/registry.hpp)
   double baseLength = 3;   // L of this run's own linkage (runs may differ in L and masses, never in n)
 
   // Linkage panel: the n-1 interior hinges at the last valid time (frozen once stopped).

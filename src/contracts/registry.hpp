@@ -75,7 +75,7 @@ enum class StopReason {
 struct StopReasonTraits {
   StopReason kind;
   std::string_view name;     // in CSV status rows, the text panel and stderr
-  std::string_view meaning;  // one line for docs and help texts
+  std::string_view meaning;  // one line for docs, help texts and the frames
 };
 
 inline constexpr std::array<StopReasonTraits, 8> kStopReasons{{

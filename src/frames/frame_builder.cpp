@@ -163,7 +163,10 @@ void FrameBuilder::sampleRunAt(size_t run, double t, bool isFrameTime) {
     frame.stopped = true;
     const std::optional<StopInfo>& stop = runs_[run].stop();
     frame.stopTime = stop ? stop->time : t;
-    if (stop) frame.stopReason = nameOf(stop->reason);
+    if (stop) {
+      frame.stopReason = nameOf(stop->reason);
+      frame.stopWhy = std::string(traits(stop->reason).meaning);
+    }
     history.hingesAtFrame.resize(2, 0);
     return;
   }

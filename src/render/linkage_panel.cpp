@@ -81,7 +81,9 @@ void drawFeather(const RunFrame& run, const PlaneView& view, double base, float 
 // outline: the width of the run's coloured outline around its rods (overlay), 0 for none.
 void drawRun(const PanelContext& context, const RunFrame* run, const PixelRect& area, bool label, float outline,
              ShapeBatch& batch) {
-  // One scale for every run (runs may differ in L): each is drawn on its own pins.
+  // One scale for every run (runs may differ in L): each is drawn on its own pins. A labelled run's caption sits
+  // just under the lowest place its chain can reach (or at the area's foot, if that is nearer).
+  const float line = context.font.lineHeight(TextSize::Small);
   const PlaneView view = fitFrameView(context.frame, area);
   // Rod half width: 4.5% of a rod's length on screen, at least 1.5 px while rods are long enough to carry it
   // (a chain of hundreds of rods is drawn with hairline rods instead of a solid band).
@@ -95,8 +97,9 @@ void drawRun(const PanelContext& context, const RunFrame* run, const PixelRect& 
   if (label) {
     const std::string name = context.font.fitted(run->name, TextSize::Small, area.width);
     const float width = context.font.width(name, TextSize::Small);
-    context.font.draw(batch, name, TextSize::Small, area.x + 0.5f * (area.width - width),
-                      area.y + area.height - 0.4f * context.font.lineHeight(TextSize::Small), toRgba(run->color));
+    const float baseline = std::min(view.boxBottom + 1.1f * line, area.y + area.height - 0.3f * line);
+    context.font.draw(batch, name, TextSize::Small, area.x + 0.5f * (area.width - width), baseline,
+                      toRgba(run->color));
   }
 }
 

@@ -42,7 +42,8 @@ PlaneView fitBox(const Box& box, const PixelRect& r) {
   const auto [x0, x1, y0, y1] = box;
   const double margin = 0.08;
   const double scale = std::min(r.width * (1 - 2 * margin) / (x1 - x0), r.height * (1 - 2 * margin) / (y1 - y0));
-  return {scale, r.x + 0.5 * r.width - scale * 0.5 * (x0 + x1), r.y + 0.5 * r.height + scale * 0.5 * (y0 + y1)};
+  const double originY = r.y + 0.5 * r.height + scale * 0.5 * (y0 + y1);
+  return {scale, r.x + 0.5 * r.width - scale * 0.5 * (x0 + x1), originY, float(originY - scale * y0)};
 }
 
 }  // namespace

@@ -10,6 +10,7 @@ namespace sl::render {
 
 struct PlaneView {
   double scale, originX, originY;
+  float boxBottom = 0;  // the pixel row below which no configuration of the fitted chains reaches (captions go there)
   P2 operator()(double x, double y) const { return {float(originX + scale * x), float(originY - scale * y)}; }
   P2 operator()(const Vec2& p) const { return (*this)(p.x, p.y); }
 };

@@ -39,9 +39,10 @@ void drawSwatch(const PanelContext& c, std::size_t k, TextSize size, float x, fl
   batch.capsule({x + half, mid}, {x + 2.0f * swatch - half, mid}, half, toRgba(c.frame.runs[k].color), true, 0.4f);
 }
 
-// The runs, each its swatch, name, method and (once stopped) why, flowing left to right from the baseline
-// after `top` and wrapping. Draws into `batch` if given; returns the bottom of the last row either way.
-float flowRuns(const PanelContext& c, TextSize size, float pad, float top, ShapeBatch* batch) {
+// The runs, each its swatch, name, method and (once stopped) why, with what that means if `explain`, flowing left
+// to right from the baseline after `top` and wrapping. Draws into `batch` if given; returns the bottom of the last
+// row either way.
+float flowRuns(const PanelContext& c, TextSize size, bool explain, float pad, float top, ShapeBatch* batch) {
   const float line = c.font.lineHeight(size);
   const float swatch = 0.3f * c.font.ascent(size);
   float x = c.rect.x + pad, y = top + line;
@@ -61,6 +62,14 @@ float flowRuns(const PanelContext& c, TextSize size, float pad, float top, Shape
       if (run.stopped) c.font.draw(*batch, stop, size, end, y, palette::stopRed);
     }
     x += width;
+  }
+  // Below the runs, what each stop means: one line per stopped run, in small text, shortened to the panel.
+  for (const RunFrame& run : c.frame.runs) {
+    if (!explain || !run.stopped || run.stopWhy.empty()) continue;
+    y += c.font.lineHeight(TextSize::Small);
+    const std::string why =
+        c.font.fitted(run.name + " stopped: " + run.stopWhy, TextSize::Small, c.rect.width - 2 * pad);
+    if (batch) c.font.draw(*batch, why, TextSize::Small, c.rect.x + pad, y, palette::stopRed);
   }
   return y + (line - c.font.ascent(size));
 }
@@ -84,9 +93,11 @@ void drawTextPanel(const PanelContext& c, ShapeBatch& batch) {
   // equal part and, once stopped, the stop time (the reason needs the room of a larger frame).
   const float firstRow = y + 0.15f * titleLine;
   const float bottom = c.rect.y + c.rect.height;
-  for (const TextSize size : {TextSize::Normal, TextSize::Small}) {
-    if (flowRuns(c, size, pad, firstRow, nullptr) <= bottom) {
-      flowRuns(c, size, pad, firstRow, &batch);
+  // A stopped run's reason is explained in a sentence where the panel has room for it.
+  for (const auto& [size, explain] : {std::pair{TextSize::Normal, true}, std::pair{TextSize::Normal, false},
+                                      std::pair{TextSize::Small, true}, std::pair{TextSize::Small, false}}) {
+    if (flowRuns(c, size, explain, pad, firstRow, nullptr) <= bottom) {
+      flowRuns(c, size, explain, pad, firstRow, &batch);
       return;
     }
   }

@@ -9,6 +9,7 @@
 #include "render/frame_composer.hpp"
 #include "render/palette.hpp"
 #include "render/panels.hpp"
+#include "render/plane_view.hpp"
 #include "render/shape_batch.hpp"
 
 namespace sl::render {
@@ -160,6 +161,55 @@ TEST(PlotLayoutTest, CoincidingSeriesBothShow) {
   }
   ASSERT_GT(widthSecond, 0);
   EXPECT_GT(widthFirst, widthSecond + 0.5f) << "the first line would hide under the second";
+}
+
+// Issue 12: side by side, each run's caption sits just under the lowest place its chain can reach, not at the
+// foot of a tall panel (it floated about 100 px below its linkage).
+TEST(DrawList, SideBySideCaptionsSitUnderTheirLinkages) {
+  ViewSettings view = fourPanels();
+  view.panels[2].rect = std::array<double, 4>{0.5, 0.15, 0.5, 0.6};  // a tall linkage panel
+  const FrameComposer composer(view, {1280, 720});
+  const FrameState frame = syntheticFrame(3.0, 180);
+  const DrawList list = composer.compose(frame);
+  const PixelRect panel = list.panels[2].rect;
+  const PixelRect column{panel.x, panel.y, panel.width / 2, panel.height};
+  const float boxBottom = fitFrameView(frame, column).boxBottom;
+  const float line = composer.font().lineHeight(TextSize::Small);
+  float lowest = 0;
+  std::size_t glyphs = 0;
+  for (const ShapeVertex& v : list.panels[2].shapes.vertices())
+    if (v.kind == float(ShapeKind::Glyph)) lowest = std::max(lowest, v.y), ++glyphs;
+  ASSERT_GT(glyphs, 0u);
+  EXPECT_GT(lowest, boxBottom);
+  EXPECT_LT(lowest, boxBottom + 1.6f * line) << "the caption floats below its linkage";
+  EXPECT_LT(boxBottom + 2 * line, panel.y + panel.height) << "the test's panel is not tall enough to tell";
+}
+
+// Issue 12: a stopped run's reason is explained in the text panel where there is room (a line of its own, in the
+// stop colour), and left out where there is not.
+TEST(DrawList, AStopIsExplainedWhereThereIsRoom) {
+  SyntheticOptions stopping;
+  stopping.stopSecondRun = true;
+  FrameState frame = syntheticFrame(7.0, 420, stopping);
+  const auto stopGlyphs = [](const DrawList& list) {
+    std::size_t count = 0;
+    for (const ShapeVertex& v : list.panels[0].shapes.vertices())
+      count += v.kind == float(ShapeKind::Glyph) && isStopRed(v);
+    return count;
+  };
+  for (const ImageSize size : {ImageSize{1280, 720}, ImageSize{320, 180}}) {
+    const FrameComposer composer(fourPanels(), size);
+    const std::size_t plain = stopGlyphs(composer.compose(frame));
+    frame.runs[1].stopWhy = "the relative energy drift passed the watchdog's limit";
+    const std::size_t explained = stopGlyphs(composer.compose(frame));
+    frame.runs[1].stopWhy.clear();
+    ASSERT_GT(plain, 0u);
+    if (size.width >= 1280) {
+      EXPECT_GT(explained, plain + 4 * 30) << "no explanation at " << size.width;
+    } else {
+      EXPECT_EQ(explained, plain) << "an explanation squeezed into a small frame";
+    }
+  }
 }
 
 TEST(DrawList, ShapesStayNearTheirPanel) {
