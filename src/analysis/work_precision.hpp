@@ -70,7 +70,8 @@ struct CheapestSetting {
 std::vector<CheapestSetting> cheapestSettings(const std::vector<WorkPrecisionPoint>& points,
                                               const std::vector<double>& targets);
 
-// A plain-text table: one row per method x integrator, one column per target, "never" where unreached.
+// A plain-text table: one row per method x integrator, one column per target: the setting, its evaluations (what
+// it was chosen by) and its wall time, or "never" where unreached.
 std::string cheapestSettingsText(const std::vector<CheapestSetting>& cheapest, const std::vector<double>& targets);
 
 }  // namespace sl

@@ -89,7 +89,8 @@ void runBench(BenchArguments& args) {
   output::writeFileAtomically(csvPath, csvText(workPrecisionTable(points)));
   const std::string table = cheapestSettingsText(cheapestSettings(points, args.targets), args.targets);
   output::writeFileAtomically((std::filesystem::path(args.out) / "cheapest-settings.txt").string(), table);
-  std::cout << "Cheapest setting reaching each max position error on every start (worst-start median wall time):\n"
+  std::cout << "Cheapest setting reaching each max position error on every start: fewest field evaluations (worst "
+               "start), then its median wall time:\n"
             << table << "wrote " << csvPath << "\n";
   if (args.charts)
     for (const auto& png : writeWorkPrecisionCharts(points, args.out)) std::cout << "wrote " << png << "\n";
