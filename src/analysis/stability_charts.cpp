@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include "analysis/gnuplot.hpp"
@@ -68,14 +69,26 @@ std::string mapScript(const CsvTable& rows, const std::string& kind, const std::
             " noenhanced\n";
   script += "set xlabel " + gnuplotQuote(xLabel) + "\nset ylabel " + gnuplotQuote(yLabel) + "\n";
   script += "set autoscale xfix\nset autoscale yfix\nset tics out\nunset key\n";
-  // Failed cells are left out of the error image and show the dark background.
+  // Failed cells are left out of the error image and show a light grey background, a colour the sequential map
+  // below never takes (and unlike the failure-mode key's black, which means non-finite there).
   script +=
-      "set object 1 rectangle from graph 0,0 to graph 1,1 behind fillcolor rgb '#303030' fillstyle solid noborder\n";
+      "set object 1 rectangle from graph 0,0 to graph 1,1 behind fillcolor rgb '#d9d9d9' fillstyle solid noborder\n";
   script += std::string("set title '") +
-            (checked ? "log_{10} max position error" : "log_{10} max relative energy drift") + " (dark: failed)'\n";
-  script +=
-      "set palette defined (-16 '#08306b', -12 '#2171b5', -9 '#6baed6', -6 '#c6dbef', -3 '#fee391', 0 '#d7301f')\n";
-  script += "set cbrange [-16:0]\nset cbtics 2\n";
+            (checked ? "log_{10} max position error" : "log_{10} max relative energy drift") + " (grey: failed)'\n";
+  // A sequential, colour-blind-safe map (viridis) over the whole decades the data reach: no pale middle suggesting
+  // a meaningful midpoint, and no range left empty.
+  double lowest = INFINITY, highest = -INFINITY;
+  for (const std::string& cell : lines) {
+    double x = 0, y = 0, value = 0;
+    if (std::sscanf(cell.c_str(), "%lf %lf %lf", &x, &y, &value) == 3 && std::isfinite(value))
+      lowest = std::min(lowest, value), highest = std::max(highest, value);
+  }
+  if (!std::isfinite(lowest)) lowest = -16, highest = 0;  // no cell succeeded: the whole scale
+  lowest = std::floor(lowest);
+  highest = std::max(std::ceil(highest), lowest + 1);
+  script += "set palette defined (0 '#440154', 1 '#3b528b', 2 '#21918c', 3 '#5ec962', 4 '#fde725')\n";
+  script += "set cbrange [" + gnuplotNumber(lowest) + ":" + gnuplotNumber(highest) + "]\nset cbtics " +
+            (highest - lowest > 8 ? "2" : "1") + "\n";
   script += "plot $cells using 1:2:3 with image\n";
   script += "unset object 1\nset title 'failure mode'\nset rmargin 20\n" + failurePalette();
   script += "plot $cells using 1:2:4 with image\nunset multiplot\n";

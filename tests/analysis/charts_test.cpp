@@ -57,6 +57,22 @@ TEST(StabilityCharts, TheSameRowsDrawTheSameBytes) {
   EXPECT_EQ(fileBytes(a[0]), fileBytes(b[0]));
 }
 
+// Issue 12: the error map's colours span the whole decades its data reach (cells ok at 1e-3 and 1e-12 here:
+// -12 to -3, not a fixed -16..0 with an empty end), in a sequential map, and failed cells are grey, not the
+// failure-mode key's black for non-finite.
+TEST(StabilityCharts, TheErrorScaleIsTrimmedToTheData) {
+  if (!gnuplotAvailable()) GTEST_SKIP() << "gnuplot with pngcairo not installed (apt-get install gnuplot-nox)";
+  const std::string folder = sl::testing::freshTestFolder("trimmed");
+  const CsvTable rows = syntheticStabilityRows();
+  const auto written = writeStabilityCharts(rows, "pole", folder);
+  ASSERT_EQ(written.size(), 1u);
+  const std::string script = fileBytes(std::filesystem::path(written[0]).replace_extension(".gp").string());
+  EXPECT_NE(script.find("set cbrange [-12:-3]"), std::string::npos) << script;
+  EXPECT_NE(script.find("'#440154'"), std::string::npos);  // viridis
+  EXPECT_NE(script.find("(grey: failed)"), std::string::npos);
+  EXPECT_EQ(script.find("#303030"), std::string::npos);
+}
+
 TEST(WorkPrecisionCharts, DrawsThreeChartsPerStartAndTheWorstCase) {
   if (!gnuplotAvailable()) GTEST_SKIP() << "gnuplot with pngcairo not installed (apt-get install gnuplot-nox)";
   std::vector<WorkPrecisionPoint> points;
