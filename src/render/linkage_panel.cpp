@@ -81,10 +81,10 @@ void drawFeather(const RunFrame& run, const PlaneView& view, double base, float 
 // outline: the width of the run's coloured outline around its rods (overlay), 0 for none.
 void drawRun(const PanelContext& context, const RunFrame* run, const PixelRect& area, bool label, float outline,
              ShapeBatch& batch) {
-  // One scale for every run (runs may differ in L): each is drawn on its own pins. A labelled run's caption sits
-  // just under the lowest place its chain can reach (or at the area's foot, if that is nearer).
+  // One scale for every run (runs may differ in L): each is drawn on its own pins. A labelled run keeps a caption
+  // line at the foot of its area, and its caption sits just under the lowest place its chain can reach.
   const float line = context.font.lineHeight(TextSize::Small);
-  const PlaneView view = fitFrameView(context.frame, area);
+  const PlaneView view = fitFrameView(context.frame, area, label ? captionHeight(context.font) : 0);
   // Rod half width: 4.5% of a rod's length on screen, at least 1.5 px while rods are long enough to carry it
   // (a chain of hundreds of rods is drawn with hairline rods instead of a solid band).
   const float rod = std::max(std::min(1.5f, std::max(0.9f, float(0.12 * view.scale))), float(0.045 * view.scale));

@@ -43,6 +43,8 @@ void drawTextPanel(const PanelContext& context, ShapeBatch& batch);
 // The title and the time across the top of the frame (context.rect: the whole frame), for layouts without a text
 // panel (ViewSettings::titleLine).
 void drawTitleLine(const PanelContext& context, ShapeBatch& batch);
+// The line kept under each side-by-side linkage for its run's name (linkage_panel.cpp).
+inline float captionHeight(const FontAtlas& font) { return 1.3f * font.lineHeight(TextSize::Small); }
 // The height of that line's band (the layout keeps it free).
 inline float titleLineHeight(const FontAtlas& font) { return std::ceil(1.3f * font.lineHeight(TextSize::Normal)); }
 

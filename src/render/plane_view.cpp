@@ -54,11 +54,13 @@ PlaneView fitChainView(int rods, double base, const PixelRect& area) {
   return fitBox(box, area);
 }
 
-PlaneView fitFrameView(const FrameState& frame, const PixelRect& area) {
+PlaneView fitFrameView(const FrameState& frame, const PixelRect& area, float captionHeight) {
   Box box;
   for (const RunFrame& run : frame.runs) holdChain(frame.rods, run.baseLength, box);
   if (frame.runs.empty()) holdChain(frame.rods, frame.rods - 1, box);
-  return fitBox(box, area);
+  PixelRect chains = area;
+  chains.height = std::max(1.0f, area.height - captionHeight);
+  return fitBox(box, chains);
 }
 
 }  // namespace sl::render

@@ -21,6 +21,7 @@ PlaneView fitChainView(int rods, double baseLength, const PixelRect& area);
 
 // The view of a frame's linkage panel: one box holding every configuration of every run's chain (runs may
 // differ in L), so that all runs are drawn at one scale and the picture never jumps.
-PlaneView fitFrameView(const FrameState& frame, const PixelRect& area);
+// `captionHeight` pixels at the area's foot are kept for a caption (side-by-side runs are named underneath).
+PlaneView fitFrameView(const FrameState& frame, const PixelRect& area, float captionHeight = 0);
 
 }  // namespace sl::render

@@ -127,7 +127,8 @@ void drawBall(const RunFrame& run, float style, const SphereCamera& camera, cons
   const P2 at = camera.project(centre);
   // First a ghost that nothing hides: where the sphere is in front of the ball (behind it, or past its outline)
   // the state is still seen through it; where the ball shows, the ball covers its ghost.
-  batch.disc(at, radius, toRgba(run.color, 0.35f));
+  batch.disc(at, radius, palette::withAlpha(palette::ink, 0.45f));  // a dark rim: readable over any colour map
+  batch.disc(at, std::max(1.0f, radius - std::max(1.0f, 0.15f * radius)), toRgba(run.color, 0.6f));
   if (run.stopped) batch.disc(at, 0.45f * radius, palette::withAlpha(palette::stopRed, 0.5f));
   if (!camera.inFront(centre)) return;
   const Occludable world = ballPlacement.world(centre);
@@ -253,6 +254,26 @@ void drawEllipses(const std::vector<SphereEllipse>& ellipses, const SphereCamera
   }
 }
 
+// 4 rods: the chart's poles (phi = +-pi/2, where t is undefined and the published single-chart methods fail) are
+// marked by the sphere shader; a small label names whichever pole faces the eye.
+void labelChartPoles(const PanelContext& context, const SphereCamera& camera, ShapeBatch& batch) {
+  const float ascent = context.font.ascent(TextSize::Small);
+  for (const double z : {1.0, -1.0}) {
+    const V3 pole{0, 0, z};
+    const V3 eye = camera.eye();
+    if (!(eye.x * pole.x + eye.y * pole.y + eye.z * pole.z > 1.0)) continue;  // behind the sphere
+    const P2 at = camera.project(pole);
+    const std::string text = "chart pole";
+    const float width = context.font.width(text, TextSize::Small);
+    const float x = std::clamp(at.x + 0.9f * ascent, context.rect.x, context.rect.x + context.rect.width - width);
+    const float y = std::clamp(at.y - 0.6f * ascent, context.rect.y + ascent, context.rect.y + context.rect.height);
+    const ColorRGB& b = context.settings.background;
+    batch.rect(x - 0.2f * ascent, y - 1.1f * ascent, x + width + 0.2f * ascent, y + 0.35f * ascent,
+               {b.r, b.g, b.b, 0.7f});
+    context.font.draw(batch, text, TextSize::Small, x, y, palette::softInk);
+  }
+}
+
 // The strip at the panel's right kept for the colour bar (the sphere is framed in the rest).
 float colorBarStrip(const PixelRect& rect) { return std::min(0.24f * rect.width, 0.45f * rect.height); }
 
@@ -269,6 +290,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   const Placement placement{space == ViewSpace::Sphere, kTubeRadius};
   if (space == ViewSpace::Circle) drawEquator(camera, batch);
   if (space == ViewSpace::Ball) drawBallGuide(context, camera, batch);
+  if (space == ViewSpace::Sphere) labelChartPoles(context, camera, batch);
   if (decoration) {
     const float pad = 0.02f * context.rect.height;
     const Placement onSurface{true, 0.004};

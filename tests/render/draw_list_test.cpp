@@ -173,7 +173,7 @@ TEST(DrawList, SideBySideCaptionsSitUnderTheirLinkages) {
   const DrawList list = composer.compose(frame);
   const PixelRect panel = list.panels[2].rect;
   const PixelRect column{panel.x, panel.y, panel.width / 2, panel.height};
-  const float boxBottom = fitFrameView(frame, column).boxBottom;
+  const float boxBottom = fitFrameView(frame, column, captionHeight(composer.font())).boxBottom;
   const float line = composer.font().lineHeight(TextSize::Small);
   float lowest = 0;
   std::size_t glyphs = 0;
@@ -210,6 +210,16 @@ TEST(DrawList, AStopIsExplainedWhereThereIsRoom) {
       EXPECT_EQ(explained, plain) << "an explanation squeezed into a small frame";
     }
   }
+}
+
+// Issue 12: the chart pole facing the eye is named in the sphere panel; a pole on the silhouette or behind the
+// sphere is not (the camera level with the equator sees neither).
+TEST(DrawList, TheChartPoleFacingTheEyeIsLabelled) {
+  ViewSettings view = fourPanels();
+  const FrameState frame = syntheticFrame(2.0, 120);
+  EXPECT_TRUE(hasProgram(FrameComposer(view, {640, 360}).compose(frame).panels[1].shapes, ShapeProgram::Glyph));
+  view.camera.viewDirection = {1, 0, 0};
+  EXPECT_FALSE(hasProgram(FrameComposer(view, {640, 360}).compose(frame).panels[1].shapes, ShapeProgram::Glyph));
 }
 
 TEST(DrawList, ShapesStayNearTheirPanel) {

@@ -7,7 +7,9 @@
 
 #include "fixtures/synthetic_frame.hpp"
 #include "reference_frames.hpp"
+#include "render/frame_composer.hpp"
 #include "render/panel_layout.hpp"
+#include "render/panels.hpp"
 #include "render/plane_view.hpp"
 #include "render/sphere_camera.hpp"
 
@@ -129,7 +131,10 @@ TEST_F(PixelProbe, CurrentStateBehindTheSphereIsGhostedThroughIt) {
 }
 
 TEST_F(PixelProbe, PinsAreCharcoal) {
-  const auto view = render::fitFrameView(frame, panelRect(settings, PanelKind::Linkage));
+  // Side by side (one run): the run's name has its line at the foot of the panel.
+  const render::FrameComposer composer(settings, testing::kSmallSize);
+  const auto view = render::fitFrameView(frame, panelRect(settings, PanelKind::Linkage),
+                                         render::captionHeight(composer.font()));
   for (double x : {0.0, frame.runs[0].baseLength}) {
     const render::P2 pin = view(x, 0);
     const float rod = std::max(1.5f, float(0.045 * view.scale));
