@@ -12,7 +12,7 @@ namespace sl {
 
 namespace {
 
-constexpr double kFailedBand = 30;  // where failed points are drawn, above a rule at 10 (the y axis ends at 1e2)
+constexpr double kFailedBand = 30;  // where failed points are drawn, above a rule at 10 (the y axis ends at 60)
 constexpr double kFloor = 1e-17;    // zero drift or error is drawn here on the log axis
 constexpr size_t kMaxSeriesPerPanel = 8;  // beyond this a chart becomes small multiples, one panel per integrator
 
@@ -118,7 +118,7 @@ std::string panelPlot(const ChartSpec& spec, const std::vector<const Series*>& s
       if (it == failed.end()) it = failed.insert(failed.end(), {p->method, {}});
       it->second.push_back(x + " " + formatNumber(kFailedBand));
     }
-    if (lines.empty()) lines.push_back("NaN NaN");
+    if (lines.empty()) continue;  // every point failed: its crosses below stand for it, no empty legend entry
     const std::string block = tag + "s" + std::to_string(i);
     datablocks += gnuplotDatablock(block, lines);
     const auto& first = *series[i]->front();
@@ -135,6 +135,7 @@ std::string panelPlot(const ChartSpec& spec, const std::vector<const Series*>& s
             workPrecisionStyle(failed[k].first, Integrator::Rkf78).color + "' title " +
             gnuplotQuote("failed: " + nameOf(failed[k].first)) + ", ";
   }
+  if (plot == "plot ") return "plot NaN notitle\n";  // nothing at all to draw (no measurement in this panel)
   plot.resize(plot.size() - 2);
   return plot + "\n";
 }
@@ -183,9 +184,15 @@ std::string chartScript(const std::string& title, const ChartSpec& spec, const s
   body +=
       "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset grid xtics ytics lc rgb '#dddddd'\n";
   body += "set xlabel " + gnuplotQuote(spec.x.label) + "\nset ylabel " + gnuplotQuote(spec.y.label) + "\n";
+  // The y axis ends just above the failure band; its labels are the decades up to 1 (at most eight of them) and
+  // 'failed' at the band, so no decade label crowds it.
   body += "set xrange [" + formatNumber(xFrom) + ":" + formatNumber(xTo) + "]\nset yrange [" + formatNumber(yFrom) +
-          ":1e2]\n";
-  body += "set ytics add ('failed' " + formatNumber(kFailedBand) + ")\nset key outside right top noenhanced\n";
+          ":" + formatNumber(2 * kFailedBand) + "]\n";
+  const int lowestDecade = static_cast<int>(std::lround(std::log10(yFrom)));
+  const int stride = std::max(1, (-lowestDecade + 7) / 8);
+  std::string tics = "set ytics (";
+  for (int e = 0; e >= lowestDecade; e -= stride) tics += "'10^{" + std::to_string(e) + "}' 1e" + std::to_string(e) + ", ";
+  body += tics + "'failed' " + formatNumber(kFailedBand) + ")\nset key outside right top noenhanced\n";
   body += "set arrow from graph 0, first 10 to graph 1, first 10 nohead lc rgb '#bbbbbb' dt 3\n";
   for (size_t k = 0; k < panels.size(); ++k) {
     if (panels.size() > 1) body += "set title " + gnuplotQuote(panelTitles[k]) + " noenhanced\n";

@@ -142,8 +142,17 @@ TEST(WorkPrecisionCharts, TwentySeriesBecomeOnePanelPerIntegratorWithAFailureEnt
     EXPECT_EQ(count, kIntegrators.size()) << entry;  // once per panel, in the method's colour
   }
   EXPECT_EQ(script.find("failed: ambient"), std::string::npos);
-  // Errors from 1e-8 to 1e-5: the y axis starts at 1e-8, not at the old fixed 1e-17.
-  EXPECT_NE(script.find("set yrange [1e-08:1e2]"), std::string::npos) << script;
+  // Errors from 1e-8 to 1e-5: the y axis starts at 1e-8, not at the old fixed 1e-17, and ends just above the
+  // failure band, whose label no decade label crowds (issue 12: 10^2 sat right above 'failed').
+  EXPECT_NE(script.find("set yrange [1e-08:60]"), std::string::npos) << script;
+  EXPECT_NE(script.find("'10^{0}' 1e0, "), std::string::npos) << script;
+  EXPECT_EQ(script.find("1e1,"), std::string::npos) << script;
+  EXPECT_NE(script.find("'failed' 30)"), std::string::npos) << script;
+  // A method x integrator whose every point failed has no line entry in the legend, only its crosses.
+  for (const auto& p : everySeries()) {
+    const bool listed = script.find("title '" + nameOf(p.method) + " " + nameOf(p.integrator) + "'") != std::string::npos;
+    EXPECT_EQ(listed, !p.measurement.failed()) << nameOf(p.method) << " " << nameOf(p.integrator);
+  }
   // Four series or fewer stay one chart.
   std::vector<WorkPrecisionPoint> few;
   for (const auto& p : everySeries())
