@@ -200,6 +200,24 @@ TEST_F(ProcessFaults, FullDiskGivesAClearErrorAndKeepsCompletedFrames) {
   expectOnlyCompleteFrames("disk/frames");
 }
 
+// Issues 13.2 and 13.3: a CSV that does not fit, written by simulate to a file or to standard output, is a failure
+// (exit 3, the reason and what is incomplete), never a CSV cut mid-row with exit 0; a --csv file leaves nothing
+// behind (no CSV, no temporary).
+TEST_F(ProcessFaults, ACsvThatDoesNotFitIsAFailureNotACutFile) {
+  Mount disk(folder_.path() / "csv-disk", "size=64k");
+  if (!disk.mounted()) GTEST_SKIP() << "mounting a tmpfs is not permitted here (needs root)";
+  const std::string simulate = testing::shellQuoted(linkageBinary()) + " simulate small.json --dt 0.0001";
+  const ProcessResult toFile = testing::runShell(simulate + " --csv csv-disk/out.csv", folder_.path(), 120);
+  EXPECT_EQ(toFile.code, 3) << toFile.err;
+  EXPECT_NE(toFile.err.find("No space left"), std::string::npos) << toFile.err;
+  EXPECT_TRUE(fs::is_empty(folder_.path() / "csv-disk")) << "a failed --csv left a file";
+  const ProcessResult toStdout = testing::runShell(simulate + " > csv-disk/stdout.csv", folder_.path(), 120);
+  EXPECT_EQ(toStdout.code, 3) << toStdout.err;
+  EXPECT_NE(toStdout.err.find("cannot write the CSV to standard output: No space left on device"), std::string::npos)
+      << toStdout.err;
+  EXPECT_NE(toStdout.err.find("incomplete"), std::string::npos) << toStdout.err;
+}
+
 // Frames that cannot fit are refused before the first is written, with the numbers in the message.
 TEST_F(ProcessFaults, RenderThatCannotFitIsRefusedUpFront) {
   Mount disk(folder_.path() / "small-disk", "size=64k");
