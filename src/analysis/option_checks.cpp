@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "analysis/csv_table.hpp"
+#include "contracts/limits.hpp"
 
 namespace sl {
 
@@ -18,6 +19,14 @@ void requirePositive(const std::string& option, const std::vector<double>& value
     if (!(value > 0) || !std::isfinite(value))
       throw std::invalid_argument(option + ": expected positive finite numbers, found " +
                                   (std::isfinite(value) ? formatNumber(value) : std::isnan(value) ? "nan" : "inf"));
+}
+
+void requireTolerances(const std::string& option, const std::vector<double>& values) {
+  requirePositive(option, values);
+  for (double value : values)
+    if (value < limits::kMinTolerance || value > limits::kMaxTolerance)
+      throw std::invalid_argument(option + ": found " + formatNumber(value) + "; expected tolerances from " +
+                                  formatNumber(limits::kMinTolerance) + " to " + formatNumber(limits::kMaxTolerance));
 }
 
 }  // namespace sl

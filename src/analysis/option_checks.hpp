@@ -34,4 +34,8 @@ auto parseKindsOption(const std::string& option, const std::string& what, const 
 // Throws std::invalid_argument unless every value is finite and positive.
 void requirePositive(const std::string& option, const std::vector<double>& values);
 
+// Throws std::invalid_argument unless every value is an adaptive tolerance the runs accept
+// (limits::kMinTolerance to kMaxTolerance, as in a scene's runs[i].tolerance).
+void requireTolerances(const std::string& option, const std::vector<double>& values);
+
 }  // namespace sl

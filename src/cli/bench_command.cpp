@@ -63,7 +63,7 @@ void runBench(BenchArguments& args) {
   args.options.methods = parseKindsOption("--methods", "method", args.methods, kMethods);
   args.options.integrators = parseKindsOption("--integrators", "integrator", args.integrators, kIntegrators);
   requirePositive("--steps", args.options.steps);
-  requirePositive("--tolerances", args.options.tolerances);
+  requireTolerances("--tolerances", args.options.tolerances);
   requirePositive("--targets", args.targets);
   for (const NamedStart& start : chosenStarts(args.starts)) {  // the error grids, checked before any work
     try {

@@ -58,6 +58,21 @@ TEST(HostileCli, NonFiniteNumbersAreRefusedEverywhere) {
   }
 }
 
+// 13.15: tolerances outside what a run accepts (a scene's 1e-16 to 0.1) are refused by bench and stability before
+// any work, as the scene loader refuses them.
+TEST(HostileCli, TolerancesOutsideTheRunsRangeAreRefused) {
+  TempFolder folder;
+  for (const std::vector<std::string>& command :
+       {std::vector<std::string>{"stability", "--tolerance", "1e-300", "--grid", "2", "--no-charts"},
+        std::vector<std::string>{"stability", "--tolerance", "0.5", "--grid", "2", "--no-charts"},
+        std::vector<std::string>{"bench", "--tolerances", "1e-6,1e-300", "--no-charts", "--out", "b"}}) {
+    const ProcessResult result = runLinkage(command, folder.path(), 60);
+    EXPECT_EQ(result.code, 2) << command[1] << " " << command[2] << ": " << result.err;
+    EXPECT_NE(result.err.find("from 1e-16 to 0.1"), std::string::npos) << result.err;
+  }
+  EXPECT_FALSE(fs::exists(folder.path() / "b"));
+}
+
 // 13.16: shard numbers beyond int and merges of missing or corrupt shards are input errors (2), named.
 TEST(HostileCli, ShardAndMergeProblemsAreInputErrors) {
   TempFolder folder;
