@@ -518,26 +518,54 @@ std::vector<SceneProblem> checkFrameCount(double duration, int fps) {
 Scene parseScene(const std::string& text, const std::string& file, const std::vector<std::string>& overrides) {
   json document;
   // A key twice in one object: nlohmann keeps the last silently, which could hide a whole section. Found while
-  // parsing, with the chain of keys that leads to it.
+  // parsing, with the JSON path that leads to it (array elements by their index: runs[1].name).
   std::vector<SceneProblem> duplicates;
-  std::vector<std::set<std::string>> keysOfObject;
-  std::vector<std::string> keyPath;
-  const json::parser_callback_t noticeDuplicates = [&](int depth, json::parse_event_t event, json& parsed) {
-    if (event == json::parse_event_t::object_start) {
-      keysOfObject.emplace_back();
-    } else if (event == json::parse_event_t::object_end && !keysOfObject.empty()) {
-      keysOfObject.pop_back();
-    } else if (event == json::parse_event_t::key && !keysOfObject.empty()) {
-      const std::string key = parsed.get<std::string>();
-      keyPath.resize(static_cast<std::size_t>(std::max(depth - 1, 0)));
-      keyPath.push_back(key);
-      if (!keysOfObject.back().insert(key).second) {
-        std::string path;
-        for (const std::string& part : keyPath)  // array levels have no key: runs[i].name shows as runs.name
-          if (!part.empty()) path += (path.empty() ? "" : ".") + part;
-        duplicates.push_back({path, "appears twice in one object; expected each key once (the later one would "
-                                    "silently replace the earlier)"});
+  struct Level {
+    bool isArray = false;
+    std::string component;  // how this level is named in a path: "runs", "[1]" (empty for the document)
+    std::set<std::string> keys;
+    std::string pendingKey;  // objects: the key whose value comes next
+    std::size_t elements = 0;  // arrays: how many elements so far
+  };
+  std::vector<Level> levels;
+  const auto pathTo = [&levels](const std::string& key) {
+    std::string path;
+    for (const Level& level : levels)
+      if (!level.component.empty())
+        path += (path.empty() || level.component.front() == '[' ? "" : ".") + level.component;
+    return path + (path.empty() ? "" : ".") + key;
+  };
+  const auto nextComponent = [&levels]() -> std::string {
+    if (levels.empty()) return "";
+    Level& parent = levels.back();
+    return parent.isArray ? "[" + std::to_string(parent.elements++) + "]" : parent.pendingKey;
+  };
+  const json::parser_callback_t noticeDuplicates = [&](int, json::parse_event_t event, json& parsed) {
+    switch (event) {
+      case json::parse_event_t::object_start:
+      case json::parse_event_t::array_start: {
+        Level level;
+        level.isArray = event == json::parse_event_t::array_start;
+        level.component = nextComponent();
+        levels.push_back(std::move(level));
+        break;
       }
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end:
+        if (!levels.empty()) levels.pop_back();
+        break;
+      case json::parse_event_t::key:
+        if (!levels.empty()) {
+          const std::string key = parsed.get<std::string>();
+          levels.back().pendingKey = key;
+          if (!levels.back().keys.insert(key).second)
+            duplicates.push_back({pathTo(key), "appears twice in one object; expected each key once (the later one "
+                                               "would silently replace the earlier)"});
+        }
+        break;
+      case json::parse_event_t::value:
+        if (!levels.empty() && levels.back().isArray) ++levels.back().elements;
+        break;
     }
     return true;
   };
