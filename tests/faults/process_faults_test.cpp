@@ -270,6 +270,13 @@ TEST_F(ProcessFaults, NoFreeInodesKeepsTheFinishedFramesResumable) {
                                             folder_.path());
   EXPECT_EQ(validate.code, 2);
   EXPECT_NE(validate.err.find("no space left (or no free inodes)"), std::string::npos) << validate.err;
+  // Inodes freed, --resume renders only what is missing and ends with the uninterrupted render's bytes.
+  for (int k = 0; fs::remove(folder_.path() / "few-inodes" / ("inode" + std::to_string(k))); ++k) {
+  }
+  const ProcessResult resumed = render({"--resume", "--out", "few-inodes/frames"});
+  EXPECT_EQ(resumed.code, 0) << resumed.err;
+  EXPECT_NE(resumed.err.find(std::to_string(finished) + " already complete"), std::string::npos) << resumed.err;
+  EXPECT_EQ(renderFiles(folder_.path() / "few-inodes/frames"), reference_);
 }
 
 TEST_F(ProcessFaults, ReadOnlyFolderGivesAClearErrorAndKeepsItsFrames) {
