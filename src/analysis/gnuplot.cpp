@@ -44,12 +44,15 @@ void renderGnuplotChart(const std::string& script, const std::string& pngPath) {
     std::ofstream out(scriptPath, std::ios::trunc);
     if (!out) throw std::runtime_error(scriptPath + ": cannot open for writing");
     out << script;
+    out.close();
+    if (!out) throw std::runtime_error(scriptPath + ": cannot write (disk full?)");
   }
   // gnuplot reads the script from the pipe; its own messages go to our stderr.
   FILE* pipe = popen("gnuplot", "w");
   if (!pipe) throw std::runtime_error("cannot start gnuplot (install the Debian package gnuplot-nox)");
-  std::fwrite(script.data(), 1, script.size(), pipe);
+  const bool sent = std::fwrite(script.data(), 1, script.size(), pipe) == script.size();
   const int status = pclose(pipe);
+  if (!sent) throw std::runtime_error("cannot send " + scriptPath + " to gnuplot");
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
     throw std::runtime_error("gnuplot failed on " + scriptPath + " (exit status " +
                              std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +

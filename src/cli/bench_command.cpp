@@ -19,6 +19,7 @@
 #include "contracts/time_grid.hpp"
 #include "contracts/registry.hpp"
 #include "output/atomic_file.hpp"
+#include "output/temporary_file.hpp"
 
 namespace sl {
 
@@ -76,6 +77,7 @@ void runBench(BenchArguments& args) {
   if (args.charts && !gnuplotAvailable())
     throw std::runtime_error("charts need gnuplot with pngcairo: apt-get install gnuplot-nox (or pass --no-charts)");
   std::filesystem::create_directories(args.out);
+  output::removeStaleTemporaries(args.out);  // what a killed run of this command left (docs/hardening.md)
   const bool showProgress = isatty(STDERR_FILENO);
   long done = 0;
   const auto points = runWorkPrecision(starts, args.options, [&](const WorkPrecisionPoint& p) {

@@ -21,6 +21,7 @@
 #include "contracts/time_grid.hpp"
 #include "contracts/registry.hpp"
 #include "output/atomic_file.hpp"
+#include "output/temporary_file.hpp"
 
 namespace sl {
 
@@ -117,6 +118,7 @@ void runStability(StabilityArguments& args) {
   if (args.charts && !gnuplotAvailable())
     throw std::runtime_error("charts need gnuplot with pngcairo: apt-get install gnuplot-nox (or pass --no-charts)");
   std::filesystem::create_directories(args.out);
+  output::removeStaleTemporaries(args.out);  // what a killed run of this command left (docs/hardening.md)
 
   if (args.merge) {
     CsvTable merged;

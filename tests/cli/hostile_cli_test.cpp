@@ -23,6 +23,16 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// A scene that is slow on purpose: a tiny tolerance over a long time with one frame per second, so that
+// computing the motion alone takes far longer than any test waits.
+void writeSlowScene(const fs::path& file) {
+  std::string scene = readFile(shippedScene("default.json"));
+  scene.replace(scene.find("\"duration\": 20.0"), 16, "\"duration\": 100000.0");
+  scene.replace(scene.find("\"tolerance\": 1e-10"), 18, "\"tolerance\": 1e-16");
+  scene.replace(scene.find("\"fps\": 30"), 9, "\"fps\": 1");
+  writeFile(file, scene);
+}
+
 // 13.1: a NaN or absurd error-grid interval was a SIGSEGV (an empty grid) or a 5e11-sample allocation.
 TEST(HostileCli, ErrorGridIntervalsAreCheckedBeforeAnyWork) {
   TempFolder folder;
@@ -56,6 +66,32 @@ TEST(HostileCli, NonFiniteNumbersAreRefusedEverywhere) {
     EXPECT_EQ(result.code, 2) << command[0] << " " << command[2] << " " << command[3] << ": " << result.err;
     EXPECT_NE(result.err.find("expected a finite number"), std::string::npos) << result.err;
   }
+}
+
+// A killed command's temporaries do not pile up in an analysis folder: bench and stability sweep what writers that
+// no longer exist left there, as render does in its folders (a live writer's temporaries stay).
+TEST(HostileCli, AnalysisCommandsSweepAKilledRunsTemporaries) {
+  TempFolder folder;
+  writeSlowScene(folder.path() / "slow.json");
+  fs::create_directories(folder.path() / "st");
+  // A simulate killed while it streams its CSV leaves its temporary beside the CSV it never finished.
+  const ProcessResult killed = runShell(shellQuoted(linkageBinary()) +
+                                            " simulate slow.json --csv st/run.csv & pid=$!; sleep 1; kill -KILL $pid; "
+                                            "wait $pid; true",
+                                        folder.path(), 60);
+  ASSERT_EQ(killed.code, 0) << killed.err;
+  auto temporaries = [&] {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(folder.path() / "st"))
+      if (entry.path().filename().string().find(".tmp.") != std::string::npos) names.push_back(entry.path().string());
+    return names;
+  };
+  ASSERT_EQ(temporaries().size(), 1u) << "the killed simulate left no temporary to sweep";
+  const ProcessResult sweep =
+      runLinkage({"stability", "--grid", "2", "--no-charts", "--no-reference", "--out", "st"}, folder.path(), 120);
+  EXPECT_EQ(sweep.code, 0) << sweep.err;
+  EXPECT_TRUE(temporaries().empty());
+  EXPECT_FALSE(fs::exists(folder.path() / "st" / "run.csv"));
 }
 
 // 13.15: tolerances outside what a run accepts (a scene's 1e-16 to 0.1) are refused by bench and stability before
@@ -124,16 +160,6 @@ TEST(HostileCli, EveryCommandsStandardOutputIsCheckedBeforeExit) {
     const ProcessResult file = runShell(shellQuoted(linkageBinary()) + " " + command + " > out.txt", folder.path());
     EXPECT_EQ(file.code, 0) << file.err;
   }
-}
-
-// A scene that is slow on purpose: a tiny tolerance over a long time with one frame per second, so that
-// computing the motion alone takes far longer than any test waits.
-void writeSlowScene(const fs::path& file) {
-  std::string scene = readFile(shippedScene("default.json"));
-  scene.replace(scene.find("\"duration\": 20.0"), 16, "\"duration\": 100000.0");
-  scene.replace(scene.find("\"tolerance\": 1e-10"), 18, "\"tolerance\": 1e-16");
-  scene.replace(scene.find("\"fps\": 30"), 9, "\"fps\": 1");
-  writeFile(file, scene);
 }
 
 struct SignalAnswer {
