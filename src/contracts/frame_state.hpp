@@ -41,6 +41,7 @@ struct RunFrame {
   double stopTime = 0;     // when it stopped (valid if stopped)
   std::string stopReason;  // why, e.g. "pole-fold-back" (valid if stopped)
   std::string stopWhy;     // what that means, in a sentence (the reason's meaning in contracts/registry.hpp)
+  std::string stopMeasured;  // a watchdog's reading against its limit, e.g. "energy drift 2.11 > limit 1" (or empty)
   double baseLength = 3;   // L of this run's own linkage (runs may differ in L and masses, never in n)
 
   // Linkage panel: the n-1 interior hinges at the last valid time (frozen once stopped).

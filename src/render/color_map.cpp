@@ -85,7 +85,9 @@ void drawColorBar(const ColorScale& scale, const std::string& label, const std::
   const float x1 = area.x + area.width;
   const float x0 = x1 - barWidth;
   const float top = area.y + 2.2f * line;
-  const float bottom = area.y + area.height - (note.empty() ? 0.6f : 1.8f) * line;
+  // The note, word-wrapped onto at most two lines under the bar.
+  const std::vector<std::string> noteLines = font.wrapped(note, TextSize::Small, area.width, 2);
+  const float bottom = area.y + area.height - (noteLines.empty() ? 0.6f : 0.8f + float(noteLines.size())) * line;
   if (bottom - top < 4 * line) return;  // too small to read: leave it out rather than draw it illegibly
   // The bar covers the positions the data reaches, highest at the top.
   const double lo = scale.lowest(), hi = scale.highest();
@@ -124,10 +126,10 @@ void drawColorBar(const ColorScale& scale, const std::string& label, const std::
   // Label and note right-aligned to the bar, shortened with an ellipsis where the strip is narrower than they are.
   const std::string title = font.fitted(label, TextSize::Small, area.width);
   font.draw(batch, title, TextSize::Small, x1 - font.width(title, TextSize::Small), area.y + 0.4f * line + ascent, ink);
-  if (!note.empty()) {
-    const std::string shown = font.fitted(note, TextSize::Small, area.width);
-    font.draw(batch, shown, TextSize::Small, x1 - font.width(shown, TextSize::Small), bottom + 0.4f * line + ascent,
-              palette::softInk);
+  float noteBaseline = bottom + 0.4f * line + ascent;
+  for (const std::string& text : noteLines) {
+    font.draw(batch, text, TextSize::Small, x1 - font.width(text, TextSize::Small), noteBaseline, palette::softInk);
+    noteBaseline += line;
   }
 }
 

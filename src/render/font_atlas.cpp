@@ -1,5 +1,7 @@
 #include "render/font_atlas.hpp"
 
+#include <sstream>
+
 #include <algorithm>
 #include <fstream>
 #include <iterator>
@@ -47,6 +49,20 @@ std::string FontAtlas::fitted(const std::string& utf8, TextSize size, float maxW
     if (width(cut + ellipsis, size) <= maxWidth) return cut + ellipsis;
   }
   return width(ellipsis, size) <= maxWidth ? ellipsis : "";
+}
+
+std::vector<std::string> FontAtlas::wrapped(const std::string& utf8, TextSize size, float maxWidth,
+                                            std::size_t maxLines) const {
+  std::vector<std::string> lines;
+  std::istringstream words(utf8);
+  for (std::string word; words >> word;) {
+    if (!lines.empty() && (lines.size() == maxLines || width(lines.back() + " " + word, size) <= maxWidth))
+      lines.back() += " " + word;  // the last allowed line takes the rest, fitted below
+    else if (maxLines > 0)
+      lines.push_back(word);
+  }
+  for (std::string& line : lines) line = fitted(line, size, maxWidth);
+  return lines;
 }
 
 std::vector<std::uint32_t> decodeUtf8(const std::string& text) {

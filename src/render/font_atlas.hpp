@@ -26,6 +26,9 @@ class FontAtlas {
   // The text as it fits in maxWidth pixels: whole, or cut at a code point with an ellipsis (U+2026) added;
   // empty if not even the ellipsis fits.
   std::string fitted(const std::string& utf8, TextSize size, float maxWidth) const;
+  // The text word-wrapped into lines of at most maxWidth pixels, at most maxLines of them (the last fitted with
+  // an ellipsis if the words do not all fit; a word wider than a line is fitted too).
+  std::vector<std::string> wrapped(const std::string& utf8, TextSize size, float maxWidth, std::size_t maxLines) const;
   float ascent(TextSize size) const;  // pixels above the baseline
   float lineHeight(TextSize size) const;
   // Draws UTF-8 text with its baseline at y, starting at x; returns the x after the last glyph.

@@ -40,8 +40,9 @@ void holdChain(int rods, double base, Box& box) {
 
 PlaneView fitBox(const Box& box, const PixelRect& r) {
   const auto [x0, x1, y0, y1] = box;
-  const double margin = 0.08;
-  const double scale = std::min(r.width * (1 - 2 * margin) / (x1 - x0), r.height * (1 - 2 * margin) / (y1 - y0));
+  // 8% of each side, and at least 6 pixels: side-by-side chains in small frames never touch their neighbours.
+  const double marginX = std::max(0.08 * r.width, 6.0), marginY = std::max(0.08 * r.height, 6.0);
+  const double scale = std::max(1e-3, std::min((r.width - 2 * marginX) / (x1 - x0), (r.height - 2 * marginY) / (y1 - y0)));
   const double originY = r.y + 0.5 * r.height + scale * 0.5 * (y0 + y1);
   return {scale, r.x + 0.5 * r.width - scale * 0.5 * (x0 + x1), originY, float(originY - scale * y0)};
 }

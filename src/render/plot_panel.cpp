@@ -142,12 +142,16 @@ void drawStop(const PlotSeries& series, const Axis& x, const Axis& y, const Plot
     break;
   }
   const float arm = std::max(3.5f, 3.2f * halfWidth), width = std::max(0.9f, 0.8f * halfWidth);
+  // Inside the plot area, clear of the tick labels round it (a stop at t = 0 sits in the corner).
+  at.x = std::clamp(at.x, area.x0 + arm + 1, std::max(area.x0 + arm + 1, area.x1 - arm - 1));
+  at.y = std::clamp(at.y, area.y0 + arm + 1, std::max(area.y0 + arm + 1, area.y1 - arm - 1));
   batch.capsule({at.x - arm, at.y - arm}, {at.x + arm, at.y + arm}, width, palette::stopRed);
   batch.capsule({at.x - arm, at.y + arm}, {at.x + arm, at.y - arm}, width, palette::stopRed);
 }
 
+// `halfWidth`: this line's (nested, runStyleWidth); `stopHalfWidth`: the stop cross's, the same for every line.
 void drawSeries(const PlotSeries& series, const Axis& x, const Axis& y, const PlotArea& area, float halfWidth,
-                ShapeBatch& batch) {
+                float stopHalfWidth, ShapeBatch& batch) {
   std::vector<PolylinePoint> points;
   const std::size_t count = std::min(series.times.size(), series.values.size());
   for (std::size_t i = 0; i < count; ++i) {
@@ -161,7 +165,7 @@ void drawSeries(const PlotSeries& series, const Axis& x, const Axis& y, const Pl
   }
   if (points.size() == 1) batch.disc(points[0].at, std::max(1.6f, 1.45f * halfWidth), points[0].color);
   batch.polyline(points);
-  drawStop(series, x, y, area, halfWidth, batch);
+  drawStop(series, x, y, area, stopHalfWidth, batch);
   // Marked times (a Jacobi field's zeros): a ring on the time axis and a faint line up through the plot.
   for (const double t : series.markTimes) {
     if (!std::isfinite(t) || t < x.lo || t > x.hi) continue;
@@ -280,13 +284,19 @@ void drawPlotPanel(const PanelContext& c, int plotIndex, ShapeBatch& batch) {
   bool anyDrawn = false;
   for (std::size_t k = 0; k < plot.series.size(); ++k) {
     const PlotSeries& series = plot.series[k];
-    drawSeries(series, x, y, area, seriesWidth(c.font, k, plot.series.size()), batch);
+    drawSeries(series, x, y, area, seriesWidth(c.font, k, plot.series.size()), seriesHalfWidth(c.font), batch);
     for (double v : series.values) anyDrawn = anyDrawn || drawable(v, plot.logY);
   }
-  if (!anyDrawn && !plot.emptyNote.empty()) {  // a plot that stays empty says why
-    const std::string note = c.font.fitted(plot.emptyNote, TextSize::Small, area.x1 - area.x0 - 8);
-    c.font.draw(batch, note, TextSize::Small, 0.5f * (area.x0 + area.x1 - c.font.width(note, TextSize::Small)),
-                0.5f * (area.y0 + area.y1), palette::softInk);
+  if (!anyDrawn && !plot.emptyNote.empty()) {  // a plot that stays empty says why, in as many lines as fit
+    const std::size_t room = std::size_t(std::max(1.0f, (area.y1 - area.y0) / line - 0.5f));
+    const std::vector<std::string> note =
+        c.font.wrapped(plot.emptyNote, TextSize::Small, area.x1 - area.x0 - ascent, std::min<std::size_t>(room, 3));
+    float y = 0.5f * (area.y0 + area.y1) - 0.5f * line * float(note.size() - 1) + 0.4f * ascent;
+    for (const std::string& text : note) {
+      c.font.draw(batch, text, TextSize::Small, 0.5f * (area.x0 + area.x1 - c.font.width(text, TextSize::Small)), y,
+                  palette::softInk);
+      y += line;
+    }
   }
   if (layout.legendShown)
     layLegend(c, plot, layout.legendX, c.rect.x + c.rect.width - 0.5f * ascent, layout.legendBaseline, line, 2, &batch);

@@ -123,7 +123,7 @@ void drawBall(const RunFrame& run, float style, const SphereCamera& camera, cons
   const V3 centre = ballPlacement.place(run.current);
   if (!drawable(run.current)) return;
   const float pixelsPerUnit = float(camera.pixelsPerUnitAt(centre));
-  const float radius = std::max(2.5f, float(kBallRadius) * pixelsPerUnit) * (0.45f + 0.55f * style);
+  const float radius = std::max(3.5f, float(kBallRadius) * pixelsPerUnit) * (0.45f + 0.55f * style);
   const P2 at = camera.project(centre);
   // First a ghost that nothing hides: where the sphere is in front of the ball (behind it, or past its outline)
   // the state is still seen through it; where the ball shows, the ball covers its ghost.
@@ -134,6 +134,8 @@ void drawBall(const RunFrame& run, float style, const SphereCamera& camera, cons
   const Occludable world = ballPlacement.world(centre);
   // A stopped run's ball sits on a red halo (a larger ball behind it, hidden with it by the sphere).
   if (run.stopped) batch.disc(at, radius + 2.5f, palette::stopRed, true, 0.2f, world, (radius + 2.5f) / pixelsPerUnit);
+  // A thin dark rim sets the ball off from its own path, which has its colour (small frames lost it in the tube).
+  else batch.disc(at, radius + 1.0f, palette::withAlpha(palette::ink, 0.75f), false, 0, world, (radius + 1.0f) / pixelsPerUnit);
   batch.disc(at, radius, toRgba(run.color), true, 0.55f, world, radius / pixelsPerUnit);
 }
 
@@ -269,7 +271,7 @@ void labelChartPoles(const PanelContext& context, const SphereCamera& camera, Sh
     const float y = std::clamp(at.y - 0.6f * ascent, context.rect.y + ascent, context.rect.y + context.rect.height);
     const ColorRGB& b = context.settings.background;
     batch.rect(x - 0.2f * ascent, y - 1.1f * ascent, x + width + 0.2f * ascent, y + 0.35f * ascent,
-               {b.r, b.g, b.b, 0.7f});
+               {b.r, b.g, b.b, 0.6f});
     context.font.draw(batch, text, TextSize::Small, x, y, palette::softInk);
   }
 }
@@ -290,7 +292,6 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   const Placement placement{space == ViewSpace::Sphere, kTubeRadius};
   if (space == ViewSpace::Circle) drawEquator(camera, batch);
   if (space == ViewSpace::Ball) drawBallGuide(context, camera, batch);
-  if (space == ViewSpace::Sphere) labelChartPoles(context, camera, batch);
   if (decoration) {
     const float pad = 0.02f * context.rect.height;
     const Placement onSurface{true, 0.004};
@@ -318,6 +319,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   for (const RunFrame& run : context.frame.runs) drawConjugatePoints(run, camera, placement, batch);
   if (space == ViewSpace::Ball) drawBallStart(context, camera, batch);
   for (std::size_t k = 0; k < runs.size(); ++k) drawBall(runs[k], runStyleWidth(k, runs.size()), camera, placement, batch);
+  if (space == ViewSpace::Sphere) labelChartPoles(context, camera, batch);  // over the paths: never struck through
   const SphereLook look = colored ? SphereLook::Colored : space == ViewSpace::Sphere ? SphereLook::Opaque : SphereLook::Glass;
   return {camera, look};
 }

@@ -39,17 +39,22 @@ void drawSwatch(const PanelContext& c, std::size_t k, TextSize size, float x, fl
   batch.capsule({x + half, mid}, {x + 2.0f * swatch - half, mid}, half, toRgba(c.frame.runs[k].color), true, 0.4f);
 }
 
-// The runs, each its swatch, name, method and (once stopped) why, with what that means if `explain`, flowing left
-// to right from the baseline after `top` and wrapping. Draws into `batch` if given; returns the bottom of the last
+// How much of a stop the run rows say: its reason only; with the watchdog's reading against its limit; and with a
+// line of its own saying what the reason means.
+enum class StopDetail { Reason, Measured, Explained };
+
+// The runs, each its swatch, name, method and (once stopped) why, as much of it as `detail` says, flowing left to
+// right from the baseline after `top` and wrapping. Draws into `batch` if given; returns the bottom of the last
 // row either way.
-float flowRuns(const PanelContext& c, TextSize size, bool explain, float pad, float top, ShapeBatch* batch) {
+float flowRuns(const PanelContext& c, TextSize size, StopDetail detail, float pad, float top, ShapeBatch* batch) {
   const float line = c.font.lineHeight(size);
   const float swatch = 0.3f * c.font.ascent(size);
   float x = c.rect.x + pad, y = top + line;
   for (std::size_t k = 0; k < c.frame.runs.size(); ++k) {
     const RunFrame& run = c.frame.runs[k];
     const std::string text = runLine(run);
-    const std::string stop = run.stopped ? "  stopped at t = " + format("%.3g", run.stopTime) + ": " + run.stopReason : "";
+    std::string stop = run.stopped ? "  stopped at t = " + format("%.3g", run.stopTime) + ": " + run.stopReason : "";
+    if (run.stopped && detail != StopDetail::Reason && !run.stopMeasured.empty()) stop += " (" + run.stopMeasured + ")";
     const float width = 2.5f * swatch + c.font.width(text + stop, size) + 2 * pad;
     if (width > c.rect.width) return INFINITY;  // one run alone is wider than the panel: this size does not fit
     if (x > c.rect.x + pad && x + width > c.rect.x + c.rect.width) {
@@ -65,7 +70,7 @@ float flowRuns(const PanelContext& c, TextSize size, bool explain, float pad, fl
   }
   // Below the runs, what each stop means: one line per stopped run, in small text, shortened to the panel.
   for (const RunFrame& run : c.frame.runs) {
-    if (!explain || !run.stopped || run.stopWhy.empty()) continue;
+    if (detail != StopDetail::Explained || !run.stopped || run.stopWhy.empty()) continue;
     y += c.font.lineHeight(TextSize::Small);
     const std::string why =
         c.font.fitted(run.name + " stopped: " + run.stopWhy, TextSize::Small, c.rect.width - 2 * pad);
@@ -93,25 +98,30 @@ void drawTextPanel(const PanelContext& c, ShapeBatch& batch) {
   // equal part and, once stopped, the stop time (the reason needs the room of a larger frame).
   const float firstRow = y + 0.15f * titleLine;
   const float bottom = c.rect.y + c.rect.height;
-  // A stopped run's reason is explained in a sentence where the panel has room for it.
-  for (const auto& [size, explain] : {std::pair{TextSize::Normal, true}, std::pair{TextSize::Normal, false},
-                                      std::pair{TextSize::Small, true}, std::pair{TextSize::Small, false}}) {
-    if (flowRuns(c, size, explain, pad, firstRow, nullptr) <= bottom) {
-      flowRuns(c, size, explain, pad, firstRow, &batch);
-      return;
+  // A stop is said as fully as the panel has room for: explained, then with its reading, then by its reason.
+  for (const TextSize size : {TextSize::Normal, TextSize::Small}) {
+    for (const StopDetail detail : {StopDetail::Explained, StopDetail::Measured, StopDetail::Reason}) {
+      if (flowRuns(c, size, detail, pad, firstRow, nullptr) <= bottom) {
+        flowRuns(c, size, detail, pad, firstRow, &batch);
+        return;
+      }
     }
   }
   const auto& runs = c.frame.runs;
   if (runs.empty()) return;
   const float share = (c.rect.width - pad) / float(runs.size());
-  const float rowY = firstRow + c.font.lineHeight(TextSize::Small);
+  // Within the band: its descenders too (they were cut at 320x180).
+  const float rowY = std::min(firstRow + c.font.lineHeight(TextSize::Small),
+                              bottom - (c.font.lineHeight(TextSize::Small) - c.font.ascent(TextSize::Small)));
   const float swatch = 0.3f * c.font.ascent(TextSize::Small);
   for (std::size_t k = 0; k < runs.size(); ++k) {
     const RunFrame& run = runs[k];
     const float x = c.rect.x + pad + share * float(k);
-    const std::string stop = run.stopped ? " stopped t=" + format("%.3g", run.stopTime) : "";
+    // Once stopped: "stopped t=5" where it fits in 60% of the share, else "t=5" whole (the red says it stopped).
+    const std::string full = " stopped t=" + format("%.3g", run.stopTime), brief = " t=" + format("%.3g", run.stopTime);
     const float room = share - 2.5f * swatch - pad;
-    const std::string stopText = c.font.fitted(stop, TextSize::Small, 0.6f * room);
+    const std::string stopText =
+        !run.stopped ? "" : c.font.width(full, TextSize::Small) <= 0.6f * room ? full : brief;
     const std::string name = c.font.fitted(run.name, TextSize::Small, room - c.font.width(stopText, TextSize::Small));
     drawSwatch(c, k, TextSize::Small, x, rowY, batch);
     const float end = c.font.draw(batch, name, TextSize::Small, x + 2.5f * swatch, rowY, palette::ink);

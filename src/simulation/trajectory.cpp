@@ -123,7 +123,9 @@ struct Trajectory::Impl {
     if (jacobi->jacobiAt(y).gramDeterminant <= 1e-12 * maxGramDeterminant) conjugateTimes.push_back(time);
   }
 
-  void halt(StopReason reason, double time, const std::string& detail) { stop = StopInfo{reason, time, detail}; }
+  void halt(StopReason reason, double time, const std::string& detail, const std::string& measured = "") {
+    stop = StopInfo{reason, time, detail, measured};
+  }
 
   // One integration step with every watchdog; on failure the run stops at the step's start time.
   void advance() {
@@ -134,9 +136,16 @@ struct Trajectory::Impl {
     if (system->settleBetweenSteps(y)) stepper->initialize(*system, y, t0);
     // A failed step is rolled back: the run ends on its last good state, which stays sampleable at the
     // stop time (never the failed step's non-finite data).
-    auto haltAtLastGoodState = [&](StopReason reason, const std::string& detail) {
+    auto haltAtLastGoodState = [&](StopReason reason, const std::string& detail, const std::string& measured = "") {
       stepper->initialize(*system, y, t0);
-      halt(reason, t0, detail);
+      halt(reason, t0, detail, measured);
+    };
+    // "drift 2.1 > limit 1": a watchdog's reading beside its limit, in a few digits.
+    const auto against = [](const char* what, double value, double limit) {
+      std::ostringstream text;
+      text.precision(3);
+      text << what << " " << value << " > limit " << limit;
+      return text.str();
     };
     try {
       stepper->doStep(*system);
@@ -162,10 +171,12 @@ struct Trajectory::Impl {
     const double drift = std::abs(summary.energy - initialEnergy) / initialEnergy;
     if (!(drift <= config.maxRelativeEnergyDrift))
       return haltAtLastGoodState(StopReason::EnergyBlowUp,
-                                 "relative energy drift " + formatTime(drift) + " at t = " + formatTime(t1));
+                                 "relative energy drift " + formatTime(drift) + " at t = " + formatTime(t1),
+                                 against("energy drift", drift, config.maxRelativeEnergyDrift));
     if (!(summary.rodLengthError <= config.maxRodLengthError))
-      return haltAtLastGoodState(StopReason::RodLength, "rod-length error " + formatTime(summary.rodLengthError) +
-                                                            " at t = " + formatTime(t1));
+      return haltAtLastGoodState(StopReason::RodLength,
+                                 "rod-length error " + formatTime(summary.rodLengthError) + " at t = " + formatTime(t1),
+                                 against("rod-length error", summary.rodLengthError, config.maxRodLengthError));
     if (jacobi) {
       const JacobiState field = jacobi->jacobiAt(end);
       findConjugatePoint(t0, t1, field.gramRate, field.gramDeterminant);

@@ -36,7 +36,8 @@ struct Sample {
 struct StopInfo {
   StopReason reason = StopReason::NonFinite;
   double time = 0;     // last good time
-  std::string detail;  // human-readable: where and what
+  std::string detail;  // human-readable: where and what, numbers in full
+  std::string measured;  // for a watchdog's stop, what it measured against its limit, short (the frames show it)
 };
 
 // The invariants' worst values over every accepted step so far (the watchdogs evaluate them at each step's

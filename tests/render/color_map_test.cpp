@@ -140,5 +140,26 @@ TEST(FontAtlas, FittedTextStaysWithinItsWidth) {
   for (std::uint32_t cp : decodeUtf8(greek)) EXPECT_NE(cp, 0xFFFDu);
 }
 
+// Notes wrap by words into the lines allowed, each within the width; what does not fit ends in an ellipsis.
+TEST(FontAtlas, WrappedTextKeepsItsWordsWithinTheWidth) {
+  const FrameComposer composer(ViewSettings{}, {640, 360});
+  const FontAtlas& font = composer.font();
+  const std::string note = "nothing to plot: \"published\" stopped at t = 0 (field-blow-up)";
+  const float width = 0.45f * font.width(note, TextSize::Small);
+  const std::vector<std::string> three = font.wrapped(note, TextSize::Small, width, 3);
+  ASSERT_EQ(three.size(), 3u);
+  std::string joined;
+  for (const std::string& line : three) {
+    EXPECT_LE(font.width(line, TextSize::Small), width) << line;
+    joined += (joined.empty() ? "" : " ") + line;
+  }
+  EXPECT_EQ(joined, note);  // every word, in order, none cut
+  const std::vector<std::string> two = font.wrapped(note, TextSize::Small, width, 2);
+  ASSERT_EQ(two.size(), 2u);
+  EXPECT_EQ(two[1].substr(two[1].size() - 3), "\u2026");
+  EXPECT_EQ(font.wrapped(note, TextSize::Small, 1e6, 2), std::vector<std::string>{note});
+  EXPECT_TRUE(font.wrapped("", TextSize::Small, width, 2).empty());
+}
+
 }  // namespace
 }  // namespace sl::render

@@ -201,8 +201,10 @@ TEST(DrawList, AStopIsExplainedWhereThereIsRoom) {
     const FrameComposer composer(fourPanels(), size);
     const std::size_t plain = stopGlyphs(composer.compose(frame));
     frame.runs[1].stopWhy = "the relative energy drift passed the watchdog's limit";
+    frame.runs[1].stopMeasured = "energy drift 2.13 > limit 1";
     const std::size_t explained = stopGlyphs(composer.compose(frame));
     frame.runs[1].stopWhy.clear();
+    frame.runs[1].stopMeasured.clear();
     ASSERT_GT(plain, 0u);
     if (size.width >= 1280) {
       EXPECT_GT(explained, plain + 4 * 30) << "no explanation at " << size.width;

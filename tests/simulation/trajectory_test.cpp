@@ -1,6 +1,8 @@
 // Runs as objects: sampling never changes the motion, RK4's order, watchdogs and clean stops, bad input.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include <cmath>
 #include <iostream>
 
@@ -105,6 +107,13 @@ TEST(Trajectory, EnergyWatchdogCatchesAnUnstableStepSize) {
   ASSERT_TRUE(run.stop());
   EXPECT_EQ(run.stop()->reason, StopReason::EnergyBlowUp);
   EXPECT_LE(last->relativeEnergyDrift, c.maxRelativeEnergyDrift);
+  // The frames say what tripped the watchdog: its reading against its limit (issue 12), a drift beyond the limit.
+  const std::string& measured = run.stop()->measured;
+  EXPECT_EQ(measured.rfind("energy drift ", 0), 0u) << measured;
+  double drift = 0, limit = 0;
+  ASSERT_EQ(std::sscanf(measured.c_str(), "energy drift %lf > limit %lf", &drift, &limit), 2) << measured;
+  EXPECT_GT(drift, limit);
+  EXPECT_DOUBLE_EQ(limit, c.maxRelativeEnergyDrift);
 }
 
 // The extremes the run tracks at its step ends equal the invariants of samples taken at those very times
