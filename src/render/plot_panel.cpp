@@ -49,6 +49,8 @@ Axis spanAxis(double lo, double hi, int count) {
   Axis axis{lo, hi, false, {}};
   for (double t = std::ceil(lo / step - 1e-9) * step; t <= hi + 1e-9 * step; t += step)
     axis.ticks.push_back(std::abs(t) < 1e-12 * step ? 0 : t);
+  // Room for one step only (a narrow plot): the span's two ends, so the axis still has a scale.
+  if (axis.ticks.size() < 2) axis.ticks = {lo, hi};
   return axis;
 }
 
