@@ -276,6 +276,23 @@ void labelChartPoles(const PanelContext& context, const SphereCamera& camera, Sh
   }
 }
 
+// A family on the sphere explained where no text panel does it: the run, its members and their wavefront, in the
+// panel's bottom-left corner (wrapped to at most two lines; the ball view's caption takes that corner there).
+void captionFamilies(const PanelContext& context, float width, ShapeBatch& batch) {
+  std::size_t members = 0;
+  for (const RunFrame& run : context.frame.runs) members = std::max(members, run.members.size());
+  if (members == 0) return;
+  const std::string text = "large ball: the run; thin paths and small dots: its " + std::to_string(members) +
+                           " members; dark curve: their wavefront";
+  const float pad = 0.02f * context.rect.height, line = context.font.lineHeight(TextSize::Small);
+  const std::vector<std::string> lines = context.font.wrapped(text, TextSize::Small, width - 2 * pad, 2);
+  float y = context.rect.y + context.rect.height - pad - line * float(lines.size() - 1);
+  for (const std::string& caption : lines) {
+    context.font.draw(batch, caption, TextSize::Small, context.rect.x + pad, y, palette::softInk);
+    y += line;
+  }
+}
+
 // The strip at the panel's right kept for the colour bar (the sphere is framed in the rest).
 float colorBarStrip(const PixelRect& rect) { return std::min(0.24f * rect.width, 0.45f * rect.height); }
 
@@ -320,6 +337,10 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   if (space == ViewSpace::Ball) drawBallStart(context, camera, batch);
   for (std::size_t k = 0; k < runs.size(); ++k) drawBall(runs[k], runStyleWidth(k, runs.size()), camera, placement, batch);
   if (space == ViewSpace::Sphere) labelChartPoles(context, camera, batch);  // over the paths: never struck through
+  const bool captioned = space == ViewSpace::Ball || (decoration && !decoration->ellipseCaption.empty());
+  const bool textPanel = std::any_of(context.settings.panels.begin(), context.settings.panels.end(),
+                                     [](const PanelSpec& p) { return p.kind == PanelKind::Text; });
+  if (!captioned && !textPanel) captionFamilies(context, sphereRect.width, batch);
   const SphereLook look = colored ? SphereLook::Colored : space == ViewSpace::Sphere ? SphereLook::Opaque : SphereLook::Glass;
   return {camera, look};
 }

@@ -224,6 +224,26 @@ TEST(DrawList, TheChartPoleFacingTheEyeIsLabelled) {
   EXPECT_FALSE(hasProgram(FrameComposer(view, {640, 360}).compose(frame).panels[1].shapes, ShapeProgram::Glyph));
 }
 
+// Issue 12: a family on the sphere is explained in the sphere panel when no text panel does it (fan.json).
+TEST(DrawList, AFamilyIsCaptionedWithoutATextPanel) {
+  ViewSettings view;
+  view.panels = {{PanelKind::Sphere, std::nullopt, 0}, {PanelKind::Linkage, std::nullopt, 0}};
+  view.camera.viewDirection = {1, 0, 0};  // no pole label: the panel's glyphs are the caption's alone
+  FrameState frame = syntheticFrame(2.0, 120);
+  const auto glyphs = [](const DrawList& list) {
+    std::size_t count = 0;
+    for (const ShapeVertex& v : list.panels[0].shapes.vertices()) count += v.kind == float(ShapeKind::Glyph);
+    return count;
+  };
+  const FrameComposer composer(view, {1280, 720});
+  EXPECT_EQ(glyphs(composer.compose(frame)), 0u);
+  frame.runs[0].members.resize(3);
+  for (MemberFrame& member : frame.runs[0].members) member.current = frame.runs[0].current;
+  EXPECT_GT(glyphs(composer.compose(frame)), 6u * 40);  // "large ball: the run; ..." in glyph quads
+  view.panels.push_back({PanelKind::Text, std::nullopt, 0});
+  EXPECT_EQ(glyphs(FrameComposer(view, {1280, 720}).compose(frame)), 0u) << "the text panel explains the runs";
+}
+
 TEST(DrawList, ShapesStayNearTheirPanel) {
   const FrameComposer composer(fourPanels(), {640, 360});
   const DrawList list = composer.compose(syntheticFrame(5.0, 300));
