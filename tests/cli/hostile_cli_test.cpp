@@ -76,8 +76,9 @@ TEST(HostileCli, AnalysisCommandsSweepAKilledRunsTemporaries) {
   fs::create_directories(folder.path() / "st");
   // A simulate killed while it streams its CSV leaves its temporary beside the CSV it never finished.
   const ProcessResult killed = runShell(shellQuoted(linkageBinary()) +
-                                            " simulate slow.json --csv st/run.csv & pid=$!; sleep 1; kill -KILL $pid; "
-                                            "wait $pid; true",
+                                            " simulate slow.json --csv st/run.csv & pid=$!; "
+                                            "for i in $(seq 300); do ls st/*.tmp.* >/dev/null 2>&1 && break; sleep 0.1; "
+                                            "done; kill -KILL $pid; wait $pid; true",
                                         folder.path(), 60);
   ASSERT_EQ(killed.code, 0) << killed.err;
   auto temporaries = [&] {
