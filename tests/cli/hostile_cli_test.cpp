@@ -169,11 +169,14 @@ struct SignalAnswer {
 };
 
 // Runs `linkage <arguments>` in `folder` (stdout to out.txt, stderr to err.txt), sends `signal` after `delay`
-// seconds and measures how long the program takes to exit.
+// seconds, or once stderr says `awaited` (at most 60 s), and measures how long the program takes to exit.
 SignalAnswer signalAfter(const std::string& arguments, const fs::path& folder, const char* signal = "TERM",
-                         const char* delay = "1.5") {
-  const ProcessResult result = runShell(shellQuoted(linkageBinary()) + " " + arguments + " > out.txt 2> err.txt & pid=$!; sleep " +
-                                            delay + "; start=$(date +%s%N); kill -" + signal +
+                         const char* delay = "1.5", const std::string& awaited = "") {
+  const std::string wait = awaited.empty() ? std::string("sleep ") + delay
+                                           : "for i in $(seq 600); do grep -q " + shellQuoted(awaited) +
+                                                 " err.txt && break; sleep 0.1; done";
+  const ProcessResult result = runShell(shellQuoted(linkageBinary()) + " " + arguments + " > out.txt 2> err.txt & pid=$!; " +
+                                            wait + "; start=$(date +%s%N); kill -" + signal +
                                             " $pid; wait $pid; rc=$?; end=$(date +%s%N); "
                                             "echo $rc $(( (end - start) / 1000000 ))",
                                         folder, 120);
@@ -224,7 +227,7 @@ TEST(HostileCli, ARenderWaitingForALockSaysSoAndCanBeStopped) {
   ASSERT_GE(lock, 0);
   ASSERT_EQ(::flock(lock, LOCK_EX), 0);
   const std::string render = "render " + shellQuoted(scene) + " --out frames --size 160x90 --set duration=0.2";
-  const SignalAnswer answer = signalAfter(render, folder.path(), "TERM", "2.5");
+  const SignalAnswer answer = signalAfter(render, folder.path(), "TERM", "", "waiting for");
   EXPECT_EQ(answer.code, 130);
   EXPECT_LT(answer.milliseconds, 1000) << "SIGTERM answered after " << answer.milliseconds << " ms";
   const std::string err = readFile(folder.path() / "err.txt");
