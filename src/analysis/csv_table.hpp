@@ -36,6 +36,6 @@ CsvTable readCsvFile(const std::string& path);
 
 // The table for a terminal: every column padded to its widest field (header included), columns separated by
 // `separator`, numbers as written, an empty field (no value) as "-". Widths count bytes: the fields are ASCII (names, numbers, units).
-std::string alignedText(const CsvTable& table, const std::string& separator = "  ");
+std::string alignedText(const CsvTable& written, const std::string& separator = "  ");
 
 }  // namespace sl

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "analysis/csv_table.hpp"
+#include "contracts/csv_format.hpp"
 #include "contracts/limits.hpp"
 
 namespace sl {
@@ -17,16 +18,15 @@ std::invalid_argument unknownNameError(const std::string& option, const std::str
 void requirePositive(const std::string& option, const std::vector<double>& values) {
   for (double value : values)
     if (!(value > 0) || !std::isfinite(value))
-      throw std::invalid_argument(option + ": expected positive finite numbers, found " +
-                                  (std::isfinite(value) ? formatNumber(value) : std::isnan(value) ? "nan" : "inf"));
+      throw std::invalid_argument(option + ": expected positive finite numbers, found " + shortest(value));
 }
 
 void requireTolerances(const std::string& option, const std::vector<double>& values) {
   requirePositive(option, values);
   for (double value : values)
     if (value < limits::kMinTolerance || value > limits::kMaxTolerance)
-      throw std::invalid_argument(option + ": found " + formatNumber(value) + "; expected tolerances from " +
-                                  formatNumber(limits::kMinTolerance) + " to " + formatNumber(limits::kMaxTolerance));
+      throw std::invalid_argument(option + ": found " + shortest(value) + "; expected tolerances from " +
+                                  shortest(limits::kMinTolerance) + " to " + shortest(limits::kMaxTolerance));
 }
 
 }  // namespace sl

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 
 #include "analysis/gnuplot.hpp"
@@ -40,6 +39,7 @@ std::string mapScript(const CsvTable& rows, const std::string& kind, const std::
   std::vector<std::string> lines;
   std::string integrator, setting;
   long cells = 0, within9 = 0;
+  double lowest = INFINITY, highest = -INFINITY;  // the successful cells' log10 values: the colour bar's range
   bool checked = false;  // errors against a reference; without one the left panel shows the energy drift
   for (size_t r = 0; r < rows.rows.size(); ++r)
     if (rows.text(r, "method") == method) checked = checked || rows.text(r, "reference_method") != kNoReferenceName;
@@ -52,6 +52,7 @@ std::string mapScript(const CsvTable& rows, const std::string& kind, const std::
     const double value = rows.number(r, valueColumn), error = rows.number(r, "max_error");
     const bool ok = status == nameOf(Verdict::Ok);
     const double logError = ok ? std::clamp(std::log10(std::max(value, 1e-300)), -16.0, 0.0) : NAN;
+    if (ok) lowest = std::min(lowest, logError), highest = std::max(highest, logError);
     lines.push_back(gnuplotNumber(rows.number(r, "x")) + " " + gnuplotNumber(rows.number(r, "y")) + " " +
                     gnuplotNumber(logError) + " " +
                     std::to_string(stabilityStatusCode(status)));
@@ -77,12 +78,6 @@ std::string mapScript(const CsvTable& rows, const std::string& kind, const std::
             (checked ? "log_{10} max position error" : "log_{10} max relative energy drift") + " (grey: failed)'\n";
   // A sequential, colour-blind-safe map (viridis) over the whole decades the data reach: no pale middle suggesting
   // a meaningful midpoint, and no range left empty.
-  double lowest = INFINITY, highest = -INFINITY;
-  for (const std::string& cell : lines) {
-    double x = 0, y = 0, value = 0;
-    if (std::sscanf(cell.c_str(), "%lf %lf %lf", &x, &y, &value) == 3 && std::isfinite(value))
-      lowest = std::min(lowest, value), highest = std::max(highest, value);
-  }
   if (!std::isfinite(lowest)) lowest = -16, highest = 0;  // no cell succeeded: the whole scale
   lowest = std::floor(lowest);
   highest = std::max(std::ceil(highest), lowest + 1);

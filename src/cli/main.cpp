@@ -34,13 +34,14 @@ void printVersion() {
 }
 
 // Every command's standard output is complete or the command fails (docs/hardening.md, principle 1): what is
-// still buffered is flushed and the stream closed here, and an error on the way (a full disk, /dev/full, a closed
-// pipe) turns a success into exit 3 with the reason. A command that already failed keeps its own status and
+// still buffered is flushed and the stream closed here, and an error on the way (a full disk, /dev/full, a quota)
+// turns a success into exit 3 with the reason. (A reader that closes the pipe ends the process by SIGPIPE.) A command that already failed keeps its own status and
 // message.
 int finishStandardOutput(int code) {
   errno = 0;
   std::cout.flush();  // std::cout writes through stdout (synced with stdio): this flushes both
-  const bool flushFailed = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout);
+  const bool streamFailed = !std::cout;
+  const bool flushFailed = std::fflush(stdout) != 0 || std::ferror(stdout) || streamFailed;
   const int flushErrno = errno;
   errno = 0;
   const bool closeFailed = std::fclose(stdout) != 0 && errno != EBADF;  // EBADF: there was no stdout to close

@@ -16,8 +16,6 @@
 #include "cli/commands.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/number_options.hpp"
-#include "contracts/csv_format.hpp"
-#include "contracts/limits.hpp"
 #include "contracts/time_grid.hpp"
 #include "contracts/registry.hpp"
 #include "output/atomic_file.hpp"
@@ -99,6 +97,7 @@ void runStability(StabilityArguments& args) {
     for (const auto& k : stabilityKindNames()) kinds += (kinds.empty() ? "" : ", ") + k;
     throw CLI::ValidationError("--kind", "unknown sweep kind '" + options.kind + "' (expected one of " + kinds + ")");
   }
+  requireTolerances("--tolerance", {options.tolerance});  // what a run accepts, as bench's --tolerances
   options.methods = parseKindsOption("--methods", "method", args.methods, kMethods);
   if (!args.integrator.empty())
     options.integrator = parseKindOption("--integrator", "integrator", args.integrator, kIntegrators);
@@ -190,17 +189,6 @@ void addStabilityCommand(CLI::App& app) {
       "integrator for every method (default: rk4 for the published -fd methods, the default run's otherwise)");
   stability->add_option("--tolerance", args->options.tolerance, "adaptive tolerance (default: the default run's)")
       ->check(finitePositive())
-      ->check(CLI::Validator(
-          [](std::string& text) {
-            try {
-              requireTolerances("--tolerance", {std::stod(text)});
-              return std::string();
-            } catch (const std::exception&) {
-              return "found " + text + "; expected a tolerance from " + shortest(limits::kMinTolerance) + " to " +
-                     shortest(limits::kMaxTolerance);
-            }
-          },
-          "TOLERANCE"))
       ->capture_default_str();
   stability->add_option("--step", args->options.step, "rk4 step")->check(finitePositive())->capture_default_str();
   stability->add_option("--threads", args->options.threads, "worker threads (default: all cores)")

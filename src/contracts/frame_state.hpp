@@ -88,7 +88,7 @@ struct PlotFrame {
 // value(i, j) at phi = -pi/2 + (i + 1/2) pi / phiCount, t = -pi + (j + 1/2) 2 pi / tCount, the point
 // (cos phi cos t, cos phi sin t, sin phi). The renderer colours the sphere with it and draws its colour bar.
 struct SphereField {
-  std::string label;       // what the colour bar says, e.g. "Gaussian curvature K"
+  std::string label;       // what the colour bar says, e.g. "K, Gaussian curvature"
   bool diverging = false;  // signed: a diverging map centred at zero, each sign stretched over its own range
   int phiCount = 0, tCount = 0;
   std::vector<float> values;  // row-major [phi][t]

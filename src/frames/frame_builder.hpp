@@ -62,7 +62,7 @@ class FrameBuilder {
   std::vector<double> plotTimes_;
   std::vector<std::vector<double>> divergence_;  // [run - 1][frame]: run 0 against run
   std::shared_ptr<const SphereDecoration> sphereDecoration_;  // computed once, shared by every frame
-  std::vector<PlotOverview> plotOverviews_;                   // per plot: the whole animation's range, legend
+  std::vector<PlotOverview> plotOverviews_;                   // per plot: the whole animation's range, empty note
 };
 
 // The default colour of run i (a colour-blind-safe palette), unless the scene gives one.

@@ -1,8 +1,8 @@
 #pragma once
-// What each plot panel shows over the whole animation, known before the first frame: the y range (so the
-// axes never jump) and, for a plot that stays empty, why. Computed from fresh trajectories of the scene's runs sampled at every frame
-// time; integration never depends on which times are asked for, so the values are exactly those the frames
-// plot. Every shard computes the same overview.
+// What each plot panel shows over the whole animation, known before the first frame: the y range (so the axes
+// never jump) and, for a plot that stays empty, why. Computed from fresh trajectories of the scene's runs sampled
+// at every frame time; integration never depends on which times are asked for, so the values are exactly those the
+// frames plot. Every shard computes the same overview.
 
 #include <array>
 #include <functional>
@@ -10,7 +10,6 @@
 #include <string>
 #include <vector>
 
-#include "contracts/frame_state.hpp"
 #include "contracts/run_config.hpp"
 #include "scene/scene.hpp"
 

@@ -216,9 +216,9 @@ int maxYTicks(const PlotLayout& layout, float line) {
   return std::max(2, int((layout.areaY1 - layout.areaY0) / (1.25f * line)) + 1);
 }
 
-// The width of the widest time label (the duration's).
+// The width of the widest time label (the duration's, as a linear axis labels it).
 float timeLabelWidth(const PanelContext& c, const PlotFrame& plot) {
-  return c.font.width(tickLabel(spanAxis(plot.timeMin, plot.timeMax, 5), plot.timeMax), TextSize::Small);
+  return c.font.width(tickLabel(Axis{plot.timeMin, plot.timeMax, false, {}}, plot.timeMax), TextSize::Small);
 }
 
 }  // namespace
@@ -293,7 +293,7 @@ void drawPlotPanel(const PanelContext& c, int plotIndex, ShapeBatch& batch) {
     const std::size_t room = std::size_t(std::max(1.0f, (area.y1 - area.y0) / line - 0.5f));
     const std::vector<std::string> note =
         c.font.wrapped(plot.emptyNote, TextSize::Small, area.x1 - area.x0 - ascent, std::min<std::size_t>(room, 3));
-    float y = 0.5f * (area.y0 + area.y1) - 0.5f * line * float(note.size() - 1) + 0.4f * ascent;
+    float y = 0.5f * (area.y0 + area.y1) - 0.5f * line * (float(note.size()) - 1) + 0.4f * ascent;
     for (const std::string& text : note) {
       c.font.draw(batch, text, TextSize::Small, 0.5f * (area.x0 + area.x1 - c.font.width(text, TextSize::Small)), y,
                   palette::softInk);

@@ -8,6 +8,7 @@
 #include "render/color_map.hpp"
 #include "render/palette.hpp"
 #include "render/panels.hpp"
+#include "render/panel_layout.hpp"
 
 namespace sl::render {
 namespace {
@@ -267,6 +268,7 @@ void labelChartPoles(const PanelContext& context, const SphereCamera& camera, Sh
     const P2 at = camera.project(pole);
     const std::string text = "chart pole";
     const float width = context.font.width(text, TextSize::Small);
+    if (width > context.rect.width || ascent > context.rect.height) return;  // no room for the label
     const float x = std::clamp(at.x + 0.9f * ascent, context.rect.x, context.rect.x + context.rect.width - width);
     const float y = std::clamp(at.y - 0.6f * ascent, context.rect.y + ascent, context.rect.y + context.rect.height);
     const ColorRGB& b = context.settings.background;
@@ -338,8 +340,9 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   for (std::size_t k = 0; k < runs.size(); ++k) drawBall(runs[k], runStyleWidth(k, runs.size()), camera, placement, batch);
   if (space == ViewSpace::Sphere) labelChartPoles(context, camera, batch);  // over the paths: never struck through
   const bool captioned = space == ViewSpace::Ball || (decoration && !decoration->ellipseCaption.empty());
-  const bool textPanel = std::any_of(context.settings.panels.begin(), context.settings.panels.end(),
-                                     [](const PanelSpec& p) { return p.kind == PanelKind::Text; });
+  const std::vector<PanelSpec> panels = effectivePanels(context.settings);
+  const bool textPanel =
+      std::any_of(panels.begin(), panels.end(), [](const PanelSpec& p) { return p.kind == PanelKind::Text; });
   if (!captioned && !textPanel) captionFamilies(context, sphereRect.width, batch);
   const SphereLook look = colored ? SphereLook::Colored : space == ViewSpace::Sphere ? SphereLook::Opaque : SphereLook::Glass;
   return {camera, look};

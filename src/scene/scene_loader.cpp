@@ -45,6 +45,9 @@ std::optional<long> chainSize(RodCount rods, int offset) {
   return rods ? std::optional<long>(*rods + offset) : std::nullopt;
 }
 
+// "n-1 = 4", or just "n-1" while n is unknown (an invalid "rods": no made-up number in a message either).
+std::string hingeCountText(RodCount rods) { return rods ? "n-1 = " + std::to_string(*rods - 1) : "n-1"; }
+
 // Reads a "linkage" object at `path` into `chain`. The scene's linkage sets n and L and gives the masses their
 // defaults (unit hinges, massless rods); a run's linkage (forRun) starts from the scene's chain and may change L
 // and the masses, never n: every run of a scene is drawn and compared with the same number of rods. Returns the
@@ -54,9 +57,9 @@ RodCount readLinkage(const json& value, const std::string& path, RodCount sceneR
   const JsonObject linkage(value, path, problems, {"rods", "L", "hinge_masses", "rod_masses"});
   bool rodsKnown = forRun && sceneRods.has_value();  // sizes and L are judged against n only when n is valid
   if (forRun) {
-    if (const auto rods = linkage.integer("rods"); rods && *rods != chain.rods) {
+    if (const auto rods = linkage.integer("rods"); rods && sceneRods && *rods != *sceneRods) {
       linkage.report("rods", "found " + std::to_string(*rods) + "; a run keeps the scene's number of rods, " +
-                                 std::to_string(chain.rods) + " (a run may set its own L and masses)");
+                                 std::to_string(*sceneRods) + " (a run may set its own L and masses)");
     }
   } else if (const auto rods = linkage.integer("rods", true)) {
     if (*rods < limits::kMinRods || *rods > limits::kMaxAmbientRods) {
@@ -116,7 +119,7 @@ RodCount readLinkage(const json& value, const std::string& path, RodCount sceneR
 void readDrag(const JsonObject& initial, RodCount rods, InitialSpec& spec, std::vector<SceneProblem>& problems) {
   const JsonObject drag(*initial.member("drag"), initial.pathOf("drag"), problems, {"point", "direction"});
   const std::optional<long> size = chainSize(rods, -1);
-  const std::string what = "a vector of R^(n-1), n-1 = " + std::to_string(size.value_or(0));
+  const std::string what = "a vector of R^(n-1), " + hingeCountText(rods);
   if (const auto point = drag.numbers("point", true); point && fitsChain(drag, "point", *point, size, what)) {
     // Only the point's direction matters: normalise here, overflow-free (a plain norm of [1e200, ...] is
     // inf and the "unit" point would be zero; of [1e-320, 0, 0] it is 0 and a valid point looks zero).
@@ -138,7 +141,7 @@ void readDrag(const JsonObject& initial, RodCount rods, InitialSpec& spec, std::
 // recorded).
 std::optional<Eigen::Matrix2Xd> readPoints(const JsonObject& object, const std::string& key, RodCount rods) {
   const json* value = object.member(key);
-  const std::string what = "an array of n-1 = " + std::to_string(rods.value_or(1) - 1) + " points [x, y]";
+  const std::string what = "an array of " + hingeCountText(rods) + " points [x, y]";
   if (!value->is_array() || (rods && value->size() != static_cast<std::size_t>(*rods - 1))) {
     object.report(key, "found " + describeJson(*value) + "; expected " + what);
     return std::nullopt;
@@ -202,8 +205,7 @@ void readHingeStart(const JsonObject& initial, RodCount rods, InitialSpec& spec,
   }
   if (const auto hinge = push.integer("hinge", true)) {
     if (*hinge < 1 || (rods && *hinge > *rods - 1))
-      push.report("hinge", "found " + std::to_string(*hinge) + "; expected a hinge from 1 to n-1 = " +
-                               std::to_string(rods.value_or(1) - 1));
+      push.report("hinge", "found " + std::to_string(*hinge) + "; expected a hinge from 1 to " + hingeCountText(rods));
     else
       spec.pushHinge = static_cast<int>(*hinge);
   }
@@ -242,7 +244,7 @@ void readInitial(const json& value, const std::string& path, RodCount rods, Init
     return;
   }
   const std::optional<long> size = chainSize(rods, -2);
-  const std::string what = "chart coordinates, outermost first, n-2 = " + std::to_string(size.value_or(0));
+  const std::string what = "chart coordinates, outermost first, " + (size ? "n-2 = " + std::to_string(*size) : "n-2");
   if (const auto coords = initial.numbers("coords", true); coords && fitsChain(initial, "coords", *coords, size, what)) {
     spec.coords = *coords;
   }
@@ -408,7 +410,7 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
                                "\" for a start by hinges; expected ambient (the chart methods start from coords or "
                                "a drag)");
     else if (rods && *rods > limits::kMaxRods)
-      run.report("method", "found \"" + nameOf(spec.config.method) + "\" for " + std::to_string(scene.chain.rods) +
+      run.report("method", "found \"" + nameOf(spec.config.method) + "\" for " + std::to_string(*rods) +
                                " rods; the chart methods are limited to " + std::to_string(limits::kMaxRods) +
                                " rods (their charts stay well conditioned there); expected ambient");
   }

@@ -186,8 +186,9 @@ void readFades(const JsonObject& view, Scene& scene) {
     render.pathFadeSeconds = *fade;
   }
   if (const auto fade = view.number("trail_fade_seconds");
-      fade && view.checkRange("trail_fade_seconds", *fade, 1e-9, limits::kMaxTrailFadeSeconds,
-                              "a positive time of at most " + shortest(limits::kMaxTrailFadeSeconds) + " s")) {
+      fade && view.checkPositive("trail_fade_seconds", *fade) &&
+      view.checkRange("trail_fade_seconds", *fade, 0, limits::kMaxTrailFadeSeconds,
+                      "a positive time of at most " + shortest(limits::kMaxTrailFadeSeconds) + " s")) {
     render.trailFadeSeconds = *fade;
   }
   if (const auto samples = view.integer("path_samples_per_frame")) {

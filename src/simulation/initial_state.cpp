@@ -46,7 +46,8 @@ void toUnitSpeed(const Chain& chain, InitialState& start, const char* what) {
 }
 
 // Without unit_speed the velocity is used as given: it must move the linkage, at a finite kinetic energy.
-void requireFiniteMotion(const Chain& chain, const InitialState& start, const char* what) {
+// `given`: whether the velocity as given was non-zero (a tiny one can underflow to zero on the way).
+void requireFiniteMotion(const Chain& chain, const InitialState& start, const char* what, bool given) {
   const double speed2 = speedSquared(chain, start);
   if (!std::isfinite(speed2))
     throw std::invalid_argument(std::string(what) +
@@ -54,10 +55,9 @@ void requireFiniteMotion(const Chain& chain, const InitialState& start, const ch
                                 "unit_speed)");
   if (!(speed2 > 0))
     throw std::invalid_argument(std::string(what) +
-                                (start.sphereVelocity.cwiseAbs().maxCoeff() > 0
-                                     ? " is so small that the kinetic energy underflows to zero; expected a larger "
-                                       "velocity (or unit_speed)"
-                                     : " is zero: nothing moves"));
+                                (given ? " is so small that the kinetic energy underflows to zero; expected a larger "
+                                         "velocity (or unit_speed)"
+                                       : " is zero: nothing moves"));
 }
 
 }  // namespace
@@ -86,7 +86,7 @@ InitialState initialStateFromDrag(const Chain& chain, const Eigen::VectorXd& poi
     toUnitSpeed(chain, start, "the drag direction, once its part along the point is removed,");
   } else {
     start.sphereVelocity = tangent * largest;  // may overflow to inf: refused next, with the reason
-    requireFiniteMotion(chain, start, "the drag direction's part tangent to the sphere");
+    requireFiniteMotion(chain, start, "the drag direction's part tangent to the sphere", largest > 0);
   }
   return start;
 }
@@ -217,7 +217,7 @@ InitialState initialStateFromSpec(const Chain& chain, const InitialSpec& spec, S
   if (spec.unitSpeed)
     toUnitSpeed(chain, start, "the velocity");
   else
-    requireFiniteMotion(chain, start, "the velocity");
+    requireFiniteMotion(chain, start, "the velocity", spec.velocity.cwiseAbs().maxCoeff() > 0);
   return start;
 }
 

@@ -81,6 +81,14 @@ std::string formatTime(double t) {
   return out.str();
 }
 
+// "energy drift 2.13 > limit 1": a watchdog's reading beside its limit, in a few digits (StopInfo::measured).
+std::string against(const char* what, double value, double limit) {
+  std::ostringstream text;
+  text.precision(3);
+  text << what << " " << value << " > limit " << limit;
+  return text.str();
+}
+
 }  // namespace
 
 struct Trajectory::Impl {
@@ -139,13 +147,6 @@ struct Trajectory::Impl {
     auto haltAtLastGoodState = [&](StopReason reason, const std::string& detail, const std::string& measured = "") {
       stepper->initialize(*system, y, t0);
       halt(reason, t0, detail, measured);
-    };
-    // "drift 2.1 > limit 1": a watchdog's reading beside its limit, in a few digits.
-    const auto against = [](const char* what, double value, double limit) {
-      std::ostringstream text;
-      text.precision(3);
-      text << what << " " << value << " > limit " << limit;
-      return text.str();
     };
     try {
       stepper->doStep(*system);
