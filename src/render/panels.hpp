@@ -34,8 +34,10 @@ struct PlotLayout {
   std::string title;  // fitted to the panel
   float titleBaseline;
   bool legendShown;
-  float legendX, legendBaseline, legendBottom;
+  float legendX, legendRight, legendBaseline, legendBottom;
+  int legendRows;  // at most this many rows (1 beside the title, 2 below it)
   float areaX0, areaY0, areaX1, areaY1;
+  int yTicks;      // at most this many labelled y ticks: what the area's height has room for
   bool areaShown;  // false when the panel has room for the title only
 };
 PlotLayout layoutPlot(const PanelContext& context, const PlotFrame& plot);

@@ -211,11 +211,6 @@ float layLegend(const PanelContext& c, const PlotFrame& plot, float x, float rig
   return y;
 }
 
-// How many y labels the plot's height has room for.
-int maxYTicks(const PlotLayout& layout, float line) {
-  return std::max(2, int((layout.areaY1 - layout.areaY0) / (1.25f * line)) + 1);
-}
-
 // The width of the widest time label (the duration's, as a linear axis labels it).
 float timeLabelWidth(const PanelContext& c, const PlotFrame& plot) {
   return c.font.width(tickLabel(Axis{plot.timeMin, plot.timeMax, false, {}}, plot.timeMax), TextSize::Small);
@@ -240,11 +235,14 @@ PlotLayout layoutPlot(const PanelContext& c, const PlotFrame& plot) {
   // The legend beside the title when both fit in one row, else in rows of its own below it (at most two in a
   // full-size panel, none in a compact one).
   layout.legendX = c.rect.x + pad + c.font.width(layout.title, layout.titleSize) + 2 * ascent;
+  layout.legendRight = right;
+  layout.legendRows = 1;
   layout.legendBaseline = layout.legendBottom = layout.titleBaseline;
   layout.legendShown =
       !plot.series.empty() && !std::isnan(layLegend(c, plot, layout.legendX, right, layout.titleBaseline, line, 1, nullptr));
   if (!layout.legendShown && !compact && !plot.series.empty()) {
     layout.legendX = c.rect.x + pad;
+    layout.legendRows = 2;
     layout.legendBaseline = layout.titleBaseline + 1.15f * line;
     const float last = layLegend(c, plot, layout.legendX, right, layout.legendBaseline, line, 2, nullptr);
     layout.legendShown = !std::isnan(last);
@@ -255,7 +253,8 @@ PlotLayout layoutPlot(const PanelContext& c, const PlotFrame& plot) {
   const float bottomRoom = (compact ? 1.35f : 2.2f) * line;
   layout.areaY0 = layout.legendBottom + 0.6f * line;
   layout.areaY1 = c.rect.y + c.rect.height - bottomRoom;
-  const Axis y = valueAxis(plot, maxYTicks(layout, line));
+  layout.yTicks = std::max(2, int((layout.areaY1 - layout.areaY0) / (1.25f * line)) + 1);
+  const Axis y = valueAxis(plot, layout.yTicks);
   float labelWidth = 0;
   for (double v : y.ticks) labelWidth = std::max(labelWidth, c.font.width(tickLabel(y, v), TextSize::Small));
   const float rightRoom = std::max(0.5f * timeLabelWidth(c, plot), c.font.width("t", TextSize::Small) + 0.6f * ascent) + pad;
@@ -275,7 +274,7 @@ void drawPlotPanel(const PanelContext& c, int plotIndex, ShapeBatch& batch) {
   c.font.draw(batch, layout.title, layout.titleSize, c.rect.x + 0.5f * ascent, layout.titleBaseline, palette::ink);
   if (!layout.areaShown) return;  // no room for a plot: the title only
   const PlotArea area{layout.areaX0, layout.areaY0, layout.areaX1, layout.areaY1};
-  const Axis y = valueAxis(plot, maxYTicks(layout, line));
+  const Axis y = valueAxis(plot, layout.yTicks);
   // The x axis runs over the whole animation; its labels need about three and a half label widths each.
   const int xSteps =
       std::clamp(int((area.x1 - area.x0) / (3.5f * std::max(timeLabelWidth(c, plot), ascent))), 1, 5);
@@ -301,7 +300,7 @@ void drawPlotPanel(const PanelContext& c, int plotIndex, ShapeBatch& batch) {
     }
   }
   if (layout.legendShown)
-    layLegend(c, plot, layout.legendX, c.rect.x + c.rect.width - 0.5f * ascent, layout.legendBaseline, line, 2, &batch);
+    layLegend(c, plot, layout.legendX, layout.legendRight, layout.legendBaseline, line, layout.legendRows, &batch);
 }
 
 }  // namespace sl::render
