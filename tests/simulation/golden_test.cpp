@@ -3,7 +3,7 @@
 // method: the -fd methods amplify rounding (difference quotients), the exact ones do not.
 //
 // Regenerate on purpose (after an intended change, and say why in the commit):
-//   SL_REGENERATE_GOLDENS=1 ./build/tests/simulation/test_simulation --gtest_filter='Golden*'
+//   SL_REGENERATE_GOLDENS=1 ./build/tests/simulation/test_simulation --gtest_filter='*Golden*'
 #include <gtest/gtest.h>
 
 #include <cstdlib>
