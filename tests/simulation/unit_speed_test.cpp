@@ -104,5 +104,22 @@ TEST(UnitSpeed, EveryStartFormOnEveryChainHasUnitSpeed) {
   }
 }
 
+// A drag direction nearly along the point keeps its small tangential part: accepted and moving that way (at unit
+// speed too) down to 1e-11 of its size; below the refusal's 1e-12 it is rounding noise and refused.
+TEST(UnitSpeed, ADragNearlyAlongThePointMovesAcrossIt) {
+  const Chain chain = Chain::uniform(4, 3.0);
+  const Eigen::Vector3d point = Eigen::Vector3d(1, 2, 2) / 3;
+  const Eigen::Vector3d across = Eigen::Vector3d(2, -2, 1) / 3;  // orthogonal to the point, unit
+  for (const bool unitSpeed : {false, true}) {
+    SCOPED_TRACE(unitSpeed ? "unit speed" : "as given");
+    const InitialState start = initialStateFromDrag(chain, 5 * point, 5 * (point + 1e-11 * across), unitSpeed);
+    EXPECT_NEAR(start.sphereVelocity.normalized().dot(across), 1.0, 1e-4);
+    if (unitSpeed) {
+      EXPECT_NEAR(measuredSpeedSquared(chain, start), 1.0, 1e-8);
+    }
+    EXPECT_THROW(initialStateFromDrag(chain, point, point + 1e-13 * across, unitSpeed), std::invalid_argument);
+  }
+}
+
 }  // namespace
 }  // namespace sl
