@@ -111,6 +111,29 @@ TEST(PanelLayout, AReservedTopBandStaysFree) {
   }
 }
 
+// The automatic landscape split, as the shipped scenes without rects see it: the first panel takes 56% of the
+// width (rounded to a pixel), the others share the column to its right, one above the other.
+TEST(PanelLayout, TheDefaultLandscapeSplitGivesTheFirstPanel56PercentOfTheWidth) {
+  std::vector<PanelSpec> panels(3);
+  panels[0].kind = PanelKind::Sphere;
+  panels[1].kind = PanelKind::Linkage;
+  panels[2].kind = PanelKind::Plot;
+  const auto two = layoutPanels({panels[0], panels[1]}, 1280, 720);
+  EXPECT_EQ(two[0].x, 0);
+  EXPECT_EQ(two[0].width, 717);  // round(0.56 * 1280)
+  EXPECT_EQ(two[0].height, 720);
+  EXPECT_EQ(two[1].x, 717);
+  EXPECT_EQ(two[1].width, 1280 - 717);
+  EXPECT_EQ(two[1].height, 720);
+  const auto three = layoutPanels(panels, 320, 180);
+  EXPECT_EQ(three[0].width, 179);  // round(0.56 * 320)
+  EXPECT_EQ(three[1].y, 0);
+  EXPECT_EQ(three[1].height, 90);
+  EXPECT_EQ(three[2].y, 90);
+  EXPECT_EQ(three[2].height, 90);
+  EXPECT_EQ(layoutPanels({panels[0]}, 1280, 720)[0].width, 1280) << "a single panel takes the whole frame";
+}
+
 TEST(PanelLayout, ExplicitRectsAreKept) {
   std::vector<PanelSpec> panels(1);
   panels[0].rect = std::array<double, 4>{0.25, 0.5, 0.5, 0.5};
