@@ -2,6 +2,7 @@
 #include <benchmark/benchmark.h>
 
 #include "contracts/registry.hpp"
+#include "fixtures/published_references.hpp"
 #include "linkage/sphere_coordinates.hpp"
 #include "simulation/ambient_system.hpp"
 #include "simulation/chart_system.hpp"

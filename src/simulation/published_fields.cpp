@@ -21,37 +21,9 @@ Eigen::Vector2d rotate(const Eigen::Vector2d& unit, const Eigen::Vector2d& v) { 
   return {unit.x() * v.x() - unit.y() * v.y(), unit.y() * v.x() + unit.x() * v.y()};
 }
 
-// Stencil indices: 0 centre, 1 plus eps, 2 minus eps.
-std::array<double, 3> stencilOf(double x, double eps) { return {x, x + eps, x - eps}; }
 
 // ---- christoffel-fd (spec section 4): the Christoffel algebra on the metric stencil -----------------
 
-Eigen::Vector2d christoffelFdFromMetrics(const Eigen::Matrix2d& m, const Eigen::Matrix2d& mPh,
-                                         const Eigen::Matrix2d& mPl, const Eigen::Matrix2d& mTh,
-                                         const Eigen::Matrix2d& mTl, double eps, const Eigen::Vector2d& rates) {
-  // Divisions by a common denominator as one reciprocal and products (within an ulp of the quotients).
-  const double inv2eps = 1 / (2 * eps);
-  const double E = m(0, 0), F = m(0, 1), G = m(1, 1);
-  const double Ep = (mPh(0, 0) - mPl(0, 0)) * inv2eps, Fp = (mPh(0, 1) - mPl(0, 1)) * inv2eps;
-  const double Gp = (mPh(1, 1) - mPl(1, 1)) * inv2eps, Et = (mTh(0, 0) - mTl(0, 0)) * inv2eps;
-  const double Ft = (mTh(0, 1) - mTl(0, 1)) * inv2eps, Gt = (mTh(1, 1) - mTl(1, 1)) * inv2eps;
-
-  const double invD = 1 / (E * G - F * F);
-  const double Ei = G * invD, Fi = -F * invD, Gi = E * invD;  // inverse metric (script E, F, G)
-
-  const double gamPpp = 0.5 * (Ei * Ep + Fi * (2 * Fp - Et));
-  const double gamTpp = 0.5 * (Fi * Ep + Gi * (2 * Fp - Et));
-  const double gamPtt = 0.5 * (Ei * (2 * Ft - Gp) + Fi * Gt);
-  const double gamTtt = 0.5 * (Fi * (2 * Ft - Gp) + Gi * Gt);
-  const double gamPpt = 0.5 * (Ei * Et + Fi * Gp);
-  const double gamTpt = 0.5 * (Fi * Et + Gi * Gp);
-
-  const double pd = rates(0), td = rates(1);
-  return {-(pd * pd * gamPpp + 2 * pd * td * gamPpt + td * td * gamPtt),
-          -(pd * pd * gamTpp + 2 * pd * td * gamTpt + td * td * gamTtt)};
-}
-
-constexpr double christoffelEps = 1e-5;
 
 // ---- embedded-fd (spec section 5): Psi in two levels, and the normal-acceleration algebra -------------
 
@@ -108,8 +80,33 @@ Vector6d fourRodInner(const FourRodOuter& o, const FourRodInnerTrig& in, double 
   return q;
 }
 
-// The 3x3 stencil of q, indexed [phi index][t index] as stencilOf.
-using HingeStencil = std::array<std::array<Vector6d, 3>, 3>;
+
+}  // namespace
+
+Eigen::Vector2d christoffelFdFromMetrics(const Eigen::Matrix2d& m, const Eigen::Matrix2d& mPh,
+                                         const Eigen::Matrix2d& mPl, const Eigen::Matrix2d& mTh,
+                                         const Eigen::Matrix2d& mTl, double eps, const Eigen::Vector2d& rates) {
+  // Divisions by a common denominator as one reciprocal and products (within an ulp of the quotients).
+  const double inv2eps = 1 / (2 * eps);
+  const double E = m(0, 0), F = m(0, 1), G = m(1, 1);
+  const double Ep = (mPh(0, 0) - mPl(0, 0)) * inv2eps, Fp = (mPh(0, 1) - mPl(0, 1)) * inv2eps;
+  const double Gp = (mPh(1, 1) - mPl(1, 1)) * inv2eps, Et = (mTh(0, 0) - mTl(0, 0)) * inv2eps;
+  const double Ft = (mTh(0, 1) - mTl(0, 1)) * inv2eps, Gt = (mTh(1, 1) - mTl(1, 1)) * inv2eps;
+
+  const double invD = 1 / (E * G - F * F);
+  const double Ei = G * invD, Fi = -F * invD, Gi = E * invD;  // inverse metric (script E, F, G)
+
+  const double gamPpp = 0.5 * (Ei * Ep + Fi * (2 * Fp - Et));
+  const double gamTpp = 0.5 * (Fi * Ep + Gi * (2 * Fp - Et));
+  const double gamPtt = 0.5 * (Ei * (2 * Ft - Gp) + Fi * Gt);
+  const double gamTtt = 0.5 * (Fi * (2 * Ft - Gp) + Gi * Gt);
+  const double gamPpt = 0.5 * (Ei * Et + Fi * Gp);
+  const double gamTpt = 0.5 * (Fi * Et + Gi * Gp);
+
+  const double pd = rates(0), td = rates(1);
+  return {-(pd * pd * gamPpp + 2 * pd * td * gamPpt + td * td * gamPtt),
+          -(pd * pd * gamTpp + 2 * pd * td * gamTpt + td * td * gamTtt)};
+}
 
 Eigen::Vector2d embeddedFdFromHinges(const HingeStencil& q, double eps, const Eigen::Vector2d& rates) {
   const Vector6d& q00 = q[0][0];
@@ -132,10 +129,6 @@ Eigen::Vector2d embeddedFdFromHinges(const HingeStencil& q, double eps, const Ei
   return {(gtt * bP - gpt * bT) * invDet, (gpp * bT - gpt * bP) * invDet};
 }
 
-constexpr double embeddedEps = 1e-4;
-
-}  // namespace
-
 // ---- christoffel-fd ---------------------------------------------------------------------------------
 
 PublishedChain::PublishedChain(double L)
@@ -145,7 +138,7 @@ Eigen::Vector2d christoffelFdAcceleration(const PublishedChain& chain, const Eig
                                           const Eigen::Vector2d& rates) {
   // Spec section 4: metric4 at (phi, t), (phi +- eps, t), (phi, t +- eps). Its outer level (phi only) is
   // computed for the 3 phi values, cos/sin of t for the 3 t values, the inner level at the 5 points.
-  constexpr double eps = christoffelEps;
+  constexpr double eps = kChristoffelFdEps;
   const std::array<double, 3> phis = stencilOf(coords(0), eps), ts = stencilOf(coords(1), eps);
   const double L = chain.baseLength;
   const double alpha = chain.printedAmplitude;
@@ -179,38 +172,15 @@ Eigen::Vector2d christoffelFdAcceleration(const PublishedChain& chain, const Eig
                                   rates);
 }
 
-Eigen::Vector2d christoffelFdAccelerationStencilByStencil(double L, const Eigen::Vector2d& coords,
-                                                          const Eigen::Vector2d& rates) {
-  // Spec section 4, geodesicVectorField, line by line.
-  constexpr double eps = christoffelEps;
-  const double phi = coords(0), t = coords(1);
-  return christoffelFdFromMetrics(kineticMetricPublished(L, phi, t), kineticMetricPublished(L, phi + eps, t),
-                                  kineticMetricPublished(L, phi - eps, t), kineticMetricPublished(L, phi, t + eps),
-                                  kineticMetricPublished(L, phi, t - eps), eps, rates);
-}
 
 // ---- embedded-fd ------------------------------------------------------------------------------------
 
-Vector6d fourRodHinges(double L, double phi, double t) {
-  const double alpha = chainAmplitude(4, L);
-  const double theta = alpha * std::sin(phi);
-  FourRodOuter outer = fourRodOuter(L, turnOf(theta), std::sin(0.5 * theta));
-  outer.alphaIn = chainAmplitude(3, outer.d);
-  const double sinT = std::sin(t);
-  const double thetaIn = outer.alphaIn * sinT;
-  const FourRodInnerTrig inner{{std::cos(t), sinT},
-                               turnOf(thetaIn),
-                               std::sin(0.5 * thetaIn),
-                               sinc(0.5 * outer.alphaIn * (1 + sinT)) * sinc(0.5 * outer.alphaIn * (1 - sinT))};
-  const ElbowRadicand radicand = elbowRadicand(outer, inner);
-  return fourRodInner(outer, inner, std::sqrt(radicand.numerator / radicand.denominator));
-}
 
 Eigen::Vector2d embeddedFdAcceleration(const PublishedChain& chain, const Eigen::Vector2d& coords,
                                        const Eigen::Vector2d& rates) {
   // Spec section 5 on its 3x3 stencil: Psi's outer level for the 3 phi values, cos/sin t for the 3 t values,
   // every other angle turned from its value at the centre (cos/sin of theta and theta_in from their halves).
-  constexpr double eps = embeddedEps;
+  constexpr double eps = kEmbeddedFdEps;
   const std::array<double, 3> phis = stencilOf(coords(0), eps), ts = stencilOf(coords(1), eps);
   const double L = chain.baseLength;
   const double alpha = chain.amplitude;
@@ -264,15 +234,5 @@ Eigen::Vector2d embeddedFdAcceleration(const PublishedChain& chain, const Eigen:
   return embeddedFdFromHinges(q, eps, rates);
 }
 
-Eigen::Vector2d embeddedFdAccelerationStencilByStencil(double L, const Eigen::Vector2d& coords,
-                                                       const Eigen::Vector2d& rates) {
-  // Spec section 5, geodesicVectorFieldEmbedded, line by line (3x3 stencil, eps = 1e-4).
-  constexpr double eps = embeddedEps;
-  const std::array<double, 3> phis = stencilOf(coords(0), eps), ts = stencilOf(coords(1), eps);
-  HingeStencil q;
-  for (int k = 0; k < 3; ++k)
-    for (int j = 0; j < 3; ++j) q[k][j] = fourRodHinges(L, phis[k], ts[j]);
-  return embeddedFdFromHinges(q, eps, rates);
-}
 
 }  // namespace sl

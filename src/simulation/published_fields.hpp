@@ -7,8 +7,10 @@
 //                               eps = 1e-4, then the 2x2 normal-acceleration system.
 // The fields share work across the stencil (what depends on phi alone is computed for 3 phi values, not
 // 5 or 9; sines and cosines of neighbouring stencil angles come from one sincos by angle addition). The
-// ...StencilByStencil versions evaluate every stencil point from scratch, as the spec's code does: the
-// reference the shared versions are tested against (they agree to roundoff) and benchmarked with.
+// tests' references (tests/fixtures/published_references.hpp) evaluate every stencil point from scratch, as the
+// spec's code does, and finish with the same algebra (below).
+
+#include <array>
 
 #include <Eigen/Dense>
 
@@ -28,15 +30,18 @@ Eigen::Vector2d christoffelFdAcceleration(const PublishedChain& chain, const Eig
 Eigen::Vector2d embeddedFdAcceleration(const PublishedChain& chain, const Eigen::Vector2d& coords,
                                        const Eigen::Vector2d& rates);
 
-// The same, every stencil point evaluated from scratch from L (the spec's code): the reference.
+// The spec's difference steps and stencils: index 0 the centre, 1 plus eps, 2 minus eps.
+inline constexpr double kChristoffelFdEps = 1e-5;  // section 4
+inline constexpr double kEmbeddedFdEps = 1e-4;     // section 5
+inline std::array<double, 3> stencilOf(double x, double eps) { return {x, x + eps, x - eps}; }
 
-Eigen::Vector2d christoffelFdAccelerationStencilByStencil(double baseLength, const Eigen::Vector2d& coords,
-                                                          const Eigen::Vector2d& rates);
-Eigen::Vector2d embeddedFdAccelerationStencilByStencil(double baseLength, const Eigen::Vector2d& coords,
-                                                       const Eigen::Vector2d& rates);
+// Section 4's Christoffel algebra on the metric at the centre and at phi +- eps, t +- eps.
+Eigen::Vector2d christoffelFdFromMetrics(const Eigen::Matrix2d& m, const Eigen::Matrix2d& mPh,
+                                         const Eigen::Matrix2d& mPl, const Eigen::Matrix2d& mTh,
+                                         const Eigen::Matrix2d& mTl, double eps, const Eigen::Vector2d& rates);
 
-// Psi^4_L(phi, t) stacked as (p1, p2, p3) in R^6, fixed-size: the recursion of linkage/chart.hpp written
-// out for 4 rods (the spec's psi4Position with nu_in in its cancellation-free form).
-Eigen::Matrix<double, 6, 1> fourRodHinges(double baseLength, double phi, double t);
+// Section 5's normal-acceleration algebra on the 3x3 stencil of q = Psi(phi, t) in R^6, [phi index][t index].
+using HingeStencil = std::array<std::array<Eigen::Matrix<double, 6, 1>, 3>, 3>;
+Eigen::Vector2d embeddedFdFromHinges(const HingeStencil& q, double eps, const Eigen::Vector2d& rates);
 
 }  // namespace sl

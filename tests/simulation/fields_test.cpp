@@ -6,6 +6,7 @@
 #include <random>
 #include <vector>
 
+#include "fixtures/published_references.hpp"
 #include "linkage/chart.hpp"
 #include "linkage/kinetic_metric.hpp"
 #include "linkage/sphere_coordinates.hpp"
@@ -91,23 +92,6 @@ TEST(ExactFields, AccelerationIsNormalToTheConfigurationSpace) {
   const Eigen::MatrixXd J = chartJacobian(chain, axes, c);
   const Eigen::VectorXd tangential = J.transpose() * stackedMassMatrix(chain) * qdd;
   EXPECT_LT(tangential.norm(), 1e-6 * qdd.norm());
-}
-
-TEST(PublishedFields, FourRodHingesAreTheChart) {
-  for (double L : {2.2, 3.0, 3.9})
-    for (double phi = -1.5; phi <= 1.5; phi += 0.25)
-      for (double t = -3.1; t <= 3.1; t += 0.2) {
-        const Eigen::Matrix2Xd expected = hingePositions(Chain::uniform(4, L), Eigen::Vector2d(phi, t));
-        const Eigen::Matrix<double, 6, 1> q = fourRodHinges(L, phi, t);
-        EXPECT_LT((Eigen::Map<const Eigen::Matrix<double, 2, 3>>(q.data()) - expected).cwiseAbs().maxCoeff(), 1e-14);
-      }
-  // Exactly on the seam t = pi/2 too.
-  const Eigen::Matrix<double, 6, 1> q = fourRodHinges(3.0, 0.4, M_PI / 2);
-  EXPECT_LT((Eigen::Map<const Eigen::Matrix<double, 2, 3>>(q.data()) -
-             hingePositions(Chain::uniform(4, 3.0), Eigen::Vector2d(0.4, M_PI / 2)))
-                .cwiseAbs()
-                .maxCoeff(),
-            1e-14);
 }
 
 TEST(PublishedFields, AgreeWithTheExactFieldToTheirDifferenceError) {
