@@ -10,6 +10,7 @@ packages=(
   libosmesa6-dev libstb-dev libdeflate-dev libssl-dev   # headless GL, fonts/images, PNG deflate, SHA-256
   fonts-dejavu-core ffmpeg                              # the font the frames use, video encoding
   libgtest-dev libbenchmark-dev parallel gnuplot-nox    # tests, benchmarks, sharded renders, charts
+  libpng-dev                                            # a second PNG decoder for the tests
   python3-jsonschema                                    # checks scenes/scene.schema.json in the tests
   clang libclang-rt-14-dev                              # fuzzing (libFuzzer) and sanitizer runtimes
 )

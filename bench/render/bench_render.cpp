@@ -2,11 +2,13 @@
 // per second of wall time and the split between render, readback, encode and write.
 //
 //   bench_render [--frames 600] [--size 1280x720] [--sink none|png|mp4|encode] [--out DIR]
-//                [--encoders 2] [--repeat 3] [--no-aa] [--orbit]
+//                [--encoders 2] [--repeat 3] [--no-aa] [--orbit] [--compression fast|small]
+// --sink encode encodes and hashes each frame on the rendering thread, timing each step (CPU per frame, split).
 // llvmpipe's thread count comes from the environment: LP_NUM_THREADS=2 bench_render ...
 // Prints one line per repeat and the median; the machine may be shared, so compare medians and ratios.
 
 #include <sys/resource.h>
+#include <time.h>
 
 #include <algorithm>
 #include <chrono>
@@ -21,6 +23,7 @@
 #include "output/frame_manifest.hpp"
 #include "output/png_encoder.hpp"
 #include "output/png_sequence_sink.hpp"
+#include "output/sha256.hpp"
 #include "output/video_sink.hpp"
 #include "render/renderer.hpp"
 
@@ -28,6 +31,13 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+// CPU seconds of the calling thread (encoding and hashing run on it: their CPU cost, whatever the load).
+double threadCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
 
 // CPU seconds used by this process (all threads, llvmpipe's and the encoders') and its children (ffmpeg).
 double cpuSeconds() {
@@ -44,6 +54,7 @@ struct Options {
   int frames = 600, width = 1280, height = 720, encoders = 2, repeat = 3;
   std::string sink = "png", out = "/tmp/bench_render";
   bool antialias = true, orbit = false;
+  sl::PngCompression compression = sl::PngCompression::Fast;
 };
 
 Options parse(int argc, char** argv) {
@@ -73,6 +84,8 @@ Options parse(int argc, char** argv) {
       o.antialias = false;
     else if (a == "--orbit")
       o.orbit = true;
+    else if (a == "--compression")
+      o.compression = next() == "small" ? sl::PngCompression::Small : sl::PngCompression::Fast;
     else {
       std::fprintf(stderr, "unknown option %s (see the comment at the top of bench_render.cpp)\n", a.c_str());
       std::exit(2);
@@ -96,7 +109,8 @@ sl::ViewSettings settingsFor(const Options& o) {
 }
 
 struct Split {
-  double wall = 0, render = 0, encode = 0, cpu = 0;
+  double wall = 0, render = 0, encode = 0, hash = 0, cpu = 0;
+  std::size_t bytes = 0;
 };
 
 Split runOnce(const Options& o, sl::Renderer& renderer, const sl::SyntheticOptions& synthetic, double fps) {
@@ -105,12 +119,12 @@ Split runOnce(const Options& o, sl::Renderer& renderer, const sl::SyntheticOptio
   sl::output::FrameManifest manifest(o.out, {{"bench", "render"}});
   manifest.addRenderer(renderer.glRenderer(), renderer.glVersion());
   std::unique_ptr<sl::output::FrameSink> sink;
-  if (o.sink == "png") sink = std::make_unique<sl::output::PngSequenceSink>(o.out, manifest, o.encoders);
+  if (o.sink == "png") sink = std::make_unique<sl::output::PngSequenceSink>(o.out, manifest, o.encoders, o.compression);
   if (o.sink == "mp4") {
     sl::output::VideoSettings video{o.out + "/bench.mp4", sl::VideoFormat::Mp4, sl::VideoQuality::High, o.width, o.height, fps};
     sink = std::make_unique<sl::output::VideoSink>(video, manifest);
   }
-  sl::output::PngEncoder encoder;
+  sl::output::PngEncoder encoder(o.compression);
   Split split;
   const double cpuStart = cpuSeconds();
   const auto start = Clock::now();
@@ -120,9 +134,13 @@ Split runOnce(const Options& o, sl::Renderer& renderer, const sl::SyntheticOptio
     sl::Image image = renderer.render(frame);
     split.render += seconds(Clock::now() - t0);
     if (o.sink == "encode") {  // encoding alone, on this thread: its cost per frame
-      const auto t1 = Clock::now();
-      encoder.encode(image);
-      split.encode += seconds(Clock::now() - t1);
+      const double t1 = threadCpuSeconds();
+      const std::vector<std::uint8_t> png = encoder.encode(image);
+      const double t2 = threadCpuSeconds();
+      split.encode += t2 - t1;
+      split.bytes += png.size();
+      sl::output::sha256Hex(png);
+      split.hash += threadCpuSeconds() - t2;
     }
     if (sink) sink->consume(k, std::move(image));
   }
@@ -150,7 +168,9 @@ int main(int argc, char** argv) {
     rates.push_back(o.frames / s.wall);
     std::printf("  run %d: %.1f frames/s wall; render+readback %.2f ms/frame", r + 1, o.frames / s.wall,
                 1e3 * s.render / o.frames);
-    if (o.sink == "encode") std::printf(", PNG encode %.2f ms/frame", 1e3 * s.encode / o.frames);
+    if (o.sink == "encode")
+      std::printf(", PNG encode %.2f ms/frame (%.0f kB), file SHA-256 %.2f ms/frame", 1e3 * s.encode / o.frames,
+                  1e-3 * double(s.bytes) / o.frames, 1e3 * s.hash / o.frames);
     // On a shared machine wall time varies with the load; CPU time per frame does much less, and two
     // idle cores can at best deliver 2 / (CPU seconds per frame) frames per second.
     std::printf("; CPU %.2f ms/frame (2-core bound %.0f frames/s)\n", 1e3 * s.cpu / o.frames, 2 * o.frames / s.cpu);

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <tuple>
 
 #include <CLI/CLI.hpp>
 
@@ -46,8 +47,7 @@ bool diffTrajectories(const DiffArguments& args) {
 bool diffFolders(const DiffArguments& args) {
   std::map<int, std::string> before, after;
   try {
-    before = readPixelHashes(args.before);
-    after = readPixelHashes(args.after);
+    std::tie(before, after) = comparableHashes(readFolderFrames(args.before), readFolderFrames(args.after));
   } catch (const std::invalid_argument& error) {
     throw CommandExit(kExitBadInput, error.what());
   }

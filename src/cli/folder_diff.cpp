@@ -16,44 +16,28 @@
 
 namespace sl {
 
-std::map<int, std::string> readPixelHashes(const std::string& folder) {
+FolderFrames readFolderFrames(const std::string& folder) {
   const std::string path = folder + "/manifest.json";
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument(path + ": cannot read (is " + folder + " a render folder?)");
-  std::map<int, std::string> hashes;
-  try {
-    const nlohmann::json manifest = nlohmann::json::parse(in);
-    for (const auto& entry : manifest.at("frames")) {
-      const int frame = entry.at("frame").get<int>();
-      hashes[frame] = entry.at("pixelSha256").get<std::string>();
-      // The manifest is only as good as the files: each must still be what was rendered.
-      const std::string file = entry.value("file", "");
-      if (file.empty()) continue;
-      const std::string framePath = folder + "/" + file;
-      if (!std::filesystem::is_regular_file(framePath))
-        throw std::invalid_argument(framePath + ": listed in " + path + " but missing");
-      if (output::sha256OfFile(framePath) != entry.value("fileSha256", ""))
-        throw std::invalid_argument(framePath + ": does not match its entry in " + path +
-                                    " (changed after the render, or written by another one)");
-    }
-  } catch (const nlohmann::json::exception& error) {
-    throw std::invalid_argument(path + ": not a frame manifest: " + error.what());
-  }
-  return hashes;
-}
-
-FolderDifference compareFolders(const std::map<int, std::string>& before, const std::map<int, std::string>& after) {
-  FolderDifference result;
-  result.framesBefore = static_cast<int>(before.size());
-  result.framesAfter = static_cast<int>(after.size());
-  std::set<int> frames;
-  for (const auto& [frame, hash] : before) frames.insert(frame);
-  for (const auto& [frame, hash] : after) frames.insert(frame);
-  for (int frame : frames) {
-    const auto a = before.find(frame), b = after.find(frame);
-    if (a != before.end() && b != after.end() && a->second == b->second) continue;
-    ++result.differing;
-    if (!result.firstDiffering) result.firstDiffering = frame;
+  if (!std::filesystem::exists(path)) throw std::invalid_argument(path + ": cannot read (is " + folder + " a render folder?)");
+  const output::ManifestContents manifest = output::readManifestFile(path);
+  FolderFrames result;
+  result.folder = folder;
+  if (manifest.format >= 2 && manifest.info.is_object() && manifest.info.contains("png") && manifest.info["png"].is_string())
+    result.encoder = manifest.info["png"].get<std::string>();
+  for (const auto& [frame, entry] : manifest.frames) {
+    if (entry.file.empty())
+      throw std::invalid_argument(path + ": frame " + std::to_string(frame) +
+                                  " is listed without its file (not written whole); render it again with --resume");
+    // The manifest is only as good as the files: each must still be what was rendered.
+    const std::string framePath = folder + "/" + entry.file;
+    if (!std::filesystem::is_regular_file(framePath))
+      throw std::invalid_argument(framePath + ": listed in " + path + " but missing");
+    if (output::sha256OfFile(framePath) != entry.fileSha256)
+      throw std::invalid_argument(framePath + ": does not match its entry in " + path +
+                                  " (changed after the render, or written by another one)");
+    result.fileHashes[frame] = entry.fileSha256;
+    result.files[frame] = entry.file;
+    if (!entry.pixelSha256.empty()) result.pixelHashes[frame] = entry.pixelSha256;
   }
   return result;
 }
@@ -73,7 +57,44 @@ DecodedImage decodePng(const std::string& path) {
   return image;
 }
 
+std::map<int, std::string> pixelHashesOf(const FolderFrames& side) {
+  std::map<int, std::string> hashes;
+  for (const auto& [frame, fileHash] : side.fileHashes) {
+    if (const auto known = side.pixelHashes.find(frame); known != side.pixelHashes.end()) {
+      hashes[frame] = known->second;
+      continue;
+    }
+    const DecodedImage image = decodePng(side.folder + "/" + side.files.at(frame));
+    const std::size_t bytes = std::size_t(image.width) * image.height * 3;
+    hashes[frame] = output::sha256Hex(image.pixels.get(), bytes);
+  }
+  return hashes;
+}
+
 }  // namespace
+
+std::pair<std::map<int, std::string>, std::map<int, std::string>> comparableHashes(const FolderFrames& before,
+                                                                                   const FolderFrames& after) {
+  if (!before.encoder.empty() && before.encoder == after.encoder) return {before.fileHashes, after.fileHashes};
+  return {pixelHashesOf(before), pixelHashesOf(after)};
+}
+
+FolderDifference compareFolders(const std::map<int, std::string>& before, const std::map<int, std::string>& after) {
+  FolderDifference result;
+  result.framesBefore = static_cast<int>(before.size());
+  result.framesAfter = static_cast<int>(after.size());
+  std::set<int> frames;
+  for (const auto& [frame, hash] : before) frames.insert(frame);
+  for (const auto& [frame, hash] : after) frames.insert(frame);
+  for (int frame : frames) {
+    const auto a = before.find(frame), b = after.find(frame);
+    if (a != before.end() && b != after.end() && a->second == b->second) continue;
+    ++result.differing;
+    if (!result.firstDiffering) result.firstDiffering = frame;
+  }
+  return result;
+}
+
 
 PixelDifference comparePixels(const std::string& before, const std::string& after, int frame,
                               const std::string& imageFolder) {

@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace sl {
 
@@ -16,8 +17,21 @@ struct FolderDifference {
   bool matches() const { return differing == 0; }
 };
 
-// Frame number -> pixel SHA-256 from DIR/manifest.json; throws std::invalid_argument if unreadable.
-std::map<int, std::string> readPixelHashes(const std::string& folder);
+// What DIR/manifest.json says of the folder's frames, each listed file checked against its hash; throws
+// std::invalid_argument if the manifest is unreadable or malformed, a frame has no file or a file does not match.
+struct FolderFrames {
+  std::string folder;
+  std::string encoder;                      // the render's PNG encoder (info "png"); empty for format 1
+  std::map<int, std::string> files;         // frame -> its file's name in the folder
+  std::map<int, std::string> fileHashes;    // frame -> SHA-256 of its file
+  std::map<int, std::string> pixelHashes;   // frame -> SHA-256 of its pixels, where the manifest lists it
+};
+FolderFrames readFolderFrames(const std::string& folder);
+
+// Frame -> a hash that is equal on both sides exactly when the pixels are: the file hashes when both folders were
+// written by the same encoder, else pixel hashes (from the manifest, or by decoding the file).
+std::pair<std::map<int, std::string>, std::map<int, std::string>> comparableHashes(const FolderFrames& before,
+                                                                                   const FolderFrames& after);
 
 FolderDifference compareFolders(const std::map<int, std::string>& before, const std::map<int, std::string>& after);
 

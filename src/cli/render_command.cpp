@@ -103,13 +103,16 @@ RenderPlan planRender(const RenderArguments& args) {
 // Identifies the render in its manifest, so shards and resumes only ever join the same render.
 nlohmann::json manifestInfo(const RenderPlan& plan) {
   const Scene& scene = plan.scene;
-  return {{"scene", scene.name},
+  nlohmann::json info{{"scene", scene.name},
           {"sceneSha256", output::sha256Hex(reinterpret_cast<const std::uint8_t*>(scene.identity.data()),
                                              scene.identity.size())},
           {"width", scene.output.size.width},
           {"height", scene.output.size.height},
           {"fps", scene.output.fps},
           {"frames", scene.frameCount()}};
+  // The encoder decides the files' bytes: shards and resumes of another encoder must not join.
+  if (plan.png) info["png"] = output::PngEncoder::identity(scene.output.pngCompression);
+  return info;
 }
 
 // Samples the history up to (not including) frame k, one frame at a time so that a signal is noticed even while
@@ -125,7 +128,7 @@ void checkSpaceForFrames(const RenderPlan& plan, Renderer& renderer, FrameBuilde
   if (!plan.png) return;  // x264's output size depends on the motion; a full disk shows up as ffmpeg's error
   const int first = plan.range.first;
   const Image image = renderer.render(builder.frame(first));
-  FrameSpaceNeed need{plan.folder, 0, first, output::PngEncoder().encode(image).size(), image.width, image.height};
+  FrameSpaceNeed need{plan.folder, 0, first, output::PngEncoder(plan.scene.output.pngCompression).encode(image).size(), image.width, image.height};
   for (int frame = first; frame < plan.range.end; ++frame)
     need.framesToWrite += !fs::exists(fs::path(plan.folder) / output::frameFileName(frame));
   refuseIfFramesCannotFit(need);
@@ -226,7 +229,7 @@ void runRender(const RenderArguments& args) {
                 << " frames removed)\n";
     }
     pngManifest->addRenderer(renderer.glRenderer(), renderer.glVersion());
-    pngSink = std::make_unique<output::PngSequenceSink>(plan.folder, *pngManifest);
+    pngSink = std::make_unique<output::PngSequenceSink>(plan.folder, *pngManifest, 2, scene.output.pngCompression);
     sinks.push_back(pngSink.get());
   }
   if (!plan.video.empty()) {
@@ -286,7 +289,7 @@ void addRenderCommand(CLI::App& app) {
   command->add_flag("--quiet", args->quiet, "errors only: no progress, run reports or summary line");
   command->add_flag("--resume", args->resume, "skip frames whose file and manifest entry are complete (PNG only)");
   command->footer(
-      "Frames go to DIR/frame_00000.png ... with DIR/manifest.json (SHA-256 of pixels and files).\n"
+      "Frames go to DIR/frame_00000.png ... with DIR/manifest.json (SHA-256 of each file).\n"
       "Examples:\n"
       "  linkage render scenes/default.json\n"
       "  linkage render scenes/comparison.json --size 640x360 --video renders/comparison.mp4 --no-png\n"

@@ -13,6 +13,7 @@ struct OutputSettings {
   ImageSize size;      // the frame size, for the renderer and every sink
   std::string folder;  // default renders/<name>, relative to the working directory
   bool png = true;     // write PNG frames
+  PngCompression pngCompression = PngCompression::Fast;
   std::string video;   // a .mp4, .webm or .gif path (the format by its extension), empty = no video
   VideoQuality videoQuality = VideoQuality::High;
 };

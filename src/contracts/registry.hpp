@@ -157,6 +157,13 @@ inline constexpr std::array<Named<VideoQuality>, 3> kVideoQualities{{
     {VideoQuality::Small, "small"},
 }};
 
+// How PNG frames are compressed (docs/rendering.md gives the cost of each in time and bytes).
+enum class PngCompression { Fast, Small };
+inline constexpr std::array<Named<PngCompression>, 2> kPngCompressions{{
+    {PngCompression::Fast, "fast"},    // this program's run-length deflate (output/fast_png.hpp)
+    {PngCompression::Small, "small"},  // libdeflate level 1
+}};
+
 // === Look-ups, the same for every table
 
 template <class Table>

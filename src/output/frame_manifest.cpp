@@ -23,7 +23,8 @@
 namespace sl::output {
 namespace {
 
-constexpr const char* kFormat = "sphere-linkages frame manifest 1";
+constexpr const char* kFormat = "sphere-linkages frame manifest 2";
+constexpr const char* kFormat1 = "sphere-linkages frame manifest 1";  // read, never joined (see the header)
 
 // flock(2) with a bounded wait: polls, says once (after a second) what it waits for, and gives up after
 // limits::kMaxLockWaitSeconds naming the file. A process stopped while holding a lock must not hang the others.
@@ -112,17 +113,111 @@ std::string describeRender(const nlohmann::json& info) {
 }
 
 nlohmann::json toJson(const FrameEntry& e) {
-  nlohmann::json j{{"frame", e.frame}, {"pixelSha256", e.pixelSha256}};
+  nlohmann::json j{{"frame", e.frame}};
+  if (!e.pixelSha256.empty()) j["pixelSha256"] = e.pixelSha256;
   if (!e.file.empty()) j["file"] = e.file, j["fileSha256"] = e.fileSha256;
   return j;
 }
 
+// Of an entry already checked by parseManifest (readAnyLocked gives only those).
 FrameEntry fromJson(const nlohmann::json& j) {
-  return {j.at("frame").get<int>(), j.value("file", ""), j.at("pixelSha256").get<std::string>(),
-          j.value("fileSha256", "")};
+  return {j.at("frame").get<int>(), j.value("file", ""), j.value("pixelSha256", ""), j.value("fileSha256", "")};
+}
+
+[[noreturn]] void invalid(const std::string& path, const std::string& where, const std::string& what) {
+  throw ManifestInvalid("manifest " + path + ": " + where + ": " + what);
+}
+
+std::string shown(const nlohmann::json& value) {
+  std::string text = value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  return text.size() > 80 ? text.substr(0, 77) + "..." : text;
+}
+
+bool isSha256Hex(const std::string& text) {
+  return text.size() == 64 && text.find_first_not_of("0123456789abcdef") == std::string::npos;
+}
+
+std::string hashField(const nlohmann::json& j, const char* key, const std::string& path, const std::string& where) {
+  if (!j.contains(key)) return "";
+  const nlohmann::json& value = j.at(key);
+  if (!value.is_string() || !isSha256Hex(value.get<std::string>()))
+    invalid(path, where + "." + key, "found " + shown(value) + "; expected a SHA-256 as 64 lowercase hex digits");
+  return value.get<std::string>();
+}
+
+FrameEntry parseEntry(const nlohmann::json& j, const std::string& path, const std::string& where) {
+  if (!j.is_object()) invalid(path, where, "found " + shown(j) + "; expected an object {\"frame\": ..., ...}");
+  for (const auto& [key, value] : j.items())
+    if (key != "frame" && key != "file" && key != "fileSha256" && key != "pixelSha256")
+      invalid(path, where + "." + key, "unknown key; expected frame, file, fileSha256 and/or pixelSha256");
+  FrameEntry e;
+  const std::string range = "from 0 to " + std::to_string(limits::kMaxFrames - 1);
+  if (!j.contains("frame")) invalid(path, where + ".frame", "missing; expected an integer " + range);
+  const nlohmann::json& frame = j.at("frame");
+  if (!frame.is_number_integer() ||
+      (frame.is_number_unsigned() ? frame.get<std::uint64_t>() >= std::uint64_t(limits::kMaxFrames)
+                                  : (frame.get<std::int64_t>() < 0 || frame.get<std::int64_t>() >= limits::kMaxFrames)))
+    invalid(path, where + ".frame", "found " + shown(frame) + "; expected an integer " + range);
+  e.frame = static_cast<int>(frame.get<std::int64_t>());
+  if (j.contains("file")) {
+    const nlohmann::json& file = j.at("file");
+    const std::string name = file.is_string() ? file.get<std::string>() : "";
+    if (name.empty() || name[0] == '.' || name.find('/') != std::string::npos || name.find('\0') != std::string::npos)
+      invalid(path, where + ".file", "found " + shown(file) + "; expected a file name inside the folder");
+    e.file = name;
+  }
+  e.fileSha256 = hashField(j, "fileSha256", path, where);
+  e.pixelSha256 = hashField(j, "pixelSha256", path, where);
+  if (e.file.empty() != e.fileSha256.empty())
+    invalid(path, where, e.file.empty() ? "fileSha256 without a file; expected both or neither"
+                                        : "file without fileSha256; expected both or neither");
+  if (e.fileSha256.empty() && e.pixelSha256.empty())
+    invalid(path, where, "no hash; expected file with fileSha256 (a PNG frame) or pixelSha256 (a video frame)");
+  return e;
 }
 
 }  // namespace
+
+ManifestContents parseManifest(const nlohmann::json& manifest, const std::string& path) {
+  if (!manifest.is_object()) invalid(path, "(top)", "found " + shown(manifest) + "; expected an object");
+  ManifestContents contents;
+  const nlohmann::json* format = manifest.contains("format") ? &manifest.at("format") : nullptr;
+  if (!format || (*format != kFormat && *format != kFormat1))
+    invalid(path, "format", "found " + (format ? shown(*format) : std::string("nothing")) + "; expected \"" + kFormat +
+                                "\" (or format 1 of earlier versions)");
+  contents.format = *format == kFormat ? 2 : 1;
+  if (!manifest.contains("info")) invalid(path, "info", "missing; expected what identifies the render");
+  contents.info = manifest.at("info");
+  const nlohmann::json* renderers = manifest.contains("renderers") ? &manifest.at("renderers") : nullptr;
+  if (!renderers || !renderers->is_array()) invalid(path, "renderers", "expected an array of strings");
+  for (std::size_t i = 0; i < renderers->size(); ++i) {
+    if (!(*renderers)[i].is_string())
+      invalid(path, "renderers[" + std::to_string(i) + "]", "found " + shown((*renderers)[i]) + "; expected a string");
+    contents.renderers.push_back((*renderers)[i].get<std::string>());
+  }
+  const nlohmann::json* frames = manifest.contains("frames") ? &manifest.at("frames") : nullptr;
+  if (!frames || !frames->is_array()) invalid(path, "frames", "expected an array of frame entries");
+  for (std::size_t i = 0; i < frames->size(); ++i) {
+    const std::string where = "frames[" + std::to_string(i) + "]";
+    FrameEntry e = parseEntry((*frames)[i], path, where);
+    if (contents.frames.count(e.frame))
+      invalid(path, where + ".frame", "frame " + std::to_string(e.frame) + " is listed twice; expected each once");
+    contents.frames[e.frame] = std::move(e);
+  }
+  return contents;
+}
+
+ManifestContents readManifestFile(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw ManifestInvalid("manifest " + path + ": cannot read");
+  nlohmann::json manifest;
+  try {
+    manifest = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw ManifestInvalid("manifest " + path + ": not JSON (" + e.what() + ")");
+  }
+  return parseManifest(manifest, path);
+}
 
 FrameManifest::FrameManifest(std::string folder, nlohmann::json info, std::string fileName, Existing existing,
                              Claim claim, bool (*cancelled)())
@@ -188,6 +283,10 @@ nlohmann::json FrameManifest::emptyManifest() const {
 
 nlohmann::json FrameManifest::readLocked() const {
   nlohmann::json manifest = readAnyLocked();
+  if (manifest.at("format") == kFormat1)
+    throw std::runtime_error("the folder " + folder_ + " holds frames of an earlier version of linkage (manifest " +
+                             path() + " is format 1; its PNG files were written by another encoder): render it "
+                             "again whole (without --frames or --resume), or use another --out");
   if (manifest.at("info") != info_)
     throw std::runtime_error("the folder " + folder_ + " holds a render of " + describeRender(manifest.at("info")) +
                              " (manifest " + path() + "), not of this one: " + manifest.at("info").dump() + " vs " +
@@ -198,17 +297,13 @@ nlohmann::json FrameManifest::readLocked() const {
 }
 
 nlohmann::json FrameManifest::readAnyLocked() const {
-  std::ifstream in(path());
-  if (!in) return emptyManifest();
-  nlohmann::json manifest;
-  try {
-    manifest = nlohmann::json::parse(in);
-    if (manifest.at("format") != kFormat) throw std::runtime_error("unknown format " + manifest.at("format").dump());
-    manifest.at("frames").get_ref<const nlohmann::json::array_t&>();
-    manifest.at("info");
-  } catch (const std::exception& e) {
-    throw std::runtime_error("manifest " + path() + " is not a frame manifest: " + e.what());
-  }
+  if (!std::filesystem::exists(path())) return emptyManifest();
+  ManifestContents contents = readManifestFile(path());
+  nlohmann::json manifest = emptyManifest();
+  manifest["format"] = contents.format == 1 ? kFormat1 : kFormat;
+  manifest["info"] = std::move(contents.info);
+  manifest["renderers"] = contents.renderers;
+  for (const auto& [frame, e] : contents.frames) manifest["frames"].push_back(toJson(e));
   return manifest;
 }
 
@@ -288,7 +383,7 @@ std::optional<FrameEntry> FrameManifest::entry(int frame) const {
 bool FrameManifest::isFrameComplete(int frame) const {
   const auto e = entry(frame);
   if (!e) return false;
-  if (e->file.empty()) return true;  // video frames: the hash of the pixels is all there is
+  if (e->file.empty() || e->fileSha256.empty()) return false;  // listed without its file: drawn again
   return sha256OfFile(folder_ + "/" + e->file) == e->fileSha256;
 }
 

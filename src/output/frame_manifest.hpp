@@ -13,6 +13,18 @@
 //   manifest.record({k, "frame_0000k.png", pixelSha, fileSha});  // buffered; thread-safe
 //   manifest.flush();                          // also automatic every 0.5 s and in the destructor
 //
+// What an entry means (format 2): a PNG frame is listed with its file's name and the SHA-256 of the file's bytes,
+// one hash per frame. The file is a function of the pixels and of the encoder, which the render's info names
+// ("png": PngEncoder::identity), so within one encoder equal file hashes mean equal pixels; `linkage diff` of
+// folders written by different encoders decodes the files and compares pixel hashes. A video frame is listed
+// with the SHA-256 of its raw RGB pixels (rows top-down) only. Format 1 (before) listed both hashes for PNG
+// frames: it is still read (diff, and a whole render replaces it), but never joined: its files came from another
+// encoder, so such a folder is rendered again whole rather than resumed.
+//
+// Everything read back is checked like a scene: a malformed manifest or entry ends with ManifestInvalid naming
+// the file and the JSON path (frames[3].frame: ...). An entry without a file (or whose file is gone or differs)
+// is not complete: --resume draws that frame again.
+//
 // On disk: <folder>/manifest.json (or the given name), replaced atomically (temporary + rename) while
 // holding flock(2) on <folder>/.manifest.json.lock (a hidden lock file per manifest), merging the entries already
 // there, so concurrent shards never lose each other's entries. Entries are listed only after their file was renamed
@@ -50,10 +62,28 @@ namespace sl::output {
 struct FrameEntry {
   int frame = 0;
   std::string file;         // name inside the folder; empty for video frames
-  std::string pixelSha256;  // of the raw RGB pixels, rows top-down
+  std::string pixelSha256;  // of the raw RGB pixels, rows top-down; video frames (and format 1 PNG entries)
   std::string fileSha256;   // of the file; empty for video frames
   bool operator==(const FrameEntry&) const = default;
 };
+
+// A manifest that cannot be trusted: not JSON, another format, or an entry out of shape. A bad input file,
+// like a bad scene (the CLI's exit status 2).
+struct ManifestInvalid : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+// A manifest's content, checked: every entry well formed, frame numbers unique and in range.
+struct ManifestContents {
+  int format = 2;
+  nlohmann::json info;
+  std::vector<std::string> renderers;
+  std::map<int, FrameEntry> frames;
+};
+// `path` names the file in messages. Throws ManifestInvalid.
+ManifestContents parseManifest(const nlohmann::json& manifest, const std::string& path);
+// Reads and parses; throws ManifestInvalid if the file cannot be read or parsed.
+ManifestContents readManifestFile(const std::string& path);
 
 // A lock wait given up at the caller's request (FrameManifest's `cancelled`).
 struct LockWaitCancelled : std::runtime_error {

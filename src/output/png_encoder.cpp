@@ -24,28 +24,36 @@ void chunk(std::vector<std::uint8_t>& out, const char type[4], const std::uint8_
 
 }  // namespace
 
-PngEncoder::PngEncoder(int level, PngFilter filter) : compressor_(libdeflate_alloc_compressor(level)), filter_(filter) {
-  if (!compressor_)
-    throw std::runtime_error("libdeflate: cannot create a level " + std::to_string(level) + " compressor");
+namespace {
+constexpr int kSmallLevel = 1;
 }
 
-PngEncoder::~PngEncoder() { libdeflate_free_compressor(static_cast<libdeflate_compressor*>(compressor_)); }
+PngEncoder::PngEncoder(PngCompression compression) : compression_(compression) {
+  if (compression_ != PngCompression::Small) return;
+  compressor_ = libdeflate_alloc_compressor(kSmallLevel);
+  if (!compressor_) throw std::runtime_error("libdeflate: cannot create a level 1 compressor");
+}
+
+PngEncoder::~PngEncoder() {
+  if (compressor_) libdeflate_free_compressor(static_cast<libdeflate_compressor*>(compressor_));
+}
+
+std::string PngEncoder::identity(PngCompression compression) {
+  if (compression == PngCompression::Fast) return "sphere-linkages fast 1";
+  return std::string("libdeflate ") + LIBDEFLATE_VERSION_STRING + " level " + std::to_string(kSmallLevel);
+}
 
 std::vector<std::uint8_t> PngEncoder::encode(const Image& image) {
   const std::size_t stride = static_cast<std::size_t>(image.width) * 3;
   if (image.width <= 0 || image.height <= 0 || image.rgb.size() != stride * image.height)
     throw std::invalid_argument("PNG: image buffer does not match " + std::to_string(image.width) + "x" +
                                 std::to_string(image.height) + " RGB");
+  if (compression_ == PngCompression::Fast) return encodeFastPng(image, scratch_);
   filtered_.resize((stride + 1) * image.height);
   for (int y = 0; y < image.height; ++y) {
     std::uint8_t* row = filtered_.data() + y * (stride + 1);
-    const std::uint8_t* pixels = image.rgb.data() + y * stride;
-    row[0] = static_cast<std::uint8_t>(filter_);
-    if (filter_ == PngFilter::None || y == 0) {
-      std::memcpy(row + 1, pixels, stride);  // row 0: "up" subtracts zero
-    } else {
-      for (std::size_t i = 0; i < stride; ++i) row[1 + i] = static_cast<std::uint8_t>(pixels[i] - pixels[i - stride]);
-    }
+    row[0] = 0;  // filter "none"
+    std::memcpy(row + 1, image.rgb.data() + y * stride, stride);
   }
   auto* compressor = static_cast<libdeflate_compressor*>(compressor_);
   std::vector<std::uint8_t> idat(libdeflate_zlib_compress_bound(compressor, filtered_.size()));

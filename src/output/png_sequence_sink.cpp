@@ -15,9 +15,11 @@ std::string frameFileName(int frameIndex) {
   return name;
 }
 
-PngSequenceSink::PngSequenceSink(std::string folder, FrameManifest& manifest, int encoderThreads)
+PngSequenceSink::PngSequenceSink(std::string folder, FrameManifest& manifest, int encoderThreads,
+                                 PngCompression compression)
     : folder_(std::move(folder)),
       manifest_(manifest),
+      compression_(compression),
       workers_(std::make_unique<WorkerPool>(encoderThreads, 2 * encoderThreads + 1)) {}
 
 PngSequenceSink::~PngSequenceSink() {
@@ -27,11 +29,11 @@ PngSequenceSink::~PngSequenceSink() {
 void PngSequenceSink::consume(int frameIndex, Image image) {
   auto shared = std::make_shared<Image>(std::move(image));
   workers_->submit([this, frameIndex, shared] {
-    thread_local PngEncoder encoder;
-    const std::vector<std::uint8_t> png = encoder.encode(*shared);
+    thread_local PngEncoder fast(PngCompression::Fast), small(PngCompression::Small);
+    const std::vector<std::uint8_t> png = (compression_ == PngCompression::Fast ? fast : small).encode(*shared);
     const std::string name = frameFileName(frameIndex);
     writeFileAtomically(folder_ + "/" + name, png);
-    manifest_.record({frameIndex, name, sha256Hex(shared->rgb), sha256Hex(png)});
+    manifest_.record({frameIndex, name, "", sha256Hex(png)});
   });
 }
 

@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "contracts/registry.hpp"
 #include "output/frame_manifest.hpp"
 #include "output/frame_sink.hpp"
 #include "output/worker_pool.hpp"
@@ -17,10 +18,11 @@ std::string frameFileName(int frameIndex);
 
 class PngSequenceSink : public FrameSink {
  public:
-  // `manifest` must outlive the sink. Encoding (deflate + SHA-256, ~2x the CPU of rendering a frame)
-  // is the critical path, so two encoder threads by default: they use whatever the renderer leaves of
-  // two cores (bench_render: 20 against 15 frames/s median on the loaded 2-core machine).
-  PngSequenceSink(std::string folder, FrameManifest& manifest, int encoderThreads = 2);
+  // `manifest` must outlive the sink. Each frame is encoded and its file hashed (SHA-256, the manifest's one hash
+  // per PNG frame) on a worker, overlapping with the caller's rendering of the next frame; two workers by default
+  // use whatever the renderer leaves of two cores.
+  PngSequenceSink(std::string folder, FrameManifest& manifest, int encoderThreads = 2,
+                  PngCompression compression = PngCompression::Fast);
   ~PngSequenceSink() override;
 
   void consume(int frameIndex, Image image) override;
@@ -29,6 +31,7 @@ class PngSequenceSink : public FrameSink {
  private:
   std::string folder_;
   FrameManifest& manifest_;
+  PngCompression compression_;
   std::unique_ptr<WorkerPool> workers_;
 };
 

@@ -459,7 +459,8 @@ void readRuns(const json* value, Scene& scene, RodCount rods, std::vector<SceneP
 }
 
 void readOutput(const json& value, Scene& scene, std::vector<SceneProblem>& problems) {
-  const JsonObject output(value, "output", problems, {"fps", "width", "height", "folder", "png", "video", "video_quality"});
+  const JsonObject output(value, "output", problems, {"fps", "width", "height", "folder", "png", "png_compression", "video",
+                                                      "video_quality"});
   OutputSettings& spec = scene.output;
   if (const auto fps = output.integer("fps")) {
     if (*fps < 1 || *fps > limits::kMaxFps) {
@@ -478,6 +479,10 @@ void readOutput(const json& value, Scene& scene, std::vector<SceneProblem>& prob
   if (const std::string reason = unusablePathReason(spec.folder); !reason.empty())
     output.report("folder", reason + "; expected a usable folder path");
   spec.png = output.boolean("png").value_or(true);
+  if (const auto compression = output.string("png_compression")) {
+    if (const auto kind = detail::pickKind(output.pathOf("png_compression"), *compression, kPngCompressions, problems))
+      spec.pngCompression = *kind;
+  }
   spec.video = output.string("video").value_or("");
   if (const auto quality = output.string("video_quality")) {
     if (const auto kind = detail::pickKind(output.pathOf("video_quality"), *quality, kVideoQualities, problems))

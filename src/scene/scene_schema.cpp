@@ -190,6 +190,7 @@ json sceneSchema() {
                                  {"height", integer(limits::kMinImageSide, limits::kMaxImageSide, "pixels")},
                                  {"folder", {{"type", "string"}, {"minLength", 1}}},
                                  {"png", flag("write PNG frames")},
+                                 {"png_compression", oneOfNames(kPngCompressions, "PNG speed against size")},
                                  {"video", {{"type", "string"}, {"pattern", "^$|\\.([Mm][Pp]4|[Ww][Ee][Bb][Mm]|[Gg][Ii][Ff])$"}}},
                                  {"video_quality", oneOfNames(kVideoQualities, "video size against quality")}},
                                 "what is written")},

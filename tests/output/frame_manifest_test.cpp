@@ -149,9 +149,64 @@ TEST(FrameManifest, MalformedManifestIsNamed) {
   try {
     FrameManifest manifest(folder, kInfo);
     FAIL() << "no error";
-  } catch (const std::runtime_error& e) {
+  } catch (const ManifestInvalid& e) {
     EXPECT_NE(std::string(e.what()).find(folder + "/manifest.json"), std::string::npos) << e.what();
   }
+}
+
+// Entries read back are checked like a scene: each malformed one is refused naming the file and the JSON path.
+TEST(FrameManifest, MalformedEntriesAreRefusedWithTheirPath) {
+  const TempFolder temp;
+  const std::string folder = temp.path();
+  const std::string hash(64, 'a');
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {R"({"frame": 1e12, "file": "f.png", "fileSha256": "H"})", "frames[0].frame: found 1000000000000.0; expected an integer from 0 to 999999"},
+      {R"({"frame": 1000000, "file": "f.png", "fileSha256": "H"})", "frames[0].frame: found 1000000; expected an integer"},
+      {R"({"frame": "x", "file": "f.png", "fileSha256": "H"})", "frames[0].frame: found \"x\"; expected an integer"},
+      {R"({"frame": -3, "file": "f.png", "fileSha256": "H"})", "frames[0].frame: found -3;"},
+      {R"({"file": "f.png", "fileSha256": "H"})", "frames[0].frame: missing"},
+      {R"({"frame": 1, "file": "../x.png", "fileSha256": "H"})", "frames[0].file: found \"../x.png\"; expected a file name"},
+      {R"({"frame": 1, "file": "f.png", "fileSha256": "ABC"})", "frames[0].fileSha256: found \"ABC\"; expected a SHA-256"},
+      {R"({"frame": 1, "file": "f.png"})", "frames[0]: file without fileSha256"},
+      {R"({"frame": 1})", "frames[0]: no hash"},
+      {R"({"frame": 1, "pixelSha256": "H", "colour": 3})", "frames[0].colour: unknown key"},
+      {R"({"frame": 1, "pixelSha256": "H"}, {"frame": 1, "pixelSha256": "H"})", "frames[1].frame: frame 1 is listed twice"},
+      {R"(7)", "frames[0]: found 7; expected an object"},
+  };
+  for (auto [entries, expected] : cases) {
+    for (std::size_t at; (at = entries.find("\"H\"")) != std::string::npos;) entries.replace(at, 3, "\"" + hash + "\"");
+    const nlohmann::json manifest{{"format", "sphere-linkages frame manifest 2"},
+                                  {"info", kInfo},
+                                  {"renderers", nlohmann::json::array()},
+                                  {"frames", nlohmann::json::parse("[" + entries + "]")}};
+    writeFileAtomically(folder + "/manifest.json", manifest.dump(1));
+    try {
+      FrameManifest reopened(folder, kInfo);
+      ADD_FAILURE() << "accepted " << entries;
+    } catch (const ManifestInvalid& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find("manifest " + folder + "/manifest.json: "), std::string::npos) << message;
+      EXPECT_NE(message.find(expected), std::string::npos) << message;
+    }
+  }
+}
+
+// A PNG frame listed without its file (edited, or foreign) is not complete: --resume draws it again.
+TEST(FrameManifest, AnEntryWithoutItsFileIsNotComplete) {
+  const TempFolder temp;
+  const std::string folder = temp.path();
+  {
+    FrameManifest manifest(folder, kInfo);
+    for (int k : {0, 1}) writeFrame(manifest, folder, k);
+  }
+  nlohmann::json json = nlohmann::json::parse(readFile(folder + "/manifest.json"));
+  json["frames"][1].erase("file");
+  json["frames"][1].erase("fileSha256");
+  json["frames"][1]["pixelSha256"] = std::string(64, 'b');
+  writeFileAtomically(folder + "/manifest.json", json.dump(1));
+  FrameManifest resumed(folder, kInfo);
+  EXPECT_TRUE(resumed.isFrameComplete(0));
+  EXPECT_FALSE(resumed.isFrameComplete(1));
 }
 
 // Shards rendered concurrently (two processes, plus two threads in this one) give the same bytes as

@@ -1,0 +1,425 @@
+#include "output/fast_png.hpp"
+
+#include <libdeflate.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstring>
+#include <utility>
+
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#define SL_FAST_PNG_X86 1
+#endif
+
+namespace sl::output {
+namespace {
+
+// === The byte-level work, twice: portable and AVX2. Both compute exactly the same results.
+
+void filterUpPortable(std::uint8_t* out, const std::uint8_t* row, const std::uint8_t* above, std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) out[i] = static_cast<std::uint8_t>(row[i] - above[i]);
+}
+
+// Bit i of the mask (word i / 64, bit i % 64) says whether byte i repeats byte i - 1; bit 0 and the bits from n on
+// are zero. `words` = n / 64 + 2 (one spare word, so that 64 bits can be read from any position below n).
+void equalMaskPortable(const std::uint8_t* p, std::size_t n, std::uint64_t* mask, std::size_t words) {
+  std::fill(mask, mask + words, 0);
+  std::size_t i = 1;
+  if constexpr (std::endian::native == std::endian::little) {
+    // Eight bytes at a time: a byte of x is zero where the two loads agree.
+    constexpr std::uint64_t low7 = 0x7F7F7F7F7F7F7F7Full, high = 0x8080808080808080ull;
+    for (; i + 8 <= n; i += 8) {
+      std::uint64_t a, b;
+      std::memcpy(&a, p + i, 8);
+      std::memcpy(&b, p + i - 1, 8);
+      const std::uint64_t x = a ^ b;
+      const std::uint64_t nonzero = (((x & low7) + low7) | x) & high;  // exact: no carries between bytes
+      const std::uint64_t equal = (~nonzero & high) >> 7;               // 1 in the lowest bit of each equal byte
+      const std::uint64_t bits = (equal * 0x0102040810204080ull) >> 56;  // gathers them: bit k for byte k
+      mask[i / 64] |= bits << (i % 64);
+      if (i % 64 > 56) mask[i / 64 + 1] |= bits >> (64 - i % 64);
+    }
+  }
+  for (; i < n; ++i)
+    if (p[i] == p[i - 1]) mask[i / 64] |= std::uint64_t{1} << (i % 64);
+}
+
+#ifdef SL_FAST_PNG_X86
+__attribute__((target("avx2"))) void filterUpAvx2(std::uint8_t* out, const std::uint8_t* row,
+                                                   const std::uint8_t* above, std::size_t n) {
+  std::size_t i = 0;
+  for (; i + 32 <= n; i += 32) {
+    const __m256i a = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(row + i));
+    const __m256i b = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(above + i));
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + i), _mm256_sub_epi8(a, b));
+  }
+  filterUpPortable(out + i, row + i, above + i, n - i);
+}
+
+__attribute__((target("avx2"))) void equalMaskAvx2(const std::uint8_t* p, std::size_t n, std::uint64_t* mask,
+                                                    std::size_t words) {
+  std::fill(mask, mask + words, 0);
+  // Words of 64 bytes from byte 64 on (byte 64k - 1 exists); the first word and the tail byte by byte.
+  std::size_t i = 64;
+  for (; i + 64 <= n; i += 64) {
+    const auto* a = reinterpret_cast<const __m256i*>(p + i);
+    const auto* b = reinterpret_cast<const __m256i*>(p + i - 1);
+    const auto lowBits = static_cast<std::uint32_t>(
+        _mm256_movemask_epi8(_mm256_cmpeq_epi8(_mm256_loadu_si256(a), _mm256_loadu_si256(b))));
+    const auto highBits = static_cast<std::uint32_t>(
+        _mm256_movemask_epi8(_mm256_cmpeq_epi8(_mm256_loadu_si256(a + 1), _mm256_loadu_si256(b + 1))));
+    mask[i / 64] = (std::uint64_t{highBits} << 32) | lowBits;
+  }
+  for (std::size_t k = 1; k < std::min<std::size_t>(n, 64); ++k)
+    if (p[k] == p[k - 1]) mask[0] |= std::uint64_t{1} << k;
+  for (i = std::max<std::size_t>(i, 64); i < n; ++i)
+    if (p[i] == p[i - 1]) mask[i / 64] |= std::uint64_t{1} << (i % 64);
+}
+#endif
+
+struct Kernels {
+  void (*filterUp)(std::uint8_t*, const std::uint8_t*, const std::uint8_t*, std::size_t);
+  void (*equalMask)(const std::uint8_t*, std::size_t, std::uint64_t*, std::size_t);
+};
+
+Kernels kernelsFor(FastPngPath path) {
+#ifdef SL_FAST_PNG_X86
+  if (path == FastPngPath::automatic && fastPngHasAvx2()) return {filterUpAvx2, equalMaskAvx2};
+#endif
+  return {filterUpPortable, equalMaskPortable};
+}
+
+// === Deflate (RFC 1951) pieces
+
+constexpr int kMinRun = 3, kMaxRun = 258;
+constexpr int kLitLenSymbols = 286, kEndOfBlock = 256;
+
+// Length symbols 257..285: first length and extra bits (RFC 1951, section 3.2.5).
+constexpr std::array<int, 29> kLengthBase{3,  4,  5,  6,  7,  8,  9,  10, 11,  13,  15,  17,  19,  23, 27,
+                                          31, 35, 43, 51, 59, 67, 83, 99, 115, 131, 163, 195, 227, 258};
+constexpr std::array<int, 29> kLengthExtra{0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2,
+                                           2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0};
+
+struct LengthCode {
+  int symbol = 0, extraBits = 0, extraValue = 0;
+};
+
+constexpr std::array<LengthCode, kMaxRun + 1> makeLengthCodes() {
+  std::array<LengthCode, kMaxRun + 1> codes{};
+  for (int length = kMinRun; length <= kMaxRun; ++length) {
+    int i = length == kMaxRun ? 28 : 27;
+    while (kLengthBase[i] > length) --i;
+    codes[length] = {257 + i, kLengthExtra[i], length - kLengthBase[i]};
+  }
+  return codes;
+}
+constexpr std::array<LengthCode, kMaxRun + 1> kLengthCodes = makeLengthCodes();
+
+// Huffman code lengths for the counts, none longer than `limit`; a complete code (Kraft sum 1), as zlib's
+// inflate requires. One used symbol gets a partner of the same length. Longer than `limit`: the counts are
+// halved (rounded up, so a used symbol stays used) and the code built again.
+void huffmanLengths(const std::uint32_t* counts, int symbols, int limit, std::uint8_t* lengths) {
+  std::vector<std::uint64_t> weight(counts, counts + symbols);
+  std::fill(lengths, lengths + symbols, 0);
+  while (true) {
+    std::vector<std::pair<std::uint64_t, int>> leaves;
+    for (int s = 0; s < symbols; ++s)
+      if (weight[s] > 0) leaves.emplace_back(weight[s], s);
+    if (leaves.empty()) return;
+    if (leaves.size() == 1) {
+      const int s = leaves[0].second;
+      lengths[s] = 1;
+      lengths[s == 0 ? 1 : 0] = 1;
+      return;
+    }
+    std::sort(leaves.begin(), leaves.end());
+    // Two queues (sorted leaves, then internal nodes in order of creation): parents have higher indices.
+    const std::size_t m = leaves.size(), nodes = 2 * m - 1;
+    std::vector<std::uint64_t> w(nodes);
+    std::vector<std::size_t> parent(nodes, 0);
+    for (std::size_t i = 0; i < m; ++i) w[i] = leaves[i].first;
+    std::size_t leaf = 0, inner = m, next = m;
+    auto pick = [&] { return (leaf < m && (inner >= next || w[leaf] <= w[inner])) ? leaf++ : inner++; };
+    while (next < nodes) {
+      const std::size_t a = pick(), b = pick();
+      w[next] = w[a] + w[b];
+      parent[a] = parent[b] = next++;
+    }
+    std::vector<int> depth(nodes, 0);
+    for (std::size_t i = nodes - 1; i-- > 0;) depth[i] = depth[parent[i]] + 1;
+    if (*std::max_element(depth.begin(), depth.begin() + static_cast<std::ptrdiff_t>(m)) <= limit) {
+      for (std::size_t i = 0; i < m; ++i) lengths[leaves[i].second] = static_cast<std::uint8_t>(depth[i]);
+      return;
+    }
+    for (auto& x : weight) x = (x + 1) / 2;
+  }
+}
+
+// Canonical codes for the lengths (RFC 1951, section 3.2.2), bit-reversed: deflate sends a code's first bit first
+// and the bit writer fills from the least significant bit.
+void canonicalCodes(const std::uint8_t* lengths, int symbols, std::uint32_t* codes) {
+  int count[16] = {};
+  for (int s = 0; s < symbols; ++s) ++count[lengths[s]];
+  count[0] = 0;
+  std::uint32_t next[16] = {};
+  std::uint32_t code = 0;
+  for (int bits = 1; bits < 16; ++bits) {
+    code = (code + static_cast<std::uint32_t>(count[bits - 1])) << 1;
+    next[bits] = code;
+  }
+  for (int s = 0; s < symbols; ++s) {
+    const int length = lengths[s];
+    codes[s] = 0;
+    if (length == 0) continue;
+    std::uint32_t c = next[length]++, reversed = 0;
+    for (int b = 0; b < length; ++b, c >>= 1) reversed = (reversed << 1) | (c & 1);
+    codes[s] = reversed;
+  }
+}
+
+// Least-significant-bit-first writer into memory sized in advance (plus 8 bytes of slack).
+class BitWriter {
+ public:
+  explicit BitWriter(std::uint8_t* out) : out_(out) {}
+  void put(std::uint64_t bits, int count) {
+    buffer_ |= bits << filled_;
+    filled_ += count;
+    if (filled_ >= 32) {
+      for (int k = 0; k < 4; ++k) *out_++ = static_cast<std::uint8_t>(buffer_ >> (8 * k));
+      buffer_ >>= 32;
+      filled_ -= 32;
+    }
+  }
+  std::uint8_t* finish() {  // pads the last byte with zeros
+    for (; filled_ > 0; filled_ -= 8, buffer_ >>= 8) *out_++ = static_cast<std::uint8_t>(buffer_);
+    filled_ = 0;
+    return out_;
+  }
+
+ private:
+  std::uint8_t* out_;
+  std::uint64_t buffer_ = 0;
+  int filled_ = 0;
+};
+
+// The filtered stream as literals (0..255) and runs (256 + length), with the counts the Huffman code needs.
+struct Tokens {
+  std::size_t size = 0;
+  std::array<std::uint32_t, kLitLenSymbols> symbolCounts{};
+  std::array<std::uint32_t, kMaxRun + 1> runCounts{};
+};
+
+// 64 bits of the mask from bit i on (i < n).
+std::uint64_t maskFrom(const std::uint64_t* mask, std::size_t i) {
+  const std::size_t word = i / 64, shift = i % 64;
+  return shift == 0 ? mask[word] : (mask[word] >> shift) | (mask[word + 1] << (64 - shift));
+}
+
+// Greedy: a byte that repeats the one before starts a run as long as the repeats go (cut into runs of 258; a
+// rest of 1 or 2 is written as literals); any other byte is a literal.
+Tokens tokenize(const std::uint8_t* p, std::size_t n, const std::uint64_t* mask, std::uint16_t* out) {
+  Tokens t;
+  std::array<std::array<std::uint32_t, 256>, 2> counts{};  // two tables: repeated bytes do not wait on one counter
+  out[t.size++] = p[0];
+  ++counts[0][p[0]];
+  for (std::size_t i = 1; i < n;) {
+    // Bit j of `starts`: a run of 3 or more begins at i + j (for j < 62; the last two bits lack the bytes after).
+    const std::uint64_t repeats = maskFrom(mask, i), starts = repeats & (repeats >> 1) & (repeats >> 2);
+    if (!(starts & 1)) {  // literals up to the next run worth a match (repeats of 1 or 2 are literals too)
+      const std::size_t k = std::min<std::size_t>(std::min(std::countr_zero(starts), 62), n - i);
+      std::size_t j = 0;
+      for (; j + 2 <= k; j += 2) {
+        out[t.size + j] = p[i + j], out[t.size + j + 1] = p[i + j + 1];
+        ++counts[0][p[i + j]], ++counts[1][p[i + j + 1]];
+      }
+      if (j < k) out[t.size + j] = p[i + j], ++counts[0][p[i + j]];
+      t.size += k, i += k;
+      continue;
+    }
+    std::size_t length = 0;
+    for (int ones = 64; ones == 64 && i + length < n; length += static_cast<std::size_t>(ones))
+      ones = std::countr_one(maskFrom(mask, i + length));
+    length = std::min(length, n - i);
+    const std::uint8_t b = p[i - 1];
+    i += length;
+    for (; length >= kMaxRun; length -= kMaxRun) {
+      out[t.size++] = static_cast<std::uint16_t>(256 + kMaxRun);
+      ++t.runCounts[kMaxRun];
+    }
+    if (length >= kMinRun) {
+      out[t.size++] = static_cast<std::uint16_t>(256 + length);
+      ++t.runCounts[length];
+    } else {
+      for (; length > 0; --length) out[t.size++] = b, ++counts[0][b];
+    }
+  }
+  for (int b = 0; b < 256; ++b) t.symbolCounts[b] = counts[0][b] + counts[1][b];
+  for (int length = kMinRun; length <= kMaxRun; ++length) t.symbolCounts[kLengthCodes[length].symbol] += t.runCounts[length];
+  t.symbolCounts[kEndOfBlock] = 1;
+  return t;
+}
+
+constexpr std::array<int, 19> kCodeLengthOrder{16, 17, 18, 0, 8, 7, 9, 6, 10, 5, 11, 4, 12, 3, 13, 2, 14, 1, 15};
+
+// One dynamic-Huffman block, ready to write: its header fields and codes, and its exact size in bits.
+struct DynamicBlock {
+  std::array<std::uint8_t, kLitLenSymbols> litLengths{};
+  std::array<std::uint32_t, kLitLenSymbols> litCodes{};
+  std::array<std::uint8_t, 19> clLengths{};
+  std::array<std::uint32_t, 19> clCodes{};
+  // Per token (literal 0..255, run 256 + length): its whole code (for a run: length symbol, extra bits, distance 1)
+  std::array<std::uint32_t, 256 + kMaxRun + 1> tokenBits{};
+  std::array<std::uint8_t, 256 + kMaxRun + 1> tokenBitCount{};
+  int litCount = 257, codeLengthCount = 4;
+  std::uint64_t bits = 0;
+};
+
+// Two distance codes of one bit each (a complete code); only distance 1 (code 0, bit 0) is used.
+constexpr int kDistanceCodes = 2;
+
+DynamicBlock planBlock(const Tokens& t) {
+  DynamicBlock block;
+  huffmanLengths(t.symbolCounts.data(), kLitLenSymbols, 15, block.litLengths.data());
+  canonicalCodes(block.litLengths.data(), kLitLenSymbols, block.litCodes.data());
+  block.litCount = kLitLenSymbols;
+  while (block.litCount > 257 && block.litLengths[block.litCount - 1] == 0) --block.litCount;
+  std::array<std::uint32_t, 19> clCounts{};
+  for (int s = 0; s < block.litCount; ++s) ++clCounts[block.litLengths[s]];
+  clCounts[1] += kDistanceCodes;
+  huffmanLengths(clCounts.data(), 19, 7, block.clLengths.data());
+  canonicalCodes(block.clLengths.data(), 19, block.clCodes.data());
+  block.codeLengthCount = 19;
+  while (block.codeLengthCount > 4 && block.clLengths[kCodeLengthOrder[block.codeLengthCount - 1]] == 0)
+    --block.codeLengthCount;
+
+  std::uint64_t bits = 3 + 5 + 5 + 4 + 3 * static_cast<std::uint64_t>(block.codeLengthCount);
+  for (int v = 0; v < 19; ++v) bits += std::uint64_t(clCounts[v]) * block.clLengths[v];
+  for (int s = 0; s <= kEndOfBlock; ++s) bits += std::uint64_t(t.symbolCounts[s]) * block.litLengths[s];
+  for (int b = 0; b < 256; ++b) block.tokenBits[b] = block.litCodes[b], block.tokenBitCount[b] = block.litLengths[b];
+  for (int length = kMinRun; length <= kMaxRun; ++length) {
+    const LengthCode& code = kLengthCodes[length];
+    const int symbolBits = block.litLengths[code.symbol];
+    block.tokenBits[256 + length] = block.litCodes[code.symbol] | (std::uint32_t(code.extraValue) << symbolBits);
+    block.tokenBitCount[256 + length] = static_cast<std::uint8_t>(symbolBits + code.extraBits + 1);
+    bits += std::uint64_t(t.runCounts[length]) * block.tokenBitCount[256 + length];
+  }
+  block.bits = bits;
+  return block;
+}
+
+std::uint8_t* writeDynamicBlock(const DynamicBlock& block, const std::uint16_t* tokens, std::size_t count,
+                                std::uint8_t* out) {
+  BitWriter writer(out);
+  writer.put(1, 1);  // final block
+  writer.put(2, 2);  // dynamic Huffman
+  writer.put(std::uint64_t(block.litCount - 257), 5);
+  writer.put(kDistanceCodes - 1, 5);
+  writer.put(std::uint64_t(block.codeLengthCount - 4), 4);
+  for (int i = 0; i < block.codeLengthCount; ++i) writer.put(block.clLengths[kCodeLengthOrder[i]], 3);
+  for (int s = 0; s < block.litCount; ++s) {
+    const int v = block.litLengths[s];
+    writer.put(block.clCodes[v], block.clLengths[v]);
+  }
+  for (int d = 0; d < kDistanceCodes; ++d) writer.put(block.clCodes[1], block.clLengths[1]);
+  for (std::size_t i = 0; i < count; ++i) writer.put(block.tokenBits[tokens[i]], block.tokenBitCount[tokens[i]]);
+  writer.put(block.litCodes[kEndOfBlock], block.litLengths[kEndOfBlock]);
+  return writer.finish();
+}
+
+constexpr std::size_t kStoredBlockMax = 65535;
+
+std::size_t storedSize(std::size_t n) { return n + 5 * std::max<std::size_t>(1, (n + kStoredBlockMax - 1) / kStoredBlockMax); }
+
+std::uint8_t* writeStoredBlocks(const std::uint8_t* data, std::size_t n, std::uint8_t* out) {
+  std::size_t offset = 0;
+  do {
+    const std::size_t size = std::min(kStoredBlockMax, n - offset);
+    *out++ = offset + size == n ? 1 : 0;  // BFINAL, BTYPE 00, padding to the byte
+    const auto length = static_cast<std::uint16_t>(size);
+    const auto complement = static_cast<std::uint16_t>(~length);
+    *out++ = static_cast<std::uint8_t>(length), *out++ = static_cast<std::uint8_t>(length >> 8);
+    *out++ = static_cast<std::uint8_t>(complement), *out++ = static_cast<std::uint8_t>(complement >> 8);
+    std::memcpy(out, data + offset, size);
+    out += size;
+    offset += size;
+  } while (offset < n);
+  return out;
+}
+
+// === PNG container (PNG specification, section 5)
+
+std::uint8_t* put32(std::uint8_t* out, std::uint32_t v) {
+  for (int shift : {24, 16, 8, 0}) *out++ = static_cast<std::uint8_t>(v >> shift);
+  return out;
+}
+
+// Writes length, type and CRC around `size` bytes of data already at out + 8; returns the end.
+std::uint8_t* closeChunk(std::uint8_t* out, const char type[4], std::size_t size) {
+  put32(out, static_cast<std::uint32_t>(size));
+  std::memcpy(out + 4, type, 4);
+  return put32(out + 8 + size, libdeflate_crc32(0, out + 4, size + 4));
+}
+
+}  // namespace
+
+bool fastPngHasAvx2() {
+#ifdef SL_FAST_PNG_X86
+  static const bool has = __builtin_cpu_supports("avx2");
+  return has;
+#else
+  return false;
+#endif
+}
+
+std::vector<std::uint8_t> encodeFastPng(const Image& image, FastPngScratch& scratch, FastPngPath path) {
+  const Kernels kernels = kernelsFor(path);
+  const std::size_t stride = static_cast<std::size_t>(image.width) * 3, rowBytes = stride + 1;
+  const std::size_t n = rowBytes * static_cast<std::size_t>(image.height);
+  scratch.filtered.resize(n);
+  std::uint8_t* filtered = scratch.filtered.data();
+  for (int y = 0; y < image.height; ++y) {
+    std::uint8_t* row = filtered + static_cast<std::size_t>(y) * rowBytes;
+    const std::uint8_t* pixels = image.rgb.data() + static_cast<std::size_t>(y) * stride;
+    row[0] = 2;  // "up"; on the first row the bytes above count as zero
+    if (y == 0)
+      std::memcpy(row + 1, pixels, stride);
+    else
+      kernels.filterUp(row + 1, pixels, pixels - stride, stride);
+  }
+  const std::size_t words = n / 64 + 2;
+  scratch.equal.resize(words);
+  kernels.equalMask(filtered, n, scratch.equal.data(), words);
+  scratch.tokens.resize(n);
+  const Tokens tokens = tokenize(filtered, n, scratch.equal.data(), scratch.tokens.data());
+  const DynamicBlock block = planBlock(tokens);
+  const std::size_t huffmanBytes = static_cast<std::size_t>((block.bits + 7) / 8);
+  const bool stored = huffmanBytes >= storedSize(n);
+  const std::size_t deflateBytes = stored ? storedSize(n) : huffmanBytes;
+
+  constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  constexpr std::size_t kHeaderChunk = 12 + 13, kEndChunk = 12;
+  const std::size_t zlibBytes = 2 + deflateBytes + 4;
+  std::vector<std::uint8_t> png(8 + kHeaderChunk + 12 + zlibBytes + kEndChunk + 8);  // 8: the bit writer's slack
+  std::uint8_t* out = png.data();
+  std::memcpy(out, kSignature, 8);
+  out += 8;
+  std::uint8_t* data = out + 8;
+  data = put32(data, static_cast<std::uint32_t>(image.width));
+  data = put32(data, static_cast<std::uint32_t>(image.height));
+  for (std::uint8_t b : {8, 2, 0, 0, 0}) *data++ = b;  // 8 bits, truecolour RGB, deflate, adaptive filters, no interlace
+  out = closeChunk(out, "IHDR", 13);
+
+  std::uint8_t* idat = out + 8;
+  data = idat;
+  *data++ = 0x78, *data++ = 0x01;  // zlib: deflate, 32 KiB window, "fastest" (RFC 1950)
+  data = stored ? writeStoredBlocks(filtered, n, data) : writeDynamicBlock(block, scratch.tokens.data(), tokens.size, data);
+  data = put32(data, libdeflate_adler32(1, filtered, n));
+  out = closeChunk(out, "IDAT", static_cast<std::size_t>(data - idat));
+  out = closeChunk(out, "IEND", 0);
+  png.resize(static_cast<std::size_t>(out - png.data()));
+  return png;
+}
+
+}  // namespace sl::output

@@ -1,0 +1,40 @@
+#pragma once
+// A PNG writer built for speed: every row filtered "up" (PNG specification, section 9.2: each byte minus the
+// byte above it; the first row has zeros above), and the filtered stream compressed as one deflate block
+// (RFC 1951) whose only matches are runs of the previous byte (distance 1, lengths 3..258), Huffman-coded with
+// a code built from this image's own symbol counts (a "dynamic" block, lengths limited to 15 bits). Rendered
+// frames are mostly flat: "up" turns everything that repeats the row above into zeros, and the runs take them
+// at a few bits per 258 bytes. When the Huffman block would be larger than the data (noise), stored blocks are
+// written instead.
+//
+// Two implementations of the byte-level work (the filter and marking the bytes that repeat the one before): a portable one and an
+// AVX2 one, chosen at run time by what the CPU has. They compute the same integers, so a frame gives the same
+// bytes on every CPU: shards rendered on different cluster nodes stay byte-identical (tests check both paths).
+
+#include <cstdint>
+#include <vector>
+
+#include "contracts/image.hpp"
+
+namespace sl::output {
+
+enum class FastPngPath {
+  automatic,  // AVX2 where the CPU has it, else portable
+  portable    // never the SIMD code (tests compare the two)
+};
+
+// True if this CPU runs the AVX2 path (automatic chooses it).
+bool fastPngHasAvx2();
+
+// Working memory reused between frames by one thread.
+struct FastPngScratch {
+  std::vector<std::uint8_t> filtered;
+  std::vector<std::uint64_t> equal;  // bit i: filtered byte i repeats byte i - 1
+  std::vector<std::uint16_t> tokens;
+};
+
+// The PNG file of an RGB8 image (width, height >= 1 and rgb of width*height*3 bytes: checked by the caller).
+std::vector<std::uint8_t> encodeFastPng(const Image& image, FastPngScratch& scratch,
+                                        FastPngPath path = FastPngPath::automatic);
+
+}  // namespace sl::output
