@@ -18,6 +18,7 @@
 #include "cli/scene_input.hpp"
 #include "cli/summary.hpp"
 #include "frames/frame_builder.hpp"
+#include "output/distinct_files.hpp"
 #include "output/png_encoder.hpp"
 #include "output/png_sequence_sink.hpp"
 #include "output/sha256.hpp"
@@ -87,6 +88,8 @@ RenderPlan planRender(const RenderArguments& args) {
   }
   if (!plan.video.empty()) {
     for (SceneProblem& problem : checkVideoPath(plan.video, videoPath)) problems.push_back(problem);
+    if (output::sameFile(plan.video, args.scene))
+      problems.push_back({videoPath, "is the scene file itself; an output never replaces an input"});
   }
   if (!args.videoQuality.empty()) {
     if (const auto quality = parseKind(kVideoQualities, args.videoQuality)) {
