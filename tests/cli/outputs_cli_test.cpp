@@ -1,5 +1,6 @@
 // Outputs that could alias each other or an input, and child processes that could be trusted too much: each
 // test pins one class of defect of the third round of hostile inputs.
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -65,6 +66,98 @@ TEST(OutputsCli, AChartWithoutGnuplotWritesNothing) {
   EXPECT_EQ(result.code, 3) << result.err;
   EXPECT_NE(result.err.find("need gnuplot"), std::string::npos) << result.err;
   EXPECT_TRUE(fs::is_empty(folder.path())) << "left: " << fs::directory_iterator(folder.path())->path();
+}
+
+// A stand-in for ffmpeg, first on the PATH: `body` is its shell script after the line that records its pid.
+void writeFakeEncoder(const fs::path& folder, const std::string& body) {
+  fs::create_directories(folder / "bin");
+  writeFile(folder / "bin" / "ffmpeg", "#!/bin/sh\necho $$ > encoder.pid\n" + body);
+  fs::permissions(folder / "bin" / "ffmpeg", fs::perms::owner_all);
+}
+
+std::string withFakeEncoder(const fs::path& folder) {
+  return "PATH=" + shellQuoted((folder / "bin").string()) + ":\"$PATH\" ";
+}
+
+// An earlier render in "frames" and an earlier video v.gif (the real ffmpeg), made with the default scene.
+void renderEarlier(const fs::path& folder) {
+  const ProcessResult earlier =
+      runLinkage({"render", shippedScene("default.json"), "--set", "duration=0.5", "--size", "160x90", "--out",
+                  "frames", "--video", "v.gif", "--quiet"},
+                 folder);
+  ASSERT_EQ(earlier.code, 0) << earlier.err;
+}
+
+const std::string kEditedRender = " render " + shellQuoted(shippedScene("default.json")) +
+                                  " --set duration=0.4 --size 160x90 --out frames --video v.gif";
+
+// No encoder on the PATH: the render fails before it takes the folder over, so the earlier frames, manifest
+// and video are untouched.
+TEST(OutputsCli, AMissingEncoderIsFoundBeforeAnythingIsReplaced) {
+  TempFolder folder;
+  renderEarlier(folder.path());
+  const auto before = folderContents(folder.path());
+  const ProcessResult result = runShell("PATH=/nonexistent " + shellQuoted(linkageBinary()) + kEditedRender, folder.path(), 60);
+  EXPECT_EQ(result.code, 3) << result.err;
+  EXPECT_NE(result.err.find("cannot start ffmpeg"), std::string::npos) << result.err;
+  EXPECT_EQ(folderContents(folder.path()), before) << "the earlier render was touched";
+}
+
+// An encoder that stops reading: the render says so after a second, answers SIGTERM within a second (exit 130)
+// and ends the encoder; with LINKAGE_ENCODER_WAIT=1 it gives up by itself (exit 3). The earlier video stays.
+TEST(OutputsCli, AStalledEncoderIsNamedStoppedAndEnded) {
+  TempFolder folder;
+  renderEarlier(folder.path());
+  const std::string video = readFile(folder.path() / "v.gif");
+  writeFakeEncoder(folder.path(), "exec sleep 100000\n");  // never reads its input
+  const std::string start = withFakeEncoder(folder.path()) + shellQuoted(linkageBinary()) + kEditedRender;
+  const ProcessResult signalled = runShell(
+      start + " > out.txt 2> err.txt & pid=$!; "
+              "for i in $(seq 300); do grep -q 'waiting for ffmpeg' err.txt && break; sleep 0.1; done; "
+              "start=$(date +%s%N); kill -TERM $pid; wait $pid; rc=$?; end=$(date +%s%N); "
+              "if kill -0 $(cat encoder.pid) 2>/dev/null; then echo encoder-alive; kill -9 $(cat encoder.pid); fi; "
+              "echo $rc $(( (end - start) / 1000000 ))",
+      folder.path(), 120);
+  const std::string err = readFile(folder.path() / "err.txt");
+  EXPECT_NE(err.find("waiting for ffmpeg to read the frames for v.gif"), std::string::npos) << err;
+  EXPECT_EQ(signalled.out.find("encoder-alive"), std::string::npos) << "the stalled encoder outlived the render";
+  int code = -1;
+  long milliseconds = -1;
+  ASSERT_EQ(std::sscanf(signalled.out.c_str(), "%d %ld", &code, &milliseconds), 2) << signalled.out << signalled.err;
+  EXPECT_EQ(code, 130) << err;
+  EXPECT_LT(milliseconds, 1000) << "SIGTERM answered after " << milliseconds << " ms";
+
+  const ProcessResult bounded = runShell("LINKAGE_ENCODER_WAIT=1 " + start + "; if kill -0 $(cat encoder.pid) "
+                                         "2>/dev/null; then echo encoder-alive; kill -9 $(cat encoder.pid); fi",
+                                         folder.path(), 120);
+  EXPECT_EQ(bounded.code, 0);
+  EXPECT_NE(bounded.err.find("gave up after 1 s: ffmpeg read nothing of the frames for v.gif"), std::string::npos)
+      << bounded.err;
+  EXPECT_EQ(bounded.out.find("encoder-alive"), std::string::npos) << "the stalled encoder outlived the render";
+  EXPECT_EQ(readFile(folder.path() / "v.gif"), video);
+  for (const auto& entry : fs::directory_iterator(folder.path()))
+    EXPECT_EQ(entry.path().string().find(".tmp."), std::string::npos) << "left behind: " << entry.path();
+}
+
+// An encoder that exits 0 having written a cut file (as ffmpeg does on a full disk): the render fails (exit 3),
+// saying how many frames the file holds, and the earlier video and its manifest stay as they were.
+TEST(OutputsCli, AnEncodersSuccessIsCheckedByWhatItWrote) {
+  TempFolder folder;
+  renderEarlier(folder.path());
+  const std::string video = readFile(folder.path() / "v.gif");
+  const std::string manifest = readFile(folder.path() / "v.gif.manifest.json");
+  writeFakeEncoder(folder.path(), "for last; do :; done\ncat > /dev/null\nhead -c 2000 v.gif > \"${last#file:}\"\nexit 0\n");
+  const ProcessResult result =
+      runShell(withFakeEncoder(folder.path()) + shellQuoted(linkageBinary()) + kEditedRender, folder.path(), 120);
+  EXPECT_EQ(result.code, 3) << result.err;
+  EXPECT_NE(result.err.find("the video v.gif was not replaced: ffmpeg exited 0 but its output holds"),
+            std::string::npos)
+      << result.err;
+  EXPECT_NE(result.err.find("of 13 frames"), std::string::npos) << result.err;
+  EXPECT_EQ(readFile(folder.path() / "v.gif"), video);
+  EXPECT_EQ(readFile(folder.path() / "v.gif.manifest.json"), manifest);
+  for (const auto& entry : fs::directory_iterator(folder.path()))
+    EXPECT_EQ(entry.path().string().find(".tmp."), std::string::npos) << "left behind: " << entry.path();
 }
 
 }  // namespace
