@@ -9,10 +9,10 @@
 #include <regex>
 #include <set>
 #include <stdexcept>
-#include <thread>
 
 #include "analysis/measurement.hpp"
 #include "analysis/option_checks.hpp"
+#include "contracts/parallel_for.hpp"
 #include "contracts/time_grid.hpp"
 
 namespace sl {
@@ -121,24 +121,16 @@ CsvTable runStabilitySweep(const StabilityOptions& options, const CellProgress& 
     cells.push_back(c);
 
   std::vector<std::vector<std::vector<std::string>>> results(cells.size());
-  std::atomic<size_t> next{0};
   std::atomic<long> done{0};
   std::mutex progressMutex;
-  auto worker = [&] {
-    for (size_t k = next++; k < cells.size(); k = next++) {
-      results[k] = cellRows(options, methods, cells[k]);
-      const long finished = ++done;
-      if (progress) {
-        std::lock_guard lock(progressMutex);
-        progress(finished, static_cast<long>(cells.size()));
-      }
+  parallelFor(cells.size(), static_cast<std::size_t>(std::max(0, options.threads)), [&](std::size_t k) {
+    results[k] = cellRows(options, methods, cells[k]);
+    const long finished = ++done;
+    if (progress) {
+      std::lock_guard lock(progressMutex);
+      progress(finished, static_cast<long>(cells.size()));
     }
-  };
-  const int threads = options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& thread : pool) thread.join();
+  });
 
   CsvTable table{stabilityColumns(), {}};
   for (auto& cellRowsOfOne : results)

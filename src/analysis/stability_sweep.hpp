@@ -1,6 +1,6 @@
 #pragma once
 // A stability sweep: every method run from every cell of a grid of starts (stability_grid.hpp), each
-// measured against a reference from a different method (reference_path.hpp), on std::thread workers.
+// measured against a reference from a different method (reference_path.hpp), on parallelFor's threads.
 // Rows come out in cell order whatever the thread count, so the output bytes depend only on the sweep.
 // A sweep splits into shards (cells c with c mod N = K - 1) whose rows merge into the same table.
 
@@ -34,7 +34,7 @@ struct StabilityOptions {
   double tolerance = RunConfig().tolerance;
   double step = RunConfig().step;
   bool checkAgainstReference = true;  // false: fate and invariants only (no reference runs: much faster)
-  int threads = 0;                    // 0: std::thread::hardware_concurrency()
+  int threads = 0;                    // 0: as many as the machine has (defaultThreadCount)
   Shard shard;
 };
 

@@ -22,6 +22,7 @@
 #include "contracts/csv_format.hpp"
 #include "geometry/curvature_grid.hpp"
 #include "output/atomic_file.hpp"
+#include "output/distinct_files.hpp"
 
 namespace sl {
 
@@ -227,6 +228,18 @@ void runGeometry(const GeometryArguments& args) {
                       "--points FILE, --summary, --sweep-L A:B:N");
   if (!args.chart.empty() && args.sweep.empty())
     throw CommandExit(kExitBadInput, "--chart: draws the L sweep; expected --sweep-L A:B:N with it");
+  std::vector<output::NamedFile> outputs = {{"--csv", args.csv}, {"--chart", args.chart}};
+  if (!args.maps.empty())
+    for (const char* map : {"/curvature.png", "/bending.png", "/stiffness.png"})
+      outputs.push_back({"--maps", args.maps + map});
+  try {
+    output::requireDistinctFiles({{"the scene", args.scene}, {"--points", args.points}}, outputs);
+  } catch (const std::invalid_argument& error) {
+    throw CommandExit(kExitBadInput, "linkage geometry: " + std::string(error.what()));
+  }
+  // Charts and maps are drawn after the CSV is written: without gnuplot, nothing is written at all.
+  if ((!args.chart.empty() || !args.maps.empty()) && !gnuplotAvailable())
+    throw std::runtime_error("--chart and --maps need gnuplot with pngcairo: apt-get install gnuplot-nox");
   const Scene scene = loadSceneForCommand(args.scene, args.overrides);
   if (scene.chain.rods != 4)
     throw CommandExit(kExitBadInput, args.scene + ": linkage.rods: found " + std::to_string(scene.chain.rods) +

@@ -18,6 +18,7 @@
 #include "cli/scene_input.hpp"
 #include "cli/summary.hpp"
 #include "frames/frame_builder.hpp"
+#include "output/distinct_files.hpp"
 #include "output/png_encoder.hpp"
 #include "output/png_sequence_sink.hpp"
 #include "output/sha256.hpp"
@@ -87,6 +88,8 @@ RenderPlan planRender(const RenderArguments& args) {
   }
   if (!plan.video.empty()) {
     for (SceneProblem& problem : checkVideoPath(plan.video, videoPath)) problems.push_back(problem);
+    if (output::sameFile(plan.video, args.scene))
+      problems.push_back({videoPath, "is the scene file itself; an output never replaces an input"});
   }
   if (!args.videoQuality.empty()) {
     if (const auto quality = parseKind(kVideoQualities, args.videoQuality)) {
@@ -212,6 +215,17 @@ void runRender(const RenderArguments& args) {
   std::unique_ptr<output::PngSequenceSink> pngSink;
   std::unique_ptr<output::VideoSink> videoSink;
   std::vector<output::FrameSink*> sinks;
+  // The encoder starts first: if it cannot, nothing of an earlier render has been replaced yet.
+  if (!plan.video.empty()) {
+    videoManifest = std::make_unique<output::FrameManifest>(videoFolder(plan.video), info,
+                                                            fs::path(plan.video).filename().string() + ".manifest.json",
+                                                            output::FrameManifest::Existing::replace);
+    videoManifest->addRenderer(renderer.glRenderer(), renderer.glVersion());
+    output::VideoSettings settings{plan.video, *videoFormatOfPath(plan.video), scene.output.videoQuality,
+                                   scene.output.size.width, scene.output.size.height, double(scene.output.fps)};
+    settings.cancelled = interruptRequested;
+    videoSink = std::make_unique<output::VideoSink>(settings, *videoManifest);
+  }
   if (plan.png) {
     // A whole render replaces what the folder held (the edit-render loop); shards and --resume only join.
     const bool whole = args.frames.empty() && !plan.resume;
@@ -232,25 +246,21 @@ void runRender(const RenderArguments& args) {
     pngSink = std::make_unique<output::PngSequenceSink>(plan.folder, *pngManifest, 2, scene.output.pngCompression);
     sinks.push_back(pngSink.get());
   }
-  if (!plan.video.empty()) {
-    videoManifest = std::make_unique<output::FrameManifest>(videoFolder(plan.video), info,
-                                                            fs::path(plan.video).filename().string() + ".manifest.json",
-                                                            output::FrameManifest::Existing::replace);
-    videoManifest->addRenderer(renderer.glRenderer(), renderer.glVersion());
-    output::VideoSettings settings{plan.video, *videoFormatOfPath(plan.video), scene.output.videoQuality,
-                                   scene.output.size.width, scene.output.size.height, double(scene.output.fps)};
-    videoSink = std::make_unique<output::VideoSink>(settings, *videoManifest);
-    sinks.push_back(videoSink.get());
-  }
+  if (videoSink) sinks.push_back(videoSink.get());
 
   int drawn = 0, skipped = 0;
   bool finished = false;
   try {
     finished = renderFrames(plan, pngManifest.get(), sinks, renderer, builder, drawn, skipped);
   } catch (const RunCancelled&) {  // a signal in the middle of a long frame: handled like one between frames
+  } catch (const output::EncodingCancelled&) {  // a signal while the encoder was not reading
   }
   if (pngSink) pngSink->finish();  // every frame handed over is written whole, interrupted or not
-  if (videoSink && finished) videoSink->finish();
+  try {
+    if (videoSink && finished) videoSink->finish();
+  } catch (const output::EncodingCancelled&) {  // a signal while the encoder finished the video
+    finished = false;
+  }
   videoSink.reset();  // unfinished: reaps ffmpeg and removes its temporary, so the video never gets its name
   reportStops(scene, builder.runs(), plan.quiet);
   if (!finished) {

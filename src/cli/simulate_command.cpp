@@ -22,6 +22,7 @@
 #include "cli/summary.hpp"
 #include "contracts/time_grid.hpp"
 #include "output/atomic_file.hpp"
+#include "output/distinct_files.hpp"
 #include "scene/output_folder.hpp"
 #include "contracts/csv_format.hpp"
 #include "simulation/trajectory_csv.hpp"
@@ -103,7 +104,13 @@ void runSimulate(const SimulateArguments& args) {
   } catch (const std::invalid_argument& error) {
     throw CommandExit(kExitBadInput, "--dt: " + std::string(error.what()));
   }
-  // Checked before any work, like render's outputs: a writable place that is not a folder or a device.
+  // Checked before any work, like render's outputs: a writable place that is not a folder or a device, and not
+  // the scene or the other output.
+  try {
+    output::requireDistinctFiles({{"the scene", args.scene}}, {{"--csv", args.csv}, {"--events", args.events}});
+  } catch (const std::invalid_argument& error) {
+    throw CommandExit(kExitBadInput, "linkage simulate: " + std::string(error.what()));
+  }
   for (const auto& [option, path] : {std::pair{"--csv", args.csv}, std::pair{"--events", args.events}}) {
     if (path.empty()) continue;
     std::vector<SceneProblem> problems;

@@ -45,5 +45,8 @@ inline constexpr double kMaxFieldOfViewDegrees = 120;
 // How long a render waits for a lock another process holds on its output folder before giving up (a process
 // stopped with SIGSTOP, or hung, holds it for ever); it says what it waits for after the first second.
 inline constexpr double kMaxLockWaitSeconds = 60;
+// How long the video encoder may read nothing of a frame before the render gives up on it (an encoder stopped
+// or hung); it says what it waits for after the first second. LINKAGE_ENCODER_WAIT (seconds) overrides it.
+inline constexpr double kMaxEncoderStallSeconds = 60;
 
 }  // namespace sl::limits

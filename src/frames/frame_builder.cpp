@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "contracts/limits.hpp"
-#include "frames/parallel_for.hpp"
+#include "contracts/parallel_for.hpp"
 #include "frames/sphere_decoration.hpp"
 
 namespace sl {

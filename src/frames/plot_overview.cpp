@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "frames/parallel_for.hpp"
+#include "contracts/parallel_for.hpp"
 #include "linkage/chain.hpp"
 #include "simulation/family.hpp"
 #include "simulation/trajectory.hpp"

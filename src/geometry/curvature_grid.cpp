@@ -3,34 +3,19 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <thread>
 
+#include "contracts/parallel_for.hpp"
 #include "linkage/sphere_coordinates.hpp"
 
 namespace sl {
 
 namespace {
 
-int threadCount(int requested, int work) {
-  const int available = requested > 0 ? requested : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  return std::max(1, std::min(available, work));
-}
-
-// fn(i) for i in [0, count), item i on thread i mod n: each item's result depends on i alone.
+// fn(i) for i in [0, count) on up to `threads` threads (0: the machine's): each item's result depends on i alone.
 template <class Fn>
-void parallelFor(int count, int threads, const Fn& fn) {
-  const int n = threadCount(threads, count);
-  if (n == 1) {
-    for (int i = 0; i < count; ++i) fn(i);
-    return;
-  }
-  std::vector<std::thread> pool;
-  pool.reserve(static_cast<size_t>(n));
-  for (int w = 0; w < n; ++w)
-    pool.emplace_back([&fn, w, n, count] {
-      for (int i = w; i < count; i += n) fn(i);
-    });
-  for (std::thread& thread : pool) thread.join();
+void forEachIndex(int count, int threads, const Fn& fn) {
+  parallelFor(static_cast<std::size_t>(std::max(0, count)), static_cast<std::size_t>(std::max(0, threads)),
+                  [&fn](std::size_t i) { fn(static_cast<int>(i)); });
 }
 
 Eigen::Vector3d chartZeroPoint(double phi, double t) {
@@ -52,7 +37,7 @@ ChartGrid uniformChartGrid(int phiCount, int tCount) {
 std::vector<CurvatureSample> curvatureGrid(const ConfigurationSurface& surface, const std::vector<double>& phis,
                                            const std::vector<double>& ts, int threads) {
   std::vector<CurvatureSample> samples(phis.size() * ts.size());
-  parallelFor(static_cast<int>(phis.size()), threads, [&](int i) {
+  forEachIndex(static_cast<int>(phis.size()), threads, [&](int i) {
     for (size_t j = 0; j < ts.size(); ++j)
       samples[static_cast<size_t>(i) * ts.size() + j] =
           surface.curvatureAtCoordinates(phis[static_cast<size_t>(i)], ts[j]);
@@ -65,7 +50,7 @@ std::vector<CurvatureSample> curvatureSamples(const ConfigurationSurface& surfac
   std::vector<CurvatureSample> samples(coords.size());
   constexpr int kBlock = 64;
   const int blocks = static_cast<int>((coords.size() + kBlock - 1) / kBlock);
-  parallelFor(blocks, threads, [&](int b) {
+  forEachIndex(blocks, threads, [&](int b) {
     const size_t end = std::min(coords.size(), static_cast<size_t>(b + 1) * kBlock);
     for (size_t k = static_cast<size_t>(b) * kBlock; k < end; ++k)
       samples[k] = surface.curvatureAtCoordinates(coords[k](0), coords[k](1));
@@ -112,7 +97,7 @@ SphereIntegrals integrateOverSphere(const ConfigurationSurface& surface, int phi
   std::vector<double> nodes, weights;
   gaussLegendre(phiNodes, nodes, weights);
   std::vector<double> rowArea(static_cast<size_t>(phiNodes)), rowCurvature(static_cast<size_t>(phiNodes));
-  parallelFor(phiNodes, threads, [&](int i) {
+  forEachIndex(phiNodes, threads, [&](int i) {
     const double phi = 0.5 * M_PI * nodes[static_cast<size_t>(i)];
     double area = 0.0, curvature = 0.0;
     for (int j = 0; j < tNodes; ++j) {
@@ -225,7 +210,7 @@ ScanGrid scanQuantity(const ConfigurationSurface& surface, SurfaceQuantity quant
   grid.phis = nodes.phis;
   grid.ts = nodes.ts;
   grid.values.resize(static_cast<size_t>(grid.rows * grid.columns));
-  parallelFor(grid.rows, threads, [&](int i) {
+  forEachIndex(grid.rows, threads, [&](int i) {
     for (int j = 0; j < grid.columns; ++j)
       grid.values[static_cast<size_t>(i * grid.columns + j)] = surfaceQuantity(
           surface, quantity, chartZeroPoint(grid.phis[static_cast<size_t>(i)], grid.ts[static_cast<size_t>(j)]));

@@ -8,8 +8,17 @@
 // manifest (<video>.manifest.json next to it) records the pixel hashes only, after the rename.
 // SIGPIPE is set to ignored while a VideoSink exists, so an ffmpeg that dies turns into an error
 // message (write fails with EPIPE) instead of killing the process.
+//
+// ffmpeg is watched, never trusted: the pipe is written without blocking, so a stalled encoder is noticed
+// (said after a second, given up after limits::kMaxEncoderStallSeconds or LINKAGE_ENCODER_WAIT) and a
+// cancellation (a signal) is answered within 20 ms; an encoder that is not finished properly is killed with its
+// process group. Its success is judged by what it wrote, not by its exit status alone: ffprobe (beside ffmpeg)
+// must count one packet per frame in the temporary before it replaces anything.
 
+#include <atomic>
+#include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -27,6 +36,13 @@ struct VideoSettings {
   int width = 1280, height = 720;
   double fps = 60;
   std::string ffmpeg = "ffmpeg";  // program name or path
+  std::string ffprobe = "";       // empty: "ffprobe" beside ffmpeg (the same folder, or the PATH)
+  bool (*cancelled)() = nullptr;  // asked while waiting for ffmpeg; true ends the video (EncodingCancelled)
+};
+
+// The video was abandoned because `cancelled` said so (a signal): nothing was replaced.
+struct EncodingCancelled : std::runtime_error {
+  using std::runtime_error::runtime_error;
 };
 
 // ffmpeg's arguments for a video written to `output` (exposed for tests).
@@ -42,7 +58,9 @@ class VideoSink : public FrameSink {
   void finish() override;
 
  private:
-  void closeAndWait();
+  void writeFrame(const std::uint8_t* data, std::size_t size);
+  void closeAndWait(bool kill);
+  void verifyTemporary() const;
   VideoSettings settings_;
   FrameManifest& manifest_;
   int pipe_ = -1;
@@ -50,6 +68,7 @@ class VideoSink : public FrameSink {
   std::string temporary_;
   std::vector<FrameEntry> frames_;  // written by the one writer thread, read after it is drained
   bool finished_ = false;
+  std::atomic<bool> abandoning_{false};  // the sink is being destroyed unfinished: the writer gives up at once
   std::unique_ptr<WorkerPool> writer_;
 };
 

@@ -2,10 +2,17 @@
 
 #include <algorithm>
 
+#include "contracts/parallel_for.hpp"
+
 namespace sl::output {
 
 WorkerPool::WorkerPool(int threads, int capacity) : capacity_(static_cast<std::size_t>(std::max(1, capacity))) {
-  for (int i = 0; i < std::max(1, threads); ++i) threads_.emplace_back([this] { run(); });
+  // A thread that cannot start (a process limit, no memory) leaves fewer workers; with none, submit() runs
+  // each job itself.
+  try {
+    for (int i = 0; i < std::max(1, threads); ++i) threads_.push_back(startThread([this] { run(); }));
+  } catch (...) {
+  }
 }
 
 WorkerPool::~WorkerPool() {
@@ -24,6 +31,18 @@ void WorkerPool::rethrow() {
 
 void WorkerPool::submit(std::function<void()> job) {
   std::unique_lock lock(mutex_);
+  if (threads_.empty()) {
+    rethrow();
+    lock.unlock();
+    try {
+      job();
+    } catch (...) {
+      lock.lock();
+      error_ = std::current_exception();
+      rethrow();
+    }
+    return;
+  }
   changed_.wait(lock, [&] { return jobs_.size() < capacity_ || error_; });
   rethrow();
   jobs_.push_back(std::move(job));

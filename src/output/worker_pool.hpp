@@ -1,7 +1,8 @@
 #pragma once
 // A bounded queue drained by worker threads: the producer blocks when `capacity` jobs wait, so a fast
 // renderer cannot pile up frames in memory. The first exception a job throws is kept and rethrown by
-// submit() or wait(); later jobs are skipped.
+// submit() or wait(); later jobs are skipped. Threads that cannot start leave fewer workers; with none at
+// all, submit() runs each job on the caller's thread.
 
 #include <condition_variable>
 #include <deque>

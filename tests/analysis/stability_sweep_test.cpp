@@ -8,6 +8,7 @@
 
 #include "analysis/measurement.hpp"
 #include "analysis/stability_sweep.hpp"
+#include "contracts/parallel_for.hpp"
 #include "contracts/registry.hpp"
 #include "output/atomic_file.hpp"
 #include "test_paths.hpp"
@@ -48,6 +49,23 @@ TEST(StabilitySweep, ThreadCountDoesNotChangeTheBytes) {
   const std::string single = csvText(runStabilitySweep(options));
   options.threads = 3;
   EXPECT_EQ(csvText(runStabilitySweep(options)), single);
+}
+
+TEST(StabilitySweep, ThreadsThatCannotStartLeaveTheSameTableNotAnAbort) {
+  StabilityOptions options = tinySweep("seam");
+  options.threads = 1;
+  const std::string single = csvText(runStabilitySweep(options));
+  options.threads = 16;
+  failThreadStartsAfterForTesting(1);  // as under a process limit: one helper starts, fifteen do not
+  std::string starved;
+  try {
+    starved = csvText(runStabilitySweep(options));
+  } catch (...) {
+    failThreadStartsAfterForTesting(-1);
+    throw;
+  }
+  failThreadStartsAfterForTesting(-1);
+  EXPECT_EQ(starved, single);
 }
 
 TEST(StabilitySweep, MergedShardsEqualASingleRunByteForByte) {
