@@ -10,6 +10,7 @@
 #include "contracts/csv_format.hpp"
 #include "contracts/limits.hpp"
 #include "contracts/registry.hpp"
+#include "linkage/method_rules.hpp"
 #include "scene/did_you_mean.hpp"
 #include "scene/json_error_path.hpp"
 #include "scene/json_fields.hpp"
@@ -355,14 +356,11 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
       spec.config.method = *kind;
       // The published methods are the spec's 4-rod, unit-mass ones; the simulation refuses them otherwise,
       // so say so here, with the JSON path, before any work.
-      const Chain& chain = spec.chain;
-      const bool specsChain =
-          chain.rods == 4 && (chain.hingeMasses.array() == 1.0).all() && (chain.rodMasses.array() == 0.0).all();
-      if (traits(*kind).published && rods && !specsChain) {
-        run.report("method", "found \"" + *method +
-                                 "\", the spec's published method for 4 rods with unit hinge masses and "
-                                 "massless rods; this chain differs: expected christoffel, embedded or ambient");
-      }
+      for (const MethodRefusal refusal : methodRefusals({*kind, rods ? &spec.chain : nullptr, false, false}))
+        if (refusal == MethodRefusal::PublishedNeedsFourRods || refusal == MethodRefusal::PublishedNeedsSpecMasses)
+          run.report("method", "found \"" + *method +
+                                   "\", the spec's published method for 4 rods with unit hinge masses and "
+                                   "massless rods; this chain differs: expected christoffel, embedded or ambient");
     }
   }
   bool knownIntegrator = true;
@@ -399,17 +397,18 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
   spec.color = readColor(run, "color");
   if (run.has("watchdog")) readWatchdog(run, spec.config, problems);
   // What only the ambient method can move: a slack chain, a start by hinges, more than kMaxRods rods.
+  const bool byHinges = spec.initial.kind == InitialSpec::Kind::Hinges;
   const bool slack = rods && spec.chain.isSlack();
-  const bool chartFree = slack || spec.initial.kind == InitialSpec::Kind::Hinges;
-  if (spec.config.method != Method::Ambient && run.has("method")) {
-    if (slack)
+  const bool chartFree = slack || byHinges;
+  for (const MethodRefusal refusal : methodRefusals({spec.config.method, rods ? &spec.chain : nullptr, byHinges, false})) {
+    if (refusal == MethodRefusal::SlackChainHasNoChart)
       run.report("method", "found \"" + nameOf(spec.config.method) + "\" for a slack chain (L = " +
                                shortest(spec.chain.baseLength) + " <= n-2): it has no chart; expected ambient");
-    else if (spec.initial.kind == InitialSpec::Kind::Hinges)
+    else if (refusal == MethodRefusal::HingeStartHasNoChart)
       run.report("method", "found \"" + nameOf(spec.config.method) +
                                "\" for a start by hinges; expected ambient (the chart methods start from coords or "
                                "a drag)");
-    else if (rods && *rods > limits::kMaxRods)
+    else if (refusal == MethodRefusal::TooManyRodsForCharts)
       run.report("method", "found \"" + nameOf(spec.config.method) + "\" for " + std::to_string(*rods) +
                                " rods; the chart methods are limited to " + std::to_string(limits::kMaxRods) +
                                " rods (their charts stay well conditioned there); expected ambient");
@@ -427,14 +426,17 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
     run.report("family", "a family starts from a point of the configuration sphere; expected a start by coords or "
                          "drag on a chain with n-2 < L < n");
   spec.config.jacobi = run.boolean("jacobi").value_or(false);
-  if (spec.config.jacobi && spec.config.method != Method::Ambient)
-    run.report("jacobi", "needs the ambient method (its linearisation gives the Jacobi fields); found \"" +
-                             nameOf(spec.config.method) + "\"");
-  if (spec.config.jacobi && chartFree)
-    run.report("jacobi", "Jacobi fields start from a point of the configuration sphere; expected a start by coords "
-                         "or drag on a chain with n-2 < L < n");
-  if (spec.config.jacobi && rods && *rods < 4)
-    run.report("jacobi", "needs 4 or more rods (3 rods have no direction across the motion)");
+  if (!spec.config.jacobi) return spec;
+  for (const MethodRefusal refusal : methodRefusals({spec.config.method, rods ? &spec.chain : nullptr, byHinges, true})) {
+    if (refusal == MethodRefusal::JacobiNeedsAmbient)
+      run.report("jacobi", "needs the ambient method (its linearisation gives the Jacobi fields); found \"" +
+                               nameOf(spec.config.method) + "\"");
+    else if (refusal == MethodRefusal::JacobiNeedsSpherePoint)
+      run.report("jacobi", "Jacobi fields start from a point of the configuration sphere; expected a start by "
+                           "coords or drag on a chain with n-2 < L < n");
+    else if (refusal == MethodRefusal::JacobiNeedsFourRods)
+      run.report("jacobi", "needs 4 or more rods (3 rods have no direction across the motion)");
+  }
   return spec;
 }
 
