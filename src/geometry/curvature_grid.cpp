@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <boost/math/special_functions/legendre.hpp>
+
 #include "contracts/parallel_for.hpp"
 #include "linkage/sphere_coordinates.hpp"
 
@@ -62,34 +64,22 @@ std::vector<CurvatureSample> curvatureSamples(const ConfigurationSurface& surfac
 
 void gaussLegendre(int n, std::vector<double>& nodes, std::vector<double>& weights) {
   if (n < 1) throw std::invalid_argument("Gauss-Legendre needs at least one node");
+  // Boost's rule for a number of nodes known only at run time: the non-negative roots of P_n
+  // (boost::math::legendre_p_zeros, ascending, 0 first for odd n) and w = 2 / ((1 - x^2) P_n'(x)^2), as
+  // boost::math::quadrature::gauss computes them for its compile-time sizes.
+  const std::vector<double> roots = boost::math::legendre_p_zeros<double>(n);
   nodes.assign(static_cast<size_t>(n), 0.0);
   weights.assign(static_cast<size_t>(n), 0.0);
-  // P_n(x) by the three-term recurrence and P_n'(x) = n (x P_n - P_(n-1)) / (x^2 - 1).
-  const auto legendre = [n](double x, double& derivative) {
-    double previous = 1.0, current = x;
-    for (int k = 2; k <= n; ++k) {
-      const double next = ((2.0 * k - 1.0) * x * current - (k - 1.0) * previous) / k;
-      previous = current;
-      current = next;
-    }
-    derivative = n * (x * current - previous) / (x * x - 1.0);
-    return current;
-  };
-  for (int i = 0; i < (n + 1) / 2; ++i) {
-    // Newton from the asymptotic guess for the i-th largest root.
-    double x = std::cos(M_PI * (i + 0.75) / (n + 0.5)), derivative = 1.0;
-    for (int iteration = 0; iteration < 100; ++iteration) {
-      const double step = legendre(x, derivative) / derivative;
-      x -= step;
-      if (std::abs(step) <= 1e-16) break;
-    }
-    legendre(x, derivative);
+  for (size_t k = 0; k < roots.size(); ++k) {
+    const double x = roots[k];
+    const double derivative = boost::math::legendre_p_prime(n, x);
     const double w = 2.0 / ((1.0 - x * x) * derivative * derivative);
-    nodes[static_cast<size_t>(i)] = -x;
-    nodes[static_cast<size_t>(n - 1 - i)] = x;
-    weights[static_cast<size_t>(i)] = weights[static_cast<size_t>(n - 1 - i)] = w;
+    // Root x >= 0 is node n/2 + k counted from the middle; its mirror -x is placed symmetrically.
+    const size_t upper = static_cast<size_t>(n / 2) + k, lower = static_cast<size_t>(n - 1) - upper;
+    nodes[upper] = x;
+    nodes[lower] = -x;
+    weights[upper] = weights[lower] = w;
   }
-  if (n % 2 == 1) nodes[static_cast<size_t>(n / 2)] = 0.0;
 }
 
 SphereIntegrals integrateOverSphere(const ConfigurationSurface& surface, int phiNodes, int tNodes, int threads) {

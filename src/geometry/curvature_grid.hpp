@@ -34,7 +34,7 @@ std::vector<CurvatureSample> curvatureSamples(const ConfigurationSurface& surfac
 
 // === Integrals
 
-// Gauss-Legendre nodes and weights on [-1, 1] (Newton on the Legendre recurrence; exact for degree 2n - 1).
+// Gauss-Legendre nodes and weights on [-1, 1], ascending (Boost.Math's Legendre roots; exact for degree 2n - 1).
 void gaussLegendre(int n, std::vector<double>& nodes, std::vector<double>& weights);
 
 // Area = int dA and total curvature = int K dA over the sphere. In chart 0, dA = rho(x) cos(phi) dphi dt with

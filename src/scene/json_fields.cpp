@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "scene/did_you_mean.hpp"
+#include "scene/scene_keys.hpp"
 
 namespace sl {
 
@@ -49,6 +50,9 @@ JsonObject::JsonObject(const json& value, std::string path, std::vector<ScenePro
     if (!known) problems.push_back({pathOf(key), "unknown key" + didYouMean(key, knownKeys)});
   }
 }
+
+JsonObject::JsonObject(const json& value, std::string path, std::vector<SceneProblem>& problems)
+    : JsonObject(value, path, problems, memberNames(path)) {}
 
 bool JsonObject::has(const std::string& key) const { return member(key) != nullptr; }
 
@@ -147,13 +151,31 @@ bool JsonObject::checkPositive(const std::string& key, double value) const {
   return false;
 }
 
-bool JsonObject::checkRange(const std::string& key, double value, double low, double high,
-                            const std::string& allowed) const {
-  if (value >= low && value <= high) return true;
-  std::ostringstream message;
-  message << "found " << value << "; expected " << allowed;
-  report(key, message.str());
+bool JsonObject::checkBounds(const std::string& key, double value) const {
+  std::ostringstream found;
+  found << value;
+  return checkBounds(key, value, found.str());
+}
+
+bool JsonObject::checkBounds(const std::string& key, long value) const {
+  return checkBounds(key, static_cast<double>(value), std::to_string(value));
+}
+
+bool JsonObject::checkBounds(const std::string& key, double value, const std::string& found) const {
+  const SceneKey& described = sceneKey(pathOf(key));
+  if (withinBounds(described, value)) return true;
+  report(key, "found " + found + "; expected " + expectedWords(described));
   return false;
+}
+
+bool JsonObject::checkElements(const std::string& key, const Eigen::VectorXd& value) const {
+  const SceneKey& described = sceneKey(pathOf(key));
+  for (const double element : value)
+    if (!withinBounds(described, element)) {
+      report(key, "expected " + expectedWords(described));
+      return false;
+    }
+  return true;
 }
 
 bool JsonObject::checkSize(const std::string& key, const Eigen::VectorXd& value, long expected,

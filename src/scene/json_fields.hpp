@@ -23,6 +23,8 @@ class JsonObject {
  public:
   JsonObject(const nlohmann::json& value, std::string path, std::vector<SceneProblem>& problems,
              const std::vector<std::string>& knownKeys);
+  // The known keys are those scene/scene_keys.cpp describes under `path`.
+  JsonObject(const nlohmann::json& value, std::string path, std::vector<SceneProblem>& problems);
 
   bool isObject() const { return object_ != nullptr; }
   bool has(const std::string& key) const;
@@ -40,10 +42,17 @@ class JsonObject {
 
   // Checks that record a problem naming the key; they return whether the value passed.
   bool checkPositive(const std::string& key, double value) const;
-  bool checkRange(const std::string& key, double value, double low, double high, const std::string& allowed) const;
   bool checkSize(const std::string& key, const Eigen::VectorXd& value, long expected, const std::string& what) const;
+  // Against the bounds of the key's description (scene/scene_keys.hpp), in its words: "found 0; expected an
+  // integer from 1 to 1000".
+  bool checkBounds(const std::string& key, double value) const;
+  bool checkBounds(const std::string& key, long value) const;  // integers: found as given
+  // Every element within the description's bounds, or "expected <its words>".
+  bool checkElements(const std::string& key, const Eigen::VectorXd& value) const;
 
  private:
+  bool checkBounds(const std::string& key, double value, const std::string& found) const;
+
   const nlohmann::json* object_ = nullptr;
   std::string path_;
   std::vector<SceneProblem>* problems_;

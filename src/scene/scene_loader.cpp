@@ -10,10 +10,12 @@
 #include "contracts/csv_format.hpp"
 #include "contracts/limits.hpp"
 #include "contracts/registry.hpp"
+#include "linkage/method_rules.hpp"
 #include "scene/did_you_mean.hpp"
 #include "scene/json_error_path.hpp"
 #include "scene/json_fields.hpp"
 #include "scene/output_folder.hpp"
+#include "scene/scene_keys.hpp"
 #include "scene/scene_sections.hpp"
 
 namespace sl {
@@ -54,7 +56,7 @@ std::string hingeCountText(RodCount rods) { return rods ? "n-1 = " + std::to_str
 // number of rods the rest of the scene is checked against (for a run: `sceneRods`, the scene's).
 RodCount readLinkage(const json& value, const std::string& path, RodCount sceneRods, bool forRun, Chain& chain,
                      std::vector<SceneProblem>& problems) {
-  const JsonObject linkage(value, path, problems, {"rods", "L", "hinge_masses", "rod_masses"});
+  const JsonObject linkage(value, path, problems);
   bool rodsKnown = forRun && sceneRods.has_value();  // sizes and L are judged against n only when n is valid
   if (forRun) {
     if (const auto rods = linkage.integer("rods"); rods && sceneRods && *rods != *sceneRods) {
@@ -62,11 +64,7 @@ RodCount readLinkage(const json& value, const std::string& path, RodCount sceneR
                                  std::to_string(*sceneRods) + " (a run may set its own L and masses)");
     }
   } else if (const auto rods = linkage.integer("rods", true)) {
-    if (*rods < limits::kMinRods || *rods > limits::kMaxAmbientRods) {
-      linkage.report("rods", "found " + std::to_string(*rods) + "; expected an integer from 3 to " +
-                                 std::to_string(limits::kMaxAmbientRods) + " (fewer than 3 rods cannot move; above " +
-                                 std::to_string(limits::kMaxRods) + " the ambient method only)");
-    } else {
+    if (linkage.checkBounds("rods", *rods)) {
       chain.rods = static_cast<int>(*rods);
       rodsKnown = true;
     }
@@ -91,16 +89,14 @@ RodCount readLinkage(const json& value, const std::string& path, RodCount sceneR
   if (const auto masses = linkage.numbers("hinge_masses")) {
     if (fitsChain(linkage, "hinge_masses", *masses, rodsKnown ? std::optional<long>(n - 1) : std::nullopt,
                   "one per interior hinge, n-1")) {
-      if (masses->minCoeff() < 0 || masses->maxCoeff() > limits::kMaxMass)
-        linkage.report("hinge_masses", "expected masses from 0 to " + shortest(limits::kMaxMass));
+      linkage.checkElements("hinge_masses", *masses);
       chain.hingeMasses = *masses;
     }
   }
   if (const auto masses = linkage.numbers("rod_masses")) {
     if (fitsChain(linkage, "rod_masses", *masses, rodsKnown ? std::optional<long>(n) : std::nullopt,
                   "one per rod, n")) {
-      if (masses->minCoeff() < 0 || masses->maxCoeff() > limits::kMaxMass)
-        linkage.report("rod_masses", "expected masses from 0 to " + shortest(limits::kMaxMass));
+      linkage.checkElements("rod_masses", *masses);
       chain.rodMasses = *masses;
     }
   }
@@ -117,7 +113,7 @@ RodCount readLinkage(const json& value, const std::string& path, RodCount sceneR
 }
 
 void readDrag(const JsonObject& initial, RodCount rods, InitialSpec& spec, std::vector<SceneProblem>& problems) {
-  const JsonObject drag(*initial.member("drag"), initial.pathOf("drag"), problems, {"point", "direction"});
+  const JsonObject drag(*initial.member("drag"), initial.pathOf("drag"), problems);
   const std::optional<long> size = chainSize(rods, -1);
   const std::string what = "a vector of R^(n-1), " + hingeCountText(rods);
   if (const auto point = drag.numbers("point", true); point && fitsChain(drag, "point", *point, size, what)) {
@@ -190,16 +186,16 @@ void readHingeStart(const JsonObject& initial, RodCount rods, InitialSpec& spec,
     if (const auto velocities = readPoints(initial, "velocities", rods)) spec.hingeVelocities = *velocities;
     return;
   }
-  const JsonObject push(*initial.member("push"), initial.pathOf("push"), problems, {"hinge", "velocity", "seed", "size"});
+  const JsonObject push(*initial.member("push"), initial.pathOf("push"), problems);
   if (!push.isObject()) return;
   if (push.has("seed") || push.has("size")) {
     if (push.has("hinge") || push.has("velocity"))
       push.report("seed", "given with hinge/velocity; expected a push on one hinge or a random push (seed, size)");
     if (const auto seed = push.integer("seed", true)) {
-      if (*seed < 0) push.report("seed", "found " + std::to_string(*seed) + "; expected an integer >= 0");
+      push.checkBounds("seed", *seed);
       spec.pushSeed = std::max(0L, *seed);
     }
-    if (const auto size = push.number("size"); size && push.checkRange("size", *size, 1e-12, 1e6, "a size above 0"))
+    if (const auto size = push.number("size"); size && push.checkBounds("size", *size))
       spec.pushSize = *size;
     return;
   }
@@ -211,7 +207,7 @@ void readHingeStart(const JsonObject& initial, RodCount rods, InitialSpec& spec,
   }
   if (const auto velocity = push.numbers("velocity", true);
       velocity && push.checkSize("velocity", *velocity, 2, "a velocity [vx, vy]")) {
-    if (velocity->cwiseAbs().maxCoeff() > 1e6) push.report("velocity", "expected components of at most 1e6");
+    push.checkElements("velocity", *velocity);
     spec.pushVelocity = *velocity;
   }
 }
@@ -220,8 +216,7 @@ void readHingeStart(const JsonObject& initial, RodCount rods, InitialSpec& spec,
 // start replaces the scene's whole: it is one start, in any form the scene's may take.
 void readInitial(const json& value, const std::string& path, RodCount rods, InitialSpec& spec,
                  std::vector<SceneProblem>& problems) {
-  const JsonObject initial(value, path, problems,
-                           {"coords", "velocity", "drag", "unit_speed", "hinges", "velocities", "push"});
+  const JsonObject initial(value, path, problems);
   if (!initial.isObject()) return;
   spec = InitialSpec{};
   spec.unitSpeed = initial.boolean("unit_speed").value_or(false);
@@ -260,8 +255,7 @@ void readInitial(const json& value, const std::string& path, RodCount rods, Init
 // "family": a fan, parallel family or cloud of geodesics around the run (FamilySpec). Keys that mean nothing to
 // the kind are refused, as "step" is with an adaptive integrator.
 std::optional<FamilySpec> readFamily(const JsonObject& run, RodCount rods, std::vector<SceneProblem>& problems) {
-  const JsonObject object(*run.member("family"), run.pathOf("family"), problems,
-                          {"kind", "count", "spread", "epsilon", "seed"});
+  const JsonObject object(*run.member("family"), run.pathOf("family"), problems);
   if (!object.isObject()) return std::nullopt;
   FamilySpec family;
   const std::size_t before = problems.size();
@@ -269,19 +263,14 @@ std::optional<FamilySpec> readFamily(const JsonObject& run, RodCount rods, std::
     if (const auto parsed = detail::pickKind(object.pathOf("kind"), *kind, kFamilyKinds, problems)) family.kind = *parsed;
   }
   if (const auto count = object.integer("count")) {
-    if (*count < 2 || *count > limits::kMaxFamilyMembers)
-      object.report("count", "found " + std::to_string(*count) + "; expected an integer from 2 to " +
-                                 std::to_string(limits::kMaxFamilyMembers));
-    else
-      family.count = static_cast<int>(*count);
+    if (object.checkBounds("count", *count)) family.count = static_cast<int>(*count);
   }
   const bool isCloud = family.kind == FamilyKind::Cloud;
   const std::string kindName = "\"" + std::string(traitsOf(kFamilyKinds, family.kind).name) + "\"";
   if (const auto spread = object.number("spread")) {
     if (isCloud)
       object.report("spread", "is not used by a " + kindName + " family; expected \"epsilon\" instead");
-    else if (object.checkRange("spread", *spread, 1e-12, limits::kMaxFamilySpread,
-                               "a spread above 0 and at most pi (radians for a fan, geodesic distance for parallel)"))
+    else if (object.checkBounds("spread", *spread))
       family.spread = *spread;
   }
   for (const char* key : {"epsilon", "seed"}) {
@@ -290,15 +279,11 @@ std::optional<FamilySpec> readFamily(const JsonObject& run, RodCount rods, std::
                              " family");
   }
   if (const auto epsilon = object.number("epsilon"); epsilon && isCloud) {
-    if (object.checkRange("epsilon", *epsilon, 1e-300, limits::kMaxCloudEpsilon,
-                          "a perturbation size above 0 and at most 0.1"))
+    if (object.checkBounds("epsilon", *epsilon))
       family.epsilon = *epsilon;
   }
   if (const auto seed = object.integer("seed"); seed && isCloud) {
-    if (*seed < 0)
-      object.report("seed", "found " + std::to_string(*seed) + "; expected an integer >= 0");
-    else
-      family.seed = static_cast<unsigned long>(*seed);
+    if (object.checkBounds("seed", *seed)) family.seed = static_cast<unsigned long>(*seed);
   }
   if (!isCloud && rods && *rods < 4)
     object.report("kind", "found " + kindName + " for " + std::to_string(*rods) +
@@ -309,8 +294,7 @@ std::optional<FamilySpec> readFamily(const JsonObject& run, RodCount rods, std::
 }
 
 void readWatchdog(const JsonObject& run, RunConfig& config, std::vector<SceneProblem>& problems) {
-  const JsonObject watchdog(*run.member("watchdog"), run.pathOf("watchdog"), problems,
-                            {"max_energy_drift", "max_rod_length_error", "max_steps"});
+  const JsonObject watchdog(*run.member("watchdog"), run.pathOf("watchdog"), problems);
   if (const auto drift = watchdog.number("max_energy_drift");
       drift && watchdog.checkPositive("max_energy_drift", *drift)) {
     config.maxRelativeEnergyDrift = *drift;
@@ -328,18 +312,13 @@ std::optional<ColorRGB> readColor(const JsonObject& object, const std::string& k
   const auto rgb = object.numbers(key);
   if (!rgb) return std::nullopt;
   if (!object.checkSize(key, *rgb, 3, "red, green, blue from 0 to 1")) return std::nullopt;
-  if (rgb->minCoeff() < 0 || rgb->maxCoeff() > 1) {
-    object.report(key, "expected red, green, blue each from 0 to 1");
-    return std::nullopt;
-  }
+  if (!object.checkElements(key, *rgb)) return std::nullopt;
   return ColorRGB{float((*rgb)(0)), float((*rgb)(1)), float((*rgb)(2))};
 }
 
 RunSpec readRun(const json& value, const std::string& path, const Scene& scene, RodCount rods,
                 std::vector<SceneProblem>& problems) {
-  const JsonObject run(value, path, problems,
-                       {"name", "method", "integrator", "tolerance", "step", "color", "watchdog", "linkage", "initial",
-                        "family", "jacobi"});
+  const JsonObject run(value, path, problems);
   RunSpec spec;
   spec.name = run.string("name", true).value_or("");
   if (run.has("name") && spec.name.empty()) run.report("name", "is empty; expected a name shown in the panels");
@@ -355,14 +334,11 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
       spec.config.method = *kind;
       // The published methods are the spec's 4-rod, unit-mass ones; the simulation refuses them otherwise,
       // so say so here, with the JSON path, before any work.
-      const Chain& chain = spec.chain;
-      const bool specsChain =
-          chain.rods == 4 && (chain.hingeMasses.array() == 1.0).all() && (chain.rodMasses.array() == 0.0).all();
-      if (traits(*kind).published && rods && !specsChain) {
-        run.report("method", "found \"" + *method +
-                                 "\", the spec's published method for 4 rods with unit hinge masses and "
-                                 "massless rods; this chain differs: expected christoffel, embedded or ambient");
-      }
+      for (const MethodRefusal refusal : methodRefusals({*kind, rods ? &spec.chain : nullptr, false, false}))
+        if (refusal == MethodRefusal::PublishedNeedsFourRods || refusal == MethodRefusal::PublishedNeedsSpecMasses)
+          run.report("method", "found \"" + *method +
+                                   "\", the spec's published method for 4 rods with unit hinge masses and "
+                                   "massless rods; this chain differs: expected christoffel, embedded or ambient");
     }
   }
   bool knownIntegrator = true;
@@ -372,8 +348,7 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
     knownIntegrator = kind.has_value();
   }
   if (const auto tolerance = run.number("tolerance")) {
-    if (run.checkRange("tolerance", *tolerance, limits::kMinTolerance, limits::kMaxTolerance,
-                       "a tolerance from 1e-16 to 0.1")) {
+    if (run.checkBounds("tolerance", *tolerance)) {
       spec.config.tolerance = *tolerance;
     }
   }
@@ -399,17 +374,18 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
   spec.color = readColor(run, "color");
   if (run.has("watchdog")) readWatchdog(run, spec.config, problems);
   // What only the ambient method can move: a slack chain, a start by hinges, more than kMaxRods rods.
+  const bool byHinges = spec.initial.kind == InitialSpec::Kind::Hinges;
   const bool slack = rods && spec.chain.isSlack();
-  const bool chartFree = slack || spec.initial.kind == InitialSpec::Kind::Hinges;
-  if (spec.config.method != Method::Ambient && run.has("method")) {
-    if (slack)
+  const bool chartFree = slack || byHinges;
+  for (const MethodRefusal refusal : methodRefusals({spec.config.method, rods ? &spec.chain : nullptr, byHinges, false})) {
+    if (refusal == MethodRefusal::SlackChainHasNoChart)
       run.report("method", "found \"" + nameOf(spec.config.method) + "\" for a slack chain (L = " +
                                shortest(spec.chain.baseLength) + " <= n-2): it has no chart; expected ambient");
-    else if (spec.initial.kind == InitialSpec::Kind::Hinges)
+    else if (refusal == MethodRefusal::HingeStartHasNoChart)
       run.report("method", "found \"" + nameOf(spec.config.method) +
                                "\" for a start by hinges; expected ambient (the chart methods start from coords or "
                                "a drag)");
-    else if (rods && *rods > limits::kMaxRods)
+    else if (refusal == MethodRefusal::TooManyRodsForCharts)
       run.report("method", "found \"" + nameOf(spec.config.method) + "\" for " + std::to_string(*rods) +
                                " rods; the chart methods are limited to " + std::to_string(limits::kMaxRods) +
                                " rods (their charts stay well conditioned there); expected ambient");
@@ -427,14 +403,17 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
     run.report("family", "a family starts from a point of the configuration sphere; expected a start by coords or "
                          "drag on a chain with n-2 < L < n");
   spec.config.jacobi = run.boolean("jacobi").value_or(false);
-  if (spec.config.jacobi && spec.config.method != Method::Ambient)
-    run.report("jacobi", "needs the ambient method (its linearisation gives the Jacobi fields); found \"" +
-                             nameOf(spec.config.method) + "\"");
-  if (spec.config.jacobi && chartFree)
-    run.report("jacobi", "Jacobi fields start from a point of the configuration sphere; expected a start by coords "
-                         "or drag on a chain with n-2 < L < n");
-  if (spec.config.jacobi && rods && *rods < 4)
-    run.report("jacobi", "needs 4 or more rods (3 rods have no direction across the motion)");
+  if (!spec.config.jacobi) return spec;
+  for (const MethodRefusal refusal : methodRefusals({spec.config.method, rods ? &spec.chain : nullptr, byHinges, true})) {
+    if (refusal == MethodRefusal::JacobiNeedsAmbient)
+      run.report("jacobi", "needs the ambient method (its linearisation gives the Jacobi fields); found \"" +
+                               nameOf(spec.config.method) + "\"");
+    else if (refusal == MethodRefusal::JacobiNeedsSpherePoint)
+      run.report("jacobi", "Jacobi fields start from a point of the configuration sphere; expected a start by "
+                           "coords or drag on a chain with n-2 < L < n");
+    else if (refusal == MethodRefusal::JacobiNeedsFourRods)
+      run.report("jacobi", "needs 4 or more rods (3 rods have no direction across the motion)");
+  }
   return spec;
 }
 
@@ -459,16 +438,10 @@ void readRuns(const json* value, Scene& scene, RodCount rods, std::vector<SceneP
 }
 
 void readOutput(const json& value, Scene& scene, std::vector<SceneProblem>& problems) {
-  const JsonObject output(value, "output", problems, {"fps", "width", "height", "folder", "png", "png_compression", "video",
-                                                      "video_quality"});
+  const JsonObject output(value, "output", problems);
   OutputSettings& spec = scene.output;
   if (const auto fps = output.integer("fps")) {
-    if (*fps < 1 || *fps > limits::kMaxFps) {
-      output.report("fps", "found " + std::to_string(*fps) + "; expected an integer from 1 to " +
-                               std::to_string(limits::kMaxFps));
-    } else {
-      spec.fps = static_cast<int>(*fps);
-    }
+    if (output.checkBounds("fps", *fps)) spec.fps = static_cast<int>(*fps);
   }
   const auto width = output.integer("width");
   const auto height = output.integer("height");
@@ -498,13 +471,11 @@ void readOutput(const json& value, Scene& scene, std::vector<SceneProblem>& prob
 
 std::vector<SceneProblem> checkImageSize(ImageSize size, bool evenForVideo, const std::string& path) {
   std::vector<SceneProblem> problems;
-  const int minimum = limits::kMinImageSide;
-  const std::string allowed = "from " + std::to_string(minimum) + " to " + std::to_string(limits::kMaxImageSide) +
-                              " pixels (the renderer's largest size)";
   for (const auto& [key, value] : {std::pair{"width", size.width}, std::pair{"height", size.height}}) {
     const std::string where = path + "." + key;
-    if (value < minimum || value > limits::kMaxImageSide) {
-      problems.push_back({where, "found " + std::to_string(value) + "; expected " + allowed});
+    const SceneKey& described = sceneKey(std::string("output.") + key);
+    if (!withinBounds(described, value)) {
+      problems.push_back({where, "found " + std::to_string(value) + "; expected " + expectedWords(described)});
     } else if (evenForVideo && value % 2 != 0) {
       problems.push_back(
           {where, "found " + std::to_string(value) + "; an mp4 or webm video (yuv420p) needs an even size"});
@@ -593,16 +564,12 @@ Scene parseScene(const std::string& text, const std::string& file, const std::ve
   scene.file = file;
   scene.identity = text;
   for (const std::string& assignment : overrides) scene.identity += "\n--set " + assignment;
-  const JsonObject top(document, "", problems,
-                       {"name", "title", "linkage", "initial", "duration", "runs", "output", "view"});
+  const JsonObject top(document, "", problems);
   if (!top.isObject()) throw SceneError(file, problems);
 
   scene.name = top.string("name", true).value_or("");
   if (top.has("name") && !isSafeName(scene.name)) {
-    top.report("name",
-               "found \"" + scene.name +
-                   "\"; expected a non-empty name of at most " + std::to_string(kMaxOutputNameBytes) +
-                   " letters, digits, '-', '_' or '.' (it names the output folder)");
+    top.report("name", "found \"" + scene.name + "\"; expected " + expectedWords(sceneKey("name")));
   }
   scene.title = top.string("title").value_or(scene.name);
   if (const auto duration = top.number("duration", true); duration && top.checkPositive("duration", *duration)) {

@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "contracts/csv_format.hpp"
 #include "contracts/limits.hpp"
 #include "scene/did_you_mean.hpp"
 #include "scene/json_fields.hpp"
+#include "scene/scene_keys.hpp"
 #include "scene/scene_sections.hpp"
 
 namespace sl::detail {
@@ -47,7 +47,7 @@ void addPanel(const json& value, const std::string& path, Scene& scene, bool rod
   if (value.is_string()) {
     kind = pickKind(path, value.get<std::string>(), kPanelKinds, problems);
   } else {
-    const JsonObject object(value, path, problems, {"panel", "plot", "scale", "rect", "y_range"});
+    const JsonObject object(value, path, problems);
     if (!object.isObject()) return;
     if (const auto name = object.string("panel", true))
       kind = pickKind(object.pathOf("panel"), *name, kPanelKinds, problems);
@@ -117,8 +117,7 @@ void readPanels(const JsonObject& view, Scene& scene, bool rodsKnown, std::vecto
 }
 
 void readCamera(const JsonObject& view, CameraSpec& camera, std::vector<SceneProblem>& problems) {
-  const JsonObject object(*view.member("camera"), view.pathOf("camera"), problems,
-                          {"direction", "orbit_degrees_per_second", "field_of_view"});
+  const JsonObject object(*view.member("camera"), view.pathOf("camera"), problems);
   if (const auto direction = object.numbers("direction");
       direction && object.checkSize("direction", *direction, 3, "x, y, z towards the eye")) {
     // Only the direction counts: brought to size 1 by its largest component, so [1e300, 1e300, 1e300] (whose
@@ -129,16 +128,10 @@ void readCamera(const JsonObject& view, CameraSpec& camera, std::vector<ScenePro
     camera.viewDirection = {unit(0), unit(1), unit(2)};
   }
   if (const auto orbit = object.number("orbit_degrees_per_second");
-      orbit && object.checkRange("orbit_degrees_per_second", *orbit, -limits::kMaxOrbitDegreesPerSecond,
-                                 limits::kMaxOrbitDegreesPerSecond, "degrees per second from -3600 to 3600")) {
+      orbit && object.checkBounds("orbit_degrees_per_second", *orbit)) {
     camera.orbitDegreesPerSecond = *orbit;
   }
-  std::ostringstream fovRange;
-  fovRange << "an angle from " << limits::kMinFieldOfViewDegrees << " to " << limits::kMaxFieldOfViewDegrees
-           << " degrees";
-  if (const auto fov = object.number("field_of_view");
-      fov && object.checkRange("field_of_view", *fov, limits::kMinFieldOfViewDegrees, limits::kMaxFieldOfViewDegrees,
-                               fovRange.str())) {
+  if (const auto fov = object.number("field_of_view"); fov && object.checkBounds("field_of_view", *fov)) {
     camera.fieldOfViewDegrees = *fov;
   }
 }
@@ -160,9 +153,9 @@ void readLinkageChoice(const JsonObject& view, Scene& scene, std::vector<ScenePr
 void readTrails(const JsonObject& view, Scene& scene, bool rodsKnown) {
   const auto hinges = view.numbers("trails");
   if (!hinges) return;
-  if (hinges->size() > limits::kMaxTrails) {
+  if (const double most = sceneKey(view.pathOf("trails")).maximum; hinges->size() > most) {
     view.report("trails", "found " + std::to_string(hinges->size()) + " hinges; expected at most " +
-                              std::to_string(limits::kMaxTrails) + " (each trail is drawn and kept per frame)");
+                              std::to_string(static_cast<long>(most)) + " (each trail is drawn and kept per frame)");
     return;
   }
   // While n is unknown (an invalid "rods") only the form is checked: the largest hinge number depends on n.
@@ -182,29 +175,22 @@ void readTrails(const JsonObject& view, Scene& scene, bool rodsKnown) {
 void readFades(const JsonObject& view, Scene& scene) {
   ViewSettings& render = scene.view;
   if (const auto fade = view.number("path_fade_seconds");
-      fade && view.checkRange("path_fade_seconds", *fade, 0, 1e9, "0 (never fades) or a positive time")) {
+      fade && view.checkBounds("path_fade_seconds", *fade)) {
     render.pathFadeSeconds = *fade;
   }
   if (const auto fade = view.number("trail_fade_seconds");
-      fade && view.checkPositive("trail_fade_seconds", *fade) &&
-      view.checkRange("trail_fade_seconds", *fade, 0, limits::kMaxTrailFadeSeconds,
-                      "a positive time of at most " + shortest(limits::kMaxTrailFadeSeconds) + " s")) {
+      fade && view.checkPositive("trail_fade_seconds", *fade) && view.checkBounds("trail_fade_seconds", *fade)) {
     render.trailFadeSeconds = *fade;
   }
   if (const auto samples = view.integer("path_samples_per_frame")) {
-    if (*samples < 1 || *samples > limits::kMaxPathSamplesPerFrame) {
-      view.report("path_samples_per_frame", "found " + std::to_string(*samples) + "; expected an integer from 1 to " +
-                                                std::to_string(limits::kMaxPathSamplesPerFrame));
-    } else {
-      scene.view.pathSamplesPerFrame = static_cast<int>(*samples);
-    }
+    if (view.checkBounds("path_samples_per_frame", *samples)) scene.view.pathSamplesPerFrame = static_cast<int>(*samples);
   }
 }
 
 // "sphere": how the sphere panel's surface is coloured and decorated. The geometry behind it (curvature,
 // bending, stiffness; docs/geometry.md) is that of a surface, so 4 rods only.
 void readSphereSurface(const JsonObject& view, Scene& scene, bool rodsKnown, std::vector<SceneProblem>& problems) {
-  const JsonObject object(*view.member("sphere"), view.pathOf("sphere"), problems, {"color_by", "stiffness"});
+  const JsonObject object(*view.member("sphere"), view.pathOf("sphere"), problems);
   if (!object.isObject()) return;
   SphereSurfaceSpec& surface = scene.view.sphereSurface;
   if (const auto name = object.string("color_by")) {
@@ -230,10 +216,7 @@ void readSphereSurface(const JsonObject& view, Scene& scene, bool rodsKnown, std
 }  // namespace
 
 void readView(const json& value, Scene& scene, bool rodsKnown, std::vector<SceneProblem>& problems) {
-  const JsonObject view(value, "view", problems,
-                        {"panels", "camera", "linkage_layout", "linkage_run", "trails", "trail_fade_seconds",
-                         "path_fade_seconds", "path_samples_per_frame", "background", "antialias", "sphere",
-                         "title_line"});
+  const JsonObject view(value, "view", problems);
   if (!view.isObject()) return;
   ViewSettings& render = scene.view;
   readPanels(view, scene, rodsKnown, problems);
@@ -243,8 +226,7 @@ void readView(const json& value, Scene& scene, bool rodsKnown, std::vector<Scene
   readTrails(view, scene, rodsKnown);
   readFades(view, scene);
   if (const auto rgb = view.numbers("background"); rgb && view.checkSize("background", *rgb, 3, "red, green, blue")) {
-    if (rgb->minCoeff() < 0 || rgb->maxCoeff() > 1)
-      view.report("background", "expected red, green, blue each from 0 to 1");
+    view.checkElements("background", *rgb);
     render.background = {float((*rgb)(0)), float((*rgb)(1)), float((*rgb)(2))};
   }
   render.antialias = view.boolean("antialias").value_or(render.antialias);

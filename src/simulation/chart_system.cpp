@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "contracts/limits.hpp"
 #include "linkage/chart.hpp"
 #include "linkage/sphere_coordinates.hpp"
 #include "simulation/exact_fields.hpp"
@@ -25,17 +26,36 @@ Eigen::VectorXd ratesInChart(const std::vector<int>& axes, const Eigen::VectorXd
   return coordinateRatesFromSphereVelocity(coords, s);
 }
 
-namespace {
-
-void requireSpecChain(const std::string& name, const Chain& chain) {
-  if (chain.rods != 4)
-    throw std::invalid_argument("method '" + name + "' is the spec's 4-rod method (chart (phi, t)); the chain has " +
-                                std::to_string(chain.rods) + " rods: use christoffel, embedded or ambient");
-  if ((chain.hingeMasses.array() != 1.0).any() || chain.hasRodMass())
-    throw std::invalid_argument("method '" + name +
-                                "' assumes unit hinge masses and massless rods (spec section 1): use christoffel, "
-                                "embedded or ambient for other masses");
+void requireMethodMoves(const MotionRequest& request) {
+  const std::vector<MethodRefusal> refusals = methodRefusals(request);
+  if (refusals.empty()) return;
+  const std::string name = nameOf(request.method);
+  const int rods = request.chain != nullptr ? request.chain->rods : 0;
+  switch (refusals.front()) {
+    case MethodRefusal::JacobiNeedsAmbient:
+      throw std::invalid_argument("Jacobi fields are computed with the ambient method only");
+    case MethodRefusal::SlackChainHasNoChart:
+    case MethodRefusal::HingeStartHasNoChart:
+      throw std::invalid_argument("a slack chain or a start by hinges has no chart: only the ambient method moves it");
+    case MethodRefusal::TooManyRodsForCharts:
+      throw std::invalid_argument("method '" + name + "' works in charts, limited to " +
+                                  std::to_string(limits::kMaxRods) + " rods (they stay well conditioned there); the " +
+                                  "chain has " + std::to_string(rods) + " rods: use ambient");
+    case MethodRefusal::JacobiNeedsSpherePoint:
+      throw std::invalid_argument("Jacobi fields start from a point of the configuration sphere (coords or drag)");
+    case MethodRefusal::JacobiNeedsFourRods:
+      throw std::invalid_argument("Jacobi fields need at least 4 rods (a direction across the motion)");
+    case MethodRefusal::PublishedNeedsFourRods:
+      throw std::invalid_argument("method '" + name + "' is the spec's 4-rod method (chart (phi, t)); the chain has " +
+                                  std::to_string(rods) + " rods: use christoffel, embedded or ambient");
+    case MethodRefusal::PublishedNeedsSpecMasses:
+      throw std::invalid_argument("method '" + name +
+                                  "' assumes unit hinge masses and massless rods (spec section 1): use christoffel, "
+                                  "embedded or ambient for other masses");
+  }
 }
+
+namespace {
 
 template <class Field>
 ChartAcceleration published(const PublishedChain& chain, Field field) {
@@ -49,7 +69,7 @@ ChartAcceleration published(const PublishedChain& chain, Field field) {
 ChartMethod chartMethod(Method method, const ChainConstants& bound) {
   const MethodTraits& properties = traits(method);
   const Chain& chain = bound.chain;
-  if (properties.published) requireSpecChain(nameOf(method), chain);
+  requireMethodMoves({method, &chain, false, false});
   ChartAcceleration acceleration;
   switch (method) {
     case Method::ChristoffelFd:

@@ -11,6 +11,7 @@
 #include "contracts/registry.hpp"
 #include "contracts/run_config.hpp"
 #include "linkage/chain_constants.hpp"
+#include "linkage/method_rules.hpp"
 #include "simulation/geodesic_system.hpp"
 
 namespace sl {
@@ -24,8 +25,12 @@ struct ChartMethod {
   bool usesAtlas = true;
 };
 
+// Throws std::invalid_argument, in the simulation's words, for the first reason (linkage/method_rules.hpp) the
+// request cannot be carried out.
+void requireMethodMoves(const MotionRequest& request);
+
 // A chart-based method (every method but ambient); throws std::invalid_argument for the ambient method and for
-// the published methods on chains they do not cover (4 rods, unit hinge masses, massless rods).
+// chains it does not cover (requireMethodMoves).
 ChartMethod chartMethod(Method method, const ChainConstants& bound);
 
 class ChartSystem : public GeodesicSystem {

@@ -45,12 +45,7 @@ class CountingSystem : public GeodesicSystem {
 
 std::unique_ptr<GeodesicSystem> makeSystem(const ChainConstants& bound, const InitialState& start,
                                            const RunConfig& config) {
-  if (config.jacobi && config.method != Method::Ambient)
-    throw std::invalid_argument("Jacobi fields are computed with the ambient method only");
-  if ((bound.chain.isSlack() || start.byHinges()) && config.method != Method::Ambient)
-    throw std::invalid_argument("a slack chain or a start by hinges has no chart: only the ambient method moves it");
-  if (config.jacobi && start.byHinges())
-    throw std::invalid_argument("Jacobi fields start from a point of the configuration sphere (coords or drag)");
+  requireMethodMoves({config.method, &bound.chain, start.byHinges(), config.jacobi});
   if (config.method == Method::Ambient) {
     // Project once the rods drift past a tenth of the tolerance (never below rounding level).
     const double projectBeyond = std::max(1e-14, 0.1 * std::min(config.tolerance, config.maxRodLengthError));

@@ -7,6 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include "contracts/output_settings.hpp"
+#include "contracts/run_config.hpp"
+#include "contracts/view_settings.hpp"
+#include "scene/scene_keys.hpp"
 #include "scene/scene_schema.hpp"
 #include "support/child_process.hpp"
 #include "support/files.hpp"
@@ -17,6 +21,7 @@ namespace sl::testing {
 namespace {
 
 namespace fs = std::filesystem;
+using nlohmann::json;
 
 // "ok FILE" or "invalid FILE: message" per file, from python3-jsonschema.
 std::string validateWithPython(const std::string& schema, const std::vector<std::string>& files) {
@@ -45,6 +50,42 @@ for name in sys.argv[2:]:
 TEST(SceneSchema, ShippedCopyIsWhatTheProgramPrints) {
   EXPECT_EQ(readFile(sourcePath("scenes/scene.schema.json")), sceneSchema().dump(2) + "\n")
       << "regenerate it: build/linkage schema > scenes/scene.schema.json";
+}
+
+// The key table of scenes/README.md comes from the same descriptions as the schema.
+TEST(SceneSchema, ReadmeKeyTableIsWhatTheProgramPrints) {
+  const std::string readme = readFile(sourcePath("scenes/README.md"));
+  const std::size_t start = readme.find("| key | meaning | allowed (default) |");
+  ASSERT_NE(start, std::string::npos);
+  const std::size_t end = readme.find("\n\n", start);
+  ASSERT_NE(end, std::string::npos);
+  EXPECT_EQ(readme.substr(start, end + 1 - start), sceneKeyTable())
+      << "regenerate the table in scenes/README.md from: build/linkage schema --markdown";
+}
+
+// Defaults in the schema are the defaults the loader leaves in place: a scene that gives only what is
+// required loads with exactly the defaults the schema states.
+TEST(SceneSchema, DefaultsAreTheLoadersDefaults) {
+  const json schema = sceneSchema();
+  const json& run = schema["properties"]["runs"]["items"]["properties"];
+  const RunConfig config;
+  EXPECT_EQ(run["tolerance"]["default"], config.tolerance);
+  EXPECT_EQ(run["step"]["default"], config.step);
+  EXPECT_EQ(run["method"]["default"], nameOf(config.method));
+  EXPECT_EQ(run["integrator"]["default"], nameOf(config.integrator));
+  EXPECT_EQ(run["watchdog"]["properties"]["max_steps"]["default"], config.maxSteps);
+  const json& view = schema["properties"]["view"]["properties"];
+  EXPECT_EQ(view["camera"]["properties"]["field_of_view"]["default"], CameraSpec{}.fieldOfViewDegrees);
+  EXPECT_EQ(view["background"]["default"], json::parse("[0.96, 0.95, 0.92]"));
+  EXPECT_EQ(schema["properties"]["output"]["properties"]["fps"]["default"], OutputSettings{}.fps);
+  // The JSON Schema validator reads them too: every default is a valid value of its key.
+  json scene = json::parse(readFile(sourcePath("scenes/default.json")));
+  scene["runs"][0]["tolerance"] = run["tolerance"]["default"];
+  scene["view"]["background"] = view["background"]["default"];
+  TempFolder folder;
+  writeFile(folder.path() / "defaults.json", scene.dump());
+  const std::string report = validateWithPython(schema.dump(), {(folder.path() / "defaults.json").string()});
+  EXPECT_NE(report.find("ok "), std::string::npos) << report;
 }
 
 TEST(SceneSchema, AcceptsEveryShippedSceneAndRejectsBadKeysTypesNamesAndBounds) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "contracts/limits.hpp"
 #include "support.hpp"
 
 namespace sl {
@@ -133,6 +134,32 @@ TEST(Trajectory, InvariantExtremesAreTheWorstOverTheStepEnds) {
   EXPECT_GT(drift, 1e-9);  // rk4 at this step drifts visibly: the check is not vacuous
   EXPECT_NEAR(run.invariantExtremes().maxRelativeEnergyDrift, drift, 1e-9 * drift);
   EXPECT_NEAR(run.invariantExtremes().maxRodLengthError, rodLength, 1e-15);
+}
+
+// The chart methods' rod limit holds for runs built in code, not only for scenes: the same rule
+// (linkage/method_rules.hpp) refuses a 20-rod chain moved with christoffel, and admits it up to the limit.
+TEST(Trajectory, ChartMethodsAreRefusedBeyondTheirRodLimitWhenBuiltInCode) {
+  const auto startOf = [](const Chain& chain) {
+    const Eigen::VectorXd coords = Eigen::VectorXd::Constant(chain.sphereDimension(), 0.1);
+    Eigen::VectorXd rates = Eigen::VectorXd::Zero(chain.sphereDimension());
+    rates(0) = 0.5;
+    return initialStateFromChart(chain, coords, rates);
+  };
+  const Chain twenty = Chain::uniform(20, 19.0);
+  EXPECT_NO_THROW(Trajectory(twenty, startOf(twenty), testing::config("ambient")));
+  try {
+    Trajectory(twenty, startOf(twenty), testing::config("christoffel"));
+    ADD_FAILURE() << "christoffel moved 20 rods";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("limited to 12 rods"), std::string::npos) << error.what();
+  }
+  for (const int rods : {limits::kMaxRods, limits::kMaxRods + 1}) {
+    const Chain chain = Chain::uniform(rods, rods - 1.0);
+    if (rods <= limits::kMaxRods)
+      EXPECT_NO_THROW(Trajectory(chain, startOf(chain), testing::config("embedded")));
+    else
+      EXPECT_THROW(Trajectory(chain, startOf(chain), testing::config("embedded")), std::invalid_argument);
+  }
 }
 
 TEST(Trajectory, RejectsBadConfigurationAndStartsWithClearErrors) {
