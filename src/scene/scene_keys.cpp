@@ -478,6 +478,7 @@ std::vector<SceneKey> describeKeys() {
        .meaning = "`fast`: this program's own PNG writer, several times faster than deflate, files somewhat larger; "
                   "`small`: libdeflate level 1, smaller files, more CPU per frame (docs/rendering.md has the figures). "
                   "Every PNG decoder reads both",
+       .allowed = "`fast` or `small`",
        .names = namesOf(kPngCompressions)},
       {.path = "output.video",
        .type = KeyType::String,
