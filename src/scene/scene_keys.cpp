@@ -190,7 +190,8 @@ std::vector<SceneKey> describeKeys() {
        .target = "InitialSpec::push*",
        .meaning = "instead of `velocities`: one hinge pushed, `{ \"hinge\": k, \"velocity\": [vx, vy] }`, or a random "
                   "push at every hinge, `{ \"seed\": s, \"size\": v }` (the same seed gives the same push)",
-       .allowed = "`hinge` 1..n-1, `velocity` components up to 1e6 in size; `seed` >= 0, `size` 1e-12..1e6"},
+       .allowed = "`hinge` 1..n-1, `velocity` components up to {max:initial.push.velocity} in size; `seed` >= 0, `size` "
+                  "{range:initial.push.size}"},
       {.path = "initial.push.hinge",
        .type = KeyType::Integer,
        .minimum = 1,
@@ -360,8 +361,10 @@ std::vector<SceneKey> describeKeys() {
            "`seed` (point and velocity each moved by `epsilon` in random directions; the same seed gives the same "
            "cloud everywhere). Members share the run's linkage, method and integrator, are integrated on all cores, "
            "and a member that stops is marked (red halo)",
-       .allowed = "kind required; `count` 2..256 (16), `spread` in (0, pi] (0.2), `epsilon` in (0, 0.1] (1e-6), "
-                  "`seed` >= 0 (1); fan and parallel need 4+ rods"},
+       .allowed = "kind required; `count` {range:runs[i].family.count} ({default:runs[i].family.count}), `spread` in "
+                  "(0, pi] ({default:runs[i].family.spread}), `epsilon` in (0, {max:runs[i].family.epsilon}] "
+                  "({default:runs[i].family.epsilon}), `seed` >= 0 ({default:runs[i].family.seed}); fan and parallel "
+                  "need 4+ rods"},
       {.path = "runs[i].family.kind",
        .type = KeyType::Choice,
        .required = true,
@@ -714,20 +717,6 @@ std::string withBounds(const SceneKey& key, std::string words) {
   return words;
 }
 
-// The README's words for a key's text, bounds in place of {min} and {max}.
-std::string readableBounds(const SceneKey& key, std::string words) {
-  for (const auto& [name, bound] : {std::pair{"{min}", key.minimum}, std::pair{"{max}", key.maximum}}) {
-    for (std::size_t at = words.find(name); at != std::string::npos; at = words.find(name))
-      words.replace(at, 5, readable(boundText(key, bound)));
-  }
-  return words;
-}
-
-// A key is required in every scene when it and the objects around it are.
-bool requiredInEveryScene(const SceneKey& key) {
-  return key.required && (parentOf(key.path).empty() || requiredInEveryScene(sceneKey(parentOf(key.path))));
-}
-
 // A default as the README shows it: true, 30, `high`, [1, 0.6, 0.5].
 std::string defaultWords(const json& value) {
   if (value.is_string()) return "`" + value.get<std::string>() + "`";
@@ -738,6 +727,30 @@ std::string defaultWords(const json& value) {
     return words + "]";
   }
   return value.dump();
+}
+
+// The README's words for a key's text: its bounds in place of {min} and {max}, another key's bounds and default
+// in place of {range:PATH}, {max:PATH} and {default:PATH} (an object's row speaks for its members).
+std::string readableBounds(const SceneKey& key, std::string words) {
+  for (const auto& [name, bound] : {std::pair{"{min}", key.minimum}, std::pair{"{max}", key.maximum}}) {
+    for (std::size_t at = words.find(name); at != std::string::npos; at = words.find(name))
+      words.replace(at, 5, readable(boundText(key, bound)));
+  }
+  static const std::regex reference("\\{(range|max|default):([^}]+)\\}");
+  std::smatch match;
+  while (std::regex_search(words, match, reference)) {
+    const SceneKey& other = sceneKey(match[2]);
+    const std::string text = match[1] == "default" ? defaultWords(other.fallback)
+                             : match[1] == "max"   ? readableBounds(other, "{max}")
+                                                   : readableBounds(other, "{min}..{max}");
+    words.replace(static_cast<std::size_t>(match.position(0)), static_cast<std::size_t>(match.length(0)), text);
+  }
+  return words;
+}
+
+// A key is required in every scene when it and the objects around it are.
+bool requiredInEveryScene(const SceneKey& key) {
+  return key.required && (parentOf(key.path).empty() || requiredInEveryScene(sceneKey(parentOf(key.path))));
 }
 
 }  // namespace
