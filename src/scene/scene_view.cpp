@@ -164,8 +164,8 @@ void readTrails(const JsonObject& view, Scene& scene, bool rodsKnown) {
     const double hinge = (*hinges)(i);
     // Range first: converting a double beyond int's range to int is undefined behaviour.
     if (!(hinge >= 1 && hinge <= count) || hinge != std::floor(hinge)) {
-      view.report("trails", "found " + describeJson(json(hinge)) +
-                                "; expected hinge numbers from 1 to n-1 = " + std::to_string(count));
+      view.report("trails", "found " + shortest(hinge) + "; expected hinge numbers from 1 to n-1" +
+                                (rodsKnown ? " = " + std::to_string(scene.chain.hingeCount()) : ""));
       return;
     }
     scene.view.trailHinges.push_back(static_cast<int>(hinge));
