@@ -17,8 +17,8 @@
 namespace sl {
 namespace {
 
-using nlohmann::json;
 using limits::kMaxAmbientRods;
+using nlohmann::json;
 
 // A float default as the decimal it was written as (0.96f, not 0.9599999785423279).
 double asWritten(float value) {
@@ -190,8 +190,9 @@ std::vector<SceneKey> describeKeys() {
        .target = "InitialSpec::push*",
        .meaning = "instead of `velocities`: one hinge pushed, `{ \"hinge\": k, \"velocity\": [vx, vy] }`, or a random "
                   "push at every hinge, `{ \"seed\": s, \"size\": v }` (the same seed gives the same push)",
-       .allowed = "`hinge` 1..n-1, `velocity` components up to {max:initial.push.velocity} in size; `seed` >= 0, `size` "
-                  "{range:initial.push.size}"},
+       .allowed =
+           "`hinge` 1..n-1, `velocity` components up to {max:initial.push.velocity} in size; `seed` >= 0, `size` "
+           "{range:initial.push.size}"},
       {.path = "initial.push.hinge",
        .type = KeyType::Integer,
        .minimum = 1,
@@ -241,12 +242,7 @@ std::vector<SceneKey> describeKeys() {
        .target = "Scene::duration",
        .meaning = "simulated time; frames k = 0..ceil(duration * fps) at times k / fps",
        .allowed = "> 0, at most " + readable(std::to_string(limits::kMaxFrames)) + " frames"},
-      {.path = "runs",
-       .type = KeyType::Array,
-       .minimum = 1,
-       .required = true,
-       .target = "Scene::runs",
-       .meaning = "-"},
+      {.path = "runs", .type = KeyType::Array, .minimum = 1, .required = true, .target = "Scene::runs", .meaning = "-"},
       {.path = "runs[i]",
        .type = KeyType::Object,
        .required = true,
@@ -503,7 +499,8 @@ std::vector<SceneKey> describeKeys() {
        .target = "ViewSettings::panels, ViewSettings::plots",
        .meaning =
            "panels in layout order: `\"sphere\"`, `\"linkage\"`, `\"plot\"`, `\"text\"`, or objects `{ \"panel\": "
-           "\"plot\", \"plot\": \"divergence\" \\| \"energy\", \"scale\": \"log\" \\| \"linear\", \"y_range\": [lo, hi], "
+           "\"plot\", \"plot\": \"divergence\" \\| \"energy\", \"scale\": \"log\" \\| \"linear\", \"y_range\": [lo, "
+           "hi], "
            "\"rect\": [x, y, w, h] }` (rect in fractions of the frame from the top left; omitted = automatic layout, "
            "portrait frames stacked; a plot's axes span the whole animation from its first frame, y from the data of "
            "every frame unless `y_range` says otherwise, and its legend sits above the plot area, beside the title "
@@ -769,7 +766,8 @@ const SceneKey& sceneKey(const std::string& path) {
 
 std::vector<std::string> memberNames(const std::string& path) {
   std::string object = describedPath(path);
-  if (object == "runs[i].linkage" || object == "runs[i].initial") object = object.substr(std::string("runs[i].").size());
+  if (object == "runs[i].linkage" || object == "runs[i].initial")
+    object = object.substr(std::string("runs[i].").size());
   std::vector<std::string> names;
   for (const SceneKey& key : sceneKeys())
     if (!key.path.empty() && key.path.back() != ']' && parentOf(key.path) == object)
@@ -792,9 +790,11 @@ std::string sceneKeyTable() {
     // This key and those that join its row (width and height, coords and velocity).
     std::string names = "`" + key.path + "`", defaults;
     const auto addDefault = [&defaults](const SceneKey& k) {
-      const std::string words = requiredInEveryScene(k) ? "required" : k.required ? "" : !k.defaultText.empty() ? k.defaultText
-                                                       : k.fallback.is_null()    ? ""
-                                                                                 : defaultWords(k.fallback);
+      const std::string words = requiredInEveryScene(k)  ? "required"
+                                : k.required             ? ""
+                                : !k.defaultText.empty() ? k.defaultText
+                                : k.fallback.is_null()   ? ""
+                                                         : defaultWords(k.fallback);
       if (!words.empty() && defaults != words) defaults += (defaults.empty() ? "" : ", ") + words;
     };
     addDefault(key);

@@ -377,7 +377,8 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
   const bool byHinges = spec.initial.kind == InitialSpec::Kind::Hinges;
   const bool slack = rods && spec.chain.isSlack();
   const bool chartFree = slack || byHinges;
-  for (const MethodRefusal refusal : methodRefusals({spec.config.method, rods ? &spec.chain : nullptr, byHinges, false})) {
+  const Chain* knownChain = rods ? &spec.chain : nullptr;  // the rules by n only while n is valid
+  for (const MethodRefusal refusal : methodRefusals({spec.config.method, knownChain, byHinges, false})) {
     if (refusal == MethodRefusal::SlackChainHasNoChart)
       run.report("method", "found \"" + nameOf(spec.config.method) + "\" for a slack chain (L = " +
                                shortest(spec.chain.baseLength) + " <= n-2): it has no chart; expected ambient");
@@ -404,7 +405,7 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
                          "drag on a chain with n-2 < L < n");
   spec.config.jacobi = run.boolean("jacobi").value_or(false);
   if (!spec.config.jacobi) return spec;
-  for (const MethodRefusal refusal : methodRefusals({spec.config.method, rods ? &spec.chain : nullptr, byHinges, true})) {
+  for (const MethodRefusal refusal : methodRefusals({spec.config.method, knownChain, byHinges, true})) {
     if (refusal == MethodRefusal::JacobiNeedsAmbient)
       run.report("jacobi", "needs the ambient method (its linearisation gives the Jacobi fields); found \"" +
                                nameOf(spec.config.method) + "\"");

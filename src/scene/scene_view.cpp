@@ -183,7 +183,8 @@ void readFades(const JsonObject& view, Scene& scene) {
     render.trailFadeSeconds = *fade;
   }
   if (const auto samples = view.integer("path_samples_per_frame")) {
-    if (view.checkBounds("path_samples_per_frame", *samples)) scene.view.pathSamplesPerFrame = static_cast<int>(*samples);
+    if (view.checkBounds("path_samples_per_frame", *samples))
+      scene.view.pathSamplesPerFrame = static_cast<int>(*samples);
   }
 }
 
