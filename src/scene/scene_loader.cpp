@@ -219,7 +219,7 @@ void readInitial(const json& value, const std::string& path, RodCount rods, Init
   const JsonObject initial(value, path, problems);
   if (!initial.isObject()) return;
   spec = InitialSpec{};
-  spec.unitSpeed = initial.boolean("unit_speed").value_or(false);
+  spec.unitSpeed = initial.boolean("unit_speed").value_or(spec.unitSpeed);
   const bool hasDrag = initial.has("drag");
   const bool hasCoords = initial.has("coords") || initial.has("velocity");
   const bool hasHinges = initial.has("hinges") || initial.has("velocities") || initial.has("push");
@@ -403,7 +403,7 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
   if (spec.family && chartFree)
     run.report("family", "a family starts from a point of the configuration sphere; expected a start by coords or "
                          "drag on a chain with n-2 < L < n");
-  spec.config.jacobi = run.boolean("jacobi").value_or(false);
+  spec.config.jacobi = run.boolean("jacobi").value_or(spec.config.jacobi);
   if (!spec.config.jacobi) return spec;
   for (const MethodRefusal refusal : methodRefusals({spec.config.method, knownChain, byHinges, true})) {
     if (refusal == MethodRefusal::JacobiNeedsAmbient)
@@ -452,8 +452,8 @@ void readOutput(const json& value, Scene& scene, std::vector<SceneProblem>& prob
   if (spec.folder.empty()) output.report("folder", "is empty; expected a folder for the frames");
   if (const std::string reason = unusablePathReason(spec.folder); !reason.empty())
     output.report("folder", reason + "; expected a usable folder path");
-  spec.png = output.boolean("png").value_or(true);
-  spec.video = output.string("video").value_or("");
+  spec.png = output.boolean("png").value_or(spec.png);
+  spec.video = output.string("video").value_or(spec.video);
   if (const auto quality = output.string("video_quality")) {
     if (const auto kind = detail::pickKind(output.pathOf("video_quality"), *quality, kVideoQualities, problems))
       spec.videoQuality = *kind;

@@ -198,7 +198,7 @@ void readSphereSurface(const JsonObject& view, Scene& scene, bool rodsKnown, std
     if (const auto kind = pickKind(object.pathOf("color_by"), *name, kSphereColorings, problems))
       surface.colorBy = *kind;
   }
-  surface.stiffness = object.boolean("stiffness").value_or(false);
+  surface.stiffness = object.boolean("stiffness").value_or(surface.stiffness);
   if (rodsKnown && scene.chain.isSlack() && surface.decorated()) {
     object.report(surface.colorBy != SphereColoring::None ? "color_by" : "stiffness",
                   "a slack chain (L <= n-2) has no configuration sphere to colour or decorate");
