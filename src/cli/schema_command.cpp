@@ -13,7 +13,8 @@ namespace sl {
 void addSchemaCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("schema", "Print the JSON Schema of scene files (for editors)");
   static bool markdown = false;
-  command->add_flag("--markdown", markdown, "print the key table of scenes/README.md instead (from the same descriptions)");
+  command->add_flag("--markdown", markdown,
+                    "print the key table of scenes/README.md instead (from the same descriptions)");
   command->footer(
       "A copy ships as scenes/scene.schema.json. In VS Code, for example, map it in settings.json:\n"
       "  \"json.schemas\": [{ \"fileMatch\": [\"scenes/*.json\"], \"url\": \"./scenes/scene.schema.json\" }]\n"

@@ -17,8 +17,8 @@
 namespace sl {
 namespace {
 
-using nlohmann::json;
 using limits::kMaxAmbientRods;
+using nlohmann::json;
 
 // A float default as the decimal it was written as (0.96f, not 0.9599999785423279).
 double asWritten(float value) {
@@ -190,7 +190,9 @@ std::vector<SceneKey> describeKeys() {
        .target = "InitialSpec::push*",
        .meaning = "instead of `velocities`: one hinge pushed, `{ \"hinge\": k, \"velocity\": [vx, vy] }`, or a random "
                   "push at every hinge, `{ \"seed\": s, \"size\": v }` (the same seed gives the same push)",
-       .allowed = "`hinge` 1..n-1, `velocity` components up to 1e6 in size; `seed` >= 0, `size` 1e-12..1e6"},
+       .allowed =
+           "`hinge` 1..n-1, `velocity` components up to {max:initial.push.velocity} in size; `seed` >= 0, `size` "
+           "{range:initial.push.size}"},
       {.path = "initial.push.hinge",
        .type = KeyType::Integer,
        .minimum = 1,
@@ -240,12 +242,7 @@ std::vector<SceneKey> describeKeys() {
        .target = "Scene::duration",
        .meaning = "simulated time; frames k = 0..ceil(duration * fps) at times k / fps",
        .allowed = "> 0, at most " + readable(std::to_string(limits::kMaxFrames)) + " frames"},
-      {.path = "runs",
-       .type = KeyType::Array,
-       .minimum = 1,
-       .required = true,
-       .target = "Scene::runs",
-       .meaning = "-"},
+      {.path = "runs", .type = KeyType::Array, .minimum = 1, .required = true, .target = "Scene::runs", .meaning = "-"},
       {.path = "runs[i]",
        .type = KeyType::Object,
        .required = true,
@@ -360,8 +357,10 @@ std::vector<SceneKey> describeKeys() {
            "`seed` (point and velocity each moved by `epsilon` in random directions; the same seed gives the same "
            "cloud everywhere). Members share the run's linkage, method and integrator, are integrated on all cores, "
            "and a member that stops is marked (red halo)",
-       .allowed = "kind required; `count` 2..256 (16), `spread` in (0, pi] (0.2), `epsilon` in (0, 0.1] (1e-6), "
-                  "`seed` >= 0 (1); fan and parallel need 4+ rods"},
+       .allowed = "kind required; `count` {range:runs[i].family.count} ({default:runs[i].family.count}), `spread` in "
+                  "(0, pi] ({default:runs[i].family.spread}), `epsilon` in (0, {max:runs[i].family.epsilon}] "
+                  "({default:runs[i].family.epsilon}), `seed` >= 0 ({default:runs[i].family.seed}); fan and parallel "
+                  "need 4+ rods"},
       {.path = "runs[i].family.kind",
        .type = KeyType::Choice,
        .required = true,
@@ -510,7 +509,8 @@ std::vector<SceneKey> describeKeys() {
        .target = "ViewSettings::panels, ViewSettings::plots",
        .meaning =
            "panels in layout order: `\"sphere\"`, `\"linkage\"`, `\"plot\"`, `\"text\"`, or objects `{ \"panel\": "
-           "\"plot\", \"plot\": \"divergence\" \\| \"energy\", \"scale\": \"log\" \\| \"linear\", \"y_range\": [lo, hi], "
+           "\"plot\", \"plot\": \"divergence\" \\| \"energy\", \"scale\": \"log\" \\| \"linear\", \"y_range\": [lo, "
+           "hi], "
            "\"rect\": [x, y, w, h] }` (rect in fractions of the frame from the top left; omitted = automatic layout, "
            "portrait frames stacked; a plot's axes span the whole animation from its first frame, y from the data of "
            "every frame unless `y_range` says otherwise, and its legend sits above the plot area, beside the title "
@@ -724,20 +724,6 @@ std::string withBounds(const SceneKey& key, std::string words) {
   return words;
 }
 
-// The README's words for a key's text, bounds in place of {min} and {max}.
-std::string readableBounds(const SceneKey& key, std::string words) {
-  for (const auto& [name, bound] : {std::pair{"{min}", key.minimum}, std::pair{"{max}", key.maximum}}) {
-    for (std::size_t at = words.find(name); at != std::string::npos; at = words.find(name))
-      words.replace(at, 5, readable(boundText(key, bound)));
-  }
-  return words;
-}
-
-// A key is required in every scene when it and the objects around it are.
-bool requiredInEveryScene(const SceneKey& key) {
-  return key.required && (parentOf(key.path).empty() || requiredInEveryScene(sceneKey(parentOf(key.path))));
-}
-
 // A default as the README shows it: true, 30, `high`, [1, 0.6, 0.5].
 std::string defaultWords(const json& value) {
   if (value.is_string()) return "`" + value.get<std::string>() + "`";
@@ -748,6 +734,30 @@ std::string defaultWords(const json& value) {
     return words + "]";
   }
   return value.dump();
+}
+
+// The README's words for a key's text: its bounds in place of {min} and {max}, another key's bounds and default
+// in place of {range:PATH}, {max:PATH} and {default:PATH} (an object's row speaks for its members).
+std::string readableBounds(const SceneKey& key, std::string words) {
+  for (const auto& [name, bound] : {std::pair{"{min}", key.minimum}, std::pair{"{max}", key.maximum}}) {
+    for (std::size_t at = words.find(name); at != std::string::npos; at = words.find(name))
+      words.replace(at, 5, readable(boundText(key, bound)));
+  }
+  static const std::regex reference("\\{(range|max|default):([^}]+)\\}");
+  std::smatch match;
+  while (std::regex_search(words, match, reference)) {
+    const SceneKey& other = sceneKey(match[2]);
+    const std::string text = match[1] == "default" ? defaultWords(other.fallback)
+                             : match[1] == "max"   ? readableBounds(other, "{max}")
+                                                   : readableBounds(other, "{min}..{max}");
+    words.replace(static_cast<std::size_t>(match.position(0)), static_cast<std::size_t>(match.length(0)), text);
+  }
+  return words;
+}
+
+// A key is required in every scene when it and the objects around it are.
+bool requiredInEveryScene(const SceneKey& key) {
+  return key.required && (parentOf(key.path).empty() || requiredInEveryScene(sceneKey(parentOf(key.path))));
 }
 
 }  // namespace
@@ -766,7 +776,8 @@ const SceneKey& sceneKey(const std::string& path) {
 
 std::vector<std::string> memberNames(const std::string& path) {
   std::string object = describedPath(path);
-  if (object == "runs[i].linkage" || object == "runs[i].initial") object = object.substr(std::string("runs[i].").size());
+  if (object == "runs[i].linkage" || object == "runs[i].initial")
+    object = object.substr(std::string("runs[i].").size());
   std::vector<std::string> names;
   for (const SceneKey& key : sceneKeys())
     if (!key.path.empty() && key.path.back() != ']' && parentOf(key.path) == object)
@@ -789,9 +800,11 @@ std::string sceneKeyTable() {
     // This key and those that join its row (width and height, coords and velocity).
     std::string names = "`" + key.path + "`", defaults;
     const auto addDefault = [&defaults](const SceneKey& k) {
-      const std::string words = requiredInEveryScene(k) ? "required" : k.required ? "" : !k.defaultText.empty() ? k.defaultText
-                                                       : k.fallback.is_null()    ? ""
-                                                                                 : defaultWords(k.fallback);
+      const std::string words = requiredInEveryScene(k)  ? "required"
+                                : k.required             ? ""
+                                : !k.defaultText.empty() ? k.defaultText
+                                : k.fallback.is_null()   ? ""
+                                                         : defaultWords(k.fallback);
       if (!words.empty() && defaults != words) defaults += (defaults.empty() ? "" : ", ") + words;
     };
     addDefault(key);

@@ -219,7 +219,7 @@ void readInitial(const json& value, const std::string& path, RodCount rods, Init
   const JsonObject initial(value, path, problems);
   if (!initial.isObject()) return;
   spec = InitialSpec{};
-  spec.unitSpeed = initial.boolean("unit_speed").value_or(false);
+  spec.unitSpeed = initial.boolean("unit_speed").value_or(spec.unitSpeed);
   const bool hasDrag = initial.has("drag");
   const bool hasCoords = initial.has("coords") || initial.has("velocity");
   const bool hasHinges = initial.has("hinges") || initial.has("velocities") || initial.has("push");
@@ -377,7 +377,8 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
   const bool byHinges = spec.initial.kind == InitialSpec::Kind::Hinges;
   const bool slack = rods && spec.chain.isSlack();
   const bool chartFree = slack || byHinges;
-  for (const MethodRefusal refusal : methodRefusals({spec.config.method, rods ? &spec.chain : nullptr, byHinges, false})) {
+  const Chain* knownChain = rods ? &spec.chain : nullptr;  // the rules by n only while n is valid
+  for (const MethodRefusal refusal : methodRefusals({spec.config.method, knownChain, byHinges, false})) {
     if (refusal == MethodRefusal::SlackChainHasNoChart)
       run.report("method", "found \"" + nameOf(spec.config.method) + "\" for a slack chain (L = " +
                                shortest(spec.chain.baseLength) + " <= n-2): it has no chart; expected ambient");
@@ -402,9 +403,9 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
   if (spec.family && chartFree)
     run.report("family", "a family starts from a point of the configuration sphere; expected a start by coords or "
                          "drag on a chain with n-2 < L < n");
-  spec.config.jacobi = run.boolean("jacobi").value_or(false);
+  spec.config.jacobi = run.boolean("jacobi").value_or(spec.config.jacobi);
   if (!spec.config.jacobi) return spec;
-  for (const MethodRefusal refusal : methodRefusals({spec.config.method, rods ? &spec.chain : nullptr, byHinges, true})) {
+  for (const MethodRefusal refusal : methodRefusals({spec.config.method, knownChain, byHinges, true})) {
     if (refusal == MethodRefusal::JacobiNeedsAmbient)
       run.report("jacobi", "needs the ambient method (its linearisation gives the Jacobi fields); found \"" +
                                nameOf(spec.config.method) + "\"");
@@ -451,12 +452,12 @@ void readOutput(const json& value, Scene& scene, std::vector<SceneProblem>& prob
   if (spec.folder.empty()) output.report("folder", "is empty; expected a folder for the frames");
   if (const std::string reason = unusablePathReason(spec.folder); !reason.empty())
     output.report("folder", reason + "; expected a usable folder path");
-  spec.png = output.boolean("png").value_or(true);
+  spec.png = output.boolean("png").value_or(spec.png);
   if (const auto compression = output.string("png_compression")) {
     if (const auto kind = detail::pickKind(output.pathOf("png_compression"), *compression, kPngCompressions, problems))
       spec.pngCompression = *kind;
   }
-  spec.video = output.string("video").value_or("");
+  spec.video = output.string("video").value_or(spec.video);
   if (const auto quality = output.string("video_quality")) {
     if (const auto kind = detail::pickKind(output.pathOf("video_quality"), *quality, kVideoQualities, problems))
       spec.videoQuality = *kind;

@@ -164,8 +164,8 @@ void readTrails(const JsonObject& view, Scene& scene, bool rodsKnown) {
     const double hinge = (*hinges)(i);
     // Range first: converting a double beyond int's range to int is undefined behaviour.
     if (!(hinge >= 1 && hinge <= count) || hinge != std::floor(hinge)) {
-      view.report("trails", "found " + describeJson(json(hinge)) +
-                                "; expected hinge numbers from 1 to n-1 = " + std::to_string(count));
+      view.report("trails", "found " + shortest(hinge) + "; expected hinge numbers from 1 to n-1" +
+                                (rodsKnown ? " = " + std::to_string(scene.chain.hingeCount()) : ""));
       return;
     }
     scene.view.trailHinges.push_back(static_cast<int>(hinge));
@@ -183,7 +183,8 @@ void readFades(const JsonObject& view, Scene& scene) {
     render.trailFadeSeconds = *fade;
   }
   if (const auto samples = view.integer("path_samples_per_frame")) {
-    if (view.checkBounds("path_samples_per_frame", *samples)) scene.view.pathSamplesPerFrame = static_cast<int>(*samples);
+    if (view.checkBounds("path_samples_per_frame", *samples))
+      scene.view.pathSamplesPerFrame = static_cast<int>(*samples);
   }
 }
 
@@ -197,7 +198,7 @@ void readSphereSurface(const JsonObject& view, Scene& scene, bool rodsKnown, std
     if (const auto kind = pickKind(object.pathOf("color_by"), *name, kSphereColorings, problems))
       surface.colorBy = *kind;
   }
-  surface.stiffness = object.boolean("stiffness").value_or(false);
+  surface.stiffness = object.boolean("stiffness").value_or(surface.stiffness);
   if (rodsKnown && scene.chain.isSlack() && surface.decorated()) {
     object.report(surface.colorBy != SphereColoring::None ? "color_by" : "stiffness",
                   "a slack chain (L <= n-2) has no configuration sphere to colour or decorate");

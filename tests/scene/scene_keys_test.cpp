@@ -35,8 +35,8 @@ json sceneWith(const SceneKey& key, const json& value) {
   if (path.rfind("view.panels[0].", 0) == 0) scene["view"]["panels"] = {{{"panel", "plot"}}};
   // A massless hinge needs a massive rod beside it (a rule between keys): give the rods mass.
   if (key.path == "linkage.hinge_masses") scene["linkage"]["rod_masses"] = {1, 1, 1, 1};
-  json::json_pointer pointer("/" + std::regex_replace(std::regex_replace(path, std::regex("\\[0\\]"), ".0"),
-                                                      std::regex("\\."), "/"));
+  json::json_pointer pointer(
+      "/" + std::regex_replace(std::regex_replace(path, std::regex("\\[0\\]"), ".0"), std::regex("\\."), "/"));
   scene[pointer] = value;
   return scene;
 }
