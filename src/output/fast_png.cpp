@@ -94,6 +94,7 @@ Kernels kernelsFor(FastPngPath path) {
 // === Deflate (RFC 1951) pieces
 
 constexpr int kMinRun = 3, kMaxRun = 258;
+constexpr int kRunStart = 8;  // repeats that start a run (a run's rest after cuts of 258 may be shorter)
 constexpr int kLitLenSymbols = 286, kEndOfBlock = 256;
 
 // Length symbols 257..285: first length and extra bits (RFC 1951, section 3.2.5).
@@ -214,9 +215,9 @@ std::uint64_t maskFrom(const std::uint64_t* mask, std::size_t i) {
   return shift == 0 ? mask[word] : (mask[word] >> shift) | (mask[word + 1] << (64 - shift));
 }
 
-// Cuts bytes [begin, end) of the filtered stream into literals and runs, greedily: a byte that repeats the one
-// before starts a run as long as the repeats go, cut into runs of 258, a rest of 1 or 2 given as literals; any
-// other byte is a literal. literals(pointer, count) and run(length) receive them in order; either may return
+// Cuts bytes [begin, end) of the filtered stream into literals and runs, greedily: a byte that starts kRunStart or
+// more repeats of the one before starts a run as long as the repeats go, cut into runs of 258, a rest of 1 or 2
+// given as literals; any other byte is a literal. literals(pointer, count) and run(length) receive them in order; either may return
 // false to stop the walk.
 template <class Literals, class Run>
 void walk(const std::uint8_t* p, std::size_t begin, std::size_t end, const std::uint64_t* mask, Literals literals,
@@ -225,10 +226,13 @@ void walk(const std::uint8_t* p, std::size_t begin, std::size_t end, const std::
   if (i == 0 && !literals(p, 1)) return;
   i = std::max<std::size_t>(i, 1);
   while (i < end) {
-    // Bit j of `starts`: a run of 3 or more begins at i + j (for j < 62; the last two bits lack the bytes after).
-    const std::uint64_t repeats = maskFrom(mask, i), starts = repeats & (repeats >> 1) & (repeats >> 2);
-    if (!(starts & 1)) {  // literals up to the next run worth a match (repeats of 1 or 2 are literals too)
-      const std::size_t k = std::min<std::size_t>(std::min(std::countr_zero(starts), 62), end - i);
+    // Bit j of `starts`: a run of kRunStart or more begins at i + j (for j <= 64 - kRunStart; the last bits lack
+    // the bytes after). Shorter repeats are literals: fewer, longer stretches of literals are faster to write.
+    const std::uint64_t repeats = maskFrom(mask, i);
+    std::uint64_t starts = repeats;
+    for (int shift = 1; shift < kRunStart; ++shift) starts &= repeats >> shift;
+    if (!(starts & 1)) {  // literals up to the next run worth a match
+      const std::size_t k = std::min<std::size_t>(std::min(std::countr_zero(starts), 65 - kRunStart), end - i);
       if (!literals(p + i, k)) return;
       i += k;
       continue;
@@ -244,13 +248,13 @@ void walk(const std::uint8_t* p, std::size_t begin, std::size_t end, const std::
   }
 }
 
-// Symbol counts for the Huffman code, from every fourth row (rendered frames change slowly down the image), plus
+// Symbol counts for the Huffman code, from every eighth row (rendered frames change slowly down the image), plus
 // one for every symbol, so that every literal and every run length has a code whatever the other rows hold.
 std::array<std::uint32_t, kLitLenSymbols> sampleCounts(const std::uint8_t* p, std::size_t rowBytes, int rows,
                                                        const std::uint64_t* mask) {
   std::array<std::array<std::uint32_t, 256>, 2> literal{};  // two tables: repeated bytes do not wait on one counter
   std::array<std::uint32_t, kLitLenSymbols> counts{};
-  for (int y = 0; y < rows; y += 4) {
+  for (int y = 0; y < rows; y += 8) {
     const std::size_t begin = static_cast<std::size_t>(y) * rowBytes;
     walk(p, begin, begin + rowBytes, mask,
          [&](const std::uint8_t* bytes, std::size_t k) {
