@@ -9,6 +9,7 @@
 
 #include <sys/resource.h>
 #include <time.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -16,6 +17,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -48,6 +52,48 @@ double cpuSeconds() {
     total += usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
   }
   return total;
+}
+
+// CPU seconds of each thread of this process, by thread id, with its name (/proc/self/task/*/stat): which core's
+// time goes where. Threads that ended are not listed, so read it while the sink's workers still exist.
+struct ThreadTimes {
+  std::map<int, std::pair<std::string, double>> byThread;
+};
+
+ThreadTimes threadTimes() {
+  ThreadTimes times;
+  const double tick = 1.0 / double(sysconf(_SC_CLK_TCK));
+  for (const auto& entry : std::filesystem::directory_iterator("/proc/self/task")) {
+    std::ifstream in(entry.path() / "stat");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto open = text.find('('), close = text.rfind(')');
+    if (open == std::string::npos || close == std::string::npos) continue;
+    std::istringstream rest(text.substr(close + 2));
+    std::string field;
+    double utime = 0, stime = 0;
+    for (int k = 3; k <= 15 && rest >> field; ++k) {  // fields 14 and 15: utime, stime
+      if (k == 14) utime = std::stod(field);
+      if (k == 15) stime = std::stod(field);
+    }
+    times.byThread[std::stoi(entry.path().filename().string())] = {text.substr(open + 1, close - open - 1),
+                                                                   (utime + stime) * tick};
+  }
+  return times;
+}
+
+// "main 3.1, llvmpipe 1.2, encoders 2.4" (ms per frame) from two snapshots.
+std::string threadSplit(const ThreadTimes& before, const ThreadTimes& after, int frames) {
+  double main = 0, llvmpipe = 0, workers = 0;
+  const int self = static_cast<int>(getpid());
+  for (const auto& [tid, named] : after.byThread) {
+    const auto earlier = before.byThread.find(tid);
+    const double used = named.second - (earlier == before.byThread.end() ? 0.0 : earlier->second.second);
+    (tid == self ? main : named.first.rfind("llvmpipe", 0) == 0 ? llvmpipe : workers) += used;
+  }
+  char text[160];
+  std::snprintf(text, sizeof text, "CPU ms/frame by thread: main (build, render, readback) %.2f, llvmpipe %.2f, "
+                "sink workers %.2f", 1e3 * main / frames, 1e3 * llvmpipe / frames, 1e3 * workers / frames);
+  return text;
 }
 
 struct Options {
@@ -110,6 +156,7 @@ sl::ViewSettings settingsFor(const Options& o) {
 
 struct Split {
   double wall = 0, render = 0, encode = 0, hash = 0, cpu = 0;
+  std::string threads;
   std::size_t bytes = 0;
 };
 
@@ -126,6 +173,7 @@ Split runOnce(const Options& o, sl::Renderer& renderer, const sl::SyntheticOptio
   }
   sl::output::PngEncoder encoder(o.compression);
   Split split;
+  const ThreadTimes threadsAtStart = threadTimes();
   const double cpuStart = cpuSeconds();
   const auto start = Clock::now();
   for (int k = 0; k < o.frames; ++k) {
@@ -146,6 +194,7 @@ Split runOnce(const Options& o, sl::Renderer& renderer, const sl::SyntheticOptio
   }
   if (sink) sink->finish();
   split.wall = seconds(Clock::now() - start);
+  split.threads = threadSplit(threadsAtStart, threadTimes(), o.frames);
   split.cpu = cpuSeconds() - cpuStart;  // children's time counts once they are reaped (ffmpeg: at finish)
   return split;
 }
@@ -173,7 +222,8 @@ int main(int argc, char** argv) {
                   1e-3 * double(s.bytes) / o.frames, 1e3 * s.hash / o.frames);
     // On a shared machine wall time varies with the load; CPU time per frame does much less, and two
     // idle cores can at best deliver 2 / (CPU seconds per frame) frames per second.
-    std::printf("; CPU %.2f ms/frame (2-core bound %.0f frames/s)\n", 1e3 * s.cpu / o.frames, 2 * o.frames / s.cpu);
+    std::printf("; CPU %.2f ms/frame (2-core bound %.0f frames/s)\n    %s\n", 1e3 * s.cpu / o.frames,
+                2 * o.frames / s.cpu, s.threads.c_str());
   }
   std::sort(rates.begin(), rates.end());
   std::printf("median: %.1f frames/s\n", rates[rates.size() / 2]);

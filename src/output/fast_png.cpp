@@ -94,6 +94,7 @@ Kernels kernelsFor(FastPngPath path) {
 // === Deflate (RFC 1951) pieces
 
 constexpr int kMinRun = 3, kMaxRun = 258;
+constexpr int kRunStart = 8;  // repeats that start a run (a run's rest after cuts of 258 may be shorter)
 constexpr int kLitLenSymbols = 286, kEndOfBlock = 256;
 
 // Length symbols 257..285: first length and extra bits (RFC 1951, section 3.2.5).
@@ -179,23 +180,27 @@ void canonicalCodes(const std::uint8_t* lengths, int symbols, std::uint32_t* cod
   }
 }
 
-// Least-significant-bit-first writer into memory sized in advance (plus 8 bytes of slack).
+// Least-significant-bit-first writer into memory sized in advance plus 8 bytes of slack: every put stores eight
+// bytes and moves on by the whole bytes filled, so there is no branch (at most 7 + 32 bits are ever pending).
 class BitWriter {
  public:
   explicit BitWriter(std::uint8_t* out) : out_(out) {}
-  void put(std::uint64_t bits, int count) {
+  void put(std::uint64_t bits, int count) {  // count <= 32
     buffer_ |= bits << filled_;
     filled_ += count;
-    if (filled_ >= 32) {
-      for (int k = 0; k < 4; ++k) *out_++ = static_cast<std::uint8_t>(buffer_ >> (8 * k));
-      buffer_ >>= 32;
-      filled_ -= 32;
+    if constexpr (std::endian::native == std::endian::little) {
+      std::memcpy(out_, &buffer_, 8);
+    } else {
+      for (int k = 0; k < 8; ++k) out_[k] = static_cast<std::uint8_t>(buffer_ >> (8 * k));
     }
+    const int bytes = filled_ >> 3;
+    out_ += bytes;
+    buffer_ >>= 8 * bytes;
+    filled_ &= 7;
   }
-  std::uint8_t* finish() {  // pads the last byte with zeros
-    for (; filled_ > 0; filled_ -= 8, buffer_ >>= 8) *out_++ = static_cast<std::uint8_t>(buffer_);
-    filled_ = 0;
-    return out_;
+  const std::uint8_t* position() const { return out_; }
+  std::uint8_t* finish() {  // the last byte padded with zeros (already stored by put)
+    return out_ + (filled_ > 0 ? 1 : 0);
   }
 
  private:
@@ -204,84 +209,90 @@ class BitWriter {
   int filled_ = 0;
 };
 
-// The filtered stream as literals (0..255) and runs (256 + length), with the counts the Huffman code needs.
-struct Tokens {
-  std::size_t size = 0;
-  std::array<std::uint32_t, kLitLenSymbols> symbolCounts{};
-  std::array<std::uint32_t, kMaxRun + 1> runCounts{};
-};
-
 // 64 bits of the mask from bit i on (i < n).
 std::uint64_t maskFrom(const std::uint64_t* mask, std::size_t i) {
   const std::size_t word = i / 64, shift = i % 64;
   return shift == 0 ? mask[word] : (mask[word] >> shift) | (mask[word + 1] << (64 - shift));
 }
 
-// Greedy: a byte that repeats the one before starts a run as long as the repeats go (cut into runs of 258; a
-// rest of 1 or 2 is written as literals); any other byte is a literal.
-Tokens tokenize(const std::uint8_t* p, std::size_t n, const std::uint64_t* mask, std::uint16_t* out) {
-  Tokens t;
-  std::array<std::array<std::uint32_t, 256>, 2> counts{};  // two tables: repeated bytes do not wait on one counter
-  out[t.size++] = p[0];
-  ++counts[0][p[0]];
-  for (std::size_t i = 1; i < n;) {
-    // Bit j of `starts`: a run of 3 or more begins at i + j (for j < 62; the last two bits lack the bytes after).
-    const std::uint64_t repeats = maskFrom(mask, i), starts = repeats & (repeats >> 1) & (repeats >> 2);
-    if (!(starts & 1)) {  // literals up to the next run worth a match (repeats of 1 or 2 are literals too)
-      const std::size_t k = std::min<std::size_t>(std::min(std::countr_zero(starts), 62), n - i);
-      std::size_t j = 0;
-      for (; j + 2 <= k; j += 2) {
-        out[t.size + j] = p[i + j], out[t.size + j + 1] = p[i + j + 1];
-        ++counts[0][p[i + j]], ++counts[1][p[i + j + 1]];
-      }
-      if (j < k) out[t.size + j] = p[i + j], ++counts[0][p[i + j]];
-      t.size += k, i += k;
+// Cuts bytes [begin, end) of the filtered stream into literals and runs, greedily: a byte that starts kRunStart or
+// more repeats of the one before starts a run as long as the repeats go, cut into runs of 258, a rest of 1 or 2
+// given as literals; any other byte is a literal. literals(pointer, count) and run(length) receive them in order; either may return
+// false to stop the walk.
+template <class Literals, class Run>
+void walk(const std::uint8_t* p, std::size_t begin, std::size_t end, const std::uint64_t* mask, Literals literals,
+          Run run) {
+  std::size_t i = begin;
+  if (i == 0 && !literals(p, 1)) return;
+  i = std::max<std::size_t>(i, 1);
+  while (i < end) {
+    // Bit j of `starts`: a run of kRunStart or more begins at i + j (for j <= 64 - kRunStart; the last bits lack
+    // the bytes after). Shorter repeats are literals: fewer, longer stretches of literals are faster to write.
+    const std::uint64_t repeats = maskFrom(mask, i);
+    std::uint64_t starts = repeats;
+    for (int shift = 1; shift < kRunStart; ++shift) starts &= repeats >> shift;
+    if (!(starts & 1)) {  // literals up to the next run worth a match
+      const std::size_t k = std::min<std::size_t>(std::min(std::countr_zero(starts), 65 - kRunStart), end - i);
+      if (!literals(p + i, k)) return;
+      i += k;
       continue;
     }
     std::size_t length = 0;
-    for (int ones = 64; ones == 64 && i + length < n; length += static_cast<std::size_t>(ones))
+    for (int ones = 64; ones == 64 && i + length < end; length += static_cast<std::size_t>(ones))
       ones = std::countr_one(maskFrom(mask, i + length));
-    length = std::min(length, n - i);
-    const std::uint8_t b = p[i - 1];
+    length = std::min(length, end - i);
     i += length;
-    for (; length >= kMaxRun; length -= kMaxRun) {
-      out[t.size++] = static_cast<std::uint16_t>(256 + kMaxRun);
-      ++t.runCounts[kMaxRun];
-    }
-    if (length >= kMinRun) {
-      out[t.size++] = static_cast<std::uint16_t>(256 + length);
-      ++t.runCounts[length];
-    } else {
-      for (; length > 0; --length) out[t.size++] = b, ++counts[0][b];
-    }
+    for (; length >= kMaxRun; length -= kMaxRun)
+      if (!run(kMaxRun)) return;
+    if (length >= kMinRun ? !run(static_cast<int>(length)) : (length > 0 && !literals(p + i - length, length))) return;
   }
-  for (int b = 0; b < 256; ++b) t.symbolCounts[b] = counts[0][b] + counts[1][b];
-  for (int length = kMinRun; length <= kMaxRun; ++length) t.symbolCounts[kLengthCodes[length].symbol] += t.runCounts[length];
-  t.symbolCounts[kEndOfBlock] = 1;
-  return t;
+}
+
+// Symbol counts for the Huffman code, from every eighth row (rendered frames change slowly down the image), plus
+// one for every symbol, so that every literal and every run length has a code whatever the other rows hold.
+std::array<std::uint32_t, kLitLenSymbols> sampleCounts(const std::uint8_t* p, std::size_t rowBytes, int rows,
+                                                       const std::uint64_t* mask) {
+  std::array<std::array<std::uint32_t, 256>, 2> literal{};  // two tables: repeated bytes do not wait on one counter
+  std::array<std::uint32_t, kLitLenSymbols> counts{};
+  for (int y = 0; y < rows; y += 8) {
+    const std::size_t begin = static_cast<std::size_t>(y) * rowBytes;
+    walk(p, begin, begin + rowBytes, mask,
+         [&](const std::uint8_t* bytes, std::size_t k) {
+           std::size_t j = 0;
+           for (; j + 2 <= k; j += 2) ++literal[0][bytes[j]], ++literal[1][bytes[j + 1]];
+           if (j < k) ++literal[0][bytes[j]];
+           return true;
+         },
+         [&](int length) {
+           ++counts[kLengthCodes[length].symbol];
+           return true;
+         });
+  }
+  for (int b = 0; b < 256; ++b) counts[b] += literal[0][b] + literal[1][b];
+  for (auto& c : counts) ++c;
+  return counts;
 }
 
 constexpr std::array<int, 19> kCodeLengthOrder{16, 17, 18, 0, 8, 7, 9, 6, 10, 5, 11, 4, 12, 3, 13, 2, 14, 1, 15};
 
-// One dynamic-Huffman block, ready to write: its header fields and codes, and its exact size in bits.
+// One dynamic-Huffman block: its header fields and codes.
 struct DynamicBlock {
   std::array<std::uint8_t, kLitLenSymbols> litLengths{};
   std::array<std::uint32_t, kLitLenSymbols> litCodes{};
   std::array<std::uint8_t, 19> clLengths{};
   std::array<std::uint32_t, 19> clCodes{};
-  // Per token (literal 0..255, run 256 + length): its whole code (for a run: length symbol, extra bits, distance 1)
-  std::array<std::uint32_t, 256 + kMaxRun + 1> tokenBits{};
-  std::array<std::uint8_t, 256 + kMaxRun + 1> tokenBitCount{};
+  // A run's whole code by its length: length symbol, extra bits, distance 1.
+  std::array<std::uint32_t, kMaxRun + 1> runBits{};
+  std::array<std::uint8_t, kMaxRun + 1> runBitCount{};
   int litCount = 257, codeLengthCount = 4;
-  std::uint64_t bits = 0;
 };
 
 // Two distance codes of one bit each (a complete code); only distance 1 (code 0, bit 0) is used.
 constexpr int kDistanceCodes = 2;
 
-DynamicBlock planBlock(const Tokens& t) {
+DynamicBlock planBlock(const std::array<std::uint32_t, kLitLenSymbols>& counts) {
   DynamicBlock block;
-  huffmanLengths(t.symbolCounts.data(), kLitLenSymbols, 15, block.litLengths.data());
+  huffmanLengths(counts.data(), kLitLenSymbols, 15, block.litLengths.data());
   canonicalCodes(block.litLengths.data(), kLitLenSymbols, block.litCodes.data());
   block.litCount = kLitLenSymbols;
   while (block.litCount > 257 && block.litLengths[block.litCount - 1] == 0) --block.litCount;
@@ -293,24 +304,19 @@ DynamicBlock planBlock(const Tokens& t) {
   block.codeLengthCount = 19;
   while (block.codeLengthCount > 4 && block.clLengths[kCodeLengthOrder[block.codeLengthCount - 1]] == 0)
     --block.codeLengthCount;
-
-  std::uint64_t bits = 3 + 5 + 5 + 4 + 3 * static_cast<std::uint64_t>(block.codeLengthCount);
-  for (int v = 0; v < 19; ++v) bits += std::uint64_t(clCounts[v]) * block.clLengths[v];
-  for (int s = 0; s <= kEndOfBlock; ++s) bits += std::uint64_t(t.symbolCounts[s]) * block.litLengths[s];
-  for (int b = 0; b < 256; ++b) block.tokenBits[b] = block.litCodes[b], block.tokenBitCount[b] = block.litLengths[b];
   for (int length = kMinRun; length <= kMaxRun; ++length) {
     const LengthCode& code = kLengthCodes[length];
     const int symbolBits = block.litLengths[code.symbol];
-    block.tokenBits[256 + length] = block.litCodes[code.symbol] | (std::uint32_t(code.extraValue) << symbolBits);
-    block.tokenBitCount[256 + length] = static_cast<std::uint8_t>(symbolBits + code.extraBits + 1);
-    bits += std::uint64_t(t.runCounts[length]) * block.tokenBitCount[256 + length];
+    block.runBits[length] = block.litCodes[code.symbol] | (std::uint32_t(code.extraValue) << symbolBits);
+    block.runBitCount[length] = static_cast<std::uint8_t>(symbolBits + code.extraBits + 1);
   }
-  block.bits = bits;
   return block;
 }
 
-std::uint8_t* writeDynamicBlock(const DynamicBlock& block, const std::uint16_t* tokens, std::size_t count,
-                                std::uint8_t* out) {
+// The block into out; nullptr if it would pass `limit` (then stored blocks are smaller: the caller writes those).
+// `out` has room up to limit + 512.
+std::uint8_t* writeDynamicBlock(const DynamicBlock& block, const std::uint8_t* p, std::size_t n,
+                                const std::uint64_t* mask, std::uint8_t* out, const std::uint8_t* limit) {
   BitWriter writer(out);
   writer.put(1, 1);  // final block
   writer.put(2, 2);  // dynamic Huffman
@@ -323,7 +329,25 @@ std::uint8_t* writeDynamicBlock(const DynamicBlock& block, const std::uint16_t* 
     writer.put(block.clCodes[v], block.clLengths[v]);
   }
   for (int d = 0; d < kDistanceCodes; ++d) writer.put(block.clCodes[1], block.clLengths[1]);
-  for (std::size_t i = 0; i < count; ++i) writer.put(block.tokenBits[tokens[i]], block.tokenBitCount[tokens[i]]);
+  if (writer.position() > limit) return nullptr;
+  bool fits = true;
+  const auto* codes = block.litCodes.data();
+  const auto* lengths = block.litLengths.data();
+  walk(p, 0, n, mask,
+       [&](const std::uint8_t* bytes, std::size_t k) {  // at most 62 literals of at most 15 bits: < 117 bytes
+         std::size_t j = 0;
+         for (; j + 2 <= k; j += 2) {
+           const std::uint8_t a = bytes[j], b = bytes[j + 1];
+           writer.put(codes[a] | (std::uint64_t(codes[b]) << lengths[a]), lengths[a] + lengths[b]);
+         }
+         if (j < k) writer.put(codes[bytes[j]], lengths[bytes[j]]);
+         return fits = writer.position() <= limit;
+       },
+       [&](int length) {
+         writer.put(block.runBits[length], block.runBitCount[length]);
+         return fits = writer.position() <= limit;
+       });
+  if (!fits) return nullptr;
   writer.put(block.litCodes[kEndOfBlock], block.litLengths[kEndOfBlock]);
   return writer.finish();
 }
@@ -391,17 +415,20 @@ std::vector<std::uint8_t> encodeFastPng(const Image& image, FastPngScratch& scra
   const std::size_t words = n / 64 + 2;
   scratch.equal.resize(words);
   kernels.equalMask(filtered, n, scratch.equal.data(), words);
-  scratch.tokens.resize(n);
-  const Tokens tokens = tokenize(filtered, n, scratch.equal.data(), scratch.tokens.data());
-  const DynamicBlock block = planBlock(tokens);
-  const std::size_t huffmanBytes = static_cast<std::size_t>((block.bits + 7) / 8);
-  const bool stored = huffmanBytes >= storedSize(n);
-  const std::size_t deflateBytes = stored ? storedSize(n) : huffmanBytes;
+  const std::uint64_t* mask = scratch.equal.data();
+  const DynamicBlock block = planBlock(sampleCounts(filtered, rowBytes, image.height, mask));
+  // Huffman-coded unless that is no smaller than stored blocks (noise).
+  const std::size_t storedBytes = storedSize(n);
+  scratch.deflated.resize(storedBytes + 512);  // room for the header (< 270 bytes) and one step past the limit
+  const std::uint8_t* huffmanEnd = writeDynamicBlock(block, filtered, n, mask, scratch.deflated.data(),
+                                                     scratch.deflated.data() + storedBytes);
+  const bool stored = huffmanEnd == nullptr || std::size_t(huffmanEnd - scratch.deflated.data()) >= storedBytes;
+  const std::size_t deflateBytes = stored ? storedBytes : std::size_t(huffmanEnd - scratch.deflated.data());
 
   constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
   constexpr std::size_t kHeaderChunk = 12 + 13, kEndChunk = 12;
   const std::size_t zlibBytes = 2 + deflateBytes + 4;
-  std::vector<std::uint8_t> png(8 + kHeaderChunk + 12 + zlibBytes + kEndChunk + 8);  // 8: the bit writer's slack
+  std::vector<std::uint8_t> png(8 + kHeaderChunk + 12 + zlibBytes + kEndChunk);
   std::uint8_t* out = png.data();
   std::memcpy(out, kSignature, 8);
   out += 8;
@@ -414,7 +441,12 @@ std::vector<std::uint8_t> encodeFastPng(const Image& image, FastPngScratch& scra
   std::uint8_t* idat = out + 8;
   data = idat;
   *data++ = 0x78, *data++ = 0x01;  // zlib: deflate, 32 KiB window, "fastest" (RFC 1950)
-  data = stored ? writeStoredBlocks(filtered, n, data) : writeDynamicBlock(block, scratch.tokens.data(), tokens.size, data);
+  if (stored) {
+    data = writeStoredBlocks(filtered, n, data);
+  } else {
+    std::memcpy(data, scratch.deflated.data(), deflateBytes);
+    data += deflateBytes;
+  }
   data = put32(data, libdeflate_adler32(1, filtered, n));
   out = closeChunk(out, "IDAT", static_cast<std::size_t>(data - idat));
   out = closeChunk(out, "IEND", 0);

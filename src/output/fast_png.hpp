@@ -1,8 +1,10 @@
 #pragma once
 // A PNG writer built for speed: every row filtered "up" (PNG specification, section 9.2: each byte minus the
 // byte above it; the first row has zeros above), and the filtered stream compressed as one deflate block
-// (RFC 1951) whose only matches are runs of the previous byte (distance 1, lengths 3..258), Huffman-coded with
-// a code built from this image's own symbol counts (a "dynamic" block, lengths limited to 15 bits). Rendered
+// (RFC 1951) whose only matches are runs of the previous byte (distance 1, lengths 3..258; a run starts at 8 repeats,
+// shorter repeats are literals), Huffman-coded with
+// a code built from this image's own symbol counts in every eighth row (a "dynamic" block, lengths limited to
+// 15 bits; every symbol has a code). Rendered
 // frames are mostly flat: "up" turns everything that repeats the row above into zeros, and the runs take them
 // at a few bits per 258 bytes. When the Huffman block would be larger than the data (noise), stored blocks are
 // written instead.
@@ -30,7 +32,7 @@ bool fastPngHasAvx2();
 struct FastPngScratch {
   std::vector<std::uint8_t> filtered;
   std::vector<std::uint64_t> equal;  // bit i: filtered byte i repeats byte i - 1
-  std::vector<std::uint16_t> tokens;
+  std::vector<std::uint8_t> deflated;  // the Huffman-coded block, before it is known to beat stored blocks
 };
 
 // The PNG file of an RGB8 image (width, height >= 1 and rgb of width*height*3 bytes: checked by the caller).
