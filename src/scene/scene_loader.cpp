@@ -14,6 +14,7 @@
 #include "scene/json_error_path.hpp"
 #include "scene/json_fields.hpp"
 #include "scene/output_folder.hpp"
+#include "scene/scene_cost.hpp"
 #include "scene/scene_sections.hpp"
 
 namespace sl {
@@ -617,6 +618,7 @@ Scene parseScene(const std::string& text, const std::string& file, const std::ve
   for (SceneProblem& problem : checkFrameCount(scene.duration, scene.output.fps)) problems.push_back(problem);
   detail::readView(top.has("view") ? *top.member("view") : json::object(), scene, rods.has_value(), problems);
 
+  if (problems.empty()) problems = checkSceneCost(scene);  // measured on a valid scene only
   if (!problems.empty()) throw SceneError(file, std::move(problems));
   return scene;
 }
