@@ -200,7 +200,7 @@ void readHingeStart(const JsonObject& initial, RodCount rods, InitialSpec& spec,
       if (*seed < 0) push.report("seed", "found " + std::to_string(*seed) + "; expected an integer >= 0");
       spec.pushSeed = std::max(0L, *seed);
     }
-    if (const auto size = push.number("size"); size && push.checkRange("size", *size, 1e-12, 1e6, "a size above 0"))
+    if (const auto size = push.number("size"); size && push.checkRange("size", *size, 1e-12, 1e6, "a size from 1e-12 to 1e6"))
       spec.pushSize = *size;
     return;
   }
@@ -595,9 +595,11 @@ Scene parseScene(const std::string& text, const std::string& file, const std::ve
 
   scene.name = top.string("name", true).value_or("");
   if (top.has("name") && !isSafeName(scene.name)) {
+    // Quoted as JSON (a NUL or control byte escaped, invalid UTF-8 replaced), so the whole message reaches a
+    // terminal.
     top.report("name",
-               "found \"" + scene.name +
-                   "\"; expected a non-empty name of at most " + std::to_string(kMaxOutputNameBytes) +
+               "found " + json(scene.name).dump(-1, ' ', false, json::error_handler_t::replace) +
+                   "; expected a non-empty name of at most " + std::to_string(kMaxOutputNameBytes) +
                    " letters, digits, '-', '_' or '.' (it names the output folder)");
   }
   scene.title = top.string("title").value_or(scene.name);
