@@ -7,9 +7,11 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "analysis/csv_table.hpp"
+#include "analysis/measurement.hpp"
 #include "analysis/stability_grid.hpp"
 #include "contracts/registry.hpp"
 #include "contracts/run_config.hpp"
@@ -48,8 +50,35 @@ Integrator sweepIntegratorFor(Method method);
 
 std::vector<std::string> stabilityColumns();
 
+// One row of a sweep: one method run from one cell. A cell whose start could not be made has no point and no
+// errors (NaN: written as empty fields).
+struct StabilityRow {
+  long cell = 0;
+  int i = 0, j = 0;  // cell = j * grid + i
+  double x = 0, y = 0;
+  Method method = Method::Ambient;
+  Integrator integrator = Integrator::Dopri5;
+  double setting = 0;  // RunConfig::accuracySetting
+  RunStatus status = Verdict::Ok;
+  double stopTime = 0, finalError = 0, maxError = 0, maxEnergyDrift = 0, maxRodLengthError = 0;
+  long evaluations = 0;
+  std::string referenceMethod;  // a method's name, or kNoReferenceName
+  std::string stopDetail;
+};
+
 // Runs the shard's cells; returns the rows in cell order, one per cell and method.
-CsvTable runStabilitySweep(const StabilityOptions& options, const CellProgress& progress = {});
+std::vector<StabilityRow> runStabilitySweep(const StabilityOptions& options, const CellProgress& progress = {});
+
+// The rows as the CSV writes them (stabilityColumns): shortest round-trip numbers, no value as an empty field.
+CsvTable stabilityTable(const std::vector<StabilityRow>& rows);
+
+// The whole job a sweep's rows depend on, as ordered key=value pairs: kind, grid, duration, interval, methods,
+// integrators, tolerance, step, references. Every shard file records it; shards of different jobs never merge.
+std::vector<std::pair<std::string, std::string>> stabilityIdentity(const StabilityOptions& options);
+
+// A shard file's text: a first line "# linkage stability shard: key=value; ..." (stabilityIdentity), then the
+// rows' CSV.
+std::string stabilityShardText(const StabilityOptions& options, const std::vector<StabilityRow>& rows);
 
 // === Files: DIR/stability-<kind>.csv, shards DIR/stability-<kind>.shard-K-of-N.csv
 
@@ -58,17 +87,20 @@ inline constexpr int kMaxShards = 1'000'000;
 std::string stabilityCsvPath(const std::string& outDir, const std::string& kind);
 std::string stabilityShardPath(const std::string& outDir, const std::string& kind, const Shard& shard);
 
-// Rows of all shards of a sweep, in cell order. Throws std::invalid_argument naming the file and row of what
-// is wrong in a shard, or the cells missing from the union (it must be the full grid x grid). Returns false
-// (and leaves `merged` alone) if not all N shard files exist yet.
-bool mergeStabilityShards(const std::string& outDir, const std::string& kind, int shardCount, CsvTable& merged);
+// Rows of all shards of a sweep, in cell order. A shard file is input, read as strictly as a scene: throws
+// std::invalid_argument naming the file (and row) if it has no identity line, if its identity differs from
+// another shard's (naming what differs), if a field is not what its column holds, or if its rows are not
+// exactly its cells (c mod N = K - 1) with every method of its identity, in order. Returns false (and leaves
+// `merged` alone) if not all N shard files exist yet.
+bool mergeStabilityShards(const std::string& outDir, const std::string& kind, int shardCount,
+                          std::vector<StabilityRow>& merged);
 
 // The shard counts N for which DIR holds shard files of this kind.
 std::vector<int> stabilityShardCounts(const std::string& outDir, const std::string& kind);
 
 // === Summary per method: fractions of the grid within 1e-6 and 1e-9 (status ok), and failure counts
 std::vector<std::string> stabilitySummaryColumns();
-CsvTable stabilitySummary(const CsvTable& rows);
+CsvTable stabilitySummary(const std::vector<StabilityRow>& rows);
 
 // The statuses of the rows in map order (code = index; also the summary's column order): the measurement's
 // verdicts and the runs' stop reasons, ok first, then "other" for any other text.

@@ -9,6 +9,7 @@
 #include <iostream>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
 #include <CLI/CLI.hpp>
@@ -96,6 +97,36 @@ void writeOrPrint(const std::string& file, const std::string& text) {
     if (!std::cout) throw CommandExit(kExitFailure, "linkage geometry: cannot write to standard output");
   } else {
     output::writeFileAtomically(file, text);
+  }
+}
+
+// The grid's CSV in blocks of rows, each computed, formatted and written before the next: memory holds one
+// block whatever N (a 4096 x 4096 grid held every sample and the whole text, over 4 GB). The same bytes as
+// samplesCsv of the whole grid: each sample depends on its (phi, t) alone.
+void writeGridCsv(const std::string& file, const ConfigurationSurface& surface, const ChartGrid& grid) {
+  std::optional<output::AtomicFileWriter> writer;
+  if (!file.empty()) writer.emplace(file);
+  auto emit = [&](const std::string& text) {
+    if (writer) {
+      writer->write(text);
+    } else if (!(std::cout << text)) {
+      throw CommandExit(kExitFailure, "linkage geometry: cannot write to standard output");
+    }
+  };
+  emit(std::string(kSampleColumns) + "\n");
+  constexpr std::size_t kRowsPerBlock = 16;
+  for (std::size_t first = 0; first < grid.phis.size(); first += kRowsPerBlock) {
+    const std::vector<double> phis(grid.phis.begin() + static_cast<std::ptrdiff_t>(first),
+                                   grid.phis.begin() +
+                                       static_cast<std::ptrdiff_t>(std::min(grid.phis.size(), first + kRowsPerBlock)));
+    std::string text;
+    for (const CurvatureSample& sample : curvatureGrid(surface, phis, grid.ts)) text += sampleRow(sample) + "\n";
+    emit(text);
+  }
+  if (writer) {
+    writer->commit();
+  } else if (!(std::cout << std::flush)) {
+    throw CommandExit(kExitFailure, "linkage geometry: cannot write to standard output");
   }
 }
 
@@ -250,9 +281,9 @@ void runGeometry(const GeometryArguments& args) {
   if (args.grid > 0 || !args.maps.empty()) {
     const int n = args.grid > 0 ? args.grid : kDefaultMapGrid;
     const ChartGrid grid = uniformChartGrid(n, n);
-    const std::vector<CurvatureSample> samples = curvatureGrid(surface, grid.phis, grid.ts);
-    if (!args.csv.empty() || args.maps.empty()) writeOrPrint(args.csv, samplesCsv(samples));
+    if (!args.csv.empty() || args.maps.empty()) writeGridCsv(args.csv, surface, grid);
     if (!args.maps.empty()) {
+      const std::vector<CurvatureSample> samples = curvatureGrid(surface, grid.phis, grid.ts);
       std::filesystem::create_directories(args.maps);
       const std::string where = " (L = " + shortest(scene.chain.baseLength) + ", \"" + scene.name + "\")";
       renderMap(grid, samples, 0, "Gaussian curvature K" + where, args.maps + "/curvature.png");

@@ -88,8 +88,7 @@ std::vector<std::vector<Trajectory>> startFamilies(const Scene& scene, const std
     const RunSpec& run = scene.runs[i];
     if (!run.family) continue;
     try {
-      families[i] = familyMembers(run.chain, starts.at(i), *run.family, run.config);
-      for (Trajectory& member : families[i]) member.setCancellation(interruptRequested);
+      families[i] = familyMembers(run.chain, starts.at(i), *run.family, run.config, interruptRequested);
     } catch (const std::invalid_argument& error) {
       failOnProblems(scene.file, {{runPath(i, "family"), error.what()}});
       throw;

@@ -129,7 +129,13 @@ void runSimulate(const SimulateArguments& args) {
   if (!args.quiet)
     for (const std::string& note : notes) std::cerr << "linkage simulate: note: " << note << "\n";
   std::vector<Trajectory> runs = startRuns(scene, starts);
-  std::vector<std::vector<Trajectory>> families = startFamilies(scene, starts);
+  std::vector<std::vector<Trajectory>> families;
+  try {
+    families = startFamilies(scene, starts);
+  } catch (const RunCancelled&) {  // a signal while a large family was set up
+    stopIfInterrupted("no CSV was written");
+    throw;
+  }
   TrajectoryCsvLayout layout{scene.chain.rods, false, false};
   for (const RunSpec& run : scene.runs) {
     layout.memberColumn = layout.memberColumn || run.family.has_value();

@@ -68,11 +68,12 @@ void printPlan(const StabilityArguments& args) {
 }
 
 // The full sweep's files: CSV, summary (also printed) and charts.
-void writeSweepOutputs(const CsvTable& rows, const StabilityArguments& args) {
+void writeSweepOutputs(const std::vector<StabilityRow>& sweep, const StabilityArguments& args) {
   const std::string& kind = args.options.kind;
   const std::string csvPath = stabilityCsvPath(args.out, kind);
+  const CsvTable rows = stabilityTable(sweep);
   output::writeFileAtomically(csvPath, csvText(rows));
-  const CsvTable summary = stabilitySummary(rows);
+  const CsvTable summary = stabilitySummary(sweep);
   const std::string summaryText = csvText(summary);
   output::writeFileAtomically((std::filesystem::path(args.out) / ("stability-" + kind + "-summary.csv")).string(),
                               summaryText);
@@ -120,7 +121,7 @@ void runStability(StabilityArguments& args) {
   output::removeStaleTemporaries(args.out);  // what a killed run of this command left (docs/hardening.md)
 
   if (args.merge) {
-    CsvTable merged;
+    std::vector<StabilityRow> merged;
     const int count = detectShardCount(args);
     if (!mergeStabilityShards(args.out, options.kind, count, merged)) {
       std::string missing;
@@ -136,7 +137,7 @@ void runStability(StabilityArguments& args) {
   if (!args.shard.empty()) options.shard = parseShard(args.shard);
 
   const bool showProgress = !args.quiet && isatty(STDERR_FILENO);
-  const CsvTable rows = runStabilitySweep(options, [&](long done, long total) {
+  const std::vector<StabilityRow> rows = runStabilitySweep(options, [&](long done, long total) {
     if (showProgress && (done % 16 == 0 || done == total))
       std::fprintf(stderr, "\r%s: %ld / %ld cells", options.kind.c_str(), done, total);
   });
@@ -147,9 +148,9 @@ void runStability(StabilityArguments& args) {
     return;
   }
   const std::string shardPath = stabilityShardPath(args.out, options.kind, options.shard);
-  output::writeFileAtomically(shardPath, csvText(rows));
+  output::writeFileAtomically(shardPath, stabilityShardText(options, rows));
   std::cout << "wrote " << shardPath << "\n";
-  CsvTable merged;  // the last shard to finish merges them all
+  std::vector<StabilityRow> merged;  // the last shard to finish merges them all
   if (mergeStabilityShards(args.out, options.kind, options.shard.count, merged)) writeSweepOutputs(merged, args);
 }
 

@@ -42,6 +42,14 @@ inline constexpr double kMinTolerance = 1e-16;
 inline constexpr double kMaxTolerance = 1e-1;
 inline constexpr double kMinFieldOfViewDegrees = 5;
 inline constexpr double kMaxFieldOfViewDegrees = 120;
+// The work a scene asks for is bounded before any is done (src/scene/scene_cost.cpp), in units of one hinge
+// carried through one integration step. One step of a run costs (n-1) units, or (n-1) (1 + f)^2 with its f = n-3
+// Jacobi fields (the fields' Gram matrix and its eigen decomposition at every step). Signals are asked between
+// steps, so one step must stay well below a second: at most kMaxStepWork units (Jacobi fields on up to 250
+// rods; plain runs on any chain). A scene's whole work counts every run and family member for every sphere-path
+// sample (frames x view.path_samples_per_frame): at most kMaxSceneWork units, about a day of one core.
+inline constexpr double kMaxStepWork = 1.6e7;
+inline constexpr double kMaxSceneWork = 1e13;
 // How long a render waits for a lock another process holds on its output folder before giving up (a process
 // stopped with SIGSTOP, or hung, holds it for ever); it says what it waits for after the first second.
 inline constexpr double kMaxLockWaitSeconds = 60;

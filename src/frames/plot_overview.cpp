@@ -46,11 +46,8 @@ std::vector<PlotOverview> overviewPlots(const Scene& scene, const std::vector<In
   for (std::size_t r = 0; r < runCount && wantSpread; ++r) {
     if (!scene.runs[r].family) continue;
     const RunSpec& run = scene.runs[r];
-    members[r] = familyMembers(run.chain, starts.at(r), *run.family, run.config);
-    for (std::size_t m = 0; m < members[r].size(); ++m) {
-      members[r][m].setCancellation(cancelled);
-      memberJobs.emplace_back(r, m);
-    }
+    members[r] = familyMembers(run.chain, starts.at(r), *run.family, run.config, cancelled);
+    for (std::size_t m = 0; m < members[r].size(); ++m) memberJobs.emplace_back(r, m);
   }
   std::vector<std::optional<Sample>> memberSamples(memberJobs.size());
   for (int k = 0; k < frames; ++k) {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "contracts/limits.hpp"
 #include "linkage/chart.hpp"
 #include "linkage/kinetic_metric.hpp"
 
@@ -11,6 +12,6 @@ ChainConstants::ChainConstants(const Chain& c)
     : chain((c.validate(true), c)),
       amplitude(c.isSlack() ? std::nan("") : chainAmplitude(c.rods, c.baseLength)),  // a slack chain has no chart
       mass(ambientMassMatrix(c)),
-      stackedMass(stackedMassMatrix(c)) {}
+      stackedMass(c.rods <= limits::kMaxRods ? stackedMassMatrix(c) : Eigen::MatrixXd()) {}
 
 }  // namespace sl

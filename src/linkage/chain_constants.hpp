@@ -15,7 +15,9 @@ struct ChainConstants {
   Chain chain;
   double amplitude = 0;         // alpha_n(L): cos alpha = (L^2 + 1 - (n-1)^2) / (2L)
   AmbientMassMatrix mass;       // block-tridiagonal, scalar blocks
-  Eigen::MatrixXd stackedMass;  // the same as a 2(n-1) square matrix on q = (p1x, p1y, p2x, ...)
+  // The same as a 2(n-1) square matrix on q = (p1x, p1y, p2x, ...), for the chart methods' chains (at most
+  // limits::kMaxRods rods); empty for longer ones, where it would cost every run 32 MB at 1000 rods.
+  Eigen::MatrixXd stackedMass;
 };
 
 }  // namespace sl

@@ -30,8 +30,39 @@ Eigen::VectorXd sphereVelocityFromCoordinateRates(const Eigen::VectorXd& coords,
   return xdot;
 }
 
+// S(c) nests circles: x = (cos c_0 y, sin c_0) with y = S(c_1, ...) one dimension down. The column of c_0 is
+// (-sin c_0 y, cos c_0), of size 1; the others are cos c_0 times y's own columns, orthogonal to it. So
+// cdot_0 = -sin c_0 (y . xdot_head) + cos c_0 xdot_last, and the rest are y's rates for xdot_head / cos c_0
+// (all 0 where cos c_0 = 0: their columns vanish there, as least squares would give them). O(k^2).
+Eigen::VectorXd coordinateRatesByLevels(const Eigen::VectorXd& coords, const Eigen::VectorXd& xdot) {
+  const Eigen::Index k = coords.size();
+  // The points of every level, innermost first built: level L is S(c_L, ..., c_(k-1)), k - L + 1 components.
+  std::vector<Eigen::VectorXd> levels(static_cast<std::size_t>(k));
+  levels[static_cast<std::size_t>(k - 1)] = Eigen::Vector2d(std::cos(coords(k - 1)), std::sin(coords(k - 1)));
+  for (Eigen::Index level = k - 2; level >= 0; --level) {
+    const Eigen::VectorXd& inner = levels[static_cast<std::size_t>(level + 1)];
+    Eigen::VectorXd point(inner.size() + 1);
+    point.head(inner.size()) = std::cos(coords(level)) * inner;
+    point(inner.size()) = std::sin(coords(level));
+    levels[static_cast<std::size_t>(level)] = std::move(point);
+  }
+  Eigen::VectorXd rates = Eigen::VectorXd::Zero(k);
+  Eigen::VectorXd w = xdot;
+  for (Eigen::Index level = 0; level < k - 1; ++level) {
+    const Eigen::VectorXd& inner = levels[static_cast<std::size_t>(level + 1)];
+    const double cosine = std::cos(coords(level)), sine = std::sin(coords(level));
+    const Eigen::Index size = inner.size();
+    rates(level) = -sine * inner.dot(w.head(size)) + cosine * w(size);
+    if (cosine == 0) return rates;
+    w = Eigen::VectorXd(w.head(size) / cosine);
+  }
+  rates(k - 1) = -std::sin(coords(k - 1)) * w(0) + std::cos(coords(k - 1)) * w(1);
+  return rates;
+}
+
 Eigen::VectorXd coordinateRatesFromSphereVelocity(const Eigen::VectorXd& coords, const Eigen::VectorXd& xdot) {
   const Eigen::Index k = coords.size();
+  if (k > kMaxQrCoordinates) return coordinateRatesByLevels(coords, xdot);
   Eigen::MatrixXd jacobian(k + 1, k);
   for (Eigen::Index j = 0; j < k; ++j)
     jacobian.col(j) = sphereVelocityFromCoordinateRates(coords, Eigen::VectorXd::Unit(k, j));

@@ -43,8 +43,13 @@ VectorX<S> spherePointFromCoordinates(const VectorX<S>& c) {
 // preimage (the undetermined angles are set to 0).
 Eigen::VectorXd coordinatesFromSpherePoint(const Eigen::VectorXd& x, double previousT = 0.0);
 
-// Rates of chart 0 coordinates from a tangent vector xdot at x: solves dS(c) cdot = xdot.
+// Rates of chart 0 coordinates from a tangent vector xdot at x: solves dS(c) cdot = xdot. Up to
+// kMaxQrCoordinates coordinates (chains of up to 64 rods) by QR on the whole Jacobian, O(k^3), the numbers
+// every shipped scene was checked with; beyond, level by level (coordinateRatesByLevels), O(k^2).
+inline constexpr Eigen::Index kMaxQrCoordinates = 62;
 Eigen::VectorXd coordinateRatesFromSphereVelocity(const Eigen::VectorXd& coords, const Eigen::VectorXd& xdot);
+// The same rates by the nested circles of S(c), O(k^2) (exposed for tests: equal to the QR route to rounding).
+Eigen::VectorXd coordinateRatesByLevels(const Eigen::VectorXd& coords, const Eigen::VectorXd& xdot);
 
 // Tangent vector dS(c) cdot (chart 0).
 Eigen::VectorXd sphereVelocityFromCoordinateRates(const Eigen::VectorXd& coords, const Eigen::VectorXd& rates);

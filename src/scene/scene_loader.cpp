@@ -15,6 +15,7 @@
 #include "scene/json_error_path.hpp"
 #include "scene/json_fields.hpp"
 #include "scene/output_folder.hpp"
+#include "scene/scene_cost.hpp"
 #include "scene/scene_keys.hpp"
 #include "scene/scene_sections.hpp"
 
@@ -570,7 +571,10 @@ Scene parseScene(const std::string& text, const std::string& file, const std::ve
 
   scene.name = top.string("name", true).value_or("");
   if (top.has("name") && !isSafeName(scene.name)) {
-    top.report("name", "found \"" + scene.name + "\"; expected " + expectedWords(sceneKey("name")));
+    // Quoted as JSON (a NUL or control byte escaped, invalid UTF-8 replaced), so the whole message reaches a
+    // terminal.
+    top.report("name", "found " + json(scene.name).dump(-1, ' ', false, json::error_handler_t::replace) +
+                           "; expected " + expectedWords(sceneKey("name")));
   }
   scene.title = top.string("title").value_or(scene.name);
   if (const auto duration = top.number("duration", true); duration && top.checkPositive("duration", *duration)) {
@@ -590,6 +594,7 @@ Scene parseScene(const std::string& text, const std::string& file, const std::ve
   for (SceneProblem& problem : checkFrameCount(scene.duration, scene.output.fps)) problems.push_back(problem);
   detail::readView(top.has("view") ? *top.member("view") : json::object(), scene, rods.has_value(), problems);
 
+  if (problems.empty()) problems = checkSceneCost(scene);  // measured on a valid scene only
   if (!problems.empty()) throw SceneError(file, std::move(problems));
   return scene;
 }

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "linkage/chain.hpp"
+#include "linkage/chart.hpp"
 #include "simulation/initial_state.hpp"
 #include "simulation/normal_draws.hpp"
 #include "simulation/trajectory.hpp"
@@ -17,20 +19,50 @@ double kineticInner(const Chain& chain, const Eigen::VectorXd& x, const Eigen::V
 }
 
 std::vector<Eigen::VectorXd> orthonormalTangentFrame(const Chain& chain, const Eigen::VectorXd& x,
-                                                     const Eigen::VectorXd& first) {
+                                                     const Eigen::VectorXd& first, std::size_t count) {
   const Eigen::Index size = x.size();
+  const std::size_t wanted = count > 0 ? std::min<std::size_t>(count, static_cast<std::size_t>(size - 1))
+                                       : static_cast<std::size_t>(size - 1);
   std::vector<Eigen::VectorXd> frame;
+  const AmbientMassMatrix mass = ambientMassMatrix(chain);
+  if (chain.rods <= kWholeJacobianRods) {
+    // The Jacobian once, and g as speedSquared and kineticInner compute it (the same numbers).
+    const Eigen::MatrixXd jacobian = sphereJacobian(chain, x);
+    auto speed2 = [&](const Eigen::VectorXd& w) {
+      const Eigen::VectorXd stacked = jacobian * w;
+      return 2.0 * kineticEnergy(mass, Eigen::Map<const Eigen::Matrix2Xd>(stacked.data(), 2, chain.hingeCount()));
+    };
+    auto addOrthonormalised = [&](Eigen::VectorXd w) {
+      w -= x * x.dot(w);  // tangent
+      for (const Eigen::VectorXd& e : frame) w -= 0.25 * (speed2(e + w) - speed2(e - w)) * e;
+      const double norm2 = speed2(w);
+      if (!(norm2 > 1e-20 * (1.0 + w.squaredNorm()))) return;  // dependent on the vectors so far
+      frame.push_back(w / std::sqrt(norm2));
+    };
+    addOrthonormalised(first);
+    if (frame.empty()) throw std::invalid_argument("a family needs a start that moves (zero velocity)");
+    for (Eigen::Index k = 0; k < size && frame.size() < wanted; ++k) addOrthonormalised(Eigen::VectorXd::Unit(size, k));
+    return frame;
+  }
+  // Long chains: each vector's image dPsi(w) once (one forward-AD pass, O(n^2)); Gram-Schmidt on the images,
+  // which are linear in w, with g(u, w) = <dPsi u, dPsi w>_M.
+  std::vector<Eigen::Matrix2Xd> images;
   auto addOrthonormalised = [&](Eigen::VectorXd w) {
     w -= x * x.dot(w);  // tangent
-    for (const Eigen::VectorXd& e : frame) w -= kineticInner(chain, x, e, w) * e;
-    const double norm2 = speedSquared(chain, {x, w});
+    Eigen::Matrix2Xd image = hingeVelocitiesOnSphere(chain, x, w);
+    for (std::size_t k = 0; k < frame.size(); ++k) {
+      const double along = mass.innerProduct(images[k], image);
+      w -= along * frame[k];
+      image -= along * images[k];
+    }
+    const double norm2 = mass.innerProduct(image, image);
     if (!(norm2 > 1e-20 * (1.0 + w.squaredNorm()))) return;  // dependent on the vectors so far
     frame.push_back(w / std::sqrt(norm2));
+    images.push_back(image / std::sqrt(norm2));
   };
   addOrthonormalised(first);
   if (frame.empty()) throw std::invalid_argument("a family needs a start that moves (zero velocity)");
-  for (Eigen::Index k = 0; k < size && Eigen::Index(frame.size()) < size - 1; ++k)
-    addOrthonormalised(Eigen::VectorXd::Unit(size, k));
+  for (Eigen::Index k = 0; k < size && frame.size() < wanted; ++k) addOrthonormalised(Eigen::VectorXd::Unit(size, k));
   return frame;
 }
 
@@ -41,7 +73,7 @@ double evenOffset(double width, int k, int count) { return width * (double(k) / 
 
 std::vector<InitialState> fan(const Chain& chain, const InitialState& start, const FamilySpec& family) {
   const double speed = std::sqrt(speedSquared(chain, start));
-  const std::vector<Eigen::VectorXd> frame = orthonormalTangentFrame(chain, start.spherePoint, start.sphereVelocity);
+  const std::vector<Eigen::VectorXd> frame = orthonormalTangentFrame(chain, start.spherePoint, start.sphereVelocity, 2);
   if (frame.size() < 2) throw std::invalid_argument("a fan needs a tangent plane (at least 4 rods)");
   std::vector<InitialState> members;
   for (int k = 0; k < family.count; ++k) {
@@ -59,7 +91,7 @@ std::vector<InitialState> fan(const Chain& chain, const InitialState& start, con
 std::vector<InitialState> parallel(const Chain& chain, const InitialState& start, const FamilySpec& family,
                                    const RunConfig& config) {
   const double speed = std::sqrt(speedSquared(chain, start));
-  const std::vector<Eigen::VectorXd> frame = orthonormalTangentFrame(chain, start.spherePoint, start.sphereVelocity);
+  const std::vector<Eigen::VectorXd> frame = orthonormalTangentFrame(chain, start.spherePoint, start.sphereVelocity, 2);
   if (frame.size() < 2) throw std::invalid_argument("a parallel family needs a tangent plane (at least 4 rods)");
   // Two unit-speed geodesics out of the start, one each way, sampled at the members' distances in order.
   std::vector<InitialState> members(static_cast<std::size_t>(family.count));
@@ -122,12 +154,15 @@ std::vector<InitialState> familyStarts(const Chain& chain, const InitialState& s
 }
 
 std::vector<Trajectory> familyMembers(const Chain& chain, const InitialState& start, const FamilySpec& family,
-                                      const RunConfig& config) {
+                                      const RunConfig& config, const std::function<bool()>& cancelled) {
   RunConfig memberConfig = config;
   memberConfig.jacobi = false;
   std::vector<Trajectory> members;
-  for (const InitialState& member : familyStarts(chain, start, family, memberConfig))
+  for (const InitialState& member : familyStarts(chain, start, family, memberConfig)) {
+    if (cancelled && cancelled()) throw RunCancelled();
     members.emplace_back(chain, member, memberConfig);
+    if (cancelled) members.back().setCancellation(cancelled);
+  }
   return members;
 }
 

@@ -26,11 +26,26 @@ InitialState initialStateFromChart(const Chain& chain, const Eigen::VectorXd& co
   return {spherePointFromCoordinates<double>(coords), sphereVelocityFromCoordinateRates(coords, rates)};
 }
 
+Eigen::Matrix2Xd hingeVelocitiesOnSphere(const Chain& chain, const Eigen::VectorXd& x, const Eigen::VectorXd& xdot) {
+  if (chain.rods <= kWholeJacobianRods) {
+    const Eigen::VectorXd stacked = sphereJacobian(chain, x) * xdot;
+    return Eigen::Map<const Eigen::Matrix2Xd>(stacked.data(), 2, chain.hingeCount());
+  }
+  using Dual = Eigen::AutoDiffScalar<Eigen::Matrix<double, 1, 1>>;
+  VectorX<Dual> dual(x.size());
+  for (Eigen::Index i = 0; i < x.size(); ++i) dual(i) = Dual(x(i), Eigen::Matrix<double, 1, 1>(xdot(i)));
+  const HingeMatrix<Dual> moving = hingePositionsOnSphere<Dual>(chain, dual);
+  Eigen::Matrix2Xd velocities(2, chain.hingeCount());
+  for (Eigen::Index h = 0; h < velocities.cols(); ++h)
+    for (int xy = 0; xy < 2; ++xy)
+      velocities(xy, h) = moving(xy, h).derivatives().size() ? moving(xy, h).derivatives()(0) : 0.0;
+  return velocities;
+}
+
 double speedSquared(const Chain& chain, const InitialState& start) {
   if (start.byHinges()) return 2.0 * kineticEnergy(ambientMassMatrix(chain), start.hingeVelocities);
-  const Eigen::VectorXd stacked = sphereJacobian(chain, start.spherePoint) * start.sphereVelocity;
   return 2.0 * kineticEnergy(ambientMassMatrix(chain),
-                             Eigen::Map<const Eigen::Matrix2Xd>(stacked.data(), 2, chain.hingeCount()));
+                             hingeVelocitiesOnSphere(chain, start.spherePoint, start.sphereVelocity));
 }
 
 namespace {

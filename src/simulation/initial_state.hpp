@@ -37,6 +37,13 @@ InitialState initialStateFromHinges(const Chain& chain, const InitialSpec& spec,
 // equal chords.
 Eigen::Matrix2Xd arcHinges(int rods, double baseLength);
 
+// Chains up to this many rods take dPsi from the whole Jacobian (sphereJacobian: forward AD in every direction,
+// O(n^3)); longer ones by one forward-AD pass along the velocity (O(n^2)), equal to rounding.
+inline constexpr int kWholeJacobianRods = 64;
+
+// dPsi(x) xdot: the hinge velocities of a sphere velocity (xdot tangent at x).
+Eigen::Matrix2Xd hingeVelocitiesOnSphere(const Chain& chain, const Eigen::VectorXd& x, const Eigen::VectorXd& xdot);
+
 // g(v, v) of a start: |dPsi(xdot)|^2 in the ambient kinetic metric M.
 double speedSquared(const Chain& chain, const InitialState& start);
 

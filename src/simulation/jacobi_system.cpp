@@ -3,9 +3,13 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <Eigen/Eigenvalues>
+
 #include "linkage/chain_constants.hpp"
 #include "linkage/chart.hpp"
+#include "linkage/kinetic_metric.hpp"
 #include "simulation/family.hpp"
+#include "simulation/initial_state.hpp"
 
 namespace sl {
 
@@ -53,7 +57,38 @@ Eigen::MatrixXd adjugate(const Eigen::MatrixXd& a) {
   return adj;
 }
 
+// d/dt det G = tr(adj(G) G'), finite and smooth where G is singular (at conjugate points). Up to three fields
+// adj(G) by its cofactors; beyond, from G's eigen decomposition G = Q diag(l) Q^T: adj(G) = Q diag(a) Q^T with
+// a_i the product of the other eigenvalues (prefix and suffix products: no division), so the rate is
+// sum_i a_i (Q^T G' Q)_ii in O(m^3) where the cofactors take O(m^5).
+double determinantRate(const Eigen::MatrixXd& gram, const Eigen::MatrixXd& rate) {
+  const Eigen::Index m = gram.rows();
+  if (m <= 3) return (adjugate(gram) * rate).trace();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(gram);
+  const Eigen::VectorXd& values = eigen.eigenvalues();
+  const Eigen::MatrixXd& vectors = eigen.eigenvectors();
+  Eigen::VectorXd others(m);
+  double product = 1.0;
+  for (Eigen::Index i = 0; i < m; ++i) {
+    others(i) = product;
+    product *= values(i);
+  }
+  product = 1.0;
+  for (Eigen::Index i = m - 1; i >= 0; --i) {
+    others(i) *= product;
+    product *= values(i);
+  }
+  const Eigen::MatrixXd rotated = rate * vectors;
+  double sum = 0.0;
+  for (Eigen::Index i = 0; i < m; ++i) sum += others(i) * vectors.col(i).dot(rotated.col(i));
+  return sum;
+}
+
 }  // namespace
+
+double gramDeterminantRate(const Eigen::MatrixXd& gram, const Eigen::MatrixXd& rate) {
+  return determinantRate(gram, rate);
+}
 
 JacobiSystem::JacobiSystem(const Chain& chain, const InitialState& start, double projectBeyond)
     : motion_(chain, start, projectBeyond),
@@ -63,7 +98,7 @@ JacobiSystem::JacobiSystem(const Chain& chain, const InitialState& start, double
       fields_(chain.rods - 3),
       solver_(chain) {
   if (fields_ < 1) throw std::invalid_argument("Jacobi fields need at least 4 rods (a direction across the motion)");
-  if (!mass_.isDiagonal) massFactor_.compute(ChainConstants(chain).stackedMass);
+  if (!mass_.isDiagonal) massFactor_.compute(stackedMassMatrix(chain));
   start_ = motion_.initialState();
   const std::size_t block = static_cast<std::size_t>(4 * hinges_);
   start_.resize(block * static_cast<std::size_t>(fields_ + 1), 0.0);
@@ -71,14 +106,21 @@ JacobiSystem::JacobiSystem(const Chain& chain, const InitialState& start, double
   const std::vector<Eigen::VectorXd> frame = orthonormalTangentFrame(chain, start.spherePoint, start.sphereVelocity);
   if (static_cast<int>(frame.size()) != fields_ + 1)
     throw std::invalid_argument("the start's tangent space is degenerate (a chart-free frame was not found)");
-  const Eigen::MatrixXd jacobian = sphereJacobian(chain, start.spherePoint);
+  // dPsi of each frame vector: from the whole Jacobian on short chains, one forward-AD pass each on long ones.
+  const Eigen::MatrixXd jacobian =
+      chain.rods <= kWholeJacobianRods ? sphereJacobian(chain, start.spherePoint) : Eigen::MatrixXd();
   const ConstHinges q(start_.data(), 2, hinges_);
   Eigen::Matrix2Xd rods, correction;
   solver_.rodVectors(q, rods);
   for (int i = 0; i < fields_; ++i) {
     Hinges dv(start_.data() + block * static_cast<std::size_t>(i + 1) + 2 * hinges_, 2, hinges_);
-    const Eigen::VectorXd stacked = jacobian * frame[static_cast<std::size_t>(i + 1)];
-    dv = ConstHinges(stacked.data(), 2, hinges_);
+    const Eigen::VectorXd& e = frame[static_cast<std::size_t>(i + 1)];
+    if (jacobian.size() > 0) {
+      const Eigen::VectorXd stacked = jacobian * e;
+      dv = ConstHinges(stacked.data(), 2, hinges_);
+    } else {
+      dv = hingeVelocitiesOnSphere(chain, start.spherePoint, e);
+    }
     // Onto the projected motion's tangent space (G dv = 0), as the motion's own velocity was.
     solver_.solve(q, -rodDots(rods, differences(dv)), correction);
     dv += correction;
@@ -170,7 +212,7 @@ JacobiState JacobiSystem::jacobiAt(const State& y) const {
     }
   JacobiState out;
   out.gramDeterminant = determinant(gram);
-  out.gramRate = (adjugate(gram) * rate).trace();
+  out.gramRate = determinantRate(gram, rate);
   out.size = std::pow(std::max(out.gramDeterminant, 0.0), 0.5 / fields_);
   return out;
 }

@@ -30,6 +30,10 @@ struct JacobiState {
   double gramRate = 0;         // d/dt det G: changes sign at each zero of det G (and at its maxima)
 };
 
+// d/dt det G = tr(adj(G) G') for a symmetric positive semi-definite G (the fields' Gram matrix) and its rate
+// G': finite where G is singular. O(m^3) for m fields (exposed for tests).
+double gramDeterminantRate(const Eigen::MatrixXd& gram, const Eigen::MatrixXd& rate);
+
 class JacobiSystem : public GeodesicSystem {
  public:
   // Throws std::invalid_argument for fewer than 4 rods (no direction orthogonal to the motion).

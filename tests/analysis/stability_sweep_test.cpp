@@ -2,6 +2,7 @@
 // method's pole failure classified, cells well formed, and the summary's fractions.
 
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 #include <gtest/gtest.h>
@@ -29,7 +30,7 @@ StabilityOptions tinySweep(const std::string& kind) {
 
 // One run of the pole sweep, shared by the tests that only read it.
 const CsvTable& poleSweep() {
-  static const CsvTable rows = runStabilitySweep(tinySweep("pole"));
+  static const CsvTable rows = stabilityTable(runStabilitySweep(tinySweep("pole")));
   return rows;
 }
 
@@ -46,20 +47,20 @@ TEST(StabilitySweep, HasOneRowPerCellAndMethodInCellOrder) {
 TEST(StabilitySweep, ThreadCountDoesNotChangeTheBytes) {
   StabilityOptions options = tinySweep("seam");
   options.threads = 1;
-  const std::string single = csvText(runStabilitySweep(options));
+  const std::string single = csvText(stabilityTable(runStabilitySweep(options)));
   options.threads = 3;
-  EXPECT_EQ(csvText(runStabilitySweep(options)), single);
+  EXPECT_EQ(csvText(stabilityTable(runStabilitySweep(options))), single);
 }
 
 TEST(StabilitySweep, ThreadsThatCannotStartLeaveTheSameTableNotAnAbort) {
   StabilityOptions options = tinySweep("seam");
   options.threads = 1;
-  const std::string single = csvText(runStabilitySweep(options));
+  const std::string single = csvText(stabilityTable(runStabilitySweep(options)));
   options.threads = 16;
   failThreadStartsAfterForTesting(1);  // as under a process limit: one helper starts, fifteen do not
   std::string starved;
   try {
-    starved = csvText(runStabilitySweep(options));
+    starved = csvText(stabilityTable(runStabilitySweep(options)));
   } catch (...) {
     failThreadStartsAfterForTesting(-1);
     throw;
@@ -72,32 +73,96 @@ TEST(StabilitySweep, MergedShardsEqualASingleRunByteForByte) {
   const std::string folder = sl::testing::freshTestFolder("shards");
   const StabilityOptions options = tinySweep("pole");
   const std::string single = csvText(poleSweep());
-  CsvTable merged;
+  std::vector<StabilityRow> merged;
   for (int k = 1; k <= 3; ++k) {
     EXPECT_FALSE(mergeStabilityShards(folder, options.kind, 3, merged)) << "merged before shard " << k << " ran";
     StabilityOptions shard = options;
     shard.shard = {k, 3};
     shard.threads = 1;
     output::writeFileAtomically(stabilityShardPath(folder, options.kind, shard.shard),
-                                csvText(runStabilitySweep(shard)));
+                                stabilityShardText(shard, runStabilitySweep(shard)));
   }
   EXPECT_EQ(stabilityShardCounts(folder, options.kind), std::vector<int>{3});
   ASSERT_TRUE(mergeStabilityShards(folder, options.kind, 3, merged));
-  EXPECT_EQ(csvText(merged), single);
+  EXPECT_EQ(csvText(stabilityTable(merged)), single);
 }
 
-TEST(StabilitySweep, MergingShardsOfDifferentGridsIsRefused) {
-  const std::string folder = sl::testing::freshTestFolder("mixed");
+// Shards of different sweeps never merge: each records its whole job, and the message names what differs.
+TEST(StabilitySweep, MergingShardsOfDifferentSweepsIsRefusedNamingTheDifference) {
   StabilityOptions options = tinySweep("seam");
   options.methods = {Method::Ambient};
   options.duration = 0.2;
+  options.grid = 2;
+  const std::vector<std::pair<std::string, std::function<void(StabilityOptions&)>>> changes = {
+      {"grid 3 here, 2 in shard 1", [](StabilityOptions& o) { o.grid = 3; }},
+      {"duration 0.3 here, 0.2 in shard 1", [](StabilityOptions& o) { o.duration = 0.3; }},
+      {"tolerance 1e-07 here", [](StabilityOptions& o) { o.tolerance = 1e-7; }},
+      {"step 0.02 here", [](StabilityOptions& o) { o.step = 0.02; }},
+      {"interval 0.05 here", [](StabilityOptions& o) { o.sampleInterval = 0.05; }},
+      {"integrators rk4 here, rkf78 in shard 1", [](StabilityOptions& o) { o.integrator = Integrator::Rk4; }},
+      {"references none here, embedded in shard 1", [](StabilityOptions& o) { o.checkAgainstReference = false; }},
+      {"methods embedded here, ambient in shard 1", [](StabilityOptions& o) { o.methods = {Method::Embedded}; }},
+  };
+  for (const auto& [expected, change] : changes) {
+    SCOPED_TRACE(expected);
+    const std::string folder = sl::testing::freshTestFolder("mixed");
+    StabilityOptions first = options;
+    first.shard = {1, 2};
+    output::writeFileAtomically(stabilityShardPath(folder, "seam", first.shard),
+                                stabilityShardText(first, runStabilitySweep(first)));
+    StabilityOptions second = options;
+    change(second);
+    second.shard = {2, 2};
+    output::writeFileAtomically(stabilityShardPath(folder, "seam", second.shard),
+                                stabilityShardText(second, runStabilitySweep(second)));
+    std::vector<StabilityRow> merged;
+    try {
+      mergeStabilityShards(folder, "seam", 2, merged);
+      ADD_FAILURE() << "merged shards of different sweeps";
+    } catch (const std::invalid_argument& error) {
+      EXPECT_NE(std::string(error.what()).find("a shard of another sweep"), std::string::npos) << error.what();
+      EXPECT_NE(std::string(error.what()).find(expected), std::string::npos) << error.what();
+    }
+  }
+}
+
+// A shard file is read as strictly as a scene: no identity line, a field that is not its column's, a row of
+// another cell, a cut file: each refused naming the file (and row).
+TEST(StabilitySweep, ShardFilesAreReadStrictly) {
+  StabilityOptions options = tinySweep("seam");
+  options.methods = {Method::Ambient};
+  options.duration = 0.2;
+  options.grid = 2;
   options.shard = {1, 2};
-  output::writeFileAtomically(stabilityShardPath(folder, "seam", options.shard), csvText(runStabilitySweep(options)));
-  options.grid = 3;
-  options.shard = {2, 2};
-  output::writeFileAtomically(stabilityShardPath(folder, "seam", options.shard), csvText(runStabilitySweep(options)));
-  CsvTable merged;
-  EXPECT_THROW(mergeStabilityShards(folder, "seam", 2, merged), std::invalid_argument);
+  const std::string good = stabilityShardText(options, runStabilitySweep(options));
+  StabilityOptions second = options;
+  second.shard = {2, 2};
+  const std::string other = stabilityShardText(second, runStabilitySweep(second));
+  const size_t header = good.find('\n') + 1, firstRow = good.find('\n', header) + 1;
+  const std::string row = good.substr(firstRow, good.find('\n', firstRow) + 1 - firstRow);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {good.substr(header), "not a stability shard of this version"},
+      {good.substr(0, firstRow) + "0,0,0,x" + row.substr(row.find(',', 6)), "column x is 'x', expected a number"},
+      {good.substr(0, firstRow) + "2" + row.substr(1) + good.substr(firstRow + row.size()), "expected cell 0"},
+      {good.substr(0, firstRow + row.size()), "ends before cell 2"},
+      {good.substr(0, firstRow) + row.substr(0, row.find("ambient")) + "nonsense" +
+           row.substr(row.find("ambient") + 7) + good.substr(firstRow + row.size()),
+       "column method is 'nonsense', not a known name"},
+  };
+  for (const auto& [text, expected] : cases) {
+    SCOPED_TRACE(expected);
+    const std::string folder = sl::testing::freshTestFolder("strict");
+    output::writeFileAtomically(stabilityShardPath(folder, "seam", {1, 2}), text);
+    output::writeFileAtomically(stabilityShardPath(folder, "seam", {2, 2}), other);
+    std::vector<StabilityRow> merged;
+    try {
+      mergeStabilityShards(folder, "seam", 2, merged);
+      ADD_FAILURE() << "merged a bad shard";
+    } catch (const std::invalid_argument& error) {
+      EXPECT_NE(std::string(error.what()).find("shard-1-of-2.csv"), std::string::npos) << error.what();
+      EXPECT_NE(std::string(error.what()).find(expected), std::string::npos) << error.what();
+    }
+  }
 }
 
 // Columns of the pole sweep (grid 4): closest approach 0 (exactly through the pole), 10^-7.7, 10^-4.3
@@ -138,7 +203,8 @@ TEST(StabilitySweep, WithoutAReferenceOnlyFateAndInvariantsAreMeasured) {
   options.grid = 2;
   options.methods = {Method::Ambient};
   options.checkAgainstReference = false;
-  const CsvTable rows = runStabilitySweep(options);
+  const std::vector<StabilityRow> sweep = runStabilitySweep(options);
+  const CsvTable rows = stabilityTable(sweep);
   ASSERT_EQ(rows.rows.size(), 4u);
   for (size_t r = 0; r < rows.rows.size(); ++r) {
     EXPECT_EQ(rows.text(r, "status"), nameOf(Verdict::Ok));
@@ -146,18 +212,19 @@ TEST(StabilitySweep, WithoutAReferenceOnlyFateAndInvariantsAreMeasured) {
     EXPECT_EQ(rows.text(r, "max_error"), "");  // no value
     EXPECT_LT(rows.number(r, "max_energy_drift"), 1e-8);
   }
-  EXPECT_EQ(stabilitySummary(rows).text(0, "within_1e-9"), "");
+  EXPECT_EQ(stabilitySummary(sweep).text(0, "within_1e-9"), "");
 }
 
 TEST(StabilitySummary, CountsFractionsAndFailureModes) {
-  CsvTable rows{stabilityColumns(), {}};
+  std::vector<StabilityRow> rows;
   auto add = [&](Method method, const RunStatus& status, double error) {
-    std::vector<std::string> row(rows.columns.size(), "0");
-    row[rows.column("method")] = nameOf(method);
-    row[rows.column("integrator")] = nameOf(Integrator::Dopri5);
-    row[rows.column("status")] = statusName(status);
-    row[rows.column("max_error")] = formatNumber(error);
-    rows.rows.push_back(row);
+    StabilityRow row;
+    row.method = method;
+    row.integrator = Integrator::Dopri5;
+    row.status = status;
+    row.maxError = error;
+    row.referenceMethod = "0";
+    rows.push_back(row);
   };
   add(Method::Embedded, Verdict::Ok, 1e-12);
   add(Method::Embedded, Verdict::Ok, 1e-7);

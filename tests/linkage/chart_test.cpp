@@ -155,3 +155,34 @@ TEST(Chart, AmplitudeIsAccurateNearTheEndsOfTheRange) {
 
 }  // namespace
 }  // namespace sl
+
+namespace sl {
+namespace {
+
+// Long chains' chart rates (level by level, O(k^2)) equal the QR route on the whole Jacobian, and stay finite at
+// a pole of the chart.
+TEST(ChartRates, LevelByLevelEqualsQrOnTheJacobian) {
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> angle(-1.2, 1.2);
+  const Eigen::Index k = kMaxQrCoordinates + 8;
+  Eigen::VectorXd coords(k), rates(k);
+  for (Eigen::Index i = 0; i < k; ++i) {
+    coords(i) = angle(random);
+    rates(i) = angle(random);
+  }
+  const Eigen::VectorXd xdot = sphereVelocityFromCoordinateRates(coords, rates);
+  EXPECT_LT((coordinateRatesByLevels(coords, xdot) - rates).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_LT((coordinateRatesFromSphereVelocity(coords, xdot) - rates).cwiseAbs().maxCoeff(), 1e-9);
+  // Small k: both routes on the same input.
+  const Eigen::VectorXd few = coords.head(5), fewRates = rates.head(5);
+  const Eigen::VectorXd fewXdot = sphereVelocityFromCoordinateRates(few, fewRates);
+  EXPECT_LT((coordinateRatesByLevels(few, fewXdot) - coordinateRatesFromSphereVelocity(few, fewXdot)).cwiseAbs().maxCoeff(),
+            1e-12);
+  coords(0) = M_PI / 2;  // the pole: only c_0 is defined
+  const Eigen::VectorXd atPole = coordinateRatesByLevels(coords, sphereVelocityFromCoordinateRates(coords, rates));
+  EXPECT_NEAR(atPole(0), rates(0), 1e-12);
+  EXPECT_TRUE(atPole.allFinite());
+}
+
+}  // namespace
+}  // namespace sl
