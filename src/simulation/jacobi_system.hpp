@@ -43,6 +43,8 @@ class JacobiSystem : public GeodesicSystem {
     return motion_.stepInvariants(y, previousT);
   }
   std::string describe(const State& y) const override { return motion_.describe(y); }
+  // The step control watches the motion only: the fields ride along on its steps.
+  std::size_t motionSize(const State&) const override { return static_cast<std::size_t>(4 * hinges_); }
 
   int fieldCount() const { return fields_; }
   JacobiState jacobiAt(const State& y) const;
