@@ -60,7 +60,7 @@ class JacobiSystem : public GeodesicSystem {
   State start_;
   mutable ConstraintSolver solver_;
   // Work space of derivative(): sized once, so an evaluation allocates nothing.
-  mutable Eigen::Matrix2Xd rods_, relative_, acceleration_, relativeAcceleration_, dRods_, dRelative_, force_, first_,
+  mutable Eigen::Matrix2Xd hingePositions_, fieldQ_, fieldV_, relative_, acceleration_, relativeAcceleration_, dRods_, dRelative_, force_, first_,
       relativeFirst_, correction_;
   mutable Eigen::VectorXd rhs_, mu_;
 };
