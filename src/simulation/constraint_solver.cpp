@@ -23,7 +23,7 @@ ConstraintSolver::ConstraintSolver(const Chain& chain) : baseLength_(chain.baseL
   inverseMass_.segment(1, n - 1) = mass.diagonal.cwiseInverse();
   diagonalMass_ = mass.isDiagonal;
   rods_.resize(2, n);
-  lower_.resize(n), diagonal_.resize(n), upper_.resize(n), mu_.resize(n);
+  lower_.resize(n), diagonal_.resize(n), upper_.resize(n), pivots_.resize(n), mu_.resize(n);
   if (diagonalMass_) return;
 
   kkt_ = std::make_unique<Kkt>();
@@ -72,39 +72,52 @@ void ConstraintSolver::relativeVelocities(const Eigen::Matrix2Xd& velocities, Ei
 
 void ConstraintSolver::solve(const Eigen::Matrix2Xd& hinges, const Eigen::VectorXd& rhs, Eigen::Matrix2Xd& correction) {
   rodVectors(hinges, rods_);
-  correction.resize(2, hinges.cols());
   if (diagonalMass_)
-    solveTridiagonal(rhs, correction);
+    factorTridiagonal();
   else
-    solveKkt(rhs, correction);
+    factorKkt();
+  solveAgain(rhs, correction);
 }
 
-void ConstraintSolver::solveTridiagonal(const Eigen::VectorXd& rhs, Eigen::Matrix2Xd& correction) {
+void ConstraintSolver::solveAgain(const Eigen::VectorXd& rhs, Eigen::Matrix2Xd& correction) {
+  correction.resize(2, rods_.cols() - 1);
+  if (diagonalMass_)
+    substituteTridiagonal(rhs, correction);
+  else
+    substituteKkt(rhs, correction);
+}
+
+void ConstraintSolver::factorTridiagonal() {
   // (G M^-1 G^T)_rr = |D_r|^2 (w_r + w_(r+1)), (.)_(r,r+1) = -(D_r . D_(r+1)) w_(r+1): rods r and r+1 share p_(r+1).
   const Eigen::Index n = rods_.cols();
   for (Eigen::Index r = 0; r < n; ++r) {
     diagonal_(r) = rods_.col(r).squaredNorm() * (inverseMass_(r) + inverseMass_(r + 1));
     if (r + 1 < n) upper_(r) = -rods_.col(r).dot(rods_.col(r + 1)) * inverseMass_(r + 1);
   }
-  // Thomas algorithm (SPD, so no pivoting): forward elimination into upper_/mu_, then back substitution.
-  double pivot = diagonal_(0);
-  mu_(0) = rhs(0) / pivot;
+  // Thomas algorithm (SPD, so no pivoting): the elimination's pivots and multipliers here, the right-hand side's
+  // forward elimination and back substitution in substituteTridiagonal().
+  pivots_(0) = diagonal_(0);
   for (Eigen::Index r = 1; r < n; ++r) {
-    lower_(r - 1) = upper_(r - 1) / pivot;
-    pivot = diagonal_(r) - upper_(r - 1) * lower_(r - 1);
+    lower_(r - 1) = upper_(r - 1) / pivots_(r - 1);
+    pivots_(r) = diagonal_(r) - upper_(r - 1) * lower_(r - 1);
     // Relative to the row's own size: every rod on one line gives pivot 0 up to rounding.
-    if (!(pivot > 1e-12 * diagonal_(r)))
+    if (!(pivots_(r) > 1e-12 * diagonal_(r)))
       throw ConstraintRankLoss("the rod constraints lose rank: every rod lies on one line (folded flat or stretched "
                                "straight)");
-    mu_(r) = (rhs(r) - upper_(r - 1) * mu_(r - 1)) / pivot;
   }
+}
+
+void ConstraintSolver::substituteTridiagonal(const Eigen::VectorXd& rhs, Eigen::Matrix2Xd& correction) {
+  const Eigen::Index n = rods_.cols();
+  mu_(0) = rhs(0) / pivots_(0);
+  for (Eigen::Index r = 1; r < n; ++r) mu_(r) = (rhs(r) - upper_(r - 1) * mu_(r - 1)) / pivots_(r);
   for (Eigen::Index r = n - 2; r >= 0; --r) mu_(r) -= lower_(r) * mu_(r + 1);
   // x = M^-1 G^T mu: hinge p_h ends rod h-1 and starts rod h.
   for (Eigen::Index h = 1; h < n; ++h)
     correction.col(h - 1) = inverseMass_(h) * (rods_.col(h - 1) * mu_(h - 1) - rods_.col(h) * mu_(h));
 }
 
-void ConstraintSolver::solveKkt(const Eigen::VectorXd& rhs, Eigen::Matrix2Xd& correction) {
+void ConstraintSolver::factorKkt() {
   const Eigen::Index n = rods_.cols();
   Eigen::SparseMatrix<double>& K = kkt_->matrix;
   for (Eigen::Index r = 0; r < n; ++r)
@@ -116,6 +129,10 @@ void ConstraintSolver::solveKkt(const Eigen::VectorXd& rhs, Eigen::Matrix2Xd& co
   kkt_->lu.factorize(K);
   if (kkt_->lu.info() != Eigen::Success)
     throw ConstraintRankLoss("the rod constraints lose rank (KKT factorisation failed): every rod lies on one line");
+}
+
+void ConstraintSolver::substituteKkt(const Eigen::VectorXd& rhs, Eigen::Matrix2Xd& correction) {
+  const Eigen::Index n = rods_.cols();
   kkt_->rhs.setZero();
   for (Eigen::Index r = 0; r < n; ++r) kkt_->rhs(Kkt::mu(r)) = rhs(r);
   kkt_->solution = kkt_->lu.solve(kkt_->rhs);

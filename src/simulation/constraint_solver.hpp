@@ -35,6 +35,10 @@ class ConstraintSolver {
   // The multipliers mu of the last solve (one per rod): correction = M^-1 G^T mu, where (G^T mu) at hinge p_h is
   // D_(h-1) mu_(h-1) - D_h mu_h. The Jacobi fields' linearisation needs them (simulation/jacobi_system.hpp).
   const Eigen::VectorXd& multipliers() const { return mu_; }
+  // solve() for another right-hand side at the hinges of the last solve(): its factorisation is reused, and the
+  // numbers are those solve() would give. The rod vectors D_k of those hinges (2 x n) as solve() computed them.
+  void solveAgain(const Eigen::VectorXd& rhs, Eigen::Matrix2Xd& correction);
+  const Eigen::Matrix2Xd& rodVectorsOfLastSolve() const { return rods_; }
 
   // Rod vectors D_k = p_k - p_(k-1), k = 1..n, pins included: 2 x n.
   void rodVectors(const Eigen::Matrix2Xd& hinges, Eigen::Matrix2Xd& rods) const;
@@ -42,14 +46,16 @@ class ConstraintSolver {
   static void relativeVelocities(const Eigen::Matrix2Xd& velocities, Eigen::Matrix2Xd& relative);
 
  private:
-  void solveTridiagonal(const Eigen::VectorXd& rhs, Eigen::Matrix2Xd& correction);
-  void solveKkt(const Eigen::VectorXd& rhs, Eigen::Matrix2Xd& correction);
+  void factorTridiagonal();
+  void substituteTridiagonal(const Eigen::VectorXd& rhs, Eigen::Matrix2Xd& correction);
+  void factorKkt();
+  void substituteKkt(const Eigen::VectorXd& rhs, Eigen::Matrix2Xd& correction);
 
   double baseLength_;
   Eigen::VectorXd inverseMass_;  // w_h for p_0..p_n: 0 at the pins
   bool diagonalMass_;
   Eigen::Matrix2Xd rods_;
-  Eigen::VectorXd lower_, diagonal_, upper_, mu_;  // Thomas work space
+  Eigen::VectorXd lower_, diagonal_, upper_, pivots_, mu_;  // Thomas work space
   struct Kkt;
   std::unique_ptr<Kkt> kkt_;
 };

@@ -3,6 +3,7 @@
 // plus the hooks a run needs between steps. Two kinds exist: ChartSystem (coordinates and rates in a
 // chart of the sphere) and AmbientSystem (hinge positions and velocities under rod constraints).
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -53,6 +54,10 @@ class GeodesicSystem {
   virtual StepInvariants stepInvariants(const State& y, double previousT) const = 0;
   // A short description of the state for failure reports ("chart 1, coords (..)").
   virtual std::string describe(const State& y) const = 0;
+  // How many leading components of y are the motion itself. The adaptive integrators' step-size control
+  // reads only these; what follows (the Jacobi fields) is carried along by the same steps and stages, so the
+  // motion is the same, to the bit, with or without it.
+  virtual std::size_t motionSize(const State& y) const { return y.size(); }
 };
 
 }  // namespace sl

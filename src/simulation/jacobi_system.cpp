@@ -140,31 +140,34 @@ void JacobiSystem::derivative(const State& y, State& dydt) const {
   const Eigen::Index h = hinges_, n = h + 1;
   const std::size_t block = static_cast<std::size_t>(4 * h);
   dydt.resize(y.size());
-  const ConstHinges q(y.data(), 2, h), v(y.data() + 2 * h, 2, h);
+  // Copied into work space sized once (the solver takes matrices: a map would be copied into a new one).
+  hingePositions_ = ConstHinges(y.data(), 2, h);
+  const ConstHinges v(y.data() + 2 * h, 2, h);
   // The motion, as AmbientSystem::derivative computes it (the same solve, so the same numbers).
   ConstraintSolver::relativeVelocities(v, relative_);
   rhs_ = -relative_.colwise().squaredNorm().transpose();
-  solver_.solve(q, rhs_, acceleration_);
+  solver_.solve(hingePositions_, rhs_, acceleration_);
   mu_ = solver_.multipliers();
-  solver_.rodVectors(q, rods_);
+  const Eigen::Matrix2Xd& rods = solver_.rodVectorsOfLastSolve();
   Hinges(dydt.data(), 2, h) = v;
   Hinges(dydt.data() + 2 * h, 2, h) = acceleration_;
   ConstraintSolver::relativeVelocities(acceleration_, relativeAcceleration_);
   force_.resize(2, h);
   for (int i = 0; i < fields_; ++i) {
     const std::size_t offset = block * static_cast<std::size_t>(i + 1);
-    const ConstHinges dq(y.data() + offset, 2, h), dv(y.data() + offset + 2 * h, 2, h);
-    ConstraintSolver::relativeVelocities(dq, dRods_);
-    ConstraintSolver::relativeVelocities(dv, dRelative_);
+    fieldQ_ = ConstHinges(y.data() + offset, 2, h);
+    fieldV_ = ConstHinges(y.data() + offset + 2 * h, 2, h);
+    ConstraintSolver::relativeVelocities(fieldQ_, dRods_);
+    ConstraintSolver::relativeVelocities(fieldV_, dRelative_);
     for (Eigen::Index p = 1; p <= h; ++p)  // dG^T mu at hinge p
       force_.col(p - 1) = dRods_.col(p - 1) * mu_(p - 1) - dRods_.col(p) * mu_(p);
     inverseMassTimes(force_, first_);  // M^-1 dG^T mu
     ConstraintSolver::relativeVelocities(first_, relativeFirst_);
     for (Eigen::Index k = 0; k < n; ++k)
       rhs_(k) = -2.0 * relative_.col(k).dot(dRelative_.col(k)) - dRods_.col(k).dot(relativeAcceleration_.col(k)) -
-                rods_.col(k).dot(relativeFirst_.col(k));
-    solver_.solve(q, rhs_, correction_);
-    Hinges(dydt.data() + offset, 2, h) = dv;
+                rods.col(k).dot(relativeFirst_.col(k));
+    solver_.solveAgain(rhs_, correction_);  // the same hinges: the motion's factorisation
+    Hinges(dydt.data() + offset, 2, h) = fieldV_;
     Hinges(dydt.data() + offset + 2 * h, 2, h) = first_ + correction_;
   }
 }

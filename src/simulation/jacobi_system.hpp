@@ -47,6 +47,8 @@ class JacobiSystem : public GeodesicSystem {
     return motion_.stepInvariants(y, previousT);
   }
   std::string describe(const State& y) const override { return motion_.describe(y); }
+  // The step control watches the motion only: the fields ride along on its steps.
+  std::size_t motionSize(const State&) const override { return static_cast<std::size_t>(4 * hinges_); }
 
   int fieldCount() const { return fields_; }
   JacobiState jacobiAt(const State& y) const;
@@ -62,7 +64,7 @@ class JacobiSystem : public GeodesicSystem {
   State start_;
   mutable ConstraintSolver solver_;
   // Work space of derivative(): sized once, so an evaluation allocates nothing.
-  mutable Eigen::Matrix2Xd rods_, relative_, acceleration_, relativeAcceleration_, dRods_, dRelative_, force_, first_,
+  mutable Eigen::Matrix2Xd hingePositions_, fieldQ_, fieldV_, relative_, acceleration_, relativeAcceleration_, dRods_, dRelative_, force_, first_,
       relativeFirst_, correction_;
   mutable Eigen::VectorXd rhs_, mu_;
 };

@@ -1,6 +1,9 @@
 #include "simulation/steppers.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include <boost/numeric/odeint.hpp>
 
@@ -9,6 +12,32 @@ namespace sl {
 namespace odeint = boost::numeric::odeint;
 
 namespace {
+
+// Odeint's range algebra, with one change: its norm, which Odeint uses only to reduce the error estimate of a
+// step (error checker) to one number, reads the state's first `controlled` components. Every other operation,
+// and so every stage and every accepted step, is the range algebra's, component by component: the leading
+// components evolve exactly as they would in a state that holds nothing else, and the trailing ones (Jacobi
+// fields) follow the steps the leading ones chose.
+struct MotionAlgebra : odeint::range_algebra {
+  MotionAlgebra() : controlled(constructionDefault) {}
+  explicit MotionAlgebra(std::size_t leading) : controlled(leading) {}
+
+  template <class S>
+  double norm_inf(const S& s) const {
+    using std::abs;
+    using std::max;
+    double out = 0;  // as odeint::detail::norm_inf, over a prefix
+    const std::size_t end = std::min(controlled, static_cast<std::size_t>(s.size()));
+    for (std::size_t i = 0; i < end; ++i) out = max(out, abs(s[i]));
+    return out;
+  }
+
+  std::size_t controlled;
+  // For the steppers that build their algebra themselves (Bulirsch-Stoer with dense output takes none from
+  // its caller): the value a default-constructed algebra takes, set around their construction only.
+  static thread_local std::size_t constructionDefault;
+};
+thread_local std::size_t MotionAlgebra::constructionDefault = std::numeric_limits<std::size_t>::max();
 
 // Odeint calls systems as f(x, dxdt, t); ours are autonomous.
 struct OdeintSystem {
@@ -60,6 +89,10 @@ template <class Dense>
 class DenseOutput : public Stepper {
  public:
   DenseOutput(Dense dense, double firstStep) : dense_(std::move(dense)), suggested_(firstStep) {}
+  // Built in place, from Dense's own constructor arguments.
+  template <class... Args>
+  DenseOutput(double firstStep, std::in_place_t, Args&&... args)
+      : dense_(std::forward<Args>(args)...), suggested_(firstStep) {}
 
   void initialize(const GeodesicSystem&, const State& y, double t) override {
     if (started_) suggested_ = dense_.current_time_step();
@@ -94,7 +127,8 @@ class DenseOutput : public Stepper {
 // untouched (13 evaluations per in-between sample).
 class Rkf78 : public Stepper {
  public:
-  explicit Rkf78(double tolerance) : controlled_(odeint::make_controlled(tolerance, tolerance, Method())) {}
+  Rkf78(double tolerance, std::size_t motionSize)
+      : controlled_(odeint::make_controlled(tolerance, tolerance, Method(MotionAlgebra(motionSize)))) {}
 
   void initialize(const GeodesicSystem& system, const State& y, double t) override {
     system_ = &system;
@@ -122,7 +156,7 @@ class Rkf78 : public Stepper {
   }
 
  private:
-  using Method = odeint::runge_kutta_fehlberg78<State>;
+  using Method = odeint::runge_kutta_fehlberg78<State, double, State, double, MotionAlgebra>;
   static constexpr int maxFailures = 500;
   odeint::controlled_runge_kutta<Method> controlled_;
   Method plain_;
@@ -138,20 +172,30 @@ std::unique_ptr<Stepper> dense(Dense stepper, double firstStep) {
 
 }  // namespace
 
-std::unique_ptr<Stepper> makeStepper(Integrator integrator, double tolerance, double step) {
+std::unique_ptr<Stepper> makeStepper(Integrator integrator, double tolerance, double step, std::size_t motionSize) {
   // A cautious first step; the controllers grow it within a few steps.
   const double firstStep = 1e-3;
   switch (integrator) {
     case Integrator::Rk4:
       return std::make_unique<Rk4Hermite>(step);
     case Integrator::Dopri5:
-      return dense(odeint::make_dense_output(tolerance, tolerance, odeint::runge_kutta_dopri5<State>()), firstStep);
+      return dense(odeint::make_dense_output(
+                       tolerance, tolerance,
+                       odeint::runge_kutta_dopri5<State, double, State, double, MotionAlgebra>(MotionAlgebra(motionSize))),
+                   firstStep);
     case Integrator::Rkf78:
-      return std::make_unique<Rkf78>(tolerance);
-    case Integrator::BulirschStoer:
+      return std::make_unique<Rkf78>(tolerance, motionSize);
+    case Integrator::BulirschStoer: {
       // control_interpolation: the error of the dense output itself enters the step control, so that samples
       // between the (long) extrapolation steps are as accurate as the steps.
-      return dense(odeint::bulirsch_stoer_dense_out<State>(tolerance, tolerance, 1.0, 1.0, 0.0, true), firstStep);
+      struct Scope {
+        explicit Scope(std::size_t n) { MotionAlgebra::constructionDefault = n; }
+        ~Scope() { MotionAlgebra::constructionDefault = std::numeric_limits<std::size_t>::max(); }
+      } scope(motionSize);
+      using Extrapolation = odeint::bulirsch_stoer_dense_out<State, double, State, double, MotionAlgebra>;
+      return std::make_unique<DenseOutput<Extrapolation>>(firstStep, std::in_place, tolerance, tolerance, 1.0, 1.0, 0.0,
+                                                          true);
+    }
   }
   throw std::invalid_argument("unknown integrator");
 }

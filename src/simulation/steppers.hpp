@@ -7,6 +7,8 @@
 //                  step from the step's start.
 //   bulirsch-stoer Boost.Odeint's adaptive extrapolation method with dense output, for tight tolerances.
 
+#include <cstddef>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -29,7 +31,10 @@ class Stepper {
   virtual void stateAt(double t, State& y) = 0;
 };
 
-// tolerance: absolute and relative (adaptive integrators); step: rk4's step.
-std::unique_ptr<Stepper> makeStepper(Integrator integrator, double tolerance, double step);
+// tolerance: absolute and relative (adaptive integrators); step: rk4's step. motionSize: how many leading
+// components of the state the adaptive integrators' error control reads (GeodesicSystem::motionSize); the rest
+// are integrated by the same steps and stages without being watched.
+std::unique_ptr<Stepper> makeStepper(Integrator integrator, double tolerance, double step,
+                                     std::size_t motionSize = std::numeric_limits<std::size_t>::max());
 
 }  // namespace sl

@@ -37,6 +37,7 @@ class CountingSystem : public GeodesicSystem {
     return inner_->stepInvariants(y, previousT);
   }
   std::string describe(const State& y) const override { return inner_->describe(y); }
+  std::size_t motionSize(const State& y) const override { return inner_->motionSize(y); }
   mutable long evaluations = 0;
 
  private:
@@ -214,8 +215,8 @@ Trajectory::Trajectory(const Chain& chain, const InitialState& start, const RunC
   std::unique_ptr<GeodesicSystem> system = makeSystem(run.bound, start, config);
   run.jacobi = dynamic_cast<const JacobiSystem*>(system.get());
   run.system = std::make_unique<CountingSystem>(std::move(system));
-  run.stepper = makeStepper(config.integrator, config.tolerance, config.step);
   run.start = run.system->initialState();
+  run.stepper = makeStepper(config.integrator, config.tolerance, config.step, run.system->motionSize(run.start));
   const StepInvariants summary = run.system->stepInvariants(
       run.start, start.spherePoint.size() >= 2 ? std::atan2(start.spherePoint(1), start.spherePoint(0)) : 0.0);
   run.initialEnergy = summary.energy;
