@@ -35,7 +35,7 @@ namespace fs = std::filesystem;
 struct RenderArguments {
   std::vector<std::string> overrides;  // --set KEY=VALUE
   std::string scene, out, frames, video, size, videoQuality;
-  bool png = false, noPng = false, quiet = false, resume = false;
+  bool png = false, noPng = false, quiet = false, resume = false, replace = false;
 };
 
 // What a render will do, after the scene's choices and the options are combined and checked.
@@ -78,6 +78,8 @@ RenderPlan planRender(const RenderArguments& args) {
     throw CommandExit(kExitBadInput,
                       "--resume completes PNG frames; a video is always encoded whole (drop --video or --resume)");
   }
+  if (plan.resume && args.replace)
+    throw CommandExit(kExitBadInput, "--resume joins the render in the folder and --replace removes it: give one");
   const std::string videoPath = args.video.empty() ? "output.video" : "--video";
   const auto format = videoFormatOfPath(plan.video);
   std::vector<SceneProblem> problems =
@@ -126,7 +128,7 @@ void checkSpaceForFrames(const RenderPlan& plan, Renderer& renderer, FrameBuilde
   const int first = plan.range.first;
   const Image image = renderer.render(builder.frame(first));
   FrameSpaceNeed need{plan.folder, 0, first, output::PngEncoder().encode(image).size(), image.width, image.height};
-  for (int frame = first; frame < plan.range.end; ++frame)
+  for (int frame = first; frame < plan.range.end; frame += plan.range.step)
     need.framesToWrite += !fs::exists(fs::path(plan.folder) / output::frameFileName(frame));
   refuseIfFramesCannotFit(need);
 }
@@ -136,12 +138,13 @@ void checkSpaceForFrames(const RenderPlan& plan, Renderer& renderer, FrameBuilde
 bool renderFrames(const RenderPlan& plan, output::FrameManifest* pngManifest,
                   const std::vector<output::FrameSink*>& sinks, Renderer& renderer, FrameBuilder& builder,
                   int& drawn, int& skipped) {
-  Progress progress(plan.range.end - plan.range.first, plan.quiet);
-  for (int k = plan.range.first; k < plan.range.end; ++k) {
+  Progress progress(plan.range.count(), plan.quiet);
+  long done = 0;
+  for (int k = plan.range.first; k < plan.range.end; k += plan.range.step) {
     const bool complete = plan.resume && pngManifest && pngManifest->isFrameComplete(k);
     if (complete) {
       ++skipped;
-      progress.update(k - plan.range.first + 1);
+      progress.update(++done);
       continue;
     }
     // Frames before k are sampled (not rendered) for the path and plot history.
@@ -150,7 +153,7 @@ bool renderFrames(const RenderPlan& plan, output::FrameManifest* pngManifest,
     for (size_t i = 0; i + 1 < sinks.size(); ++i) sinks[i]->consume(k, image);
     sinks.back()->consume(k, std::move(image));
     ++drawn;
-    progress.update(k - plan.range.first + 1);
+    progress.update(++done);
   }
   return true;
 }
@@ -211,7 +214,7 @@ void runRender(const RenderArguments& args) {
   std::vector<output::FrameSink*> sinks;
   if (plan.png) {
     // A whole render replaces what the folder held (the edit-render loop); shards and --resume only join.
-    const bool whole = args.frames.empty() && !plan.resume;
+    const bool whole = (args.frames.empty() && !plan.resume) || args.replace;
     try {
       pngManifest = std::make_unique<output::FrameManifest>(
           plan.folder, info, "manifest.json", output::FrameManifest::Existing::merge,
@@ -260,7 +263,7 @@ void runRender(const RenderArguments& args) {
   char rate[48];
   std::snprintf(rate, sizeof rate, " (%.1f frames/s); ", seconds > 0 ? drawn / seconds : 0.0);
   summary.print(renderSummary(plan, drawn, skipped),
-                rate + runOutcomes(scene, builder.runs(), scene.frameTime(plan.range.end - 1)));
+                rate + runOutcomes(scene, builder.runs(), scene.frameTime(plan.range.first + (plan.range.count() - 1) * plan.range.step)));
 }
 
 }  // namespace
@@ -273,7 +276,7 @@ void addRenderCommand(CLI::App& app) {
   addSceneOverrideOption(*command, args->overrides);
   command->add_option("--out", args->out, "frame folder (default: the scene's output.folder, renders/<name>)");
   command->add_option("--frames", args->frames,
-                      "half-open range A:B of frames to render (A: or :B allowed), or K/N: shard K of N equal "
+                      "half-open range A:B of frames to render (A: or :B allowed; A:B:STEP every STEP-th), or K/N: shard K of N equal "
                       "parts (K = 1..N, as a job array numbers its tasks); shards of one animation give "
                       "byte-identical files");
   command->add_option("--video", args->video,
@@ -285,6 +288,9 @@ void addRenderCommand(CLI::App& app) {
   command->add_option("--size", args->size, "override the frame size, WIDTHxHEIGHT, e.g. 640x360");
   command->add_flag("--quiet", args->quiet, "errors only: no progress, run reports or summary line");
   command->add_flag("--resume", args->resume, "skip frames whose file and manifest entry are complete (PNG only)");
+  command->add_flag("--replace", args->replace,
+                    "with --frames: remove the render the folder holds first, as a whole render does (for golden "
+                    "frames, previews)");
   command->footer(
       "Frames go to DIR/frame_00000.png ... with DIR/manifest.json (SHA-256 of pixels and files).\n"
       "Examples:\n"
