@@ -272,7 +272,7 @@ void addGeometryCommand(CLI::App& app) {
   auto args = std::make_shared<GeometryArguments>();
   CLI::App* command = app.add_subcommand(
       "geometry", "Curvature, bending and stiffness of the scene's configuration sphere (4 rods), exact");
-  command->add_option("scene", args->scene, "scene file (JSON, see scenes/README.md): its linkage is used")->required();
+  command->add_option("scene", args->scene, "scene file (JSON, see scenes/README.md; - reads standard input): its linkage is used")->required();
   addSceneOverrideOption(*command, args->overrides);
   command->add_option("--grid", args->grid, "N x N chart grid (phi from pole to pole, t periodic): CSV")
       ->check(CLI::Range(2, kMaxGrid));

@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/help_format.hpp"
+#include "cli/typo_hints.hpp"
 #include "render/renderer.hpp"
 
 namespace sl {
@@ -88,7 +89,8 @@ int runCommand(int argc, char** argv) {
       return sl::kExitOk;
     }
     if (app.get_subcommands().empty()) {
-      std::cerr << "linkage: expected a command (render, simulate, validate, ...); see linkage --help\n";
+      std::cerr << "linkage: expected a command (render, simulate, validate, ...); see linkage --help\n"
+                << sl::typoHints(app, argc, argv);
       return sl::kExitBadInput;
     }
   } catch (const CLI::CallForHelp& help) {
@@ -97,6 +99,7 @@ int runCommand(int argc, char** argv) {
     return app.exit(help);
   } catch (const CLI::ParseError& error) {
     app.exit(error);  // prints the message
+    std::cerr << sl::typoHints(app, argc, argv);
     return sl::kExitBadInput;
   } catch (const sl::CommandExit& exit) {
     if (std::string(exit.what()).size() > 0) std::cerr << exit.what() << '\n';

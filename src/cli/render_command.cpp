@@ -138,7 +138,7 @@ void checkSpaceForFrames(const RenderPlan& plan, Renderer& renderer, FrameBuilde
 bool renderFrames(const RenderPlan& plan, output::FrameManifest* pngManifest,
                   const std::vector<output::FrameSink*>& sinks, Renderer& renderer, FrameBuilder& builder,
                   int& drawn, int& skipped) {
-  Progress progress(plan.range.count(), plan.quiet);
+  Progress progress(plan.range.count(), plan.quiet, "render", "frame");
   long done = 0;
   for (int k = plan.range.first; k < plan.range.end; k += plan.range.step) {
     const bool complete = plan.resume && pngManifest && pngManifest->isFrameComplete(k);
@@ -272,7 +272,7 @@ void addRenderCommand(CLI::App& app) {
   auto args = std::make_shared<RenderArguments>();
   CLI::App* command =
       app.add_subcommand("render", "Render a scene to PNG frames (with a checksum manifest) and/or a video");
-  command->add_option("scene", args->scene, "scene file (JSON, see scenes/README.md)")->required();
+  command->add_option("scene", args->scene, "scene file (JSON, see scenes/README.md; - reads standard input)")->required();
   addSceneOverrideOption(*command, args->overrides);
   command->add_option("--out", args->out, "frame folder (default: the scene's output.folder, renders/<name>)");
   command->add_option("--frames", args->frames,

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include <CLI/CLI.hpp>
 
@@ -14,6 +15,8 @@
 #include "analysis/stability_charts.hpp"
 #include "analysis/stability_sweep.hpp"
 #include "cli/commands.hpp"
+#include "cli/progress.hpp"
+#include "cli/summary.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/number_options.hpp"
 #include "contracts/time_grid.hpp"
@@ -90,7 +93,8 @@ int detectShardCount(const StabilityArguments& args) {
   return counts.front();
 }
 
-void runStability(StabilityArguments& args) {
+// Returns what was done, for the summary line.
+std::string runStability(StabilityArguments& args) {
   StabilityOptions& options = args.options;
   if (!isStabilityKind(options.kind)) {
     std::string kinds;
@@ -112,7 +116,8 @@ void runStability(StabilityArguments& args) {
       throw CommandExit(kExitBadInput, "linkage stability --plan: found " + std::to_string(args.plan) +
                                            "; expected at most one shard per cell (" +
                                            std::to_string(options.grid * options.grid) + ")");
-    return printPlan(args);
+    printPlan(args);
+    return "a plan of " + std::to_string(args.plan) + " shards";
   }
   if (args.charts && !gnuplotAvailable())
     throw std::runtime_error("charts need gnuplot with pngcairo: apt-get install gnuplot-nox (or pass --no-charts)");
@@ -131,26 +136,32 @@ void runStability(StabilityArguments& args) {
       throw CommandExit(kExitBadInput, "linkage stability --merge: missing shards: " + missing);
     }
     writeSweepOutputs(merged, args);
-    return;
+    return "merged " + std::to_string(count) + " shards of the " + options.kind + " sweep -> " + args.out;
   }
   if (!args.shard.empty()) options.shard = parseShard(args.shard);
 
-  const bool showProgress = !args.quiet && isatty(STDERR_FILENO);
+  std::optional<Progress> progress;
   const CsvTable rows = runStabilitySweep(options, [&](long done, long total) {
-    if (showProgress && (done % 16 == 0 || done == total))
-      std::fprintf(stderr, "\r%s: %ld / %ld cells", options.kind.c_str(), done, total);
+    if (!progress) progress.emplace(total, args.quiet, "stability", "cell");
+    progress->update(done);
   });
-  if (showProgress) std::fprintf(stderr, "\n");
+  progress.reset();
 
+  const std::string sweep = options.kind + " sweep, " + std::to_string(options.grid) + " x " +
+                            std::to_string(options.grid) + " grid";
   if (options.shard.count == 1) {
     writeSweepOutputs(rows, args);
-    return;
+    return sweep + " -> " + args.out;
   }
   const std::string shardPath = stabilityShardPath(args.out, options.kind, options.shard);
   output::writeFileAtomically(shardPath, csvText(rows));
   std::cout << "wrote " << shardPath << "\n";
   CsvTable merged;  // the last shard to finish merges them all
-  if (mergeStabilityShards(args.out, options.kind, options.shard.count, merged)) writeSweepOutputs(merged, args);
+  const std::string shard = sweep + ", shard " + std::to_string(options.shard.index) + "/" +
+                            std::to_string(options.shard.count) + " -> " + shardPath;
+  if (!mergeStabilityShards(args.out, options.kind, options.shard.count, merged)) return shard;
+  writeSweepOutputs(merged, args);
+  return shard + " (the last: merged into " + args.out + ")";
 }
 
 }  // namespace
@@ -198,7 +209,7 @@ void addStabilityCommand(CLI::App& app) {
                       "skip the reference runs: failure modes and invariants only (much faster)");
   stability->add_flag("--merge", args->merge, "merge the shard files in --out instead of running");
   stability->add_flag("!--no-charts", args->charts, "skip the gnuplot heat maps");
-  stability->add_flag("--quiet", args->quiet, "no progress on stderr");
+  stability->add_flag("--quiet", args->quiet, "no progress or summary line on stderr");
   stability->add_option("--out", args->out, "output folder")->capture_default_str();
   stability->add_option("--plan", args->plan, "print the sweep as N shard jobs (a job array, plain commands, the merge)")
       ->check(CLI::Range(1, 1 << 20))
@@ -217,7 +228,8 @@ void addStabilityCommand(CLI::App& app) {
       args->givenOptions += " " + shellWord(values);
     }
     if (stability->get_option("--out")->count() == 0) args->givenOptions += " --out " + shellWord(args->out);
-    runStability(*args);
+    const CommandSummary summary("stability", args->quiet);
+    summary.print(runStability(*args));
   });
 }
 

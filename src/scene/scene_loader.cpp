@@ -11,6 +11,7 @@
 #include "contracts/limits.hpp"
 #include "contracts/registry.hpp"
 #include "scene/did_you_mean.hpp"
+#include "scene/title_placeholders.hpp"
 #include "scene/json_error_path.hpp"
 #include "scene/json_fields.hpp"
 #include "scene/output_folder.hpp"
@@ -618,6 +619,7 @@ Scene parseScene(const std::string& text, const std::string& file, const std::ve
   detail::readView(top.has("view") ? *top.member("view") : json::object(), scene, rods.has_value(), problems);
 
   if (!problems.empty()) throw SceneError(file, std::move(problems));
+  scene.title = fillTitlePlaceholders(scene.title, scene);
   return scene;
 }
 
