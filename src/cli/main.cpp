@@ -74,6 +74,8 @@ int runCommand(int argc, char** argv) {
                          "  linkage render scenes/comparison.json --frames 0:100 --size 640x360\n\n") +
              sl::exitCodeHelp());
   sl::addRenderCommand(app);
+  sl::addStillCommand(app);
+  sl::addContactSheetCommand(app);
   sl::addSimulateCommand(app);
   sl::addValidateCommand(app);
   sl::addDiffCommand(app);

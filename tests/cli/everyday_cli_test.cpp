@@ -62,6 +62,8 @@ std::vector<CommandCase> everyCommand() {
       {"simulate", {"simulate", seam, "--csv", "t.csv"}},
       {"render", {"render", seam, "--size", "160x90", "--frames", "0:3", "--out", "r"}},
       {"diff", {"diff", "r", "r"}},
+      {"still", {"still", seam, "--time", "1", "--size", "160x90", "--out", "still.png"}},
+      {"contact-sheet", {"contact-sheet", "r", "--out", "sheet.png"}},
       {"list-methods", {"list-methods"}},
       {"bench", {"bench", "--quick", "--start", "generic", "--methods", "ambient", "--integrators", "rk4",
                  "--no-charts", "--out", "b"}},
