@@ -14,6 +14,7 @@
 #include "cli/frame_range.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/progress.hpp"
+#include "cli/render_folder.hpp"
 #include "cli/run_report.hpp"
 #include "cli/scene_input.hpp"
 #include "cli/summary.hpp"
@@ -35,7 +36,7 @@ namespace fs = std::filesystem;
 struct RenderArguments {
   std::vector<std::string> overrides;  // --set KEY=VALUE
   std::string scene, out, frames, video, size, videoQuality;
-  bool png = false, noPng = false, quiet = false, resume = false, replace = false;
+  bool png = false, noPng = false, quiet = false, resume = false, replace = false, preview = false;
 };
 
 // What a render will do, after the scene's choices and the options are combined and checked.
@@ -55,6 +56,7 @@ std::string videoFolder(const std::string& video) {
 }
 
 void applySize(const RenderArguments& args, Scene& scene) {
+  if (args.preview && args.size.empty()) scene.output.size = previewSize(scene.output.size);
   if (args.size.empty()) return;
   const auto [width, height] = parseImageSize(args.size);
   scene.output.size = {width, height};
@@ -64,8 +66,11 @@ RenderPlan planRender(const RenderArguments& args) {
   RenderPlan plan;
   plan.scene = loadSceneForCommand(args.scene, args.overrides);
   Scene& scene = plan.scene;
+  // The file's own size and frame rate (the overrides aside; a piped scene can be read only once).
+  const ImageSize ownSize = scene.output.size;
+  const int ownFps = args.overrides.empty() || args.scene == "-" ? scene.output.fps
+                                                                 : loadSceneForCommand(args.scene).output.fps;
   applySize(args, scene);
-  plan.folder = args.out.empty() ? scene.output.folder : args.out;
   plan.png = args.noPng ? false : (args.png || scene.output.png);
   plan.video = args.video.empty() ? scene.output.video : args.video;
   plan.quiet = args.quiet;
@@ -84,9 +89,6 @@ RenderPlan planRender(const RenderArguments& args) {
   const auto format = videoFormatOfPath(plan.video);
   std::vector<SceneProblem> problems =
       checkImageSize(scene.output.size, format && traits(*format).needsEvenSize, args.size.empty() ? "output" : "--size");
-  for (SceneProblem& problem : checkOutputFolder(plan.folder, args.out.empty() ? "output.folder" : "--out")) {
-    problems.push_back(problem);
-  }
   if (!plan.video.empty()) {
     for (SceneProblem& problem : checkVideoPath(plan.video, videoPath)) problems.push_back(problem);
   }
@@ -97,8 +99,12 @@ RenderPlan planRender(const RenderArguments& args) {
       problems.push_back({"--video-quality", "found \"" + args.videoQuality + "\"; expected high, medium or small"});
     }
   }
+  plan.range = parseFrameRange(args.frames.empty() ? (args.preview ? "::2" : ":") : args.frames, scene.frameCount());
+  plan.folder = args.out.empty() ? renderFolderFor(scene, ownSize, ownFps, plan.range.step, args.preview) : args.out;
+  for (SceneProblem& problem : checkOutputFolder(plan.folder, args.out.empty() ? "output.folder" : "--out")) {
+    problems.push_back(problem);
+  }
   failOnProblems(args.scene, problems);
-  plan.range = parseFrameRange(args.frames.empty() ? ":" : args.frames, scene.frameCount());
   return plan;
 }
 
@@ -215,6 +221,7 @@ void runRender(const RenderArguments& args) {
   if (plan.png) {
     // A whole render replaces what the folder held (the edit-render loop); shards and --resume only join.
     const bool whole = (args.frames.empty() && !plan.resume) || args.replace;
+    if (!whole) refuseJoiningAnotherRender(plan.folder, info);  // naming what differs, before anything is written
     try {
       pngManifest = std::make_unique<output::FrameManifest>(
           plan.folder, info, "manifest.json", output::FrameManifest::Existing::merge,
@@ -285,14 +292,22 @@ void addRenderCommand(CLI::App& app) {
   command->add_option("--video-quality", args->videoQuality, "high, medium or small (default: output.video_quality, high)");
   command->add_flag("--png", args->png, "write PNG frames (the default unless the scene says output.png: false)");
   command->add_flag("--no-png", args->noPng, "no PNG frames (with --video: the video only)");
-  command->add_option("--size", args->size, "override the frame size, WIDTHxHEIGHT, e.g. 640x360");
+  command->add_option("--size", args->size,
+                      "override the frame size, WIDTHxHEIGHT, e.g. 640x360 (without --out: into output.folder-WxH)");
+  command->add_flag("--preview", args->preview,
+                    "a quick look: a quarter of the size, every second frame (unless --frames gives a step), into "
+                    "output.folder-preview");
   command->add_flag("--quiet", args->quiet, "errors only: no progress, run reports or summary line");
   command->add_flag("--resume", args->resume, "skip frames whose file and manifest entry are complete (PNG only)");
   command->add_flag("--replace", args->replace,
                     "with --frames: remove the render the folder holds first, as a whole render does (for golden "
                     "frames, previews)");
   command->footer(
-      "Frames go to DIR/frame_00000.png ... with DIR/manifest.json (SHA-256 of pixels and files).\n"
+      "Frames go to DIR/frame_00000.png ... with DIR/manifest.json (SHA-256 of pixels and files), and the lock files\n"
+      "DIR/.manifest.json.lock and .manifest.json.active (kept: they serialise concurrent shards).\n"
+      "DIR is --out, or the scene's output.folder (renders/<name>) for its own size and frame rate; another size,\n"
+      "frame rate or a frame step goes to output.folder-640x360, -60fps, -every5; --preview to output.folder-preview.\n"
+      "A video also gets VIDEO.manifest.json beside it (the checksum of every frame encoded).\n"
       "Examples:\n"
       "  linkage render scenes/default.json\n"
       "  linkage render scenes/comparison.json --size 640x360 --video renders/comparison.mp4 --no-png\n"

@@ -81,7 +81,7 @@ TEST(RenderCli, EditAndRenderAgainReplacesTheEarlierRender) {
   writeFile(folder / "scene.json", scene);
   const ProcessResult shard =
       runLinkage({"render", "scene.json", "--size", "160x90", "--out", "out", "--frames", "0:1"}, folder.path());
-  EXPECT_EQ(shard.code, 3);
+  EXPECT_EQ(shard.code, 2);
   EXPECT_NE(shard.err.find("a whole render (without --frames or --resume) replaces it"), std::string::npos)
       << shard.err;
 }
