@@ -23,6 +23,8 @@ void addGeometryCommand(CLI::App& app);
 void addStillCommand(CLI::App& app);
 // `linkage contact-sheet`: evenly spaced frames of a render in one picture.
 void addContactSheetCommand(CLI::App& app);
+// `linkage numbers`: what a scene computes (energy, drift, stops, conjugate points, curvature) as JSON.
+void addNumbersCommand(CLI::App& app);
 // `linkage schema`: the JSON Schema of scene files.
 void addSchemaCommand(CLI::App& app);
 

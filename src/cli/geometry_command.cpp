@@ -17,6 +17,7 @@
 #include "analysis/gnuplot.hpp"
 #include "cli/commands.hpp"
 #include "cli/exit_codes.hpp"
+#include "cli/geometry_json.hpp"
 #include "cli/scene_input.hpp"
 #include "cli/summary.hpp"
 #include "contracts/csv_format.hpp"
@@ -96,18 +97,6 @@ void writeOrPrint(const std::string& file, const std::string& text) {
   } else {
     output::writeFileAtomically(file, text);
   }
-}
-
-nlohmann::json extremumJson(const SurfaceExtremum& e) { return {{"value", e.value}, {"phi", e.phi}, {"t", e.t}}; }
-
-nlohmann::json summaryJson(const CurvatureSummary& s) {
-  return {{"L", s.baseLength},
-          {"area", s.area},
-          {"total_curvature", s.totalCurvature},
-          {"gauss_bonnet_error", s.gaussBonnetError},
-          {"K_min", extremumJson(s.curvatureMin)},
-          {"K_max", extremumJson(s.curvatureMax)},
-          {"bending_max", extremumJson(s.bendingMax)}};
 }
 
 struct SweepRange {

@@ -83,6 +83,7 @@ int runCommand(int argc, char** argv) {
   sl::addBenchCommand(app);
   sl::addStabilityCommand(app);
   sl::addGeometryCommand(app);
+  sl::addNumbersCommand(app);
   sl::addSchemaCommand(app);
   try {
     app.parse(argc, argv);

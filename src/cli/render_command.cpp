@@ -1,6 +1,7 @@
 // `linkage render SCENE.json`: frames (PNG + manifest) and/or a video. The frame range, the folder and
 // the size may be overridden; --frames A:B renders a shard, --resume skips frames already complete.
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -26,6 +27,7 @@
 #include "output/video_sink.hpp"
 #include "render/renderer.hpp"
 #include "scene/output_folder.hpp"
+#include "scene/scene_overrides.hpp"
 
 namespace sl {
 
@@ -66,10 +68,14 @@ RenderPlan planRender(const RenderArguments& args) {
   RenderPlan plan;
   plan.scene = loadSceneForCommand(args.scene, args.overrides);
   Scene& scene = plan.scene;
-  // The file's own size and frame rate (the overrides aside; a piped scene can be read only once).
+  // The file's own size and frame rate: read again without the overrides only when one may have changed them
+  // (a piped scene can be read only once: its overrides count as its own).
   const ImageSize ownSize = scene.output.size;
-  const int ownFps = args.overrides.empty() || args.scene == "-" ? scene.output.fps
-                                                                 : loadSceneForCommand(args.scene).output.fps;
+  const bool outputOverridden = std::any_of(args.overrides.begin(), args.overrides.end(), [](const std::string& o) {
+    return o.rfind("output", 0) == 0 || o.rfind(kUnsetPrefix + std::string("output"), 0) == 0;
+  });
+  const int ownFps = outputOverridden && fs::is_regular_file(args.scene) ? loadSceneForCommand(args.scene).output.fps
+                                                                          : scene.output.fps;
   applySize(args, scene);
   plan.png = args.noPng ? false : (args.png || scene.output.png);
   plan.video = args.video.empty() ? scene.output.video : args.video;
