@@ -15,6 +15,7 @@
 #include "analysis/option_checks.hpp"
 #include "analysis/work_precision.hpp"
 #include "analysis/work_precision_charts.hpp"
+#include "cli/chart_formats.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "cli/summary.hpp"
@@ -37,6 +38,7 @@ struct BenchArguments {
   bool quick = false;
   bool charts = true;
   bool quiet = false;
+  std::string chartFormats;
 };
 
 std::vector<NamedStart> chosenStarts(const std::vector<std::string>& names) {
@@ -61,6 +63,7 @@ std::vector<NamedStart> chosenStarts(const std::vector<std::string>& names) {
 
 void runBench(BenchArguments& args) {
   const CommandSummary summary("bench", args.quiet);
+  const std::vector<std::string> formats = chartFormats(args.chartFormats);
   if (args.quick) {
     args.options.steps = {0.1, 0.01, 0.001};
     args.options.tolerances = {1e-4, 1e-7, 1e-10, 1e-13};
@@ -99,8 +102,11 @@ void runBench(BenchArguments& args) {
   std::cout << "Cheapest setting reaching each max position error on every start: fewest field evaluations (worst "
                "start), then its median wall time:\n"
             << table << "wrote " << csvPath << "\n";
-  if (args.charts)
-    for (const auto& png : writeWorkPrecisionCharts(points, args.out)) std::cout << "wrote " << png << "\n";
+  if (args.charts) {
+    const std::vector<std::string> pngs = writeWorkPrecisionCharts(points, args.out);
+    for (const auto& png : pngs) std::cout << "wrote " << png << "\n";
+    writeChartFormats(pngs, formats);
+  }
   summary.print(std::to_string(points.size()) + " points on " + std::to_string(starts.size()) + " start" +
                 (starts.size() == 1 ? "" : "s") + " -> " + args.out);
 }
@@ -114,7 +120,8 @@ void addBenchCommand(CLI::App& app) {
       "Each point runs one method x integrator at one step (rk4) or tolerance (adaptive) from a start and compares\n"
       "its hinge positions every --interval time units with a reference from a different method at tolerance 1e-13\n"
       "(ambient checks the intrinsic methods; embedded checks ambient).\n"
-      "Writes DIR/work-precision.csv, DIR/cheapest-settings.txt and DIR/wp-<start>-<chart>.png.\n"
+      "Writes DIR/work-precision.csv, DIR/cheapest-settings.txt and DIR/wp-<start>-<chart>.png, each chart with its\n"
+      "gnuplot script beside it (.gp: `gnuplot FILE.gp` redraws it; --chart-formats svg,pdf adds .svg and .pdf).\n"
       "Example: linkage bench --quick --start generic --start through-pole --out renders/bench");
   bench->add_option("--start", args->starts,
                     "shipped start to run (repeatable; default all: generic, seam-crossing, near-pole, through-pole, "
@@ -132,6 +139,7 @@ void addBenchCommand(CLI::App& app) {
   bench->add_flag("!--no-charts", args->charts, "skip the gnuplot charts");
   bench->add_option("--out", args->out, "output folder")->capture_default_str();
   bench->add_flag("--quiet", args->quiet, "no progress or summary line on stderr");
+  addChartFormatsOption(*bench, args->chartFormats);
   bench->callback([args] { runBench(*args); });
 }
 

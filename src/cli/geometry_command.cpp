@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/gnuplot.hpp"
+#include "cli/chart_formats.hpp"
 #include "cli/commands.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/geometry_json.hpp"
@@ -43,6 +44,7 @@ struct GeometryArguments {
   std::string chart;  // sweep chart PNG
   std::string maps;   // folder for PNG maps of K, bending, stiffness
   bool quiet = false;
+  std::string chartFormats;
 };
 
 const char* kSampleColumns = "phi,t,K,bending,stiffness_max,stiffness_min,stiffness_angle";
@@ -216,6 +218,7 @@ void runGeometry(const GeometryArguments& args) {
                       "--points FILE, --summary, --sweep-L A:B:N");
   if (!args.chart.empty() && args.sweep.empty())
     throw CommandExit(kExitBadInput, "--chart: draws the L sweep; expected --sweep-L A:B:N with it");
+  const std::vector<std::string> formats = chartFormats(args.chartFormats);
   const Scene scene = loadSceneForCommand(args.scene, args.overrides);
   if (scene.chain.rods != 4)
     throw CommandExit(kExitBadInput, args.scene + ": linkage.rods: found " + std::to_string(scene.chain.rods) +
@@ -234,6 +237,8 @@ void runGeometry(const GeometryArguments& args) {
       renderMap(grid, samples, 0, "Gaussian curvature K" + where, args.maps + "/curvature.png");
       renderMap(grid, samples, 1, "bending |II|^2" + where, args.maps + "/bending.png");
       renderMap(grid, samples, 2, "largest directional stiffness" + where, args.maps + "/stiffness.png");
+      writeChartFormats({args.maps + "/curvature.png", args.maps + "/bending.png", args.maps + "/stiffness.png"},
+                        formats);
     }
     done =
         std::to_string(n) + " x " + std::to_string(n) + " grid" + (args.maps.empty() ? "" : ", maps in " + args.maps);
@@ -248,7 +253,10 @@ void runGeometry(const GeometryArguments& args) {
     const SweepRange range = parseSweep(args.sweep, scene.chain);
     const std::vector<CurvatureSummary> sweep = curvatureSweep(scene.chain, range.first, range.last, range.count);
     writeOrPrint(args.csv, sweepCsv(sweep));
-    if (!args.chart.empty()) renderSweepChart(sweep, args.chart);
+    if (!args.chart.empty()) {
+      renderSweepChart(sweep, args.chart);
+      writeChartFormats({args.chart}, formats);
+    }
     done = "L sweep of " + std::to_string(range.count) + " values";
   }
   summary.print(done + " of \"" + scene.name + "\" (L = " + shortest(scene.chain.baseLength) + ")" +
@@ -273,8 +281,10 @@ void addGeometryCommand(CLI::App& app) {
   command->add_option("--chart", args->chart, "with --sweep-L: a PNG chart of min K, max K and area against L");
   command->add_option("--maps", args->maps, "folder for PNG maps of K, bending and stiffness over (phi, t)");
   command->add_flag("--quiet", args->quiet, "no summary line");
+  addChartFormatsOption(*command, args->chartFormats);
   command->footer(
       "Columns of --grid and --points: phi,t,K,bending,stiffness_max,stiffness_min,stiffness_angle\n"
+      "Charts (--chart, --maps) get their gnuplot script beside them (.gp); --chart-formats svg,pdf adds .svg, .pdf.\n"
       "Examples:\n  linkage geometry scenes/default.json --summary\n"
       "  linkage geometry scenes/default.json --grid 256 --csv renders/curvature.csv\n"
       "  linkage geometry scenes/default.json --sweep-L 2.1:3.9:37 --csv renders/sweep.csv --chart renders/sweep.png");

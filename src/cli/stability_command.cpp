@@ -14,6 +14,7 @@
 #include "analysis/option_checks.hpp"
 #include "analysis/stability_charts.hpp"
 #include "analysis/stability_sweep.hpp"
+#include "cli/chart_formats.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "cli/summary.hpp"
@@ -46,6 +47,7 @@ struct StabilityArguments {
   double duration = 0;  // 0: the kind's default
   bool merge = false;
   bool charts = true;
+  std::string chartFormats;
   bool quiet = false;
   std::string out = "renders/stability";
   int plan = 0;                 // --plan N: print the N shard jobs instead of running
@@ -80,8 +82,11 @@ void writeSweepOutputs(const CsvTable& rows, const StabilityArguments& args) {
   output::writeFileAtomically((std::filesystem::path(args.out) / ("stability-" + kind + "-summary.csv")).string(),
                               summaryText);
   std::cout << alignedText(summary) << "wrote " << csvPath << "\n";
-  if (args.charts)
-    for (const auto& png : writeStabilityCharts(rows, kind, args.out)) std::cout << "wrote " << png << "\n";
+  if (args.charts) {
+    const std::vector<std::string> pngs = writeStabilityCharts(rows, kind, args.out);
+    for (const auto& png : pngs) std::cout << "wrote " << png << "\n";
+    writeChartFormats(pngs, chartFormats(args.chartFormats));
+  }
 }
 
 int detectShardCount(const StabilityArguments& args) {
@@ -101,6 +106,7 @@ std::string runStability(StabilityArguments& args) {
     for (const auto& k : stabilityKindNames()) kinds += (kinds.empty() ? "" : ", ") + k;
     throw CLI::ValidationError("--kind", "unknown sweep kind '" + options.kind + "' (expected one of " + kinds + ")");
   }
+  chartFormats(args.chartFormats);  // checked before any work
   requireTolerances("--tolerance", {options.tolerance});  // what a run accepts, as bench's --tolerances
   options.methods = parseKindsOption("--methods", "method", args.methods, kMethods);
   if (!args.integrator.empty())
@@ -181,7 +187,8 @@ void addStabilityCommand(CLI::App& app) {
       "Each cell's run is compared with a different method at tolerance 1e-13 every --interval time units\n"
       "(ambient checks the others; embedded checks ambient), unless --no-reference. Energy drift and rod-length\n"
       "error are the worst over every step; without a reference only the start and the end are sampled.\n"
-      "Writes DIR/stability-<kind>.csv, -summary.csv and stability-<kind>-<method>.png.\n"
+      "Writes DIR/stability-<kind>.csv, -summary.csv and stability-<kind>-<method>.png, each chart with its gnuplot\n"
+      "script beside it (.gp; --chart-formats svg,pdf adds .svg and .pdf).\n"
       "Sharding: run `--shard K/N` for K = 1..N (any machines, same options, same --out); the last to finish\n"
       "merges, or run `--merge` afterwards. The merged files equal a single run's byte for byte.\n"
       "Example: linkage stability --kind pole --grid 32 --methods christoffel-fd,embedded,ambient");
@@ -210,6 +217,7 @@ void addStabilityCommand(CLI::App& app) {
   stability->add_flag("--merge", args->merge, "merge the shard files in --out instead of running");
   stability->add_flag("!--no-charts", args->charts, "skip the gnuplot heat maps");
   stability->add_flag("--quiet", args->quiet, "no progress or summary line on stderr");
+  addChartFormatsOption(*stability, args->chartFormats);
   stability->add_option("--out", args->out, "output folder")->capture_default_str();
   stability->add_option("--plan", args->plan, "print the sweep as N shard jobs (a job array, plain commands, the merge)")
       ->check(CLI::Range(1, 1 << 20))
