@@ -12,6 +12,29 @@ install(DIRECTORY ${CMAKE_SOURCE_DIR}/scenes/ DESTINATION ${CMAKE_INSTALL_DATADI
         FILES_MATCHING PATTERN "*.json" PATTERN "README.md")
 install(FILES ${CMAKE_SOURCE_DIR}/README.md ${CMAKE_SOURCE_DIR}/LICENSE
         DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/linkage)
+# What the installed README links to, at the same relative paths beside it, so that every link resolves.
+install(DIRECTORY ${CMAKE_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/linkage/docs)
+install(FILES ${CMAKE_SOURCE_DIR}/scenes/README.md DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/linkage/scenes)
+install(FILES ${CMAKE_SOURCE_DIR}/bench/README.md DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/linkage/bench)
+install(DIRECTORY ${CMAKE_SOURCE_DIR}/scripts/slurm/ DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/linkage/scripts/slurm)
+
+# The man page, made from the help texts (`linkage --help-all`, `--version`) by help2man (Debian package help2man,
+# in scripts/install-deps.sh).
+find_program(SL_HELP2MAN help2man)
+if(SL_HELP2MAN)
+  set(man_page ${CMAKE_BINARY_DIR}/linkage.1)
+  add_custom_command(OUTPUT ${man_page}
+    COMMAND ${SL_HELP2MAN} --no-info --help-option=--help-all --version-option=--version
+            --name "geodesics of planar linkages on their configuration spheres, rendered headless"
+            --output ${man_page} $<TARGET_FILE:linkage>
+    DEPENDS linkage
+    COMMENT "Making the man page linkage.1 from the help texts"
+    VERBATIM)
+  add_custom_target(linkage_man ALL DEPENDS ${man_page})
+  install(FILES ${man_page} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
+else()
+  message(WARNING "help2man not found: no man page is made or installed (scripts/install-deps.sh installs it)")
+endif()
 
 set(CPACK_PACKAGE_NAME linkage)
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})

@@ -11,6 +11,7 @@ packages=(
   fonts-dejavu-core ffmpeg                              # the font the frames use, video encoding
   libgtest-dev libbenchmark-dev parallel gnuplot-nox    # tests, benchmarks, sharded renders, charts
   python3-jsonschema                                    # checks scenes/scene.schema.json in the tests
+  help2man                                              # the man page, made from the help texts
   clang libclang-rt-14-dev                              # fuzzing (libFuzzer) and sanitizer runtimes
 )
 

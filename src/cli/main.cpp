@@ -69,6 +69,7 @@ int runCommand(int argc, char** argv) {
   app.formatter(std::make_shared<sl::HelpFormatter>());  // subcommands inherit it
   bool version = false;
   app.add_flag("--version", version, "print the version, commit, compiler and GL renderer, then exit");
+  app.set_help_all_flag("--help-all", "print the help of every command (the man page is made from it)");
   app.require_subcommand(0, 1);
   app.footer(std::string("Examples:\n  linkage validate scenes/default.json\n  linkage render scenes/default.json\n"
                          "  linkage render scenes/comparison.json --frames 0:100 --size 640x360\n\n") +
