@@ -21,7 +21,7 @@ long parseCount(const std::string& text) {
 FrameRange parseFrameRange(const std::string& text, int frameCount) {
   const std::string allowed = "expected A:B with 0 <= A < B <= " + std::to_string(frameCount) +
                               " (the scene has frames 0.." + std::to_string(frameCount - 1) +
-                              "), A:B:STEP with STEP >= 1, or K/N with 1 <= K <= N <= " + std::to_string(frameCount);
+                              "), A:B:STEP with STEP >= 1, one frame K, or K/N with 1 <= K <= N <= " + std::to_string(frameCount);
   if (const size_t slash = text.find('/'); slash != std::string::npos) {
     const long shard = parseCount(text.substr(0, slash)), shards = parseCount(text.substr(slash + 1));
     if (shard < 1 || shards < shard || shards > frameCount)
@@ -30,7 +30,11 @@ FrameRange parseFrameRange(const std::string& text, int frameCount) {
     return {boundary(shard - 1), boundary(shard)};
   }
   const size_t colon = text.find(':');
-  if (colon == std::string::npos) throw CommandExit(kExitBadInput, "--frames: found \"" + text + "\"; " + allowed);
+  if (colon == std::string::npos) {  // one frame K: K:K+1
+    const long frame = parseCount(text);
+    if (frame < 0 || frame >= frameCount) throw CommandExit(kExitBadInput, "--frames: found \"" + text + "\"; " + allowed);
+    return {static_cast<int>(frame), static_cast<int>(frame) + 1};
+  }
   const size_t second = text.find(':', colon + 1);
   const std::string left = text.substr(0, colon);
   const std::string right = text.substr(colon + 1, second == std::string::npos ? std::string::npos : second - colon - 1);

@@ -289,7 +289,7 @@ void addRenderCommand(CLI::App& app) {
   addSceneOverrideOption(*command, args->overrides);
   command->add_option("--out", args->out, "frame folder (default: the scene's output.folder, renders/<name>)");
   command->add_option("--frames", args->frames,
-                      "half-open range A:B of frames to render (A: or :B allowed; A:B:STEP every STEP-th), or K/N: shard K of N equal "
+                      "half-open range A:B of frames to render (A: or :B allowed; A:B:STEP every STEP-th; K one frame), or K/N: shard K of N equal "
                       "parts (K = 1..N, as a job array numbers its tasks); shards of one animation give "
                       "byte-identical files");
   command->add_option("--video", args->video,

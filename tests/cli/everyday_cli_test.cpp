@@ -157,6 +157,14 @@ TEST(EverydayCli, FramesWithAStepAndReplace) {
   for (const char* name : {"frame_00005.png", "frame_00025.png", "frame_00045.png"})
     EXPECT_EQ(readFile(folder.path() / "r" / name), readFile(folder.path() / "all" / name)) << name;
   EXPECT_EQ(render("seam.json", {"--frames", "0:10:0"}).code, 2);
+  ASSERT_EQ(runLinkage({"render", shippedScene("seam.json"), "--size", "160x90", "--out", "one", "--frames", "25",
+                        "--quiet"},
+                       folder.path())
+                .code,
+            0);  // one frame: the same as that frame of a range
+  EXPECT_EQ(readFile(folder.path() / "one/frame_00025.png"), readFile(folder.path() / "all/frame_00025.png"));
+  EXPECT_FALSE(fs::exists(folder.path() / "one/frame_00026.png"));
+  EXPECT_EQ(render("seam.json", {"--frames", "301"}).code, 2);
   // Another scene's range only joins the same render; --replace removes the earlier one first.
   EXPECT_EQ(render("comparison.json", {"--frames", "0:2"}).code, 2);
   EXPECT_EQ(render("comparison.json", {"--frames", "0:2", "--replace"}).code, 0);
