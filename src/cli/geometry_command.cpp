@@ -2,6 +2,7 @@
 // exact Gaussian curvature, bending and stiffness on a grid or at given points, a summary with the Gauss-Bonnet
 // integral and the extrema, and a sweep over L (docs/geometry.md).
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -19,6 +20,7 @@
 #include "cli/commands.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/geometry_json.hpp"
+#include "cli/progress.hpp"
 #include "cli/scene_input.hpp"
 #include "cli/summary.hpp"
 #include "contracts/csv_format.hpp"
@@ -229,7 +231,16 @@ void runGeometry(const GeometryArguments& args) {
   if (args.grid > 0 || !args.maps.empty()) {
     const int n = args.grid > 0 ? args.grid : kDefaultMapGrid;
     const ChartGrid grid = uniformChartGrid(n, n);
-    const std::vector<CurvatureSample> samples = curvatureGrid(surface, grid.phis, grid.ts);
+    // Row blocks of the grid in turn (each on all cores), for progress lines at every tenth; the same samples.
+    std::vector<CurvatureSample> samples;
+    const std::size_t block = std::max<std::size_t>(1, grid.phis.size() / 20);
+    Progress progress(long(grid.phis.size()), args.quiet, "geometry", "grid row");
+    for (std::size_t first = 0; first < grid.phis.size(); first += block) {
+      const std::vector<double> phis(grid.phis.begin() + long(first),
+                                     grid.phis.begin() + long(std::min(grid.phis.size(), first + block)));
+      for (const CurvatureSample& sample : curvatureGrid(surface, phis, grid.ts)) samples.push_back(sample);
+      progress.update(long(first + phis.size()));
+    }
     if (!args.csv.empty() || args.maps.empty()) writeOrPrint(args.csv, samplesCsv(samples));
     if (!args.maps.empty()) {
       std::filesystem::create_directories(args.maps);

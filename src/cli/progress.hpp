@@ -1,5 +1,5 @@
 #pragma once
-// Progress of long work on stderr, the one rule for every command (frames, grid cells, bench points):
+// Progress of long work on stderr, the one rule for every command (frames, sweep cells, bench points, grid rows):
 // - stderr a terminal: one line redrawn in place ("frame 120/601  31.5 frames/s  ETA 0:15"), at most five
 //   times a second;
 // - stderr a file or pipe (a cluster job's log): a whole line each time another tenth of the work is done

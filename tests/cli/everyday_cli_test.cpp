@@ -44,6 +44,12 @@ TEST(EverydayCli, ProgressLinesInALog) {
   ASSERT_EQ(sweep.code, 0) << sweep.err;
   EXPECT_EQ(countOf(sweep.err, "linkage stability: cell "), 10) << sweep.err;
   EXPECT_NE(sweep.err.find("cell 100/100 (100%)"), std::string::npos) << sweep.err;
+  // Grid rows of a curvature grid, likewise; the CSV is the same as without progress (rows computed in blocks).
+  const ProcessResult grid =
+      runLinkage({"geometry", shippedScene("default.json"), "--grid", "40", "--csv", "k.csv"}, folder.path());
+  ASSERT_EQ(grid.code, 0) << grid.err;
+  EXPECT_EQ(countOf(grid.err, "linkage geometry: grid row "), 10) << grid.err;
+  EXPECT_NE(grid.err.find("grid row 40/40 (100%)"), std::string::npos) << grid.err;
   const ProcessResult quiet = runLinkage(
       {"render", shippedScene("seam.json"), "--size", "160x90", "--frames", "0:100", "--out", "r", "--quiet"},
       folder.path());
