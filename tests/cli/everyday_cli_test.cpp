@@ -231,5 +231,27 @@ TEST(EverydayCli, TitlePlaceholdersFollowOverrides) {
   EXPECT_FALSE(readFile(folder.path() / "set/frame_00000.png") == readFile(folder.path() / "stale/frame_00000.png"));
 }
 
+// The rules of docs/hardening.md for the newer commands: standard output checked before exit, a file that cannot
+// be written fails the command and leaves nothing.
+TEST(EverydayCli, NewerCommandsKeepTheOutputRules) {
+  TempFolder folder;
+  const std::string linkage = shellQuoted(linkageBinary()), scene = shellQuoted(shippedScene("seam.json"));
+  const ProcessResult full = runShell(linkage + " numbers " + scene + " --quiet > /dev/full", folder.path());
+  EXPECT_EQ(full.code, 3) << full.err;
+  EXPECT_NE(full.err.find("standard output"), std::string::npos) << full.err;
+  const ProcessResult file = runShell(linkage + " numbers " + scene + " --quiet > out.json", folder.path());
+  EXPECT_EQ(file.code, 0) << file.err;
+  writeFile(folder.path() / "plain", "a file, not a folder");  // so the --out below cannot be written, even as root
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"still", shippedScene("seam.json"), "--time", "1", "--size", "160x90", "--out",
+                                 "plain/s.png"},
+        std::vector<std::string>{"numbers", shippedScene("seam.json"), "--out", "plain/n.json"}}) {
+    const ProcessResult refused = runLinkage(args, folder.path());
+    EXPECT_NE(refused.code, 0) << args[0];
+    EXPECT_NE(refused.err.find("plain/"), std::string::npos) << args[0] << ": " << refused.err;
+  }
+  EXPECT_EQ(readFile(folder.path() / "plain"), "a file, not a folder");
+}
+
 }  // namespace
 }  // namespace sl::testing
