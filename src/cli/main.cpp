@@ -72,7 +72,11 @@ int runCommand(int argc, char** argv) {
   app.set_help_all_flag("--help-all", "print the help of every command (the man page is made from it)");
   app.require_subcommand(0, 1);
   app.footer(std::string("Examples:\n  linkage validate scenes/default.json\n  linkage render scenes/default.json\n"
-                         "  linkage render scenes/comparison.json --frames 0:100 --size 640x360\n\n") +
+                         "  linkage render scenes/comparison.json --frames 0:100 --size 640x360\n"
+                         "  linkage render scenes/default.json --preview\n"
+                         "  linkage still scenes/default.json --time 10 --out default-t10.png\n"
+                         "  linkage numbers scenes/jacobi.json\n"
+                         "A guide by task: docs/guide.md (installed: share/doc/linkage/docs/guide.md).\n\n") +
              sl::exitCodeHelp());
   sl::addRenderCommand(app);
   sl::addStillCommand(app);
