@@ -18,22 +18,9 @@ install(FILES ${CMAKE_SOURCE_DIR}/scenes/README.md DESTINATION ${CMAKE_INSTALL_D
 install(FILES ${CMAKE_SOURCE_DIR}/bench/README.md DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/linkage/bench)
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/scripts/slurm/ DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/linkage/scripts/slurm)
 
-# The man page, made from the help texts (`linkage --help-all`, `--version`) by help2man (Debian package help2man,
-# in scripts/install-deps.sh).
-find_program(SL_HELP2MAN help2man)
+# The man page (made by src/cli/CMakeLists.txt each time linkage is linked, when help2man is found).
 if(SL_HELP2MAN)
-  set(man_page ${CMAKE_BINARY_DIR}/linkage.1)
-  add_custom_command(OUTPUT ${man_page}
-    COMMAND ${SL_HELP2MAN} --no-info --help-option=--help-all --version-option=--version
-            --name "geodesics of planar linkages on their configuration spheres, rendered headless"
-            --output ${man_page} $<TARGET_FILE:linkage>
-    DEPENDS linkage
-    COMMENT "Making the man page linkage.1 from the help texts"
-    VERBATIM)
-  add_custom_target(linkage_man ALL DEPENDS ${man_page})
-  install(FILES ${man_page} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
-else()
-  message(WARNING "help2man not found: no man page is made or installed (scripts/install-deps.sh installs it)")
+  install(FILES ${CMAKE_BINARY_DIR}/linkage.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
 endif()
 
 set(CPACK_PACKAGE_NAME linkage)
