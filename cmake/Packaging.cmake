@@ -12,6 +12,16 @@ install(DIRECTORY ${CMAKE_SOURCE_DIR}/scenes/ DESTINATION ${CMAKE_INSTALL_DATADI
         FILES_MATCHING PATTERN "*.json" PATTERN "README.md")
 install(FILES ${CMAKE_SOURCE_DIR}/README.md ${CMAKE_SOURCE_DIR}/LICENSE
         DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/linkage)
+# What the installed README links to, at the same relative paths beside it, so that every link resolves.
+install(DIRECTORY ${CMAKE_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/linkage/docs)
+install(FILES ${CMAKE_SOURCE_DIR}/scenes/README.md DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/linkage/scenes)
+install(FILES ${CMAKE_SOURCE_DIR}/bench/README.md DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/linkage/bench)
+install(DIRECTORY ${CMAKE_SOURCE_DIR}/scripts/slurm/ DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/linkage/scripts/slurm)
+
+# The man page (made by src/cli/CMakeLists.txt each time linkage is linked, when help2man is found).
+if(SL_HELP2MAN)
+  install(FILES ${CMAKE_BINARY_DIR}/linkage.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
+endif()
 
 set(CPACK_PACKAGE_NAME linkage)
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})

@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <algorithm>
+#include <iterator>
 
 namespace sl {
 
@@ -38,15 +40,9 @@ std::string gnuplotPngPreamble(const std::string& pngPath, int width, int height
          " enhanced font 'DejaVu Sans,10'\nset output " + gnuplotQuote(pngPath) + "\n";
 }
 
-void renderGnuplotChart(const std::string& script, const std::string& pngPath) {
-  const std::string scriptPath = std::filesystem::path(pngPath).replace_extension(".gp").string();
-  {
-    std::ofstream out(scriptPath, std::ios::trunc);
-    if (!out) throw std::runtime_error(scriptPath + ": cannot open for writing");
-    out << script;
-    out.close();
-    if (!out) throw std::runtime_error(scriptPath + ": cannot write (disk full?)");
-  }
+namespace {
+
+void pipeToGnuplot(const std::string& script, const std::string& scriptPath) {
   // gnuplot reads the script from the pipe; its own messages go to our stderr.
   FILE* pipe = popen("gnuplot", "w");
   if (!pipe) throw std::runtime_error("cannot start gnuplot (install the Debian package gnuplot-nox)");
@@ -57,6 +53,70 @@ void renderGnuplotChart(const std::string& script, const std::string& pngPath) {
     throw std::runtime_error("gnuplot failed on " + scriptPath + " (exit status " +
                              std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
                              "; is gnuplot-nox installed?)");
+}
+
+}  // namespace
+
+void renderGnuplotChart(const std::string& script, const std::string& pngPath) {
+  const std::string scriptPath = std::filesystem::path(pngPath).replace_extension(".gp").string();
+  {
+    std::ofstream out(scriptPath, std::ios::trunc);
+    if (!out) throw std::runtime_error(scriptPath + ": cannot open for writing");
+    out << script;
+    out.close();
+    if (!out) throw std::runtime_error(scriptPath + ": cannot write (disk full?)");
+  }
+  pipeToGnuplot(script, scriptPath);
+}
+
+std::vector<std::string> parseChartFormats(const std::string& list) {
+  std::vector<std::string> formats;
+  std::size_t start = 0;
+  while (start <= list.size() && !list.empty()) {
+    const std::size_t comma = list.find(',', start);
+    const std::string format = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    if (format != "svg" && format != "pdf" && format != "png")
+      throw std::invalid_argument("found \"" + format + "\"; expected svg, pdf or png, comma-separated");
+    if (format != "png" && std::find(formats.begin(), formats.end(), format) == formats.end())
+      formats.push_back(format);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return formats;
+}
+
+std::vector<std::string> renderChartAs(const std::string& pngPath, const std::vector<std::string>& formats) {
+  const std::string scriptPath = std::filesystem::path(pngPath).replace_extension(".gp").string();
+  std::ifstream in(scriptPath);
+  if (!in) throw std::runtime_error(scriptPath + ": cannot read the chart's script");
+  const std::string script((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // The preamble's two lines (gnuplotPngPreamble): "set terminal pngcairo size W,H ..." and "set output '...'".
+  const std::string terminal = "set terminal pngcairo size ";
+  const std::size_t at = script.find(terminal);
+  const std::size_t lineEnd = at == std::string::npos ? at : script.find('\n', at);
+  const std::size_t outputAt = lineEnd == std::string::npos ? lineEnd : script.find("set output ", lineEnd);
+  const std::size_t outputEnd = outputAt == std::string::npos ? outputAt : script.find('\n', outputAt);
+  if (outputEnd == std::string::npos) throw std::runtime_error(scriptPath + ": no pngcairo terminal to replace");
+  int width = 0, height = 0;
+  if (std::sscanf(script.c_str() + at + terminal.size(), "%d,%d", &width, &height) != 2)
+    throw std::runtime_error(scriptPath + ": cannot read the chart's size");
+  std::vector<std::string> written;
+  for (const std::string& format : formats) {
+    const std::string path = std::filesystem::path(pngPath).replace_extension("." + format).string();
+    char size[64];
+    if (format == "pdf")
+      std::snprintf(size, sizeof size, "%gin,%gin", width / 100.0, height / 100.0);
+    else
+      std::snprintf(size, sizeof size, "%d,%d", width, height);
+    const std::string preamble = std::string("set terminal ") + (format == "pdf" ? "pdfcairo" : "svg") + " size " +
+                                 size + (format == "svg" ? " dynamic background '#ffffff'" : "") +
+                                 " enhanced font 'DejaVu Sans,10'\nset output " + gnuplotQuote(path);
+    std::string other = script;
+    other.replace(at, outputEnd - at, preamble);
+    pipeToGnuplot(other, scriptPath);
+    written.push_back(path);
+  }
+  return written;
 }
 
 }  // namespace sl

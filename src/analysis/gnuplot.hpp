@@ -28,4 +28,12 @@ std::string gnuplotPngPreamble(const std::string& pngPath, int width, int height
 // std::runtime_error with gnuplot's exit status when it fails or is missing.
 void renderGnuplotChart(const std::string& script, const std::string& pngPath);
 
+// The chart formats besides PNG, for papers: "svg" (gnuplot's svg terminal) and "pdf" (pdfcairo), at the PNG's
+// size (100 pixels an inch for PDF). Parses "svg,pdf"; throws std::invalid_argument naming what is allowed.
+std::vector<std::string> parseChartFormats(const std::string& list);
+
+// Renders the chart pngPath was made from (its script, pngPath with .gp) again in each format, beside it
+// (pngPath with .svg / .pdf); returns the files written. Throws std::runtime_error as renderGnuplotChart.
+std::vector<std::string> renderChartAs(const std::string& pngPath, const std::vector<std::string>& formats);
+
 }  // namespace sl

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include <CLI/CLI.hpp>
 
@@ -14,7 +15,10 @@
 #include "analysis/option_checks.hpp"
 #include "analysis/work_precision.hpp"
 #include "analysis/work_precision_charts.hpp"
+#include "cli/chart_formats.hpp"
 #include "cli/commands.hpp"
+#include "cli/progress.hpp"
+#include "cli/summary.hpp"
 #include "cli/number_options.hpp"
 #include "contracts/time_grid.hpp"
 #include "contracts/registry.hpp"
@@ -33,6 +37,8 @@ struct BenchArguments {
   std::string out = "renders/bench";
   bool quick = false;
   bool charts = true;
+  bool quiet = false;
+  std::string chartFormats;
 };
 
 std::vector<NamedStart> chosenStarts(const std::vector<std::string>& names) {
@@ -56,6 +62,8 @@ std::vector<NamedStart> chosenStarts(const std::vector<std::string>& names) {
 }
 
 void runBench(BenchArguments& args) {
+  const CommandSummary summary("bench", args.quiet);
+  const std::vector<std::string> formats = chartFormats(args.chartFormats);
   if (args.quick) {
     args.options.steps = {0.1, 0.01, 0.001};
     args.options.tolerances = {1e-4, 1e-7, 1e-10, 1e-13};
@@ -78,14 +86,14 @@ void runBench(BenchArguments& args) {
     throw std::runtime_error("charts need gnuplot with pngcairo: apt-get install gnuplot-nox (or pass --no-charts)");
   std::filesystem::create_directories(args.out);
   output::removeStaleTemporaries(args.out);  // what a killed run of this command left (docs/hardening.md)
-  const bool showProgress = isatty(STDERR_FILENO);
+  long total = 0;  // points: every start x method x integrator x its settings
+  for (const Integrator integrator : args.options.integrators.empty() ? kindsOf(kIntegrators) : args.options.integrators)
+    total += long((traits(integrator).adaptive ? args.options.tolerances : args.options.steps).size());
+  total *= long(starts.size() * (args.options.methods.empty() ? kindsOf(kMethods).size() : args.options.methods.size()));
   long done = 0;
-  const auto points = runWorkPrecision(starts, args.options, [&](const WorkPrecisionPoint& p) {
-    if (showProgress)
-      std::fprintf(stderr, "\r%-14s %-15s %-15s %-8g %-16s   [%ld]   ", p.start.c_str(), nameOf(p.method).c_str(),
-                   nameOf(p.integrator).c_str(), p.setting, statusName(p.measurement.status).c_str(), ++done);
-  });
-  if (showProgress) std::fprintf(stderr, "\n");
+  std::optional<Progress> progress(std::in_place, total, args.quiet, "bench", "point");
+  const auto points = runWorkPrecision(starts, args.options, [&](const WorkPrecisionPoint&) { progress->update(++done); });
+  progress.reset();
 
   const std::string csvPath = (std::filesystem::path(args.out) / "work-precision.csv").string();
   output::writeFileAtomically(csvPath, csvText(workPrecisionTable(points)));
@@ -94,8 +102,13 @@ void runBench(BenchArguments& args) {
   std::cout << "Cheapest setting reaching each max position error on every start: fewest field evaluations (worst "
                "start), then its median wall time:\n"
             << table << "wrote " << csvPath << "\n";
-  if (args.charts)
-    for (const auto& png : writeWorkPrecisionCharts(points, args.out)) std::cout << "wrote " << png << "\n";
+  if (args.charts) {
+    const std::vector<std::string> pngs = writeWorkPrecisionCharts(points, args.out);
+    for (const auto& png : pngs) std::cout << "wrote " << png << "\n";
+    writeChartFormats(pngs, formats);
+  }
+  summary.print(std::to_string(points.size()) + " points on " + std::to_string(starts.size()) + " start" +
+                (starts.size() == 1 ? "" : "s") + " -> " + args.out);
 }
 
 }  // namespace
@@ -107,7 +120,8 @@ void addBenchCommand(CLI::App& app) {
       "Each point runs one method x integrator at one step (rk4) or tolerance (adaptive) from a start and compares\n"
       "its hinge positions every --interval time units with a reference from a different method at tolerance 1e-13\n"
       "(ambient checks the intrinsic methods; embedded checks ambient).\n"
-      "Writes DIR/work-precision.csv, DIR/cheapest-settings.txt and DIR/wp-<start>-<chart>.png.\n"
+      "Writes DIR/work-precision.csv, DIR/cheapest-settings.txt and DIR/wp-<start>-<chart>.png, each chart with its\n"
+      "gnuplot script beside it (.gp: `gnuplot FILE.gp` redraws it; --chart-formats svg,pdf adds .svg and .pdf).\n"
       "Example: linkage bench --quick --start generic --start through-pole --out renders/bench");
   bench->add_option("--start", args->starts,
                     "shipped start to run (repeatable; default all: generic, seam-crossing, near-pole, through-pole, "
@@ -124,6 +138,8 @@ void addBenchCommand(CLI::App& app) {
   bench->add_flag("--quick", args->quick, "3 steps, 4 tolerances, 3 repeats");
   bench->add_flag("!--no-charts", args->charts, "skip the gnuplot charts");
   bench->add_option("--out", args->out, "output folder")->capture_default_str();
+  bench->add_flag("--quiet", args->quiet, "no progress or summary line on stderr");
+  addChartFormatsOption(*bench, args->chartFormats);
   bench->callback([args] { runBench(*args); });
 }
 

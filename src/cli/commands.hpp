@@ -19,6 +19,12 @@ void addBenchCommand(CLI::App& app);
 void addStabilityCommand(CLI::App& app);
 // `linkage geometry`: curvature, bending and stiffness of the configuration sphere.
 void addGeometryCommand(CLI::App& app);
+// `linkage still`: the frame at one time, as a PNG file.
+void addStillCommand(CLI::App& app);
+// `linkage contact-sheet`: evenly spaced frames of a render in one picture.
+void addContactSheetCommand(CLI::App& app);
+// `linkage numbers`: what a scene computes (energy, drift, stops, conjugate points, curvature) as JSON.
+void addNumbersCommand(CLI::App& app);
 // `linkage schema`: the JSON Schema of scene files.
 void addSchemaCommand(CLI::App& app);
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <algorithm>
+#include <cstdio>
 #include <map>
 #include <ostream>
 
@@ -31,6 +32,13 @@ std::vector<std::pair<int, int>> hingeColumns(const TrajectoryCsv& csv) {
     if (x < 0 || y < 0) return columns;
     columns.push_back({x, y});
   }
+}
+
+// 3 as "3", 0.1 as "0.1" (std::to_string gives "3.000000").
+std::string shortNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.10g", value);
+  return text;
 }
 
 // The same value, or both non-finite in the same way (a file compared with itself matches, NaN included).
@@ -63,9 +71,11 @@ RunDifference compareRun(const std::string& name, const std::vector<const Row*>&
     const Row& b = *after[i];
     if (!same(a.values[time], b.values[time])) {
       result.structure = "sample times differ from row " + std::to_string(i + 1) + " of the run on";
+      result.comparedRows = 0;  // sampled at other times: no figure compares like with like
       return result;
     }
     const double distance = hingeDistance(a, b, columns);
+    result.comparedRows = i + 1;
     if (distance > result.worstDistance) {
       result.worstDistance = distance;
       result.worstTime = a.values[time];
@@ -73,7 +83,7 @@ RunDifference compareRun(const std::string& name, const std::vector<const Row*>&
     if (distance > tolerance && !result.firstExceedsAt) result.firstExceedsAt = a.values[time];
     if (a.status != b.status) {
       result.structure =
-          "status at t = " + std::to_string(a.values[time]) + ": \"" + a.status + "\" vs \"" + b.status + "\"";
+          "status at t = " + shortNumber(a.values[time]) + ": \"" + a.status + "\" vs \"" + b.status + "\"";
       return result;
     }
   }
@@ -113,12 +123,18 @@ bool printTrajectoryDifferences(std::ostream& out, const std::vector<RunDifferen
   bool allMatch = true;
   for (const RunDifference& run : differences) {
     allMatch = allMatch && run.matches();
-    out << "run \"" << run.run << "\": worst hinge difference " << run.worstDistance << " at t = " << run.worstTime;
+    out << "run \"" << run.run << "\": ";
+    if (run.comparedRows == 0 && !run.structure.empty()) {
+      out << "not compared: " << run.structure << '\n';
+      continue;
+    }
+    if (!run.structure.empty()) out << "over its first " << run.comparedRows << " rows: ";
+    out << "worst hinge difference " << run.worstDistance << " at t = " << run.worstTime;
     if (run.firstExceedsAt)
       out << "; first exceeds --tol " << tolerance << " at t = " << *run.firstExceedsAt;
     else
       out << "; within --tol " << tolerance;
-    if (!run.structure.empty()) out << "; not comparable row by row: " << run.structure;
+    if (!run.structure.empty()) out << "; then not comparable row by row: " << run.structure;
     out << '\n';
   }
   return allMatch;

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <sstream>
 #include <tuple>
 
 #include <CLI/CLI.hpp>
@@ -14,6 +16,7 @@
 #include "cli/csv_diff.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/folder_diff.hpp"
+#include "cli/summary.hpp"
 
 namespace sl {
 
@@ -25,8 +28,10 @@ struct DiffArguments {
   std::string before, after;
   double tolerance = 1e-9;
   bool images = false;
-  std::string imageFolder = "diff-images";
+  PixelTolerance pixels;
+  std::string imageFolder;  // empty: no diff images
   int maxImages = 10;
+  bool quiet = false;
 };
 
 TrajectoryCsv readCsvFile(const std::string& path) {
@@ -39,41 +44,113 @@ TrajectoryCsv readCsvFile(const std::string& path) {
   }
 }
 
-bool diffTrajectories(const DiffArguments& args) {
+std::string trajectorySummary(const std::vector<RunDifference>& differences) {
+  int differing = 0, notCompared = 0;
+  for (const RunDifference& run : differences) {
+    differing += run.matches() ? 0 : 1;
+    notCompared += run.comparedRows == 0 && !run.structure.empty() ? 1 : 0;
+  }
+  return std::to_string(differences.size()) + " run" + (differences.size() == 1 ? "" : "s") + ", " +
+         std::to_string(differing) + " differ" + (notCompared ? " (" + std::to_string(notCompared) + " not compared)" : "");
+}
+
+bool diffTrajectories(const DiffArguments& args, std::string& summary) {
   const auto differences = compareTrajectories(readCsvFile(args.before), readCsvFile(args.after), args.tolerance);
+  summary = trajectorySummary(differences);
   return printTrajectoryDifferences(std::cout, differences, args.tolerance);
 }
 
-bool diffFolders(const DiffArguments& args) {
+std::string joined(const std::vector<std::string>& parts) {
+  if (parts.empty()) return "not recorded";
+  std::string text;
+  for (const std::string& part : parts) text += (text.empty() ? "" : ", ") + part;
+  return text;
+}
+
+// "0.0123% of pixels differ by more than 2 levels (largest 7)"
+std::string pixelLine(int frame, const PixelDifference& pixels, const PixelTolerance& tolerance) {
+  std::ostringstream line;
+  line << "frame " << frame << ": ";
+  if (!pixels.note.empty()) {
+    line << pixels.note << " (no pixel comparison)";
+    return line.str();
+  }
+  line << pixels.fraction * 100 << "% of pixels differ";
+  if (tolerance.levels > 0) line << " by more than " << tolerance.levels << " levels";
+  line << " (largest channel difference " << pixels.largestLevel << ")";
+  if (tolerance.maxDifferingPercent > 0)
+    line << (pixels.withinTolerance(tolerance) ? "; within" : "; beyond") << " --max-differing "
+         << tolerance.maxDifferingPercent << "%";
+  if (!pixels.diffImage.empty()) line << "; " << pixels.diffImage;
+  return line.str();
+}
+
+bool diffFolders(const DiffArguments& args, std::string& summary) {
   std::map<int, std::string> before, after;
+  std::vector<std::string> renderersBefore, renderersAfter;
   try {
     std::tie(before, after) = comparableHashes(readFolderFrames(args.before), readFolderFrames(args.after));
+    renderersBefore = readRenderers(args.before);
+    renderersAfter = readRenderers(args.after);
   } catch (const std::invalid_argument& error) {
     throw CommandExit(kExitBadInput, error.what());
   }
-  const FolderDifference result = compareFolders(before, after);
-  std::cout << result.framesBefore << " frames vs " << result.framesAfter << "; " << result.differing << " differ";
-  if (result.firstDiffering) std::cout << "; first differing frame " << *result.firstDiffering;
-  std::cout << '\n';
-  if (!args.images) return result.matches();
-  int written = 0;
+  std::cout << "GL renderer: " << args.before << ": " << joined(renderersBefore) << "; " << args.after << ": "
+            << joined(renderersAfter) << '\n';
+  if (renderersBefore != renderersAfter && !args.quiet)
+    std::cerr << "linkage diff: warning: the two renders name different GL renderers, so their pixels may differ "
+                 "slightly; compare them with --pixel-tol LEVELS --max-differing PERCENT\n";
+  const FolderDifference byHash = compareFolders(before, after);
+  const bool tolerant = args.pixels.levels > 0 || args.pixels.maxDifferingPercent > 0;
+  const bool decode = args.images || tolerant || !args.imageFolder.empty();
+  // Frames whose pixel hashes differ on both sides are decoded when asked; a frame only one side has differs.
+  int differing = 0;
+  std::optional<int> first;
+  std::vector<std::string> lines;
+  int shownLines = 0, allLines = 0;
   for (const auto& [frame, hash] : before) {
     const auto other = after.find(frame);
-    if (other == after.end() || other->second == hash || written >= args.maxImages) continue;
+    if (other == after.end() || other->second == hash || !decode) continue;
+    ++allLines;
+    const bool show = shownLines < args.maxImages;
     PixelDifference pixels;
     try {
-      pixels = comparePixels(args.before, args.after, frame, args.imageFolder);
+      pixels = comparePixels(args.before, args.after, frame, args.pixels.levels, show ? args.imageFolder : "");
     } catch (const std::invalid_argument& error) {
       throw CommandExit(kExitBadInput, error.what());
     }
-    if (!pixels.note.empty())
-      std::cout << "frame " << frame << ": " << pixels.note << " (no pixel comparison)\n";
-    else
-      std::cout << "frame " << frame << ": " << pixels.fraction * 100 << "% of pixels differ; " << pixels.diffImage
-                << '\n';
-    ++written;
+    if (!pixels.withinTolerance(args.pixels)) {
+      ++differing;
+      if (!first || frame < *first) first = frame;
+    }
+    if (show) {
+      lines.push_back(pixelLine(frame, pixels, args.pixels));
+      ++shownLines;
+    }
   }
-  return result.matches();
+  if (decode) {  // frames one side lacks
+    for (const auto& [frame, hash] : before)
+      if (!after.count(frame) && (++differing, !first || frame < *first)) first = frame;
+    for (const auto& [frame, hash] : after)
+      if (!before.count(frame) && (++differing, !first || frame < *first)) first = frame;
+  } else {
+    differing = byHash.differing;
+    first = byHash.firstDiffering;
+  }
+  std::ostringstream head;
+  head << byHash.framesBefore << " frames vs " << byHash.framesAfter << "; " << differing << " differ";
+  if (tolerant)
+    head << " beyond --pixel-tol " << args.pixels.levels << " --max-differing " << args.pixels.maxDifferingPercent
+         << "% (" << byHash.differing << " by pixel hash)";
+  if (first) head << "; first differing frame " << *first;
+  std::cout << head.str() << '\n';
+  for (const std::string& line : lines) std::cout << line << '\n';
+  if (shownLines < allLines)
+    std::cout << shownLines << " of " << allLines << " frames with other pixels shown (--max-images N for more)\n";
+  if (decode && args.imageFolder.empty() && allLines > 0)
+    std::cout << "no diff images written (--image-dir DIR writes them)\n";
+  summary = head.str();
+  return differing == 0;
 }
 
 void runDiff(const DiffArguments& args) {
@@ -85,7 +162,10 @@ void runDiff(const DiffArguments& args) {
     throw CommandExit(kExitBadInput, "diff: expected two trajectory CSV files or two render folders, found \"" +
                                          args.before + "\" and \"" + args.after + "\"");
   }
-  const bool match = folders ? diffFolders(args) : diffTrajectories(args);
+  const CommandSummary summary("diff", args.quiet);
+  std::string what;
+  const bool match = folders ? diffFolders(args, what) : diffTrajectories(args, what);
+  summary.print(std::string(folders ? "folders" : "trajectories") + ": " + what + (match ? "; they match" : ""));
   if (!match) throw CommandExit(kExitMismatch, "");
 }
 
@@ -101,18 +181,32 @@ void addDiffCommand(CLI::App& app) {
       ->check(finiteNonNegative())
       ->capture_default_str();
   command->add_flag("--images", args->images,
-                    "folders: decode differing frames, print the fraction of differing pixels, write diff images");
-  command->add_option("--image-dir", args->imageFolder, "where --images writes diff_frame_NNNNN.png")
+                    "folders: decode the frames whose pixel hashes differ and print the fraction of differing pixels");
+  command->add_option("--pixel-tol", args->pixels.levels,
+                      "folders: a pixel differs only when a channel differs by more than LEVELS (0..255; implies "
+                      "--images)")
+      ->check(CLI::Range(0, 255))
       ->capture_default_str();
-  command->add_option("--max-images", args->maxImages, "at most this many diff images")
-      ->check(finitePositive())
+  command->add_option("--max-differing", args->pixels.maxDifferingPercent,
+                      "folders: a frame matches when at most PERCENT of its pixels differ (implies --images)")
+      ->check(CLI::Range(0.0, 100.0))
       ->capture_default_str();
+  command->add_option("--image-dir", args->imageFolder,
+                      "write diff_frame_NNNNN.png (differing pixels red) into this folder; none without it");
+  command->add_option("--max-images", args->maxImages, "at most this many per-frame lines and diff images")
+      ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
+  command->add_flag("--quiet", args->quiet, "no warning or summary line on stderr (the report on stdout stays)");
   command->footer(
       "CSV: per run, the worst hinge position difference and the first time it exceeds --tol.\n"
-      "Folders: frames compared by the pixel SHA-256 in manifest.json; the first differing frame and how many.\n"
+      "A run missing from one file, or sampled at other times, is reported as not compared.\n"
+      "Folders: frames compared by the pixel SHA-256 in manifest.json; the first differing frame and how many, and\n"
+      "the GL renderer each manifest names (a warning when they differ). Frames from another Mesa build differ by a\n"
+      "level or two here and there: --pixel-tol and --max-differing hold them to a tolerance instead.\n"
       "Examples:\n"
       "  linkage diff old.csv new.csv --tol 1e-8\n"
-      "  linkage diff renders/default renders/default-new --images");
+      "  linkage diff renders/default renders/default-new --images --image-dir renders/diff\n"
+      "  linkage diff golden/frames renders/ci --pixel-tol 2 --max-differing 0.5");
   command->callback([args] { runDiff(*args); });
 }
 

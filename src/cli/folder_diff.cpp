@@ -1,5 +1,7 @@
 #include "cli/folder_diff.hpp"
 
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -40,6 +42,12 @@ FolderFrames readFolderFrames(const std::string& folder) {
     if (!entry.pixelSha256.empty()) result.pixelHashes[frame] = entry.pixelSha256;
   }
   return result;
+}
+
+std::vector<std::string> readRenderers(const std::string& folder) {
+  const std::string path = folder + "/manifest.json";
+  if (!std::filesystem::exists(path)) throw std::invalid_argument(path + ": cannot read (is " + folder + " a render folder?)");
+  return output::readManifestFile(path).renderers;
 }
 
 namespace {
@@ -96,29 +104,36 @@ FolderDifference compareFolders(const std::map<int, std::string>& before, const 
 }
 
 
-PixelDifference comparePixels(const std::string& before, const std::string& after, int frame,
+PixelDifference comparePixels(const std::string& before, const std::string& after, int frame, int levels,
                               const std::string& imageFolder) {
   const std::string name = output::frameFileName(frame);
   const DecodedImage a = decodePng(before + "/" + name), b = decodePng(after + "/" + name);
   if (a.width != b.width || a.height != b.height)
-    return {1.0, "", "the frames are " + std::to_string(a.width) + "x" + std::to_string(a.height) + " and " +
+    return {1.0, 255, "", "the frames are " + std::to_string(a.width) + "x" + std::to_string(a.height) + " and " +
                          std::to_string(b.width) + "x" + std::to_string(b.height)};
   Image diff{a.width, a.height, std::vector<std::uint8_t>(size_t(a.width) * a.height * 3)};
   long differing = 0;
+  int largest = 0;
   for (size_t p = 0; p < size_t(a.width) * a.height; ++p) {
     const unsigned char* x = a.pixels.get() + 3 * p;
     const unsigned char* y = b.pixels.get() + 3 * p;
-    const bool same = x[0] == y[0] && x[1] == y[1] && x[2] == y[2];
+    int channel = 0;
+    for (int c = 0; c < 3; ++c) channel = std::max(channel, std::abs(int(x[c]) - int(y[c])));
+    largest = std::max(largest, channel);
+    const bool same = channel <= levels;
     differing += same ? 0 : 1;
     const auto grey = static_cast<std::uint8_t>(160 + (y[0] + y[1] + y[2]) / 12);  // faded: 160..223
     diff.rgb[3 * p] = same ? grey : 255;
     diff.rgb[3 * p + 1] = same ? grey : 0;
     diff.rgb[3 * p + 2] = same ? grey : 0;
   }
-  std::filesystem::create_directories(imageFolder);
-  const std::string path = imageFolder + "/diff_" + name;
-  output::writeFileAtomically(path, output::PngEncoder().encode(diff));
-  return {differing / double(size_t(a.width) * a.height), path, ""};
+  std::string path;
+  if (!imageFolder.empty()) {
+    std::filesystem::create_directories(imageFolder);
+    path = imageFolder + "/diff_" + name;
+    output::writeFileAtomically(path, output::PngEncoder().encode(diff));
+  }
+  return {differing / double(size_t(a.width) * a.height), largest, path, ""};
 }
 
 }  // namespace sl

@@ -21,7 +21,7 @@ long parseCount(const std::string& text) {
 FrameRange parseFrameRange(const std::string& text, int frameCount) {
   const std::string allowed = "expected A:B with 0 <= A < B <= " + std::to_string(frameCount) +
                               " (the scene has frames 0.." + std::to_string(frameCount - 1) +
-                              "), or K/N with 1 <= K <= N <= " + std::to_string(frameCount);
+                              "), A:B:STEP with STEP >= 1, one frame K, or K/N with 1 <= K <= N <= " + std::to_string(frameCount);
   if (const size_t slash = text.find('/'); slash != std::string::npos) {
     const long shard = parseCount(text.substr(0, slash)), shards = parseCount(text.substr(slash + 1));
     if (shard < 1 || shards < shard || shards > frameCount)
@@ -30,14 +30,22 @@ FrameRange parseFrameRange(const std::string& text, int frameCount) {
     return {boundary(shard - 1), boundary(shard)};
   }
   const size_t colon = text.find(':');
-  if (colon == std::string::npos) throw CommandExit(kExitBadInput, "--frames: found \"" + text + "\"; " + allowed);
-  const std::string left = text.substr(0, colon), right = text.substr(colon + 1);
+  if (colon == std::string::npos) {  // one frame K: K:K+1
+    const long frame = parseCount(text);
+    if (frame < 0 || frame >= frameCount) throw CommandExit(kExitBadInput, "--frames: found \"" + text + "\"; " + allowed);
+    return {static_cast<int>(frame), static_cast<int>(frame) + 1};
+  }
+  const size_t second = text.find(':', colon + 1);
+  const std::string left = text.substr(0, colon);
+  const std::string right = text.substr(colon + 1, second == std::string::npos ? std::string::npos : second - colon - 1);
+  const long step = second == std::string::npos ? 1 : parseCount(text.substr(second + 1));
+  if (step < 1 || step > frameCount) throw CommandExit(kExitBadInput, "--frames: found \"" + text + "\"; " + allowed);
   const long first = left.empty() ? 0 : parseCount(left);
   const long end = right.empty() ? frameCount : parseCount(right);
   if (first < 0 || end < 0 || first >= end || end > frameCount) {
     throw CommandExit(kExitBadInput, "--frames: found \"" + text + "\"; " + allowed);
   }
-  return {static_cast<int>(first), static_cast<int>(end)};
+  return {static_cast<int>(first), static_cast<int>(end), static_cast<int>(step)};
 }
 
 std::pair<int, int> parseImageSize(const std::string& text) {

@@ -2,6 +2,7 @@
 // exact Gaussian curvature, bending and stiffness on a grid or at given points, a summary with the Gauss-Bonnet
 // integral and the extrema, and a sweep over L (docs/geometry.md).
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -16,8 +17,11 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/gnuplot.hpp"
+#include "cli/chart_formats.hpp"
 #include "cli/commands.hpp"
 #include "cli/exit_codes.hpp"
+#include "cli/geometry_json.hpp"
+#include "cli/progress.hpp"
 #include "cli/scene_input.hpp"
 #include "cli/summary.hpp"
 #include "contracts/csv_format.hpp"
@@ -44,6 +48,7 @@ struct GeometryArguments {
   std::string chart;  // sweep chart PNG
   std::string maps;   // folder for PNG maps of K, bending, stiffness
   bool quiet = false;
+  std::string chartFormats;
 };
 
 const char* kSampleColumns = "phi,t,K,bending,stiffness_max,stiffness_min,stiffness_angle";
@@ -103,7 +108,8 @@ void writeOrPrint(const std::string& file, const std::string& text) {
 // The grid's CSV in blocks of rows, each computed, formatted and written before the next: memory holds one
 // block whatever N (a 4096 x 4096 grid held every sample and the whole text, over 4 GB). The same bytes as
 // samplesCsv of the whole grid: each sample depends on its (phi, t) alone.
-void writeGridCsv(const std::string& file, const ConfigurationSurface& surface, const ChartGrid& grid) {
+void writeGridCsv(const std::string& file, const ConfigurationSurface& surface, const ChartGrid& grid,
+                  Progress& progress) {
   std::optional<output::AtomicFileWriter> writer;
   if (!file.empty()) writer.emplace(file);
   auto emit = [&](const std::string& text) {
@@ -122,24 +128,13 @@ void writeGridCsv(const std::string& file, const ConfigurationSurface& surface, 
     std::string text;
     for (const CurvatureSample& sample : curvatureGrid(surface, phis, grid.ts)) text += sampleRow(sample) + "\n";
     emit(text);
+    progress.update(long(first + phis.size()));
   }
   if (writer) {
     writer->commit();
   } else if (!(std::cout << std::flush)) {
     throw CommandExit(kExitFailure, "linkage geometry: cannot write to standard output");
   }
-}
-
-nlohmann::json extremumJson(const SurfaceExtremum& e) { return {{"value", e.value}, {"phi", e.phi}, {"t", e.t}}; }
-
-nlohmann::json summaryJson(const CurvatureSummary& s) {
-  return {{"L", s.baseLength},
-          {"area", s.area},
-          {"total_curvature", s.totalCurvature},
-          {"gauss_bonnet_error", s.gaussBonnetError},
-          {"K_min", extremumJson(s.curvatureMin)},
-          {"K_max", extremumJson(s.curvatureMax)},
-          {"bending_max", extremumJson(s.bendingMax)}};
 }
 
 struct SweepRange {
@@ -259,6 +254,7 @@ void runGeometry(const GeometryArguments& args) {
                       "--points FILE, --summary, --sweep-L A:B:N");
   if (!args.chart.empty() && args.sweep.empty())
     throw CommandExit(kExitBadInput, "--chart: draws the L sweep; expected --sweep-L A:B:N with it");
+  const std::vector<std::string> formats = chartFormats(args.chartFormats);
   std::vector<output::NamedFile> outputs = {{"--csv", args.csv}, {"--chart", args.chart}};
   if (!args.maps.empty())
     for (const char* map : {"/curvature.png", "/bending.png", "/stiffness.png"})
@@ -281,7 +277,10 @@ void runGeometry(const GeometryArguments& args) {
   if (args.grid > 0 || !args.maps.empty()) {
     const int n = args.grid > 0 ? args.grid : kDefaultMapGrid;
     const ChartGrid grid = uniformChartGrid(n, n);
-    if (!args.csv.empty() || args.maps.empty()) writeGridCsv(args.csv, surface, grid);
+    if (!args.csv.empty() || args.maps.empty()) {
+      Progress progress(long(grid.phis.size()), args.quiet, "geometry", "grid row");
+      writeGridCsv(args.csv, surface, grid, progress);
+    }
     if (!args.maps.empty()) {
       const std::vector<CurvatureSample> samples = curvatureGrid(surface, grid.phis, grid.ts);
       std::filesystem::create_directories(args.maps);
@@ -289,6 +288,8 @@ void runGeometry(const GeometryArguments& args) {
       renderMap(grid, samples, 0, "Gaussian curvature K" + where, args.maps + "/curvature.png");
       renderMap(grid, samples, 1, "bending |II|^2" + where, args.maps + "/bending.png");
       renderMap(grid, samples, 2, "largest directional stiffness" + where, args.maps + "/stiffness.png");
+      writeChartFormats({args.maps + "/curvature.png", args.maps + "/bending.png", args.maps + "/stiffness.png"},
+                        formats);
     }
     done =
         std::to_string(n) + " x " + std::to_string(n) + " grid" + (args.maps.empty() ? "" : ", maps in " + args.maps);
@@ -303,7 +304,10 @@ void runGeometry(const GeometryArguments& args) {
     const SweepRange range = parseSweep(args.sweep, scene.chain);
     const std::vector<CurvatureSummary> sweep = curvatureSweep(scene.chain, range.first, range.last, range.count);
     writeOrPrint(args.csv, sweepCsv(sweep));
-    if (!args.chart.empty()) renderSweepChart(sweep, args.chart);
+    if (!args.chart.empty()) {
+      renderSweepChart(sweep, args.chart);
+      writeChartFormats({args.chart}, formats);
+    }
     done = "L sweep of " + std::to_string(range.count) + " values";
   }
   summary.print(done + " of \"" + scene.name + "\" (L = " + shortest(scene.chain.baseLength) + ")" +
@@ -316,7 +320,7 @@ void addGeometryCommand(CLI::App& app) {
   auto args = std::make_shared<GeometryArguments>();
   CLI::App* command = app.add_subcommand(
       "geometry", "Curvature, bending and stiffness of the scene's configuration sphere (4 rods), exact");
-  command->add_option("scene", args->scene, "scene file (JSON, see scenes/README.md): its linkage is used")->required();
+  command->add_option("scene", args->scene, "scene file (JSON, see scenes/README.md; - reads standard input): its linkage is used")->required();
   addSceneOverrideOption(*command, args->overrides);
   command->add_option("--grid", args->grid, "N x N chart grid (phi from pole to pole, t periodic): CSV")
       ->check(CLI::Range(2, kMaxGrid));
@@ -328,8 +332,10 @@ void addGeometryCommand(CLI::App& app) {
   command->add_option("--chart", args->chart, "with --sweep-L: a PNG chart of min K, max K and area against L");
   command->add_option("--maps", args->maps, "folder for PNG maps of K, bending and stiffness over (phi, t)");
   command->add_flag("--quiet", args->quiet, "no summary line");
+  addChartFormatsOption(*command, args->chartFormats);
   command->footer(
       "Columns of --grid and --points: phi,t,K,bending,stiffness_max,stiffness_min,stiffness_angle\n"
+      "Charts (--chart, --maps) get their gnuplot script beside them (.gp); --chart-formats svg,pdf adds .svg, .pdf.\n"
       "Examples:\n  linkage geometry scenes/default.json --summary\n"
       "  linkage geometry scenes/default.json --grid 256 --csv renders/curvature.csv\n"
       "  linkage geometry scenes/default.json --sweep-L 2.1:3.9:37 --csv renders/sweep.csv --chart renders/sweep.png");

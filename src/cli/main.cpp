@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/help_format.hpp"
+#include "cli/typo_hints.hpp"
 #include "render/renderer.hpp"
 
 namespace sl {
@@ -68,11 +69,18 @@ int runCommand(int argc, char** argv) {
   app.formatter(std::make_shared<sl::HelpFormatter>());  // subcommands inherit it
   bool version = false;
   app.add_flag("--version", version, "print the version, commit, compiler and GL renderer, then exit");
+  app.set_help_all_flag("--help-all", "print the help of every command (the man page is made from it)");
   app.require_subcommand(0, 1);
   app.footer(std::string("Examples:\n  linkage validate scenes/default.json\n  linkage render scenes/default.json\n"
-                         "  linkage render scenes/comparison.json --frames 0:100 --size 640x360\n\n") +
+                         "  linkage render scenes/comparison.json --frames 0:100 --size 640x360\n"
+                         "  linkage render scenes/default.json --preview\n"
+                         "  linkage still scenes/default.json --time 10 --out default-t10.png\n"
+                         "  linkage numbers scenes/jacobi.json\n"
+                         "A guide by task: docs/guide.md (installed: share/doc/linkage/docs/guide.md).\n\n") +
              sl::exitCodeHelp());
   sl::addRenderCommand(app);
+  sl::addStillCommand(app);
+  sl::addContactSheetCommand(app);
   sl::addSimulateCommand(app);
   sl::addValidateCommand(app);
   sl::addDiffCommand(app);
@@ -80,6 +88,7 @@ int runCommand(int argc, char** argv) {
   sl::addBenchCommand(app);
   sl::addStabilityCommand(app);
   sl::addGeometryCommand(app);
+  sl::addNumbersCommand(app);
   sl::addSchemaCommand(app);
   try {
     app.parse(argc, argv);
@@ -88,7 +97,8 @@ int runCommand(int argc, char** argv) {
       return sl::kExitOk;
     }
     if (app.get_subcommands().empty()) {
-      std::cerr << "linkage: expected a command (render, simulate, validate, ...); see linkage --help\n";
+      std::cerr << "linkage: expected a command (render, simulate, validate, ...); see linkage --help\n"
+                << sl::typoHints(app, argc, argv);
       return sl::kExitBadInput;
     }
   } catch (const CLI::CallForHelp& help) {
@@ -97,6 +107,7 @@ int runCommand(int argc, char** argv) {
     return app.exit(help);
   } catch (const CLI::ParseError& error) {
     app.exit(error);  // prints the message
+    std::cerr << sl::typoHints(app, argc, argv);
     return sl::kExitBadInput;
   } catch (const sl::CommandExit& exit) {
     if (std::string(exit.what()).size() > 0) std::cerr << exit.what() << '\n';

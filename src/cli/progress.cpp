@@ -1,27 +1,52 @@
 #include "cli/progress.hpp"
 
 #include <unistd.h>
+#include <algorithm>
 #include <cstdio>
 
 namespace sl {
 
-Progress::Progress(long total, bool quiet)
-    : total_(total), enabled_(!quiet && ::isatty(STDERR_FILENO)), start_(std::chrono::steady_clock::now()) {}
+namespace {
+
+constexpr auto kTerminalInterval = std::chrono::milliseconds(200);
+constexpr auto kLogHeartbeat = std::chrono::seconds(30);
+
+}  // namespace
+
+Progress::Progress(long total, bool quiet, std::string command, std::string unit)
+    : total_(total),
+      quiet_(quiet),
+      terminal_(::isatty(STDERR_FILENO) != 0),
+      command_(std::move(command)),
+      unit_(std::move(unit)),
+      start_(std::chrono::steady_clock::now()),
+      lastDraw_(start_) {}
 
 Progress::~Progress() {
-  if (drawn_) std::fputc('\n', stderr);
+  if (drawn_ && terminal_) std::fputc('\n', stderr);
 }
 
 void Progress::update(long done) {
-  if (!enabled_) return;
+  if (quiet_ || total_ <= 0) return;
   const auto now = std::chrono::steady_clock::now();
-  if (drawn_ && done < total_ && now - lastDraw_ < std::chrono::milliseconds(200)) return;
+  const long tenth = done * 10 / total_;
+  if (terminal_) {
+    if (drawn_ && done < total_ && now - lastDraw_ < kTerminalInterval) return;
+  } else if (tenth <= lastTenth_ && now - lastDraw_ < kLogHeartbeat) {
+    return;
+  }
   lastDraw_ = now;
+  lastTenth_ = std::max(lastTenth_, tenth);
   drawn_ = true;
   const double seconds = std::chrono::duration<double>(now - start_).count();
   const double rate = seconds > 0 ? done / seconds : 0;
   const long eta = rate > 0 ? static_cast<long>((total_ - done) / rate) : 0;
-  std::fprintf(stderr, "\rframe %ld/%ld  %.1f fps  ETA %ld:%02ld   ", done, total_, rate, eta / 60, eta % 60);
+  if (terminal_)
+    std::fprintf(stderr, "\r%s %ld/%ld  %.1f %ss/s  ETA %ld:%02ld   ", unit_.c_str(), done, total_, rate,
+                 unit_.c_str(), eta / 60, eta % 60);
+  else
+    std::fprintf(stderr, "linkage %s: %s %ld/%ld (%ld%%), %.1f %ss/s, ETA %ld:%02ld\n", command_.c_str(),
+                 unit_.c_str(), done, total_, done * 100 / total_, rate, unit_.c_str(), eta / 60, eta % 60);
   std::fflush(stderr);
 }
 

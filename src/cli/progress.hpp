@@ -1,21 +1,32 @@
 #pragma once
-// Progress of long work on stderr ("frame 120/601  31.5 fps  ETA 0:15"), only when stderr is a terminal
-// and not --quiet, redrawn at most five times a second. Never written into files or pipes.
+// Progress of long work on stderr, the one rule for every command (frames, sweep cells, bench points, grid rows):
+// - stderr a terminal: one line redrawn in place ("frame 120/601  31.5 frames/s  ETA 0:15"), at most five
+//   times a second;
+// - stderr a file or pipe (a cluster job's log): a whole line each time another tenth of the work is done
+//   ("linkage render: frame 121/601 (20%), 31.5 frames/s, ETA 0:15"), and between tenths one at most every
+//   30 s when a tenth takes longer, so a log shows the job is alive without filling up;
+// - --quiet: nothing.
 
 #include <chrono>
+#include <string>
 
 namespace sl {
 
 class Progress {
  public:
-  Progress(long total, bool quiet);
-  ~Progress();  // ends the line if something was drawn
+  // `command` names the log lines ("render"); `unit` is what is counted, singular ("frame", "cell", "point").
+  Progress(long total, bool quiet, std::string command = "render", std::string unit = "frame");
+  ~Progress();  // ends the terminal line if something was drawn
+  Progress(const Progress&) = delete;
+  Progress& operator=(const Progress&) = delete;
   void update(long done);
 
  private:
   long total_;
-  bool enabled_;
+  bool quiet_, terminal_;
+  std::string command_, unit_;
   bool drawn_ = false;
+  long lastTenth_ = 0;
   std::chrono::steady_clock::time_point start_, lastDraw_;
 };
 

@@ -1,6 +1,7 @@
 // `linkage render SCENE.json`: frames (PNG + manifest) and/or a video. The frame range, the folder and
 // the size may be overridden; --frames A:B renders a shard, --resume skips frames already complete.
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -14,6 +15,7 @@
 #include "cli/frame_range.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/progress.hpp"
+#include "cli/render_folder.hpp"
 #include "cli/run_report.hpp"
 #include "cli/scene_input.hpp"
 #include "cli/summary.hpp"
@@ -26,6 +28,7 @@
 #include "output/video_sink.hpp"
 #include "render/renderer.hpp"
 #include "scene/output_folder.hpp"
+#include "scene/scene_overrides.hpp"
 
 namespace sl {
 
@@ -36,7 +39,7 @@ namespace fs = std::filesystem;
 struct RenderArguments {
   std::vector<std::string> overrides;  // --set KEY=VALUE
   std::string scene, out, frames, video, size, videoQuality;
-  bool png = false, noPng = false, quiet = false, resume = false;
+  bool png = false, noPng = false, quiet = false, resume = false, replace = false, preview = false;
 };
 
 // What a render will do, after the scene's choices and the options are combined and checked.
@@ -56,6 +59,7 @@ std::string videoFolder(const std::string& video) {
 }
 
 void applySize(const RenderArguments& args, Scene& scene) {
+  if (args.preview && args.size.empty()) scene.output.size = previewSize(scene.output.size);
   if (args.size.empty()) return;
   const auto [width, height] = parseImageSize(args.size);
   scene.output.size = {width, height};
@@ -65,8 +69,15 @@ RenderPlan planRender(const RenderArguments& args) {
   RenderPlan plan;
   plan.scene = loadSceneForCommand(args.scene, args.overrides);
   Scene& scene = plan.scene;
+  // The file's own size and frame rate: read again without the overrides only when one may have changed them
+  // (a piped scene can be read only once: its overrides count as its own).
+  const ImageSize ownSize = scene.output.size;
+  const bool outputOverridden = std::any_of(args.overrides.begin(), args.overrides.end(), [](const std::string& o) {
+    return o.rfind("output", 0) == 0 || o.rfind(kUnsetPrefix + std::string("output"), 0) == 0;
+  });
+  const int ownFps = outputOverridden && fs::is_regular_file(args.scene) ? loadSceneForCommand(args.scene).output.fps
+                                                                          : scene.output.fps;
   applySize(args, scene);
-  plan.folder = args.out.empty() ? scene.output.folder : args.out;
   plan.png = args.noPng ? false : (args.png || scene.output.png);
   plan.video = args.video.empty() ? scene.output.video : args.video;
   plan.quiet = args.quiet;
@@ -79,13 +90,12 @@ RenderPlan planRender(const RenderArguments& args) {
     throw CommandExit(kExitBadInput,
                       "--resume completes PNG frames; a video is always encoded whole (drop --video or --resume)");
   }
+  if (plan.resume && args.replace)
+    throw CommandExit(kExitBadInput, "--resume joins the render in the folder and --replace removes it: give one");
   const std::string videoPath = args.video.empty() ? "output.video" : "--video";
   const auto format = videoFormatOfPath(plan.video);
   std::vector<SceneProblem> problems =
       checkImageSize(scene.output.size, format && traits(*format).needsEvenSize, args.size.empty() ? "output" : "--size");
-  for (SceneProblem& problem : checkOutputFolder(plan.folder, args.out.empty() ? "output.folder" : "--out")) {
-    problems.push_back(problem);
-  }
   if (!plan.video.empty()) {
     for (SceneProblem& problem : checkVideoPath(plan.video, videoPath)) problems.push_back(problem);
     if (output::sameFile(plan.video, args.scene))
@@ -98,8 +108,12 @@ RenderPlan planRender(const RenderArguments& args) {
       problems.push_back({"--video-quality", "found \"" + args.videoQuality + "\"; expected high, medium or small"});
     }
   }
+  plan.range = parseFrameRange(args.frames.empty() ? (args.preview ? "::2" : ":") : args.frames, scene.frameCount());
+  plan.folder = args.out.empty() ? renderFolderFor(scene, ownSize, ownFps, plan.range.step, args.preview) : args.out;
+  for (SceneProblem& problem : checkOutputFolder(plan.folder, args.out.empty() ? "output.folder" : "--out")) {
+    problems.push_back(problem);
+  }
   failOnProblems(args.scene, problems);
-  plan.range = parseFrameRange(args.frames.empty() ? ":" : args.frames, scene.frameCount());
   return plan;
 }
 
@@ -131,8 +145,9 @@ void checkSpaceForFrames(const RenderPlan& plan, Renderer& renderer, FrameBuilde
   if (!plan.png) return;  // x264's output size depends on the motion; a full disk shows up as ffmpeg's error
   const int first = plan.range.first;
   const Image image = renderer.render(builder.frame(first));
-  FrameSpaceNeed need{plan.folder, 0, first, output::PngEncoder(plan.scene.output.pngCompression).encode(image).size(), image.width, image.height};
-  for (int frame = first; frame < plan.range.end; ++frame)
+  FrameSpaceNeed need{plan.folder, 0, first, output::PngEncoder(plan.scene.output.pngCompression).encode(image).size(),
+                      image.width, image.height};
+  for (int frame = first; frame < plan.range.end; frame += plan.range.step)
     need.framesToWrite += !fs::exists(fs::path(plan.folder) / output::frameFileName(frame));
   refuseIfFramesCannotFit(need);
 }
@@ -142,12 +157,13 @@ void checkSpaceForFrames(const RenderPlan& plan, Renderer& renderer, FrameBuilde
 bool renderFrames(const RenderPlan& plan, output::FrameManifest* pngManifest,
                   const std::vector<output::FrameSink*>& sinks, Renderer& renderer, FrameBuilder& builder,
                   int& drawn, int& skipped) {
-  Progress progress(plan.range.end - plan.range.first, plan.quiet);
-  for (int k = plan.range.first; k < plan.range.end; ++k) {
+  Progress progress(plan.range.count(), plan.quiet, "render", "frame");
+  long done = 0;
+  for (int k = plan.range.first; k < plan.range.end; k += plan.range.step) {
     const bool complete = plan.resume && pngManifest && pngManifest->isFrameComplete(k);
     if (complete) {
       ++skipped;
-      progress.update(k - plan.range.first + 1);
+      progress.update(++done);
       continue;
     }
     // Frames before k are sampled (not rendered) for the path and plot history.
@@ -156,7 +172,7 @@ bool renderFrames(const RenderPlan& plan, output::FrameManifest* pngManifest,
     for (size_t i = 0; i + 1 < sinks.size(); ++i) sinks[i]->consume(k, image);
     sinks.back()->consume(k, std::move(image));
     ++drawn;
-    progress.update(k - plan.range.first + 1);
+    progress.update(++done);
   }
   return true;
 }
@@ -228,7 +244,8 @@ void runRender(const RenderArguments& args) {
   }
   if (plan.png) {
     // A whole render replaces what the folder held (the edit-render loop); shards and --resume only join.
-    const bool whole = args.frames.empty() && !plan.resume;
+    const bool whole = (args.frames.empty() && !plan.resume) || args.replace;
+    if (!whole) refuseJoiningAnotherRender(plan.folder, info);  // naming what differs, before anything is written
     try {
       pngManifest = std::make_unique<output::FrameManifest>(
           plan.folder, info, "manifest.json", output::FrameManifest::Existing::merge,
@@ -273,7 +290,7 @@ void runRender(const RenderArguments& args) {
   char rate[48];
   std::snprintf(rate, sizeof rate, " (%.1f frames/s); ", seconds > 0 ? drawn / seconds : 0.0);
   summary.print(renderSummary(plan, drawn, skipped),
-                rate + runOutcomes(scene, builder.runs(), scene.frameTime(plan.range.end - 1)));
+                rate + runOutcomes(scene, builder.runs(), scene.frameTime(plan.range.first + (plan.range.count() - 1) * plan.range.step)));
 }
 
 }  // namespace
@@ -282,11 +299,11 @@ void addRenderCommand(CLI::App& app) {
   auto args = std::make_shared<RenderArguments>();
   CLI::App* command =
       app.add_subcommand("render", "Render a scene to PNG frames (with a checksum manifest) and/or a video");
-  command->add_option("scene", args->scene, "scene file (JSON, see scenes/README.md)")->required();
+  command->add_option("scene", args->scene, "scene file (JSON, see scenes/README.md; - reads standard input)")->required();
   addSceneOverrideOption(*command, args->overrides);
   command->add_option("--out", args->out, "frame folder (default: the scene's output.folder, renders/<name>)");
   command->add_option("--frames", args->frames,
-                      "half-open range A:B of frames to render (A: or :B allowed), or K/N: shard K of N equal "
+                      "half-open range A:B of frames to render (A: or :B allowed; A:B:STEP every STEP-th; K one frame), or K/N: shard K of N equal "
                       "parts (K = 1..N, as a job array numbers its tasks); shards of one animation give "
                       "byte-identical files");
   command->add_option("--video", args->video,
@@ -295,11 +312,22 @@ void addRenderCommand(CLI::App& app) {
   command->add_option("--video-quality", args->videoQuality, "high, medium or small (default: output.video_quality, high)");
   command->add_flag("--png", args->png, "write PNG frames (the default unless the scene says output.png: false)");
   command->add_flag("--no-png", args->noPng, "no PNG frames (with --video: the video only)");
-  command->add_option("--size", args->size, "override the frame size, WIDTHxHEIGHT, e.g. 640x360");
+  command->add_option("--size", args->size,
+                      "override the frame size, WIDTHxHEIGHT, e.g. 640x360 (without --out: into output.folder-WxH)");
+  command->add_flag("--preview", args->preview,
+                    "a quick look: a quarter of the size, every second frame (unless --frames gives a step), into "
+                    "output.folder-preview");
   command->add_flag("--quiet", args->quiet, "errors only: no progress, run reports or summary line");
   command->add_flag("--resume", args->resume, "skip frames whose file and manifest entry are complete (PNG only)");
+  command->add_flag("--replace", args->replace,
+                    "with --frames: remove the render the folder holds first, as a whole render does (for golden "
+                    "frames, previews)");
   command->footer(
-      "Frames go to DIR/frame_00000.png ... with DIR/manifest.json (SHA-256 of each file).\n"
+      "Frames go to DIR/frame_00000.png ... with DIR/manifest.json (SHA-256 of each file), and the lock files\n"
+      "DIR/.manifest.json.lock and .manifest.json.active (kept: they serialise concurrent shards).\n"
+      "DIR is --out, or the scene's output.folder (renders/<name>) for its own size and frame rate; another size,\n"
+      "frame rate or a frame step goes to output.folder-640x360, -60fps, -every5; --preview to output.folder-preview.\n"
+      "A video also gets VIDEO.manifest.json beside it (the checksum of every frame encoded).\n"
       "Examples:\n"
       "  linkage render scenes/default.json\n"
       "  linkage render scenes/comparison.json --size 640x360 --video renders/comparison.mp4 --no-png\n"

@@ -1,13 +1,16 @@
 #include "cli/scene_input.hpp"
 
 #include <cstdio>
+#include <iostream>
 #include <stdexcept>
 
 #include <CLI/CLI.hpp>
 
 #include "cli/exit_codes.hpp"
 #include "cli/interrupt.hpp"
+#include "contracts/limits.hpp"
 #include "scene/json_fields.hpp"
+#include "scene/scene_overrides.hpp"
 #include "simulation/family.hpp"
 #include "simulation/initial_state.hpp"
 
@@ -17,8 +20,25 @@ void failOnProblems(const std::string& file, const std::vector<SceneProblem>& pr
   if (!problems.empty()) throw CommandExit(kExitBadInput, formatProblems(file, problems));
 }
 
+namespace {
+
+// "-": the scene from standard input, read once and never more than a scene can sensibly be.
+Scene loadSceneFromStandardInput(const std::vector<std::string>& overrides) {
+  std::string text(limits::kMaxSceneBytes + 1, '\0');
+  std::cin.read(text.data(), static_cast<std::streamsize>(text.size()));
+  if (std::cin.bad()) throw SceneError(kStandardInputName, {{"", "cannot read standard input"}});
+  text.resize(static_cast<std::size_t>(std::cin.gcount()));
+  if (text.size() > limits::kMaxSceneBytes)
+    throw SceneError(kStandardInputName, {{"", "larger than " + std::to_string(limits::kMaxSceneBytes >> 20) +
+                                                   " MiB; a scene file is a few kilobytes"}});
+  return parseScene(text, kStandardInputName, overrides);
+}
+
+}  // namespace
+
 Scene loadSceneForCommand(const std::string& file, const std::vector<std::string>& overrides) {
   try {
+    if (file == "-") return loadSceneFromStandardInput(overrides);
     return loadScene(file, overrides);
   } catch (const SceneError& error) {
     throw CommandExit(kExitBadInput, error.what());
@@ -29,8 +49,21 @@ void addSceneOverrideOption(CLI::App& command, std::vector<std::string>& overrid
   command
       .add_option("--set", overrides,
                   "override a scene key by its JSON path, e.g. --set linkage.L=3.2 --set output.fps=60 "
-                  "--set runs[0].method=ambient (repeatable; checked like the file)")
+                  "--set runs[0].method=ambient, or append to an array: --set 'runs[2]={\"name\": \"b\"}' on a "
+                  "scene of 2 runs (repeatable; checked like the file)")
       ->type_name("KEY=VALUE")
+      ->allow_extra_args(false);
+  // After --set (CLI11 runs option callbacks in the order they were added, and --set assigns its whole list):
+  // the removals join the list and are applied after the assignments.
+  command
+      .add_option_function<std::vector<std::string>>(
+          "--unset",
+          [&overrides](const std::vector<std::string>& keys) {
+            for (const std::string& key : keys) overrides.push_back(kUnsetPrefix + key);
+          },
+          "remove a scene key or array element by its JSON path, e.g. --unset runs[0].tolerance --unset runs[1] "
+          "(repeatable; applied after every --set)")
+      ->type_name("KEY")
       ->allow_extra_args(false);
 }
 

@@ -16,8 +16,11 @@ class App;
 
 namespace sl {
 
+// How messages name a scene read from standard input.
+inline constexpr const char* kStandardInputName = "(standard input)";
+
 // Loads and validates, with the command line's --set KEY=VALUE overrides; on problems throws
-// CommandExit(kExitBadInput) listing them all.
+// CommandExit(kExitBadInput) listing them all. File "-" is standard input.
 Scene loadSceneForCommand(const std::string& file, const std::vector<std::string>& overrides = {});
 
 // Adds `--set KEY=VALUE` (repeatable) to a command that reads a scene.

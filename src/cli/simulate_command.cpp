@@ -182,7 +182,7 @@ void addSimulateCommand(CLI::App& app) {
   auto args = std::make_shared<SimulateArguments>();
   CLI::App* command =
       app.add_subcommand("simulate", "Integrate the scene's runs and write trajectory CSV (no rendering)");
-  command->add_option("scene", args->scene, "scene file (JSON, see scenes/README.md)")->required();
+  command->add_option("scene", args->scene, "scene file (JSON, see scenes/README.md; - reads standard input)")->required();
   addSceneOverrideOption(*command, args->overrides);
   command->add_option("--csv", args->csv, "write the CSV here instead of stdout (written whole or not at all)");
   command->add_option("--events", args->events,

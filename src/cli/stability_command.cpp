@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include <CLI/CLI.hpp>
 
@@ -13,7 +14,10 @@
 #include "analysis/option_checks.hpp"
 #include "analysis/stability_charts.hpp"
 #include "analysis/stability_sweep.hpp"
+#include "cli/chart_formats.hpp"
 #include "cli/commands.hpp"
+#include "cli/progress.hpp"
+#include "cli/summary.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/number_options.hpp"
 #include "contracts/time_grid.hpp"
@@ -43,6 +47,7 @@ struct StabilityArguments {
   double duration = 0;  // 0: the kind's default
   bool merge = false;
   bool charts = true;
+  std::string chartFormats;
   bool quiet = false;
   std::string out = "renders/stability";
   int plan = 0;                 // --plan N: print the N shard jobs instead of running
@@ -78,8 +83,11 @@ void writeSweepOutputs(const std::vector<StabilityRow>& sweep, const StabilityAr
   output::writeFileAtomically((std::filesystem::path(args.out) / ("stability-" + kind + "-summary.csv")).string(),
                               summaryText);
   std::cout << alignedText(summary) << "wrote " << csvPath << "\n";
-  if (args.charts)
-    for (const auto& png : writeStabilityCharts(rows, kind, args.out)) std::cout << "wrote " << png << "\n";
+  if (args.charts) {
+    const std::vector<std::string> pngs = writeStabilityCharts(rows, kind, args.out);
+    for (const auto& png : pngs) std::cout << "wrote " << png << "\n";
+    writeChartFormats(pngs, chartFormats(args.chartFormats));
+  }
 }
 
 int detectShardCount(const StabilityArguments& args) {
@@ -91,13 +99,15 @@ int detectShardCount(const StabilityArguments& args) {
   return counts.front();
 }
 
-void runStability(StabilityArguments& args) {
+// Returns what was done, for the summary line.
+std::string runStability(StabilityArguments& args) {
   StabilityOptions& options = args.options;
   if (!isStabilityKind(options.kind)) {
     std::string kinds;
     for (const auto& k : stabilityKindNames()) kinds += (kinds.empty() ? "" : ", ") + k;
     throw CLI::ValidationError("--kind", "unknown sweep kind '" + options.kind + "' (expected one of " + kinds + ")");
   }
+  chartFormats(args.chartFormats);  // checked before any work
   requireTolerances("--tolerance", {options.tolerance});  // what a run accepts, as bench's --tolerances
   options.methods = parseKindsOption("--methods", "method", args.methods, kMethods);
   if (!args.integrator.empty())
@@ -113,7 +123,8 @@ void runStability(StabilityArguments& args) {
       throw CommandExit(kExitBadInput, "linkage stability --plan: found " + std::to_string(args.plan) +
                                            "; expected at most one shard per cell (" +
                                            std::to_string(options.grid * options.grid) + ")");
-    return printPlan(args);
+    printPlan(args);
+    return "a plan of " + std::to_string(args.plan) + " shards";
   }
   if (args.charts && !gnuplotAvailable())
     throw std::runtime_error("charts need gnuplot with pngcairo: apt-get install gnuplot-nox (or pass --no-charts)");
@@ -132,26 +143,32 @@ void runStability(StabilityArguments& args) {
       throw CommandExit(kExitBadInput, "linkage stability --merge: missing shards: " + missing);
     }
     writeSweepOutputs(merged, args);
-    return;
+    return "merged " + std::to_string(count) + " shards of the " + options.kind + " sweep -> " + args.out;
   }
   if (!args.shard.empty()) options.shard = parseShard(args.shard);
 
-  const bool showProgress = !args.quiet && isatty(STDERR_FILENO);
+  std::optional<Progress> progress;
   const std::vector<StabilityRow> rows = runStabilitySweep(options, [&](long done, long total) {
-    if (showProgress && (done % 16 == 0 || done == total))
-      std::fprintf(stderr, "\r%s: %ld / %ld cells", options.kind.c_str(), done, total);
+    if (!progress) progress.emplace(total, args.quiet, "stability", "cell");
+    progress->update(done);
   });
-  if (showProgress) std::fprintf(stderr, "\n");
+  progress.reset();
 
+  const std::string sweep = options.kind + " sweep, " + std::to_string(options.grid) + " x " +
+                            std::to_string(options.grid) + " grid";
   if (options.shard.count == 1) {
     writeSweepOutputs(rows, args);
-    return;
+    return sweep + " -> " + args.out;
   }
   const std::string shardPath = stabilityShardPath(args.out, options.kind, options.shard);
   output::writeFileAtomically(shardPath, stabilityShardText(options, rows));
   std::cout << "wrote " << shardPath << "\n";
   std::vector<StabilityRow> merged;  // the last shard to finish merges them all
-  if (mergeStabilityShards(args.out, options.kind, options.shard.count, merged)) writeSweepOutputs(merged, args);
+  const std::string shard = sweep + ", shard " + std::to_string(options.shard.index) + "/" +
+                            std::to_string(options.shard.count) + " -> " + shardPath;
+  if (!mergeStabilityShards(args.out, options.kind, options.shard.count, merged)) return shard;
+  writeSweepOutputs(merged, args);
+  return shard + " (the last: merged into " + args.out + ")";
 }
 
 }  // namespace
@@ -171,7 +188,8 @@ void addStabilityCommand(CLI::App& app) {
       "Each cell's run is compared with a different method at tolerance 1e-13 every --interval time units\n"
       "(ambient checks the others; embedded checks ambient), unless --no-reference. Energy drift and rod-length\n"
       "error are the worst over every step; without a reference only the start and the end are sampled.\n"
-      "Writes DIR/stability-<kind>.csv, -summary.csv and stability-<kind>-<method>.png.\n"
+      "Writes DIR/stability-<kind>.csv, -summary.csv and stability-<kind>-<method>.png, each chart with its gnuplot\n"
+      "script beside it (.gp; --chart-formats svg,pdf adds .svg and .pdf).\n"
       "Sharding: run `--shard K/N` for K = 1..N (any machines, same options, same --out); the last to finish\n"
       "merges, or run `--merge` afterwards. The merged files equal a single run's byte for byte.\n"
       "Example: linkage stability --kind pole --grid 32 --methods christoffel-fd,embedded,ambient");
@@ -199,7 +217,8 @@ void addStabilityCommand(CLI::App& app) {
                       "skip the reference runs: failure modes and invariants only (much faster)");
   stability->add_flag("--merge", args->merge, "merge the shard files in --out instead of running");
   stability->add_flag("!--no-charts", args->charts, "skip the gnuplot heat maps");
-  stability->add_flag("--quiet", args->quiet, "no progress on stderr");
+  stability->add_flag("--quiet", args->quiet, "no progress or summary line on stderr");
+  addChartFormatsOption(*stability, args->chartFormats);
   stability->add_option("--out", args->out, "output folder")->capture_default_str();
   stability->add_option("--plan", args->plan, "print the sweep as N shard jobs (a job array, plain commands, the merge)")
       ->check(CLI::Range(1, 1 << 20))
@@ -218,7 +237,8 @@ void addStabilityCommand(CLI::App& app) {
       args->givenOptions += " " + shellWord(values);
     }
     if (stability->get_option("--out")->count() == 0) args->givenOptions += " --out " + shellWord(args->out);
-    runStability(*args);
+    const CommandSummary summary("stability", args->quiet);
+    summary.print(runStability(*args));
   });
 }
 

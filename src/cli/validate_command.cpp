@@ -8,6 +8,7 @@
 #include "cli/commands.hpp"
 #include "cli/scene_input.hpp"
 #include "output/distinct_files.hpp"
+#include "cli/summary.hpp"
 #include "scene/output_folder.hpp"
 
 namespace sl {
@@ -17,11 +18,13 @@ namespace {
 struct ValidateArguments {
   std::string file;
   std::vector<std::string> overrides;
+  bool quiet = false;
 };
 
 void runValidate(const ValidateArguments& args) {
-  const std::string& file = args.file;
-  const Scene scene = loadSceneForCommand(file, args.overrides);
+  const std::string file = args.file == "-" ? kStandardInputName : args.file;
+  const CommandSummary summary("validate", args.quiet);
+  const Scene scene = loadSceneForCommand(args.file, args.overrides);
   std::vector<SceneProblem> problems = checkOutputFolder(scene.output.folder, "output.folder");
   if (!scene.output.video.empty())
     for (SceneProblem& problem : checkVideoPath(scene.output.video, "output.video")) problems.push_back(problem);
@@ -30,7 +33,8 @@ void runValidate(const ValidateArguments& args) {
   failOnProblems(file, problems);
   std::vector<std::string> notes;
   const std::vector<InitialState> starts = runStarts(scene, &notes);
-  for (const std::string& note : notes) std::cerr << "linkage validate: note: " << note << "\n";
+  if (!args.quiet)
+    for (const std::string& note : notes) std::cerr << "linkage validate: note: " << note << "\n";
   // Every start, run and family, as render and simulate set them up.
   startRuns(scene, starts);
   startFamilies(scene, starts);
@@ -44,6 +48,7 @@ void runValidate(const ValidateArguments& args) {
                              : std::string())
               << ")";
   std::cout << '\n';
+  summary.print(file + " is valid");
 }
 
 }  // namespace
@@ -51,8 +56,9 @@ void runValidate(const ValidateArguments& args) {
 void addValidateCommand(CLI::App& app) {
   auto args = std::make_shared<ValidateArguments>();
   CLI::App* command = app.add_subcommand("validate", "Check a scene file and report every problem; writes nothing");
-  command->add_option("scene", args->file, "scene file (JSON, see scenes/README.md)")->required();
+  command->add_option("scene", args->file, "scene file (JSON, see scenes/README.md; - reads standard input)")->required();
   addSceneOverrideOption(*command, args->overrides);
+  command->add_flag("--quiet", args->quiet, "no notes or summary line on stderr (the report on stdout stays)");
   command->footer("Example: linkage validate scenes/default.json\nExit status 0 when the scene is valid, 2 when not.");
   command->callback([args] { runValidate(*args); });
 }

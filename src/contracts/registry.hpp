@@ -32,14 +32,20 @@ struct MethodTraits {
   bool chartBased;
   // Switches to another chart of the atlas near a pole (the published methods stay in the spec's chart).
   bool usesAtlas;
+  std::string_view description;  // one line, for `linkage list-methods`
 };
 
 inline constexpr std::array<MethodTraits, 5> kMethods{{
-    {Method::ChristoffelFd, "christoffel-fd", true, true, false},
-    {Method::EmbeddedFd, "embedded-fd", true, true, false},
-    {Method::Christoffel, "christoffel", false, true, true},
-    {Method::Embedded, "embedded", false, true, true},
-    {Method::Ambient, "ambient", false, false, false},
+    {Method::ChristoffelFd, "christoffel-fd", true, true, false,
+     "spec section 4 as published: Christoffel symbols by central differences; 4 rods, unit masses, one chart"},
+    {Method::EmbeddedFd, "embedded-fd", true, true, false,
+     "spec section 5 as published: second differences of Psi, 2x2 normal system; 4 rods, one chart"},
+    {Method::Christoffel, "christoffel", false, true, true,
+     "Christoffel symbols from exact metric derivatives; any n and masses; switches charts near a pole"},
+    {Method::Embedded, "embedded", false, true, true,
+     "normal acceleration with exact derivatives of Psi; any n and masses; switches charts near a pole"},
+    {Method::Ambient, "ambient", false, false, false,
+     "chart-free: the constrained system of hinge positions, O(n) per step; passes straight through the poles"},
 }};
 
 // === Integrators (Boost.Odeint; simulation/steppers.hpp)
@@ -50,13 +56,14 @@ struct IntegratorTraits {
   Integrator kind;
   std::string_view name;
   bool adaptive;  // takes "tolerance"; a fixed-step integrator takes "step"
+  std::string_view description;  // one line, for `linkage list-methods`
 };
 
 inline constexpr std::array<IntegratorTraits, 4> kIntegrators{{
-    {Integrator::Rk4, "rk4", false},
-    {Integrator::Dopri5, "dopri5", true},
-    {Integrator::Rkf78, "rkf78", true},
-    {Integrator::BulirschStoer, "bulirsch-stoer", true},
+    {Integrator::Rk4, "rk4", false, "classical Runge-Kutta 4, fixed step, cubic Hermite between steps"},
+    {Integrator::Dopri5, "dopri5", true, "Dormand-Prince 5(4), adaptive, dense output"},
+    {Integrator::Rkf78, "rkf78", true, "Runge-Kutta-Fehlberg 7(8), adaptive"},
+    {Integrator::BulirschStoer, "bulirsch-stoer", true, "Bulirsch-Stoer extrapolation, adaptive"},
 }};
 
 // === Why a run stops (the watchdogs of simulation/trajectory.cpp, and a method's own failure)

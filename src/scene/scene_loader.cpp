@@ -12,6 +12,7 @@
 #include "contracts/registry.hpp"
 #include "linkage/method_rules.hpp"
 #include "scene/did_you_mean.hpp"
+#include "scene/title_placeholders.hpp"
 #include "scene/json_error_path.hpp"
 #include "scene/json_fields.hpp"
 #include "scene/output_folder.hpp"
@@ -596,6 +597,7 @@ Scene parseScene(const std::string& text, const std::string& file, const std::ve
 
   if (problems.empty()) problems = checkSceneCost(scene);  // measured on a valid scene only
   if (!problems.empty()) throw SceneError(file, std::move(problems));
+  scene.title = fillTitlePlaceholders(scene.title, scene);
   return scene;
 }
 

@@ -48,9 +48,46 @@ std::optional<std::vector<Step>> parsePath(const std::string& path) {
 
 }  // namespace
 
+namespace {
+
+// "--unset KEY": removes an object member or an array element (a run, say) the scene has.
+void applyUnset(json& document, const std::string& key, std::vector<SceneProblem>& problems) {
+  const std::string where = "--unset " + key;
+  const std::optional<std::vector<Step>> steps = parsePath(key);
+  if (!steps) {
+    problems.push_back({where, "expected a JSON path such as runs[0].tolerance or view.sphere.orbit"});
+    return;
+  }
+  json* node = &document;
+  for (std::size_t s = 0; s < steps->size(); ++s) {
+    const Step& step = (*steps)[s];
+    const bool exists = step.key ? node->is_object() && node->contains(*step.key)
+                                 : node->is_array() && step.index < node->size();
+    if (!exists) {
+      problems.push_back({where, "the scene has no such key (nothing to remove)"});
+      return;
+    }
+    if (s + 1 == steps->size()) {
+      if (step.key)
+        node->erase(*step.key);
+      else
+        node->erase(step.index);
+      return;
+    }
+    node = step.key ? &(*node)[*step.key] : &(*node)[step.index];
+  }
+}
+
+}  // namespace
+
 void applySceneOverrides(json& document, const std::vector<std::string>& overrides,
                          std::vector<SceneProblem>& problems) {
   for (const std::string& assignment : overrides) {
+    if (!document.is_object()) return;  // the file itself is reported by the loader
+    if (assignment.rfind(kUnsetPrefix, 0) == 0) {
+      applyUnset(document, assignment.substr(std::string(kUnsetPrefix).size()), problems);
+      continue;
+    }
     const std::size_t equals = assignment.find('=');
     const std::string key = assignment.substr(0, equals);
     const std::string where = "--set " + key;
@@ -63,7 +100,6 @@ void applySceneOverrides(json& document, const std::vector<std::string>& overrid
     const std::string text = assignment.substr(equals + 1);
     json value = json::parse(text, nullptr, false);
     if (value.is_discarded()) value = text;  // not JSON: a string, as a shell user would type it
-    if (!document.is_object()) return;       // the file itself is reported by the loader
     json* node = &document;
     bool reached = true;
     for (std::size_t s = 0; s < steps->size() && reached; ++s) {
@@ -78,15 +114,17 @@ void applySceneOverrides(json& document, const std::vector<std::string>& overrid
         }
         node = &(*node)[*step.key];
       } else {
-        if (!node->is_array() || step.index >= node->size()) {
+        // An element that exists, or the next one: [n] on an array of n elements appends.
+        if (!node->is_array() || step.index > node->size()) {
           problems.push_back({where, "expected an existing array element [" + std::to_string(step.index) +
-                                         "] (the scene has " +
+                                         "] or the next one (the scene has " +
                                          (node->is_array() ? std::to_string(node->size()) + " elements there"
                                                            : std::string("no array there")) +
                                          ")"});
           reached = false;
           break;
         }
+        if (step.index == node->size()) node->push_back(nullptr);
         node = &(*node)[step.index];
       }
       if (last) *node = value;

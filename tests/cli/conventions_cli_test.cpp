@@ -109,8 +109,8 @@ TEST(ConventionsCli, PipedScenesAreReadOnceAndKeepTheirIdentity) {
   std::string edited = scene;
   edited.replace(edited.find("\"L\": 3.0"), 8, "\"L\": 3.3");
   const ProcessResult other = renderThroughFifo(edited, "1:2");
-  EXPECT_EQ(other.code, 3) << other.err;
-  EXPECT_NE(other.err.find("not of this one"), std::string::npos) << other.err;
+  EXPECT_EQ(other.code, 2) << other.err;
+  EXPECT_NE(other.err.find("out holds another render; what differs: the scene's text"), std::string::npos) << other.err;
   EXPECT_EQ(renderThroughFifo(scene, "1:2").code, 0);  // the same piped scene joins
 }
 

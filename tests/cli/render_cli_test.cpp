@@ -81,7 +81,7 @@ TEST(RenderCli, EditAndRenderAgainReplacesTheEarlierRender) {
   writeFile(folder / "scene.json", scene);
   const ProcessResult shard =
       runLinkage({"render", "scene.json", "--size", "160x90", "--out", "out", "--frames", "0:1"}, folder.path());
-  EXPECT_EQ(shard.code, 3);
+  EXPECT_EQ(shard.code, 2);
   EXPECT_NE(shard.err.find("a whole render (without --frames or --resume) replaces it"), std::string::npos)
       << shard.err;
 }
@@ -123,12 +123,16 @@ TEST(RenderCli, TwoScenesRenderingIntoOneFolderAtOnceNeverMix) {
   }
 }
 
+// renders/<name> for the scene's own size; another size gets its own folder beside it (docs/guide.md).
 TEST(RenderCli, DefaultFolderIsRendersSlashSceneName) {
   TempFolder folder;
-  const ProcessResult render =
-      runLinkage({"render", shippedScene("seam.json"), "--size", "160x90", "--frames", "4:5"}, folder.path());
+  const ProcessResult render = runLinkage({"render", shippedScene("seam.json"), "--frames", "4:5"}, folder.path());
   ASSERT_EQ(render.code, 0) << render.err;
   EXPECT_TRUE(fs::exists(folder.path() / "renders" / "seam" / "frame_00004.png"));
+  const ProcessResult small =
+      runLinkage({"render", shippedScene("seam.json"), "--size", "160x90", "--frames", "4:5"}, folder.path());
+  ASSERT_EQ(small.code, 0) << small.err;
+  EXPECT_TRUE(fs::exists(folder.path() / "renders" / "seam-160x90" / "frame_00004.png"));
 }
 
 // The recipe as scenes/README.md prints it, run as is (only the program path, size and folder added).

@@ -72,6 +72,8 @@ TEST(Install, DebianPackageCarriesTheProgramScenesAndRunTimeDependencies) {
   EXPECT_NE(contents.out.find("./usr/bin/linkage"), std::string::npos) << contents.out;
   EXPECT_NE(contents.out.find("./usr/share/sphere-linkages/scenes/default.json"), std::string::npos);
   EXPECT_NE(contents.out.find("./usr/share/doc/linkage/LICENSE"), std::string::npos);
+  EXPECT_NE(contents.out.find("./usr/share/doc/linkage/docs/guide.md"), std::string::npos);
+  EXPECT_NE(contents.out.find("./usr/share/man/man1/linkage.1"), std::string::npos);
 }
 
 }  // namespace

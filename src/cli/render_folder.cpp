@@ -1,0 +1,52 @@
+#include "cli/render_folder.hpp"
+
+#include <filesystem>
+#include <fstream>
+
+#include "cli/exit_codes.hpp"
+
+namespace sl {
+
+std::string renderFolderFor(const Scene& scene, ImageSize ownSize, int ownFps, int step, bool preview) {
+  std::string folder = scene.output.folder;
+  if (preview) return folder + "-preview";
+  const ImageSize size = scene.output.size;
+  if (size.width != ownSize.width || size.height != ownSize.height)
+    folder += "-" + std::to_string(size.width) + "x" + std::to_string(size.height);
+  if (scene.output.fps != ownFps) folder += "-" + std::to_string(scene.output.fps) + "fps";
+  if (step > 1) folder += "-every" + std::to_string(step);
+  return folder;
+}
+
+ImageSize previewSize(ImageSize size) {
+  const auto quarter = [](int side) { return std::max(16, side / 4 / 2 * 2); };
+  return {quarter(size.width), quarter(size.height)};
+}
+
+void refuseJoiningAnotherRender(const std::string& folder, const nlohmann::json& ours) {
+  std::ifstream in(std::filesystem::path(folder) / "manifest.json");
+  if (!in) return;  // nothing to join yet
+  const nlohmann::json manifest = nlohmann::json::parse(in, nullptr, false);
+  if (manifest.is_discarded() || !manifest.contains("info")) return;  // the manifest's own checks report it
+  const nlohmann::json& theirs = manifest["info"];
+  const auto text = [](const nlohmann::json& info, const char* key) {
+    return info.contains(key) ? info[key].dump() : std::string("none");
+  };
+  std::string differences;
+  const auto differ = [&](const char* key) { return text(theirs, key) != text(ours, key); };
+  const auto add = [&](const std::string& what) { differences += (differences.empty() ? "" : "; ") + what; };
+  if (differ("scene")) add("the scene: " + text(theirs, "scene") + " there, " + text(ours, "scene") + " here");
+  else if (differ("sceneSha256")) add("the scene's text or its --set/--unset overrides");
+  if (differ("width") || differ("height"))
+    add("the size: " + text(theirs, "width") + "x" + text(theirs, "height") + " there, " + text(ours, "width") + "x" +
+        text(ours, "height") + " here");
+  if (differ("fps")) add("the frame rate: " + text(theirs, "fps") + " fps there, " + text(ours, "fps") + " here");
+  if (differ("frames")) add("the frame count: " + text(theirs, "frames") + " there, " + text(ours, "frames") + " here");
+  if (differences.empty()) return;
+  throw CommandExit(kExitBadInput,
+                    "linkage render: " + folder + " holds another render; what differs: " + differences +
+                        ". Shards (--frames) and --resume only join the same render; a whole render (without "
+                        "--frames or --resume) replaces it, as does --replace; or use another --out");
+}
+
+}  // namespace sl

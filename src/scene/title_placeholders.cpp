@@ -1,0 +1,45 @@
+#include "scene/title_placeholders.hpp"
+
+#include <cstdio>
+#include <utility>
+#include <vector>
+
+namespace sl {
+
+namespace {
+
+// 3 as "3", 3.2 as "3.2", as a person writes L.
+std::string shortNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.10g", value);
+  return text;
+}
+
+}  // namespace
+
+std::string fillTitlePlaceholders(const std::string& title, const Scene& scene) {
+  std::vector<std::pair<std::string, std::string>> values{
+      {"{L}", shortNumber(scene.chain.baseLength)},
+      {"{n}", std::to_string(scene.chain.rods)},
+      {"{name}", scene.name},
+  };
+  if (!scene.runs.empty()) {
+    values.push_back({"{method}", std::string(nameOf(scene.runs.front().config.method))});
+    values.push_back({"{integrator}", std::string(nameOf(scene.runs.front().config.integrator))});
+  }
+  std::string text;
+  for (std::size_t i = 0; i < title.size();) {
+    bool replaced = false;
+    for (const auto& [placeholder, value] : values)
+      if (title.compare(i, placeholder.size(), placeholder) == 0) {
+        text += value;
+        i += placeholder.size();
+        replaced = true;
+        break;
+      }
+    if (!replaced) text += title[i++];
+  }
+  return text;
+}
+
+}  // namespace sl

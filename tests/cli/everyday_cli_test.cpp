@@ -1,0 +1,257 @@
+// The everyday conventions of every command: progress lines in a log (stderr not a terminal), a summary line at
+// the end and --quiet everywhere, "-" for a scene on standard input, "did you mean" for mistyped commands and
+// options, list-methods with its defaults, --frames A:B:STEP and --replace.
+#include <algorithm>
+#include <filesystem>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "support/files.hpp"
+#include "support/linkage_binary.hpp"
+#include "support/scene_files.hpp"
+#include "support/temp_folder.hpp"
+
+namespace sl::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+int countOf(const std::string& text, const std::string& part) {
+  int count = 0;
+  for (size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++count;
+  return count;
+}
+
+// A test's stderr is a file, as in a cluster job: a line at every tenth of the work, each whole.
+TEST(EverydayCli, ProgressLinesInALog) {
+  TempFolder folder;
+  const ProcessResult render = runLinkage(
+      {"render", shippedScene("seam.json"), "--size", "160x90", "--frames", "0:100", "--out", "r"}, folder.path());
+  ASSERT_EQ(render.code, 0) << render.err;
+  EXPECT_EQ(render.err.find('\r'), std::string::npos) << render.err;
+  for (int percent = 10; percent <= 100; percent += 10) {
+    const std::string line = "linkage render: frame " + std::to_string(percent) + "/100 (" + std::to_string(percent) + "%)";
+    EXPECT_NE(render.err.find(line), std::string::npos) << line << "\n" << render.err;
+  }
+  EXPECT_EQ(countOf(render.err, "linkage render: frame "), 10) << render.err;
+  // Grid cells of a sweep, likewise.
+  const ProcessResult sweep = runLinkage(
+      {"stability", "--kind", "pole", "--grid", "10", "--methods", "ambient", "--no-charts", "--out", "s"},
+      folder.path());
+  ASSERT_EQ(sweep.code, 0) << sweep.err;
+  EXPECT_EQ(countOf(sweep.err, "linkage stability: cell "), 10) << sweep.err;
+  EXPECT_NE(sweep.err.find("cell 100/100 (100%)"), std::string::npos) << sweep.err;
+  // Grid rows of a curvature grid, likewise; the CSV is the same as without progress (rows computed in blocks).
+  const ProcessResult grid =
+      runLinkage({"geometry", shippedScene("default.json"), "--grid", "40", "--csv", "k.csv"}, folder.path());
+  ASSERT_EQ(grid.code, 0) << grid.err;
+  EXPECT_EQ(countOf(grid.err, "linkage geometry: grid row "), 10) << grid.err;
+  EXPECT_NE(grid.err.find("grid row 40/40 (100%)"), std::string::npos) << grid.err;
+  const ProcessResult quiet = runLinkage(
+      {"render", shippedScene("seam.json"), "--size", "160x90", "--frames", "0:100", "--out", "r", "--quiet"},
+      folder.path());
+  EXPECT_EQ(quiet.err, "");
+}
+
+struct CommandCase {
+  std::string name;
+  std::vector<std::string> args;
+};
+
+std::vector<CommandCase> everyCommand() {
+  const std::string seam = shippedScene("seam.json"), four = shippedScene("default.json");
+  return {
+      {"validate", {"validate", seam}},
+      {"simulate", {"simulate", seam, "--csv", "t.csv"}},
+      {"render", {"render", seam, "--size", "160x90", "--frames", "0:3", "--out", "r"}},
+      {"diff", {"diff", "r", "r"}},
+      {"still", {"still", seam, "--time", "1", "--size", "160x90", "--out", "still.png"}},
+      {"contact-sheet", {"contact-sheet", "r", "--out", "sheet.png"}},
+      {"list-methods", {"list-methods"}},
+      {"bench", {"bench", "--quick", "--start", "generic", "--methods", "ambient", "--integrators", "rk4",
+                 "--no-charts", "--out", "b"}},
+      {"stability", {"stability", "--kind", "pole", "--grid", "3", "--methods", "ambient", "--no-charts", "--out", "s"}},
+      {"geometry", {"geometry", four, "--summary"}},
+      {"numbers", {"numbers", seam}},
+      {"schema", {"schema"}},
+  };
+}
+
+TEST(EverydayCli, EveryCommandEndsWithASummaryAndTakesQuiet) {
+  TempFolder folder;
+  for (const CommandCase& command : everyCommand()) {
+    const ProcessResult loud = runLinkage(command.args, folder.path());
+    EXPECT_EQ(loud.code, 0) << command.name << ": " << loud.err;
+    const size_t last = loud.err.rfind("linkage " + command.name + ": ");
+    ASSERT_NE(last, std::string::npos) << command.name << ": " << loud.err;
+    EXPECT_TRUE(std::regex_search(loud.err.substr(last), std::regex(" in [0-9.e-]+ s.*\n$")))
+        << command.name << ": " << loud.err;
+    std::vector<std::string> quietArgs = command.args;
+    quietArgs.push_back("--quiet");
+    const ProcessResult quiet = runLinkage(quietArgs, folder.path());
+    EXPECT_EQ(quiet.code, 0) << command.name << ": " << quiet.err;
+    EXPECT_EQ(quiet.err, "") << command.name;
+  }
+}
+
+TEST(EverydayCli, DashReadsTheSceneFromStandardInput) {
+  TempFolder folder;
+  const std::string scene = shellQuoted(shippedScene("seam.json"));
+  const std::string linkage = shellQuoted(linkageBinary());
+  const ProcessResult valid = runShell(linkage + " validate - < " + scene, folder.path());
+  EXPECT_EQ(valid.code, 0) << valid.err;
+  EXPECT_NE(valid.out.find("(standard input): ok: \"seam\""), std::string::npos) << valid.out;
+  const ProcessResult simulated = runShell("cat " + scene + " | " + linkage + " simulate - --csv piped.csv", folder.path());
+  EXPECT_EQ(simulated.code, 0) << simulated.err;
+  ASSERT_EQ(runLinkage({"simulate", shippedScene("seam.json"), "--csv", "file.csv"}, folder.path()).code, 0);
+  EXPECT_EQ(readFile(folder.path() / "piped.csv"), readFile(folder.path() / "file.csv"));
+  const ProcessResult bad = runShell("echo '{\"name\": \"x\"}' | " + linkage + " validate -", folder.path());
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("(standard input): duration: missing"), std::string::npos) << bad.err;
+}
+
+TEST(EverydayCli, DidYouMeanForCommandsAndOptions) {
+  TempFolder folder;
+  const ProcessResult command = runLinkage({"rendr", "x.json"}, folder.path());
+  EXPECT_EQ(command.code, 2);
+  EXPECT_NE(command.err.find("\"rendr\" is no command; did you mean \"render\"?"), std::string::npos) << command.err;
+  const ProcessResult option =
+      runLinkage({"render", shippedScene("seam.json"), "--qiuet", "--sise=3x3", "--frames", "0:1"}, folder.path());
+  EXPECT_EQ(option.code, 2);
+  EXPECT_NE(option.err.find("render: \"--qiuet\" is no option; did you mean \"--quiet\"?"), std::string::npos)
+      << option.err;
+  EXPECT_NE(option.err.find("\"--sise\" is no option; did you mean \"--size\"?"), std::string::npos) << option.err;
+  EXPECT_FALSE(fs::exists(folder.path() / "renders"));
+  const ProcessResult far = runLinkage({"validate", shippedScene("seam.json"), "--zzzzzzzz"}, folder.path());
+  EXPECT_EQ(far.code, 2);
+  EXPECT_EQ(far.err.find("did you mean"), std::string::npos) << far.err;
+}
+
+TEST(EverydayCli, ListMethodsMarksTheDefaultsAndSaysWhatEachIs) {
+  TempFolder folder;
+  const ProcessResult list = runLinkage({"list-methods"}, folder.path());
+  ASSERT_EQ(list.code, 0);
+  EXPECT_TRUE(std::regex_search(list.out, std::regex("\n  ambient +\\(default\\) chart-free")) ) << list.out;
+  EXPECT_TRUE(std::regex_search(list.out, std::regex("\n  rkf78 +\\(default\\) ")) ) << list.out;
+  EXPECT_EQ(countOf(list.out, "(default)"), 2) << list.out;
+  EXPECT_TRUE(std::regex_search(list.out, std::regex("\n  christoffel-fd +spec section 4 as published")) ) << list.out;
+  EXPECT_NE(list.out.find("defaults: tolerance 1e-14, step 0.01"), std::string::npos) << list.out;
+}
+
+TEST(EverydayCli, FramesWithAStepAndReplace) {
+  TempFolder folder;
+  const auto render = [&](const std::string& scene, const std::vector<std::string>& more) {
+    std::vector<std::string> args{"render", shippedScene(scene), "--size", "160x90", "--out", "r", "--quiet"};
+    args.insert(args.end(), more.begin(), more.end());
+    return runLinkage(args, folder.path());
+  };
+  ASSERT_EQ(render("seam.json", {"--frames", "5:50:20"}).code, 0);
+  std::vector<std::string> frames;
+  for (const auto& entry : fs::directory_iterator(folder.path() / "r"))  // the lock files (dot files) aside
+    if (entry.path().filename().string()[0] != '.') frames.push_back(entry.path().filename());
+  std::sort(frames.begin(), frames.end());
+  EXPECT_EQ(frames, (std::vector<std::string>{"frame_00005.png", "frame_00025.png", "frame_00045.png", "manifest.json"}));
+  // Every 20th frame equals that frame of a render of the range.
+  ASSERT_EQ(runLinkage({"render", shippedScene("seam.json"), "--size", "160x90", "--out", "all", "--frames", "0:46",
+                        "--quiet"},
+                       folder.path())
+                .code,
+            0);
+  for (const char* name : {"frame_00005.png", "frame_00025.png", "frame_00045.png"})
+    EXPECT_EQ(readFile(folder.path() / "r" / name), readFile(folder.path() / "all" / name)) << name;
+  EXPECT_EQ(render("seam.json", {"--frames", "0:10:0"}).code, 2);
+  ASSERT_EQ(runLinkage({"render", shippedScene("seam.json"), "--size", "160x90", "--out", "one", "--frames", "25",
+                        "--quiet"},
+                       folder.path())
+                .code,
+            0);  // one frame: the same as that frame of a range
+  EXPECT_EQ(readFile(folder.path() / "one/frame_00025.png"), readFile(folder.path() / "all/frame_00025.png"));
+  EXPECT_FALSE(fs::exists(folder.path() / "one/frame_00026.png"));
+  EXPECT_EQ(render("seam.json", {"--frames", "301"}).code, 2);
+  // Another scene's range only joins the same render; --replace removes the earlier one first.
+  EXPECT_EQ(render("comparison.json", {"--frames", "0:2"}).code, 2);
+  EXPECT_EQ(render("comparison.json", {"--frames", "0:2", "--replace"}).code, 0);
+  EXPECT_FALSE(fs::exists(folder.path() / "r/frame_00005.png"));
+  EXPECT_TRUE(fs::exists(folder.path() / "r/frame_00001.png"));
+  EXPECT_EQ(render("comparison.json", {"--frames", "0:2", "--replace", "--resume"}).code, 2);
+}
+
+TEST(EverydayCli, UnsetAndAppendByJsonPath) {
+  TempFolder folder;
+  const std::string seam = shippedScene("seam.json");  // runs[0]: christoffel, dopri5, tolerance 1e-10
+  const ProcessResult kept = runLinkage({"validate", seam, "--set", "runs[0].integrator=rk4"}, folder.path());
+  EXPECT_EQ(kept.code, 2);
+  EXPECT_NE(kept.err.find("runs[0].tolerance: is not used"), std::string::npos) << kept.err;
+  const ProcessResult unset =
+      runLinkage({"validate", seam, "--set", "runs[0].integrator=rk4", "--unset", "runs[0].tolerance"}, folder.path());
+  EXPECT_EQ(unset.code, 0) << unset.err;
+  EXPECT_NE(unset.out.find("\"exact\" (christoffel, rk4)"), std::string::npos) << unset.out;
+  const ProcessResult appended = runLinkage(
+      {"validate", seam, "--set", "runs[2]={\"name\": \"third\", \"method\": \"ambient\"}", "--unset", "runs[1]"},
+      folder.path());
+  EXPECT_EQ(appended.code, 0) << appended.err;
+  EXPECT_NE(appended.out.find("runs: \"exact\" (christoffel, dopri5) \"third\" (ambient, rkf78)\n"), std::string::npos)
+      << appended.out;
+  const ProcessResult beyond = runLinkage({"validate", seam, "--set", "runs[3]={\"name\": \"x\"}"}, folder.path());
+  EXPECT_EQ(beyond.code, 2);
+  EXPECT_NE(beyond.err.find("--set runs[3]: expected an existing array element [3] or the next one (the scene has 2"),
+            std::string::npos)
+      << beyond.err;
+  const ProcessResult missing = runLinkage({"validate", seam, "--unset", "runs[0].nothing"}, folder.path());
+  EXPECT_EQ(missing.code, 2);
+  EXPECT_NE(missing.err.find("--unset runs[0].nothing: the scene has no such key"), std::string::npos) << missing.err;
+}
+
+// default.json's title is "..., {n} rods, L = {L}": an override of L shows in the frame, exactly as a title that
+// says it literally.
+TEST(EverydayCli, TitlePlaceholdersFollowOverrides) {
+  TempFolder folder;
+  std::string text = readFile(shippedScene("default.json"));
+  ASSERT_NE(text.find("{n} rods, L = {L}"), std::string::npos);
+  std::string literal = text;
+  literal.replace(literal.find("{n} rods, L = {L}"), 17, "4 rods, L = 3.2");
+  literal.replace(literal.find("\"L\": 3.0"), 8, "\"L\": 3.2");
+  writeFile(folder.path() / "literal.json", literal);
+  std::string stale = literal;
+  stale.replace(stale.find("L = 3.2"), 7, "L = 3");
+  writeFile(folder.path() / "stale.json", stale);
+  const auto render = [&](const std::string& scene, const std::string& out, std::vector<std::string> more = {}) {
+    // Full size: a narrow frame shortens the title line to fit, cutting off its end.
+    std::vector<std::string> args{"render", scene, "--frames", "0:1", "--out", out, "--quiet"};
+    args.insert(args.end(), more.begin(), more.end());
+    return runLinkage(args, folder.path()).code;
+  };
+  ASSERT_EQ(render(shippedScene("default.json"), "set", {"--set", "linkage.L=3.2"}), 0);
+  ASSERT_EQ(render("literal.json", "literal"), 0);
+  ASSERT_EQ(render("stale.json", "stale"), 0);
+  EXPECT_TRUE(readFile(folder.path() / "set/frame_00000.png") == readFile(folder.path() / "literal/frame_00000.png"));
+  EXPECT_FALSE(readFile(folder.path() / "set/frame_00000.png") == readFile(folder.path() / "stale/frame_00000.png"));
+}
+
+// The rules of docs/hardening.md for the newer commands: standard output checked before exit, a file that cannot
+// be written fails the command and leaves nothing.
+TEST(EverydayCli, NewerCommandsKeepTheOutputRules) {
+  TempFolder folder;
+  const std::string linkage = shellQuoted(linkageBinary()), scene = shellQuoted(shippedScene("seam.json"));
+  const ProcessResult full = runShell(linkage + " numbers " + scene + " --quiet > /dev/full", folder.path());
+  EXPECT_EQ(full.code, 3) << full.err;
+  EXPECT_NE(full.err.find("standard output"), std::string::npos) << full.err;
+  const ProcessResult file = runShell(linkage + " numbers " + scene + " --quiet > out.json", folder.path());
+  EXPECT_EQ(file.code, 0) << file.err;
+  writeFile(folder.path() / "plain", "a file, not a folder");  // so the --out below cannot be written, even as root
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"still", shippedScene("seam.json"), "--time", "1", "--size", "160x90", "--out",
+                                 "plain/s.png"},
+        std::vector<std::string>{"numbers", shippedScene("seam.json"), "--out", "plain/n.json"}}) {
+    const ProcessResult refused = runLinkage(args, folder.path());
+    EXPECT_NE(refused.code, 0) << args[0];
+    EXPECT_NE(refused.err.find("plain/"), std::string::npos) << args[0] << ": " << refused.err;
+  }
+  EXPECT_EQ(readFile(folder.path() / "plain"), "a file, not a folder");
+}
+
+}  // namespace
+}  // namespace sl::testing
