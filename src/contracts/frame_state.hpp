@@ -5,6 +5,8 @@
 // sphere-panel points are 3D points of the view (unit sphere for 4 rods, see ViewSpace).
 
 #include <array>
+#include <cstddef>
+#include <initializer_list>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -62,12 +64,51 @@ struct RunFrame {
   std::vector<MemberFrame> members;
 };
 
+// A read-only sequence of numbers a frame shows: the first `count` values of storage shared with the frames stage's
+// history (append-only, so a value once shown never changes), or values of its own. A frame refers to its history
+// instead of copying it, so building one costs the same at frame 10^5 as at frame 100. Writing to it (tests build
+// series by hand) first gives it values of its own.
+class SharedSamples {
+ public:
+  SharedSamples() = default;
+  SharedSamples(std::vector<double> values) : own_(std::move(values)) {}  // NOLINT: implicit, series as vectors
+  SharedSamples(std::initializer_list<double> values) : own_(values) {}
+  // The first `count` values of `store`, which already holds them; it may grow later but never moves (its capacity
+  // is reserved) nor changes a value before `count`.
+  SharedSamples(std::shared_ptr<const std::vector<double>> store, std::size_t count)
+      : store_(std::move(store)), shared_(store_->data()), count_(count) {}
+
+  std::size_t size() const { return store_ ? count_ : own_.size(); }
+  bool empty() const { return size() == 0; }
+  const double* begin() const { return store_ ? shared_ : own_.data(); }
+  const double* end() const { return begin() + size(); }
+  double operator[](std::size_t i) const { return begin()[i]; }
+  double back() const { return begin()[size() - 1]; }
+
+  double& operator[](std::size_t i) { return own()[i]; }
+  void push_back(double value) { own().push_back(value); }
+
+ private:
+  std::vector<double>& own() {
+    if (store_) {
+      own_.assign(shared_, shared_ + count_);
+      store_.reset();
+    }
+    return own_;
+  }
+
+  std::vector<double> own_;                           // values of its own (when store_ is null)
+  std::shared_ptr<const std::vector<double>> store_;  // else: the shared history
+  const double* shared_ = nullptr;
+  std::size_t count_ = 0;
+};
+
 // A time series for the plot panel.
 struct PlotSeries {
   std::string label;
   ColorRGB color;
-  std::vector<double> times;
-  std::vector<double> values;  // non-finite or non-positive values on a log axis are skipped, never drawn
+  SharedSamples times;
+  SharedSamples values;  // non-finite or non-positive values on a log axis are skipped, never drawn
   std::vector<double> markTimes;  // times marked on the time axis (a Jacobi field's zeros: conjugate points)
   // When the run behind the line stopped, once it has (infinite while it runs): a red cross where the line ends.
   double stopTime = std::numeric_limits<double>::infinity();

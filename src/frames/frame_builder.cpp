@@ -83,10 +83,14 @@ FrameBuilder::FrameBuilder(const Scene& scene, const std::vector<InitialState>& 
       view_(scene.chain.rods, starts.at(0).spherePoint),  // empty for a slack chain: no sphere to draw
       frameCount_(scene.frameCount()),
       history_(runs_.size()),
-      divergence_(runs_.empty() ? 0 : runs_.size() - 1),
       sphereDecoration_(makeSphereDecoration(scene.chain, scene.view.sphereSurface)),
       plotOverviews_(overviewPlots(scene, starts, cancelled)) {
+  plotTimes_ = newSeries();
+  for (size_t i = 1; i < runs_.size(); ++i) divergence_.push_back(newSeries());
   for (size_t i = 0; i < runs_.size(); ++i) {
+    history_[i].energyErrors = newSeries();
+    history_[i].jacobiSizes = newSeries();
+    history_[i].spreads = newSeries();
     RunFrame& frame = history_[i].frame;
     frame.name = scene.runs[i].name;
     frame.method = nameOf(scene.runs[i].config.method);
@@ -95,6 +99,12 @@ FrameBuilder::FrameBuilder(const Scene& scene, const std::vector<InitialState>& 
     if (i < families_.size()) frame.members.resize(families_[i].size());
     frame.trails.resize(scene.view.trailHinges.size());
   }
+}
+
+FrameBuilder::Series FrameBuilder::newSeries() const {
+  auto series = std::make_shared<std::vector<double>>();
+  series->reserve(static_cast<std::size_t>(frameCount_));
+  return series;
 }
 
 // Path sample j of `substeps` on the way to frame k. The last is the frame time itself, computed as k / fps so it
@@ -194,8 +204,8 @@ void FrameBuilder::recordFrameState(RunHistory& history, const Sample& sample) {
   RunFrame& frame = history.frame;
   frame.hinges = hingeList(sample.hinges);
   history.hingesAtFrame = sample.hinges;
-  history.energyErrors.push_back(std::abs(sample.relativeEnergyDrift));
-  history.jacobiSizes.push_back(sample.jacobi.value_or(kNaN));
+  history.energyErrors->push_back(std::abs(sample.relativeEnergyDrift));
+  history.jacobiSizes->push_back(sample.jacobi.value_or(kNaN));
   const size_t kept = static_cast<size_t>(std::ceil(scene_.view.trailFadeSeconds * scene_.output.fps)) + 1;
   for (size_t i = 0; i < scene_.view.trailHinges.size(); ++i) {
     std::vector<Vec2>& trail = frame.trails[i];
@@ -207,15 +217,15 @@ void FrameBuilder::recordFrameState(RunHistory& history, const Sample& sample) {
 // Divergence: the largest distance between corresponding hinges of run 0 and each other run, while
 // both still run. Energy error: |E - E0| / E0 per run, while it runs.
 void FrameBuilder::recordPlots(int k) {
-  plotTimes_.push_back(scene_.frameTime(k));
+  plotTimes_->push_back(scene_.frameTime(k));
   const Eigen::Matrix2Xd& reference = history_[0].hingesAtFrame;
   for (size_t run = 1; run < runs_.size(); ++run) {
     const Eigen::Matrix2Xd& other = history_[run].hingesAtFrame;
-    divergence_[run - 1].push_back(reference.size() == 0 || other.size() == 0 ? kNaN : hingeDistance(reference, other));
+    divergence_[run - 1]->push_back(reference.size() == 0 || other.size() == 0 ? kNaN : hingeDistance(reference, other));
   }
   for (RunHistory& history : history_) {
-    if (history.energyErrors.size() < plotTimes_.size()) history.energyErrors.push_back(kNaN);
-    if (history.jacobiSizes.size() < plotTimes_.size()) history.jacobiSizes.push_back(kNaN);
+    if (history.energyErrors->size() < plotTimes_->size()) history.energyErrors->push_back(kNaN);
+    if (history.jacobiSizes->size() < plotTimes_->size()) history.jacobiSizes->push_back(kNaN);
     // Spread: members still moving against the run, while it moves (plot_overview.cpp computes the same).
     double spread = kNaN;
     for (const MemberFrame& member : history.frame.members) {
@@ -226,7 +236,7 @@ void FrameBuilder::recordPlots(int k) {
       const double distance = hingeDistance(history.hingesAtFrame, hinges);
       spread = std::isnan(spread) ? distance : std::max(spread, distance);
     }
-    history.spreads.push_back(spread);
+    history.spreads->push_back(spread);
   }
 }
 
@@ -240,6 +250,10 @@ FrameState FrameBuilder::snapshot(int k) const {
   state.viewSpace = view_.space();
   state.sphereDecoration = sphereDecoration_;
   for (const RunHistory& history : history_) state.runs.push_back(history.frame);
+  // The plots refer to the history up to this frame (one value per frame so far), never copy it.
+  const std::size_t count = plotTimes_->size();
+  const SharedSamples times(plotTimes_, count);
+  const auto upToNow = [count](const Series& series) { return SharedSamples(series, count); };
   for (std::size_t p = 0; p < scene_.view.plots.size(); ++p) {
     const PlotSpec& spec = scene_.view.plots[p];
     PlotFrame plot;
@@ -250,27 +264,27 @@ FrameState FrameBuilder::snapshot(int k) const {
     if (spec.kind == PlotKind::Divergence) {
       plot.title = "divergence from " + scene_.runs[0].name + " (max hinge distance)";
       for (size_t run = 1; run < runs_.size(); ++run) {
-        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), plotTimes_, divergence_[run - 1], {},
+        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, upToNow(divergence_[run - 1]), {},
                                std::min(stopTimeSoFar(history_[0].frame), stopTimeSoFar(history_[run].frame))});
       }
     } else if (spec.kind == PlotKind::Spread) {
       plot.title = "spread of the family (largest hinge distance from the run)";
       for (size_t run = 0; run < runs_.size(); ++run) {
         if (!scene_.runs[run].family) continue;
-        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), plotTimes_, history_[run].spreads, {},
+        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, upToNow(history_[run].spreads), {},
                                stopTimeSoFar(history_[run].frame)});
       }
     } else if (spec.kind == PlotKind::Jacobi) {
       plot.title = "Jacobi field across the motion |J_perp| (zeros: conjugate points)";
       for (size_t run = 0; run < runs_.size(); ++run) {
         if (!scene_.runs[run].config.jacobi) continue;
-        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), plotTimes_, history_[run].jacobiSizes,
+        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, upToNow(history_[run].jacobiSizes),
                                history_[run].frame.conjugateTimes, stopTimeSoFar(history_[run].frame)});
       }
     } else {
       plot.title = "relative energy error |E - E0| / E0";
       for (size_t run = 0; run < runs_.size(); ++run) {
-        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), plotTimes_, history_[run].energyErrors, {},
+        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, upToNow(history_[run].energyErrors), {},
                                stopTimeSoFar(history_[run].frame)});
       }
     }

@@ -36,12 +36,16 @@ class FrameBuilder {
   const std::vector<Trajectory>& runs() const { return runs_; }
 
  private:
+  // One value per frame, appended and never changed, its capacity reserved for every frame so it never moves:
+  // the frames' plot series refer to it (SharedSamples) instead of copying it.
+  using Series = std::shared_ptr<std::vector<double>>;
+
   struct RunHistory {
-    RunFrame frame;                    // the latest state and the path, trails so far
-    Eigen::Matrix2Xd hingesAtFrame;    // for the divergence plot; no columns once stopped
-    std::vector<double> energyErrors;  // one per frame while running
-    std::vector<double> jacobiSizes;   // one per frame while running (runs with Jacobi fields; else NaN)
-    std::vector<double> spreads;       // one per frame: the family's largest hinge distance from the run
+    RunFrame frame;                  // the latest state and the path, trails so far
+    Eigen::Matrix2Xd hingesAtFrame;  // for the divergence plot; no columns once stopped
+    Series energyErrors;             // one per frame while running
+    Series jacobiSizes;              // one per frame while running (runs with Jacobi fields; else NaN)
+    Series spreads;                  // one per frame: the family's largest hinge distance from the run
   };
 
   void sampleFrame(int k);  // advance the history to frame k (k = sampled_ + 1)
@@ -51,6 +55,7 @@ class FrameBuilder {
   double pathSampleTime(int k, int j, int substeps) const;  // every family member up to frame k, members spread over the cores
   void recordPlots(int k);
   FrameState snapshot(int k) const;
+  Series newSeries() const;
 
   const Scene& scene_;
   std::vector<Trajectory> runs_;
@@ -59,8 +64,8 @@ class FrameBuilder {
   int frameCount_;
   int sampled_ = -1;  // the last frame sampled into the history
   std::vector<RunHistory> history_;
-  std::vector<double> plotTimes_;
-  std::vector<std::vector<double>> divergence_;  // [run - 1][frame]: run 0 against run
+  Series plotTimes_;
+  std::vector<Series> divergence_;  // [run - 1][frame]: run 0 against run
   std::shared_ptr<const SphereDecoration> sphereDecoration_;  // computed once, shared by every frame
   std::vector<PlotOverview> plotOverviews_;                   // per plot: the whole animation's range, empty note
 };
