@@ -19,8 +19,9 @@
 
 namespace {
 
-// Two runs over 102,000 frames at 30 fps, every panel, both plots; the sphere path fades after 4 s (without a
-// fade the path grows to limits::kMaxPathPoints, which is what the picture shows, not overhead).
+// Two runs over 102,000 frames at 30 fps, every panel, both plots; the sphere path fades after 3 s, so from frame 90
+// on it holds as many points in every frame (without a fade the path grows to limits::kMaxPathPoints: what the
+// picture shows, not overhead).
 sl::Scene longScene(int width, int height) {
   return sl::parseScene(R"({"name": "long", "linkage": {"rods": 4, "L": 3},
     "initial": {"coords": [0.3, 0.2], "velocity": [0.5, 0.7]}, "duration": 3400,
@@ -28,7 +29,7 @@ sl::Scene longScene(int width, int height) {
              {"name": "embedded", "method": "embedded", "integrator": "dopri5", "tolerance": 1e-12}],
     "output": {"fps": 30, "width": )" + std::to_string(width) + R"(, "height": )" + std::to_string(height) + R"(},
     "view": {"panels": ["text", "sphere", "linkage", {"panel": "plot", "plot": "divergence"},
-                        {"panel": "plot", "plot": "energy"}], "trails": [1], "path_fade_seconds": 4}})",
+                        {"panel": "plot", "plot": "energy"}], "trails": [1], "path_fade_seconds": 3}})",
                         "long.json");
 }
 

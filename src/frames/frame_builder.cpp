@@ -27,41 +27,43 @@ std::vector<Vec2> hingeList(const Eigen::Matrix2Xd& hinges) {
 }
 
 // Drops points older than `window` seconds before `now` (window 0 keeps everything).
-template <class T>
-void fadeOut(std::vector<T>& points, std::vector<double>& times, double now, double window) {
+template <class Path>
+void fadeOut(Path& path, double now, double window) {
   if (window <= 0) return;
-  const auto first = std::lower_bound(times.begin(), times.end(), now - window);
-  const auto count = first - times.begin();
-  points.erase(points.begin(), points.begin() + count);
-  times.erase(times.begin(), first);
+  const auto first = std::lower_bound(path.times.begin(), path.times.end(), now - window);
+  const auto count = static_cast<std::size_t>(first - path.times.begin());
+  path.points.dropOldest(count);
+  path.times.dropOldest(count);
 }
 
 // Bounds a path's memory and drawing cost whatever the duration and sampling: past kMaxPathPoints points, every
 // other point of the older part goes (the newest kRecentPathPoints stay at full resolution). Depends on the
 // sequence of samples only, so every shard thins alike.
-template <class T>
-void thinOut(std::vector<T>& points, std::vector<double>& times) {
-  if (points.size() <= limits::kMaxPathPoints) return;
-  const std::size_t older = points.size() - limits::kRecentPathPoints;
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < points.size(); ++i) {
+template <class Path>
+void thinOut(Path& path) {
+  const std::size_t size = path.points.size();
+  if (size <= limits::kMaxPathPoints) return;
+  const std::size_t older = size - limits::kRecentPathPoints;
+  std::vector<Vec3> points;
+  std::vector<double> times;
+  for (std::size_t i = 0; i < size; ++i) {
     if (i < older && i % 2 == 1) continue;
-    points[kept] = points[i];
-    times[kept] = times[i];
-    ++kept;
+    points.push_back(path.points[i]);
+    times.push_back(path.times[i]);
   }
-  points.resize(kept);
-  times.resize(kept);
+  path.points.assign(std::move(points));
+  path.times.assign(std::move(times));
 }
 
 // The path's point at time t (times increasing), linearly between the samples around it.
-Vec3 pointAtTime(const std::vector<Vec3>& path, const std::vector<double>& times, double t) {
-  const auto after = std::lower_bound(times.begin(), times.end(), t);
-  if (after == times.end()) return path.back();
-  const std::size_t i = static_cast<std::size_t>(after - times.begin());
-  if (i == 0 || times[i] == times[i - 1]) return path[i];
-  const double u = (t - times[i - 1]) / (times[i] - times[i - 1]);
-  const Vec3 &a = path[i - 1], &b = path[i];
+template <class Path>
+Vec3 pointAtTime(const Path& path, double t) {
+  const auto after = std::lower_bound(path.times.begin(), path.times.end(), t);
+  if (after == path.times.end()) return path.points.back();
+  const std::size_t i = static_cast<std::size_t>(after - path.times.begin());
+  if (i == 0 || path.times[i] == path.times[i - 1]) return path.points[i];
+  const double u = (t - path.times[i - 1]) / (path.times[i] - path.times[i - 1]);
+  const Vec3 &a = path.points[i - 1], &b = path.points[i];
   return {a.x + u * (b.x - a.x), a.y + u * (b.y - a.y), a.z + u * (b.z - a.z)};
 }
 
@@ -83,28 +85,19 @@ FrameBuilder::FrameBuilder(const Scene& scene, const std::vector<InitialState>& 
       view_(scene.chain.rods, starts.at(0).spherePoint),  // empty for a slack chain: no sphere to draw
       frameCount_(scene.frameCount()),
       history_(runs_.size()),
+      divergence_(runs_.empty() ? 0 : runs_.size() - 1),
       sphereDecoration_(makeSphereDecoration(scene.chain, scene.view.sphereSurface)),
       plotOverviews_(overviewPlots(scene, starts, cancelled)) {
-  plotTimes_ = newSeries();
-  for (size_t i = 1; i < runs_.size(); ++i) divergence_.push_back(newSeries());
   for (size_t i = 0; i < runs_.size(); ++i) {
-    history_[i].energyErrors = newSeries();
-    history_[i].jacobiSizes = newSeries();
-    history_[i].spreads = newSeries();
     RunFrame& frame = history_[i].frame;
     frame.name = scene.runs[i].name;
     frame.method = nameOf(scene.runs[i].config.method);
     frame.color = runColor(scene, i);
     frame.baseLength = scene.runs[i].chain.baseLength;
     if (i < families_.size()) frame.members.resize(families_[i].size());
-    frame.trails.resize(scene.view.trailHinges.size());
+    history_[i].memberPaths.resize(frame.members.size());
+    history_[i].trails.resize(scene.view.trailHinges.size());
   }
-}
-
-FrameBuilder::Series FrameBuilder::newSeries() const {
-  auto series = std::make_shared<std::vector<double>>();
-  series->reserve(static_cast<std::size_t>(frameCount_));
-  return series;
 }
 
 // Path sample j of `substeps` on the way to frame k. The last is the frame time itself, computed as k / fps so it
@@ -146,6 +139,7 @@ void FrameBuilder::sampleMembers(int k) {
   parallelFor(jobs.size(), [&](std::size_t j) {
     const auto [run, m] = jobs[j];
     MemberFrame& member = history_[run].frame.members[m];
+    PathHistory& path = history_[run].memberPaths[m];
     Trajectory& trajectory = families_[run][m];
     for (int step = 1; step <= substeps && !member.stopped; ++step) {
       const double t = pathSampleTime(k, step, substeps);
@@ -155,10 +149,10 @@ void FrameBuilder::sampleMembers(int k) {
         break;
       }
       member.current = view_.project(sample->spherePoint);
-      member.path.push_back(member.current);
-      member.pathTimes.push_back(t);
-      fadeOut(member.path, member.pathTimes, t, scene_.view.pathFadeSeconds);
-      thinOut(member.path, member.pathTimes);
+      path.points.push_back(member.current);
+      path.times.push_back(t);
+      fadeOut(path, t, scene_.view.pathFadeSeconds);
+      thinOut(path);
       if (step == substeps) member.hinges = hingeList(sample->hinges);
     }
   });
@@ -186,16 +180,16 @@ void FrameBuilder::sampleRunAt(size_t run, double t, bool isFrameTime) {
     return;
   }
   frame.current = view_.project(sample->spherePoint);
-  frame.path.push_back(frame.current);
-  frame.pathTimes.push_back(t);
+  history.path.points.push_back(frame.current);
+  history.path.times.push_back(t);
   // Conjugate points up to t, placed on the path between the samples around them.
   for (const double conjugate : runs_[run].conjugateTimes()) {
     if (conjugate > t || (!frame.conjugateTimes.empty() && conjugate <= frame.conjugateTimes.back())) continue;
     frame.conjugateTimes.push_back(conjugate);
-    frame.conjugatePoints.push_back(pointAtTime(frame.path, frame.pathTimes, conjugate));
+    frame.conjugatePoints.push_back(pointAtTime(history.path, conjugate));
   }
-  fadeOut(frame.path, frame.pathTimes, t, scene_.view.pathFadeSeconds);
-  thinOut(frame.path, frame.pathTimes);
+  fadeOut(history.path, t, scene_.view.pathFadeSeconds);
+  thinOut(history.path);
   if (isFrameTime) recordFrameState(history, *sample);
 }
 
@@ -204,28 +198,28 @@ void FrameBuilder::recordFrameState(RunHistory& history, const Sample& sample) {
   RunFrame& frame = history.frame;
   frame.hinges = hingeList(sample.hinges);
   history.hingesAtFrame = sample.hinges;
-  history.energyErrors->push_back(std::abs(sample.relativeEnergyDrift));
-  history.jacobiSizes->push_back(sample.jacobi.value_or(kNaN));
+  history.energyErrors.push_back(std::abs(sample.relativeEnergyDrift));
+  history.jacobiSizes.push_back(sample.jacobi.value_or(kNaN));
   const size_t kept = static_cast<size_t>(std::ceil(scene_.view.trailFadeSeconds * scene_.output.fps)) + 1;
   for (size_t i = 0; i < scene_.view.trailHinges.size(); ++i) {
-    std::vector<Vec2>& trail = frame.trails[i];
+    SharedTrack<Vec2>& trail = history.trails[i];
     trail.push_back(frame.hinges[static_cast<size_t>(scene_.view.trailHinges[i] - 1)]);
-    if (trail.size() > kept) trail.erase(trail.begin());
+    if (trail.size() > kept) trail.dropOldest(trail.size() - kept);
   }
 }
 
 // Divergence: the largest distance between corresponding hinges of run 0 and each other run, while
 // both still run. Energy error: |E - E0| / E0 per run, while it runs.
 void FrameBuilder::recordPlots(int k) {
-  plotTimes_->push_back(scene_.frameTime(k));
+  plotTimes_.push_back(scene_.frameTime(k));
   const Eigen::Matrix2Xd& reference = history_[0].hingesAtFrame;
   for (size_t run = 1; run < runs_.size(); ++run) {
     const Eigen::Matrix2Xd& other = history_[run].hingesAtFrame;
-    divergence_[run - 1]->push_back(reference.size() == 0 || other.size() == 0 ? kNaN : hingeDistance(reference, other));
+    divergence_[run - 1].push_back(reference.size() == 0 || other.size() == 0 ? kNaN : hingeDistance(reference, other));
   }
   for (RunHistory& history : history_) {
-    if (history.energyErrors->size() < plotTimes_->size()) history.energyErrors->push_back(kNaN);
-    if (history.jacobiSizes->size() < plotTimes_->size()) history.jacobiSizes->push_back(kNaN);
+    if (history.energyErrors.size() < plotTimes_.size()) history.energyErrors.push_back(kNaN);
+    if (history.jacobiSizes.size() < plotTimes_.size()) history.jacobiSizes.push_back(kNaN);
     // Spread: members still moving against the run, while it moves (plot_overview.cpp computes the same).
     double spread = kNaN;
     for (const MemberFrame& member : history.frame.members) {
@@ -236,7 +230,7 @@ void FrameBuilder::recordPlots(int k) {
       const double distance = hingeDistance(history.hingesAtFrame, hinges);
       spread = std::isnan(spread) ? distance : std::max(spread, distance);
     }
-    history.spreads->push_back(spread);
+    history.spreads.push_back(spread);
   }
 }
 
@@ -249,11 +243,20 @@ FrameState FrameBuilder::snapshot(int k) const {
   state.rods = scene_.chain.rods;
   state.viewSpace = view_.space();
   state.sphereDecoration = sphereDecoration_;
-  for (const RunHistory& history : history_) state.runs.push_back(history.frame);
-  // The plots refer to the history up to this frame (one value per frame so far), never copy it.
-  const std::size_t count = plotTimes_->size();
-  const SharedSamples times(plotTimes_, count);
-  const auto upToNow = [count](const Series& series) { return SharedSamples(series, count); };
+  // Paths, trails and plots refer to the history, never copy it.
+  for (const RunHistory& history : history_) {
+    RunFrame run = history.frame;
+    run.path = history.path.points.view();
+    run.pathTimes = history.path.times.view();
+    for (const SharedTrack<Vec2>& trail : history.trails) run.trails.push_back(trail.view());
+    for (std::size_t m = 0; m < run.members.size(); ++m) {
+      run.members[m].path = history.memberPaths[m].points.view();
+      run.members[m].pathTimes = history.memberPaths[m].times.view();
+    }
+    state.runs.push_back(std::move(run));
+  }
+  const SharedSamples times = plotTimes_.view();
+  const auto upToNow = [](const SharedTrack<double>& series) { return series.view(); };
   for (std::size_t p = 0; p < scene_.view.plots.size(); ++p) {
     const PlotSpec& spec = scene_.view.plots[p];
     PlotFrame plot;
