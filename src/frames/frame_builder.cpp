@@ -256,7 +256,6 @@ FrameState FrameBuilder::snapshot(int k) const {
     state.runs.push_back(std::move(run));
   }
   const SharedSamples times = plotTimes_.view();
-  const auto upToNow = [](const SharedTrack<double>& series) { return series.view(); };
   for (std::size_t p = 0; p < scene_.view.plots.size(); ++p) {
     const PlotSpec& spec = scene_.view.plots[p];
     PlotFrame plot;
@@ -264,32 +263,37 @@ FrameState FrameBuilder::snapshot(int k) const {
     plot.timeMax = scene_.duration;
     plot.valueRange = plotOverviews_[p].valueRange;
     plot.emptyNote = plotOverviews_[p].emptyNote;
-    if (spec.kind == PlotKind::Divergence) {
-      plot.title = "divergence from " + scene_.runs[0].name + " (max hinge distance)";
-      for (size_t run = 1; run < runs_.size(); ++run) {
-        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, upToNow(divergence_[run - 1]), {},
-                               std::min(stopTimeSoFar(history_[0].frame), stopTimeSoFar(history_[run].frame))});
-      }
-    } else if (spec.kind == PlotKind::Spread) {
-      plot.title = "spread of the family (largest hinge distance from the run)";
-      for (size_t run = 0; run < runs_.size(); ++run) {
-        if (!scene_.runs[run].family) continue;
-        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, upToNow(history_[run].spreads), {},
-                               stopTimeSoFar(history_[run].frame)});
-      }
-    } else if (spec.kind == PlotKind::Jacobi) {
-      plot.title = "Jacobi field across the motion |J_perp| (zeros: conjugate points)";
-      for (size_t run = 0; run < runs_.size(); ++run) {
-        if (!scene_.runs[run].config.jacobi) continue;
-        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, upToNow(history_[run].jacobiSizes),
-                               history_[run].frame.conjugateTimes, stopTimeSoFar(history_[run].frame)});
-      }
-    } else {
-      plot.title = "relative energy error |E - E0| / E0";
-      for (size_t run = 0; run < runs_.size(); ++run) {
-        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, upToNow(history_[run].energyErrors), {},
-                               stopTimeSoFar(history_[run].frame)});
-      }
+    switch (spec.kind) {  // every kind, no default: the compiler names a kind left out
+      case PlotKind::Divergence:
+        plot.title = "divergence from " + scene_.runs[0].name + " (max hinge distance)";
+        for (size_t run = 1; run < runs_.size(); ++run) {
+          plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, divergence_[run - 1].view(), {},
+                                 std::min(stopTimeSoFar(history_[0].frame), stopTimeSoFar(history_[run].frame))});
+        }
+        break;
+      case PlotKind::Spread:
+        plot.title = "spread of the family (largest hinge distance from the run)";
+        for (size_t run = 0; run < runs_.size(); ++run) {
+          if (!scene_.runs[run].family) continue;
+          plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, history_[run].spreads.view(), {},
+                                 stopTimeSoFar(history_[run].frame)});
+        }
+        break;
+      case PlotKind::Jacobi:
+        plot.title = "Jacobi field across the motion |J_perp| (zeros: conjugate points)";
+        for (size_t run = 0; run < runs_.size(); ++run) {
+          if (!scene_.runs[run].config.jacobi) continue;
+          plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, history_[run].jacobiSizes.view(),
+                                 history_[run].frame.conjugateTimes, stopTimeSoFar(history_[run].frame)});
+        }
+        break;
+      case PlotKind::EnergyError:
+        plot.title = "relative energy error |E - E0| / E0";
+        for (size_t run = 0; run < runs_.size(); ++run) {
+          plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, history_[run].energyErrors.view(),
+                                 {}, stopTimeSoFar(history_[run].frame)});
+        }
+        break;
     }
     state.plots.push_back(std::move(plot));
   }
