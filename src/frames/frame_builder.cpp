@@ -170,7 +170,7 @@ void FrameBuilder::sampleRunAt(size_t run, double t, bool isFrameTime) {
     if (stop) {
       frame.stopReason = nameOf(stop->reason);
       frame.stopWhy = std::string(traits(stop->reason).meaning);
-      frame.stopMeasured = stop->measured;
+      frame.stopMeasured = stop->reading();
     }
     history.hingesAtFrame.resize(2, 0);
     return;
