@@ -89,11 +89,11 @@ Measurement compare(const RunRecord& record, const ReferencePath& reference) {
   if (reference.stop) {
     m.status = Verdict::ReferenceStopped;
     m.stopDetail = referenceMethodName(reference) + ": " + nameOf(reference.stop->reason) + " at time " +
-                   std::to_string(reference.stop->time) + ": " + reference.stop->detail;
+                   std::to_string(reference.stop->time) + ": " + reference.stop->detail();
   } else if (record.stop && !finished) {
     m.status = record.stop->reason;
     m.stopTime = record.stop->time;
-    m.stopDetail = record.stop->detail;
+    m.stopDetail = record.stop->detail();
   } else if (checked && !(m.maxError < kWrongPathError)) {
     m.status = Verdict::WrongPath;
   }

@@ -10,7 +10,7 @@ void reportStops(const Scene& scene, const std::vector<Trajectory>& runs, bool q
     const std::optional<StopInfo>& stop = runs[i].stop();
     if (!stop) continue;
     std::cerr << "run \"" << scene.runs[i].name << "\" stopped at t = " << stop->time << ": " << nameOf(stop->reason)
-              << (stop->detail.empty() ? "" : " (" + stop->detail + ")") << '\n';
+              << (stop->detail().empty() ? "" : " (" + stop->detail() + ")") << '\n';
   }
 }
 

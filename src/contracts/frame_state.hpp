@@ -4,7 +4,10 @@
 // Units: linkage positions in rod lengths (plane coordinates, pins at (0,0) and (L,0));
 // sphere-panel points are 3D points of the view (unit sphere for 4 rods, see ViewSpace).
 
+#include <algorithm>
 #include <array>
+#include <cstddef>
+#include <initializer_list>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -22,12 +25,60 @@ enum class ViewSpace {
   Circle   // 3 rods: (cos t, sin t, 0) on the equator
 };
 
+// A read-only sequence a frame shows (path points, their times, plot values): `count` values of storage shared with
+// the frames stage's history from `first` on, or values of its own. The history only appends to that storage and
+// never moves it (a full or rewritten history goes on in new storage; frames keep the old one alive), so a value a
+// frame shows never changes, and a frame refers to its history instead of copying it: building one costs the same
+// at frame 10^5 as at frame 100. Writing to it (tests build frames by hand) first gives it values of its own.
+template <class T>
+class SharedSpan {
+ public:
+  SharedSpan() = default;
+  SharedSpan(std::vector<T> values) : own_(std::move(values)) {}  // NOLINT: implicit, so frames can be written as vectors
+  SharedSpan(std::initializer_list<T> values) : own_(values) {}
+  // `count` values of `store` from `first` on, which it already holds; see above for what the store may do later.
+  SharedSpan(std::shared_ptr<const std::vector<T>> store, std::size_t first, std::size_t count)
+      : store_(std::move(store)), shared_(store_->data() + first), count_(count) {}
+
+  std::size_t size() const { return store_ ? count_ : own_.size(); }
+  bool empty() const { return size() == 0; }
+  const T* begin() const { return store_ ? shared_ : own_.data(); }
+  const T* end() const { return begin() + size(); }
+  const T& operator[](std::size_t i) const { return begin()[i]; }
+  const T& front() const { return begin()[0]; }
+  const T& back() const { return begin()[size() - 1]; }
+
+  T& operator[](std::size_t i) { return own()[i]; }
+  void push_back(const T& value) { own().push_back(value); }
+  void clear() { own().clear(); }
+
+  friend bool operator==(const SharedSpan& a, const SharedSpan& b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin());
+  }
+
+ private:
+  std::vector<T>& own() {
+    if (store_) {
+      own_.assign(shared_, shared_ + count_);
+      store_.reset();
+    }
+    return own_;
+  }
+
+  std::vector<T> own_;                           // values of its own (when store_ is null)
+  std::shared_ptr<const std::vector<T>> store_;  // else: the shared history
+  const T* shared_ = nullptr;
+  std::size_t count_ = 0;
+};
+
+using SharedSamples = SharedSpan<double>;
+
 // One member of a run's family of geodesics (issue 15) at this frame: drawn thin, with the others.
 struct MemberFrame {
   bool stopped = false;     // stopped at or before this frame's time (frozen where it stopped)
   std::vector<Vec2> hinges;  // the linkage panel's "feather": every member's chain, faint
-  std::vector<Vec3> path;    // as RunFrame::path
-  std::vector<double> pathTimes;
+  SharedSpan<Vec3> path;    // as RunFrame::path
+  SharedSamples pathTimes;
   Vec3 current;  // a point of the wavefront
 };
 
@@ -47,11 +98,11 @@ struct RunFrame {
   // Linkage panel: the n-1 interior hinges at the last valid time (frozen once stopped).
   std::vector<Vec2> hinges;
   // Fading trails of chosen hinges: trails[k] = past positions of hinge trailHinges[k], oldest first.
-  std::vector<std::vector<Vec2>> trails;
+  std::vector<SharedSpan<Vec2>> trails;
 
   // Sphere panel: the path so far (oldest first) with the time of each point, and the current point.
-  std::vector<Vec3> path;
-  std::vector<double> pathTimes;
+  SharedSpan<Vec3> path;
+  SharedSamples pathTimes;
   Vec3 current;
 
   // Conjugate points reached so far (runs with "jacobi": true): their times and places on the sphere path.
@@ -66,8 +117,8 @@ struct RunFrame {
 struct PlotSeries {
   std::string label;
   ColorRGB color;
-  std::vector<double> times;
-  std::vector<double> values;  // non-finite or non-positive values on a log axis are skipped, never drawn
+  SharedSamples times;
+  SharedSamples values;  // non-finite or non-positive values on a log axis are skipped, never drawn
   std::vector<double> markTimes;  // times marked on the time axis (a Jacobi field's zeros: conjugate points)
   // When the run behind the line stopped, once it has (infinite while it runs): a red cross where the line ends.
   double stopTime = std::numeric_limits<double>::infinity();

@@ -27,41 +27,43 @@ std::vector<Vec2> hingeList(const Eigen::Matrix2Xd& hinges) {
 }
 
 // Drops points older than `window` seconds before `now` (window 0 keeps everything).
-template <class T>
-void fadeOut(std::vector<T>& points, std::vector<double>& times, double now, double window) {
+template <class Path>
+void fadeOut(Path& path, double now, double window) {
   if (window <= 0) return;
-  const auto first = std::lower_bound(times.begin(), times.end(), now - window);
-  const auto count = first - times.begin();
-  points.erase(points.begin(), points.begin() + count);
-  times.erase(times.begin(), first);
+  const auto first = std::lower_bound(path.times.begin(), path.times.end(), now - window);
+  const auto count = static_cast<std::size_t>(first - path.times.begin());
+  path.points.dropOldest(count);
+  path.times.dropOldest(count);
 }
 
 // Bounds a path's memory and drawing cost whatever the duration and sampling: past kMaxPathPoints points, every
 // other point of the older part goes (the newest kRecentPathPoints stay at full resolution). Depends on the
 // sequence of samples only, so every shard thins alike.
-template <class T>
-void thinOut(std::vector<T>& points, std::vector<double>& times) {
-  if (points.size() <= limits::kMaxPathPoints) return;
-  const std::size_t older = points.size() - limits::kRecentPathPoints;
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < points.size(); ++i) {
+template <class Path>
+void thinOut(Path& path) {
+  const std::size_t size = path.points.size();
+  if (size <= limits::kMaxPathPoints) return;
+  const std::size_t older = size - limits::kRecentPathPoints;
+  std::vector<Vec3> points;
+  std::vector<double> times;
+  for (std::size_t i = 0; i < size; ++i) {
     if (i < older && i % 2 == 1) continue;
-    points[kept] = points[i];
-    times[kept] = times[i];
-    ++kept;
+    points.push_back(path.points[i]);
+    times.push_back(path.times[i]);
   }
-  points.resize(kept);
-  times.resize(kept);
+  path.points.assign(std::move(points));
+  path.times.assign(std::move(times));
 }
 
 // The path's point at time t (times increasing), linearly between the samples around it.
-Vec3 pointAtTime(const std::vector<Vec3>& path, const std::vector<double>& times, double t) {
-  const auto after = std::lower_bound(times.begin(), times.end(), t);
-  if (after == times.end()) return path.back();
-  const std::size_t i = static_cast<std::size_t>(after - times.begin());
-  if (i == 0 || times[i] == times[i - 1]) return path[i];
-  const double u = (t - times[i - 1]) / (times[i] - times[i - 1]);
-  const Vec3 &a = path[i - 1], &b = path[i];
+template <class Path>
+Vec3 pointAtTime(const Path& path, double t) {
+  const auto after = std::lower_bound(path.times.begin(), path.times.end(), t);
+  if (after == path.times.end()) return path.points.back();
+  const std::size_t i = static_cast<std::size_t>(after - path.times.begin());
+  if (i == 0 || path.times[i] == path.times[i - 1]) return path.points[i];
+  const double u = (t - path.times[i - 1]) / (path.times[i] - path.times[i - 1]);
+  const Vec3 &a = path.points[i - 1], &b = path.points[i];
   return {a.x + u * (b.x - a.x), a.y + u * (b.y - a.y), a.z + u * (b.z - a.z)};
 }
 
@@ -93,7 +95,8 @@ FrameBuilder::FrameBuilder(const Scene& scene, const std::vector<InitialState>& 
     frame.color = runColor(scene, i);
     frame.baseLength = scene.runs[i].chain.baseLength;
     if (i < families_.size()) frame.members.resize(families_[i].size());
-    frame.trails.resize(scene.view.trailHinges.size());
+    history_[i].memberPaths.resize(frame.members.size());
+    history_[i].trails.resize(scene.view.trailHinges.size());
   }
 }
 
@@ -136,6 +139,7 @@ void FrameBuilder::sampleMembers(int k) {
   parallelFor(jobs.size(), [&](std::size_t j) {
     const auto [run, m] = jobs[j];
     MemberFrame& member = history_[run].frame.members[m];
+    PathHistory& path = history_[run].memberPaths[m];
     Trajectory& trajectory = families_[run][m];
     for (int step = 1; step <= substeps && !member.stopped; ++step) {
       const double t = pathSampleTime(k, step, substeps);
@@ -145,10 +149,10 @@ void FrameBuilder::sampleMembers(int k) {
         break;
       }
       member.current = view_.project(sample->spherePoint);
-      member.path.push_back(member.current);
-      member.pathTimes.push_back(t);
-      fadeOut(member.path, member.pathTimes, t, scene_.view.pathFadeSeconds);
-      thinOut(member.path, member.pathTimes);
+      path.points.push_back(member.current);
+      path.times.push_back(t);
+      fadeOut(path, t, scene_.view.pathFadeSeconds);
+      thinOut(path);
       if (step == substeps) member.hinges = hingeList(sample->hinges);
     }
   });
@@ -166,7 +170,7 @@ void FrameBuilder::sampleRunAt(size_t run, double t, bool isFrameTime) {
     if (stop) {
       frame.stopReason = nameOf(stop->reason);
       frame.stopWhy = std::string(traits(stop->reason).meaning);
-      frame.stopMeasured = stop->measured;
+      frame.stopMeasured = stop->reading();
     }
     history.hingesAtFrame.resize(2, 0);
     return;
@@ -176,16 +180,16 @@ void FrameBuilder::sampleRunAt(size_t run, double t, bool isFrameTime) {
     return;
   }
   frame.current = view_.project(sample->spherePoint);
-  frame.path.push_back(frame.current);
-  frame.pathTimes.push_back(t);
+  history.path.points.push_back(frame.current);
+  history.path.times.push_back(t);
   // Conjugate points up to t, placed on the path between the samples around them.
   for (const double conjugate : runs_[run].conjugateTimes()) {
     if (conjugate > t || (!frame.conjugateTimes.empty() && conjugate <= frame.conjugateTimes.back())) continue;
     frame.conjugateTimes.push_back(conjugate);
-    frame.conjugatePoints.push_back(pointAtTime(frame.path, frame.pathTimes, conjugate));
+    frame.conjugatePoints.push_back(pointAtTime(history.path, conjugate));
   }
-  fadeOut(frame.path, frame.pathTimes, t, scene_.view.pathFadeSeconds);
-  thinOut(frame.path, frame.pathTimes);
+  fadeOut(history.path, t, scene_.view.pathFadeSeconds);
+  thinOut(history.path);
   if (isFrameTime) recordFrameState(history, *sample);
 }
 
@@ -198,9 +202,9 @@ void FrameBuilder::recordFrameState(RunHistory& history, const Sample& sample) {
   history.jacobiSizes.push_back(sample.jacobi.value_or(kNaN));
   const size_t kept = static_cast<size_t>(std::ceil(scene_.view.trailFadeSeconds * scene_.output.fps)) + 1;
   for (size_t i = 0; i < scene_.view.trailHinges.size(); ++i) {
-    std::vector<Vec2>& trail = frame.trails[i];
+    SharedTrack<Vec2>& trail = history.trails[i];
     trail.push_back(frame.hinges[static_cast<size_t>(scene_.view.trailHinges[i] - 1)]);
-    if (trail.size() > kept) trail.erase(trail.begin());
+    if (trail.size() > kept) trail.dropOldest(trail.size() - kept);
   }
 }
 
@@ -239,7 +243,19 @@ FrameState FrameBuilder::snapshot(int k) const {
   state.rods = scene_.chain.rods;
   state.viewSpace = view_.space();
   state.sphereDecoration = sphereDecoration_;
-  for (const RunHistory& history : history_) state.runs.push_back(history.frame);
+  // Paths, trails and plots refer to the history, never copy it.
+  for (const RunHistory& history : history_) {
+    RunFrame run = history.frame;
+    run.path = history.path.points.view();
+    run.pathTimes = history.path.times.view();
+    for (const SharedTrack<Vec2>& trail : history.trails) run.trails.push_back(trail.view());
+    for (std::size_t m = 0; m < run.members.size(); ++m) {
+      run.members[m].path = history.memberPaths[m].points.view();
+      run.members[m].pathTimes = history.memberPaths[m].times.view();
+    }
+    state.runs.push_back(std::move(run));
+  }
+  const SharedSamples times = plotTimes_.view();
   for (std::size_t p = 0; p < scene_.view.plots.size(); ++p) {
     const PlotSpec& spec = scene_.view.plots[p];
     PlotFrame plot;
@@ -247,32 +263,37 @@ FrameState FrameBuilder::snapshot(int k) const {
     plot.timeMax = scene_.duration;
     plot.valueRange = plotOverviews_[p].valueRange;
     plot.emptyNote = plotOverviews_[p].emptyNote;
-    if (spec.kind == PlotKind::Divergence) {
-      plot.title = "divergence from " + scene_.runs[0].name + " (max hinge distance)";
-      for (size_t run = 1; run < runs_.size(); ++run) {
-        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), plotTimes_, divergence_[run - 1], {},
-                               std::min(stopTimeSoFar(history_[0].frame), stopTimeSoFar(history_[run].frame))});
-      }
-    } else if (spec.kind == PlotKind::Spread) {
-      plot.title = "spread of the family (largest hinge distance from the run)";
-      for (size_t run = 0; run < runs_.size(); ++run) {
-        if (!scene_.runs[run].family) continue;
-        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), plotTimes_, history_[run].spreads, {},
-                               stopTimeSoFar(history_[run].frame)});
-      }
-    } else if (spec.kind == PlotKind::Jacobi) {
-      plot.title = "Jacobi field across the motion |J_perp| (zeros: conjugate points)";
-      for (size_t run = 0; run < runs_.size(); ++run) {
-        if (!scene_.runs[run].config.jacobi) continue;
-        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), plotTimes_, history_[run].jacobiSizes,
-                               history_[run].frame.conjugateTimes, stopTimeSoFar(history_[run].frame)});
-      }
-    } else {
-      plot.title = "relative energy error |E - E0| / E0";
-      for (size_t run = 0; run < runs_.size(); ++run) {
-        plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), plotTimes_, history_[run].energyErrors, {},
-                               stopTimeSoFar(history_[run].frame)});
-      }
+    switch (spec.kind) {  // every kind, no default: the compiler names a kind left out
+      case PlotKind::Divergence:
+        plot.title = "divergence from " + scene_.runs[0].name + " (max hinge distance)";
+        for (size_t run = 1; run < runs_.size(); ++run) {
+          plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, divergence_[run - 1].view(), {},
+                                 std::min(stopTimeSoFar(history_[0].frame), stopTimeSoFar(history_[run].frame))});
+        }
+        break;
+      case PlotKind::Spread:
+        plot.title = "spread of the family (largest hinge distance from the run)";
+        for (size_t run = 0; run < runs_.size(); ++run) {
+          if (!scene_.runs[run].family) continue;
+          plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, history_[run].spreads.view(), {},
+                                 stopTimeSoFar(history_[run].frame)});
+        }
+        break;
+      case PlotKind::Jacobi:
+        plot.title = "Jacobi field across the motion |J_perp| (zeros: conjugate points)";
+        for (size_t run = 0; run < runs_.size(); ++run) {
+          if (!scene_.runs[run].config.jacobi) continue;
+          plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, history_[run].jacobiSizes.view(),
+                                 history_[run].frame.conjugateTimes, stopTimeSoFar(history_[run].frame)});
+        }
+        break;
+      case PlotKind::EnergyError:
+        plot.title = "relative energy error |E - E0| / E0";
+        for (size_t run = 0; run < runs_.size(); ++run) {
+          plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, history_[run].energyErrors.view(),
+                                 {}, stopTimeSoFar(history_[run].frame)});
+        }
+        break;
     }
     state.plots.push_back(std::move(plot));
   }

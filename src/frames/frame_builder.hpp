@@ -12,6 +12,7 @@
 #include "contracts/run_config.hpp"
 #include "frames/configuration_view.hpp"
 #include "frames/plot_overview.hpp"
+#include "frames/shared_track.hpp"
 #include "scene/scene.hpp"
 #include "simulation/trajectory.hpp"
 
@@ -36,12 +37,21 @@ class FrameBuilder {
   const std::vector<Trajectory>& runs() const { return runs_; }
 
  private:
+  // The histories below are shared with the frames (SharedTrack): a frame refers to them, never copies them.
+  struct PathHistory {
+    SharedTrack<Vec3> points;  // oldest first
+    SharedTrack<double> times;
+  };
+
   struct RunHistory {
-    RunFrame frame;                    // the latest state and the path, trails so far
+    RunFrame frame;                  // the latest state (its path, trails and members' paths are below)
+    PathHistory path;
+    std::vector<SharedTrack<Vec2>> trails;
+    std::vector<PathHistory> memberPaths;
     Eigen::Matrix2Xd hingesAtFrame;    // for the divergence plot; no columns once stopped
-    std::vector<double> energyErrors;  // one per frame while running
-    std::vector<double> jacobiSizes;   // one per frame while running (runs with Jacobi fields; else NaN)
-    std::vector<double> spreads;       // one per frame: the family's largest hinge distance from the run
+    SharedTrack<double> energyErrors;  // one per frame while running
+    SharedTrack<double> jacobiSizes;   // one per frame while running (runs with Jacobi fields; else NaN)
+    SharedTrack<double> spreads;       // one per frame: the family's largest hinge distance from the run
   };
 
   void sampleFrame(int k);  // advance the history to frame k (k = sampled_ + 1)
@@ -59,8 +69,8 @@ class FrameBuilder {
   int frameCount_;
   int sampled_ = -1;  // the last frame sampled into the history
   std::vector<RunHistory> history_;
-  std::vector<double> plotTimes_;
-  std::vector<std::vector<double>> divergence_;  // [run - 1][frame]: run 0 against run
+  SharedTrack<double> plotTimes_;
+  std::vector<SharedTrack<double>> divergence_;  // [run - 1][frame]: run 0 against run
   std::shared_ptr<const SphereDecoration> sphereDecoration_;  // computed once, shared by every frame
   std::vector<PlotOverview> plotOverviews_;                   // per plot: the whole animation's range, empty note
 };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "contracts/parallel_for.hpp"
 #include "linkage/chain.hpp"
@@ -77,10 +78,15 @@ std::vector<PlotOverview> overviewPlots(const Scene& scene, const std::vector<In
   std::vector<PlotOverview> overviews;
   for (const PlotSpec& spec : plots) {
     const bool isDivergence = spec.kind == PlotKind::Divergence;
-    const auto& values = isDivergence                     ? divergence
-                         : spec.kind == PlotKind::Jacobi ? jacobi
-                         : spec.kind == PlotKind::Spread ? spread
-                                                         : energy;
+    const auto& values = [&]() -> const std::vector<std::vector<double>>& {
+      switch (spec.kind) {  // every kind, no default: the compiler names a kind left out
+        case PlotKind::Divergence: return divergence;
+        case PlotKind::Jacobi: return jacobi;
+        case PlotKind::Spread: return spread;
+        case PlotKind::EnergyError: return energy;
+      }
+      throw std::logic_error("overviewPlots: a plot kind without values");
+    }();
     double lo = INFINITY, hi = -INFINITY;
     for (std::size_t r = isDivergence ? 1 : 0; r < runCount; ++r)
       for (double v : values[r])

@@ -106,6 +106,31 @@ struct PlotArea {
   }
 };
 
+// At most this many samples per pixel column of the plot area are drawn: more would not show.
+constexpr double kSamplesPerColumn = 4;
+
+// The samples of a series that are drawn: all of them while the plot's width can show them, else every
+// stride-th (a power of two, the smallest that fits) and the last one, so a line costs what the plot's width
+// shows, not what the frame's index is. Depends on the sample count and the width alone: a frame is drawn
+// alike whichever frames were drawn before it.
+class DrawnSamples {
+ public:
+  DrawnSamples(const PlotSeries& series, const PlotArea& area) : count_(std::min(series.times.size(), series.values.size())) {
+    const double room = std::max(2.0, kSamplesPerColumn * std::ceil(std::max(0.0f, area.x1 - area.x0)));
+    size_ = count_;
+    while (double(size_) > room) {
+      stride_ *= 2;
+      size_ = (count_ - 1) / stride_ + 1 + ((count_ - 1) % stride_ != 0 ? 1 : 0);  // with the last sample
+    }
+  }
+  std::size_t size() const { return size_; }
+  // The series index of drawn sample i.
+  std::size_t operator[](std::size_t i) const { return std::min(i * stride_, count_ - 1); }
+
+ private:
+  std::size_t count_, stride_ = 1, size_ = 0;
+};
+
 void drawAxes(const PanelContext& c, const PlotArea& area, const Axis& x, const Axis& y, ShapeBatch& batch) {
   const float small = c.font.ascent(TextSize::Small);
   for (double v : y.ticks) {
@@ -133,12 +158,12 @@ float seriesHalfWidth(const FontAtlas& font) { return std::max(1.1f, 0.075f * fo
 
 // Where the run behind a line stopped: a red cross on the line's last drawable value up to the stop time, or on the
 // time axis when it has none (a log axis and exact zeros, say).
-void drawStop(const PlotSeries& series, const Axis& x, const Axis& y, const PlotArea& area, float halfWidth,
-              ShapeBatch& batch) {
+void drawStop(const PlotSeries& series, const DrawnSamples& drawn, const Axis& x, const Axis& y, const PlotArea& area,
+              float halfWidth, ShapeBatch& batch) {
   if (!std::isfinite(series.stopTime) || series.stopTime < x.lo || series.stopTime > x.hi) return;
   P2 at = area.at(unit(x, series.stopTime), 0);
-  const std::size_t count = std::min(series.times.size(), series.values.size());
-  for (std::size_t i = count; i-- > 0;) {
+  for (std::size_t j = drawn.size(); j-- > 0;) {
+    const std::size_t i = drawn[j];
     if (series.times[i] > series.stopTime || !drawable(series.values[i], y.log)) continue;
     at = area.at(unit(x, series.times[i]), unit(y, series.values[i]));
     break;
@@ -155,8 +180,9 @@ void drawStop(const PlotSeries& series, const Axis& x, const Axis& y, const Plot
 void drawSeries(const PlotSeries& series, const Axis& x, const Axis& y, const PlotArea& area, float halfWidth,
                 float stopHalfWidth, ShapeBatch& batch) {
   std::vector<PolylinePoint> points;
-  const std::size_t count = std::min(series.times.size(), series.values.size());
-  for (std::size_t i = 0; i < count; ++i) {
+  const DrawnSamples drawn(series, area);
+  for (std::size_t j = 0; j < drawn.size(); ++j) {
+    const std::size_t i = drawn[j];
     const double t = series.times[i], v = series.values[i];
     if (!drawable(v, y.log) || !std::isfinite(t) || t < x.lo || t > x.hi) {
       batch.polyline(points);
@@ -167,7 +193,7 @@ void drawSeries(const PlotSeries& series, const Axis& x, const Axis& y, const Pl
   }
   if (points.size() == 1) batch.disc(points[0].at, std::max(1.6f, 1.45f * halfWidth), points[0].color);
   batch.polyline(points);
-  drawStop(series, x, y, area, stopHalfWidth, batch);
+  drawStop(series, drawn, x, y, area, stopHalfWidth, batch);
   // Marked times (a Jacobi field's zeros): a ring on the time axis and a faint line up through the plot.
   for (const double t : series.markTimes) {
     if (!std::isfinite(t) || t < x.lo || t > x.hi) continue;
@@ -286,7 +312,8 @@ void drawPlotPanel(const PanelContext& c, int plotIndex, ShapeBatch& batch) {
   for (std::size_t k = 0; k < plot.series.size(); ++k) {
     const PlotSeries& series = plot.series[k];
     drawSeries(series, x, y, area, seriesWidth(c.font, k, plot.series.size()), seriesHalfWidth(c.font), batch);
-    for (double v : series.values) anyDrawn = anyDrawn || drawable(v, plot.logY);
+    const DrawnSamples drawn(series, area);
+    for (std::size_t j = 0; j < drawn.size() && !anyDrawn; ++j) anyDrawn = drawable(series.values[drawn[j]], plot.logY);
   }
   if (!anyDrawn && !plot.emptyNote.empty()) {  // a plot that stays empty says why, in as many lines as fit
     const std::size_t room = std::size_t(std::max(1.0f, (area.y1 - area.y0) / line - 0.5f));

@@ -52,7 +52,7 @@ float pathAlpha(const ViewSettings& settings, double age) {
 // A path as a tube of `radius` (world units, at least `minHalfWidth` pixels) in `color`, fading with age. Thin
 // paths (a family's members, many at once) are flat lines with points closer than a pixel merged: the same
 // picture at a fraction of the fill.
-void drawPath(const std::vector<Vec3>& path, const std::vector<double>& times, Rgba color, double radius,
+void drawPath(const SharedSpan<Vec3>& path, const SharedSamples& times, Rgba color, double radius,
               float minHalfWidth, const PanelContext& context, const SphereCamera& camera, const Placement& placement,
               bool throughAntipode, ShapeBatch& batch, bool thin = false) {
   std::vector<PolylinePoint> points;

@@ -106,7 +106,7 @@ std::vector<InitialState> parallel(const Chain& chain, const InitialState& start
       const std::optional<Sample> at = across.sampleAt(distance);
       if (!at)
         throw std::invalid_argument("the geodesic orthogonal to the run stopped before distance " +
-                                    std::to_string(distance) + " (" + (across.stop() ? across.stop()->detail : "") +
+                                    std::to_string(distance) + " (" + (across.stop() ? across.stop()->detail() : "") +
                                     ")");
       const Eigen::VectorXd& y = at->spherePoint;
       const Eigen::VectorXd u = side * at->sphereVelocity;  // pointing the way of increasing offset

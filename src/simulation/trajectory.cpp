@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -66,6 +67,8 @@ void validateConfig(const RunConfig& config) {
   if (config.maxSteps <= 0) throw std::invalid_argument("maxSteps must be positive");
 }
 
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
 bool allFinite(const State& y) {
   return std::all_of(y.begin(), y.end(), [](double v) { return std::isfinite(v); });
 }
@@ -77,7 +80,7 @@ std::string formatTime(double t) {
   return out.str();
 }
 
-// "energy drift 2.13 > limit 1": a watchdog's reading beside its limit, in a few digits (StopInfo::measured).
+// "energy drift 2.13 > limit 1": a watchdog's reading beside its limit, in a few digits.
 std::string against(const char* what, double value, double limit) {
   std::ostringstream text;
   text.precision(3);
@@ -86,6 +89,45 @@ std::string against(const char* what, double value, double limit) {
 }
 
 }  // namespace
+
+std::string StopInfo::detail() const {
+  switch (reason) {  // every reason, no default
+    case StopReason::NonFinite:
+      return "state became non-finite in the step from t = " + formatTime(time) + "; last good state " + cause;
+    case StopReason::PoleFoldBack:  // a method's own failures
+    case StopReason::FieldBlowUp:
+      return cause + " at t = " + formatTime(checkedAt);
+    case StopReason::EnergyBlowUp:
+      return "relative energy drift " + formatTime(measured) + " at t = " + formatTime(checkedAt);
+    case StopReason::StepSizeCollapse:
+      return std::isnan(measured) ? "integrator gave up: " + cause
+                                  : "step size " + formatTime(measured) + " at t = " + formatTime(time);
+    case StopReason::RodLength:
+      return "rod-length error " + formatTime(measured) + " at t = " + formatTime(checkedAt);
+    case StopReason::MaxSteps:
+      return "reached maxSteps = " + std::to_string(static_cast<long>(limit));
+    case StopReason::ConstraintRankLoss:
+      return cause + " in the step from t = " + formatTime(time);
+  }
+  return cause;
+}
+
+std::string StopInfo::reading() const {
+  switch (reason) {
+    case StopReason::EnergyBlowUp:
+      return against("energy drift", measured, limit);
+    case StopReason::RodLength:
+      return against("rod-length error", measured, limit);
+    case StopReason::NonFinite:
+    case StopReason::PoleFoldBack:
+    case StopReason::FieldBlowUp:
+    case StopReason::StepSizeCollapse:
+    case StopReason::MaxSteps:
+    case StopReason::ConstraintRankLoss:
+      return "";
+  }
+  return "";
+}
 
 struct Trajectory::Impl {
   explicit Impl(const Chain& chain) : bound(chain) {}
@@ -127,53 +169,67 @@ struct Trajectory::Impl {
     if (jacobi->jacobiAt(y).gramDeterminant <= 1e-12 * maxGramDeterminant) conjugateTimes.push_back(time);
   }
 
-  void halt(StopReason reason, double time, const std::string& detail, const std::string& measured = "") {
-    stop = StopInfo{reason, time, detail, measured};
-  }
+  void halt(const StopInfo& info) { stop = info; }
 
   // One integration step with every watchdog; on failure the run stops at the step's start time.
   void advance() {
     const double t0 = stepper->endTime();
-    if (steps >= config.maxSteps)
-      return halt(StopReason::MaxSteps, t0, "reached maxSteps = " + std::to_string(config.maxSteps));
+    if (steps >= config.maxSteps) {
+      StopInfo info;
+      info.reason = StopReason::MaxSteps;
+      info.time = t0;
+      info.limit = double(config.maxSteps);
+      return halt(info);
+    }
     State y = stepper->endState();
     if (system->settleBetweenSteps(y)) stepper->initialize(*system, y, t0);
     // A failed step is rolled back: the run ends on its last good state, which stays sampleable at the
     // stop time (never the failed step's non-finite data).
-    auto haltAtLastGoodState = [&](StopReason reason, const std::string& detail, const std::string& measured = "") {
+    auto haltAtLastGoodState = [&](StopInfo info) {
       stepper->initialize(*system, y, t0);
-      halt(reason, t0, detail, measured);
+      info.time = t0;
+      halt(info);
+    };
+    const auto because = [](StopReason reason, std::string cause) {
+      StopInfo info;
+      info.reason = reason;
+      info.cause = std::move(cause);
+      return info;
+    };
+    const auto reading = [](StopReason reason, double at, double measured, double limit) {
+      StopInfo info;
+      info.reason = reason;
+      info.checkedAt = at;
+      info.measured = measured;
+      info.limit = limit;
+      return info;
     };
     try {
       stepper->doStep(*system);
     } catch (const ConstraintRankLoss& e) {
-      return haltAtLastGoodState(StopReason::ConstraintRankLoss, std::string(e.what()) + " in the step from t = " +
-                                                                     formatTime(t0));
+      return haltAtLastGoodState(because(StopReason::ConstraintRankLoss, e.what()));
     } catch (const std::exception& e) {
-      return haltAtLastGoodState(StopReason::StepSizeCollapse, std::string("integrator gave up: ") + e.what());
+      return haltAtLastGoodState(because(StopReason::StepSizeCollapse, e.what()));
     }
     ++steps;
     const State& end = stepper->endState();
     const double t1 = stepper->endTime();
     if (!allFinite(end) || !std::isfinite(t1))
-      return haltAtLastGoodState(StopReason::NonFinite,
-                                 "state became non-finite in the step from t = " + formatTime(t0) +
-                                     "; last good state " + system->describe(y));
+      return haltAtLastGoodState(because(StopReason::NonFinite, system->describe(y)));
     if (!(t1 - t0 > minimumRelativeStep * std::max(1.0, std::abs(t0))))
-      return haltAtLastGoodState(StopReason::StepSizeCollapse,
-                                 "step size " + formatTime(t1 - t0) + " at t = " + formatTime(t0));
-    if (const auto failure = system->methodFailureAt(end))
-      return haltAtLastGoodState(failure->reason, failure->detail + " at t = " + formatTime(t1));
+      return haltAtLastGoodState(reading(StopReason::StepSizeCollapse, t1, t1 - t0, kNaN));
+    if (const auto failure = system->methodFailureAt(end)) {
+      StopInfo info = because(failure->reason, failure->detail);
+      info.checkedAt = t1;
+      return haltAtLastGoodState(info);
+    }
     const StepInvariants summary = system->stepInvariants(end, chartZeroTAtEnd);
     const double drift = std::abs(summary.energy - initialEnergy) / initialEnergy;
     if (!(drift <= config.maxRelativeEnergyDrift))
-      return haltAtLastGoodState(StopReason::EnergyBlowUp,
-                                 "relative energy drift " + formatTime(drift) + " at t = " + formatTime(t1),
-                                 against("energy drift", drift, config.maxRelativeEnergyDrift));
+      return haltAtLastGoodState(reading(StopReason::EnergyBlowUp, t1, drift, config.maxRelativeEnergyDrift));
     if (!(summary.rodLengthError <= config.maxRodLengthError))
-      return haltAtLastGoodState(StopReason::RodLength,
-                                 "rod-length error " + formatTime(summary.rodLengthError) + " at t = " + formatTime(t1),
-                                 against("rod-length error", summary.rodLengthError, config.maxRodLengthError));
+      return haltAtLastGoodState(
+          reading(StopReason::RodLength, t1, summary.rodLengthError, config.maxRodLengthError));
     if (jacobi) {
       const JacobiState field = jacobi->jacobiAt(end);
       findConjugatePoint(t0, t1, field.gramRate, field.gramDeterminant);

@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <memory>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -33,11 +34,25 @@ struct Sample {
   std::optional<double> jacobi;
 };
 
+// Why and when a run stopped, as numbers: the integrator loop records them and formats nothing; detail() and
+// reading() make the words where they are shown (run reports, CSV and event files, the frames' text panel).
 struct StopInfo {
   StopReason reason = StopReason::NonFinite;
-  double time = 0;     // last good time
-  std::string detail;  // human-readable: where and what, numbers in full
-  std::string measured;  // for a watchdog's stop, what it measured against its limit, short (the frames show it)
+  double time = 0;  // last good time
+  // When the failed check was made: the failed step's end (a watchdog's reading, a method's own failure).
+  double checkedAt = std::numeric_limits<double>::quiet_NaN();
+  // A watchdog's reading and its limit: energy drift, rod-length error, step size (no limit), the step budget
+  // (max-steps: the limit only). NaN where there is none.
+  double measured = std::numeric_limits<double>::quiet_NaN();
+  double limit = std::numeric_limits<double>::quiet_NaN();
+  // What a lower layer said, in its words: a method's failure, the integrator's error, the constraint's rank loss,
+  // the last good state of a non-finite step. Empty for a watchdog's stop.
+  std::string cause;
+
+  // Where and what, numbers in full, e.g. "relative energy drift 2.1253323570632361 at t = 19.760000000000002".
+  std::string detail() const;
+  // A watchdog's reading against its limit in a few digits, e.g. "energy drift 2.13 > limit 1"; empty for other stops.
+  std::string reading() const;
 };
 
 // The invariants' worst values over every accepted step so far (the watchdogs evaluate them at each step's

@@ -87,7 +87,7 @@ Outcome runAndCheck(const FaultCase& fault, const RunConfig& runConfig, int coun
     const auto reason = static_cast<size_t>(outcome.stop->reason);
     EXPECT_LT(reason, kStopReasons.size()) << "unknown stop reason " << reason;
     EXPECT_TRUE(std::isfinite(outcome.stop->time));
-    EXPECT_FALSE(outcome.stop->detail.empty()) << nameOf(outcome.stop->reason);
+    EXPECT_FALSE(outcome.stop->detail().empty()) << nameOf(outcome.stop->reason);
   }
   return outcome;
 }

@@ -1,5 +1,6 @@
 // The frame builder against fresh trajectories sampled directly, and shards against a full walk.
 #include <cmath>
+#include <cstring>
 
 #include <gtest/gtest.h>
 
@@ -58,7 +59,7 @@ FrameBuilder builderFor(const Scene& scene) {
   return FrameBuilder(scene, startsOf(scene), runsOf(scene), familiesOf(scene));
 }
 
-void expectSameVec(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+void expectSameVec(const SharedSpan<Vec3>& a, const SharedSpan<Vec3>& b) {
   ASSERT_EQ(a.size(), b.size());
   for (size_t i = 0; i < a.size(); ++i) {
     EXPECT_EQ(a[i].x, b[i].x);
@@ -271,6 +272,63 @@ TEST(FrameBuilder, StoppedRunIsFrozenWithItsReason) {
   EXPECT_LT(late.runs[1].stopTime, 0.2);
   EXPECT_EQ(late.runs[1].hinges[0].x, early.runs[1].hinges[0].x);
   EXPECT_TRUE(std::isnan(late.plots[0].series[0].values.back()));  // no divergence once one side stopped
+}
+
+// The same double, NaN included.
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// A frame's plot series refer to the builder's history instead of copying it: a frame kept while the builder walks
+// on still shows exactly its own frames' values, and a later frame's series begin with the same values.
+TEST(FrameBuilder, KeptFramesDoNotChangeWhileTheBuilderWalksOn) {
+  const Scene scene = twoRunScene();
+  FrameBuilder builder = builderFor(scene);
+  const FrameState early = builder.frame(3);
+  std::vector<std::vector<double>> before;
+  for (const PlotFrame& plot : early.plots)
+    for (const PlotSeries& series : plot.series) before.emplace_back(series.values.begin(), series.values.end());
+  const FrameState late = builder.frame(builder.frameCount() - 1);
+  std::size_t s = 0;
+  for (std::size_t p = 0; p < early.plots.size(); ++p) {
+    for (std::size_t r = 0; r < early.plots[p].series.size(); ++r, ++s) {
+      const PlotSeries& kept = early.plots[p].series[r];
+      ASSERT_EQ(kept.times.size(), 4u);
+      ASSERT_EQ(kept.values.size(), 4u);
+      EXPECT_EQ(kept.times.back(), scene.frameTime(3));
+      const PlotSeries& later = late.plots[p].series[r];
+      ASSERT_EQ(later.values.size(), std::size_t(builder.frameCount()));
+      for (std::size_t i = 0; i < 4; ++i) {
+        EXPECT_TRUE(sameBits(kept.values[i], before[s][i])) << p << " " << r << " " << i;
+        EXPECT_TRUE(sameBits(kept.values[i], later.values[i])) << p << " " << r << " " << i;
+      }
+    }
+  }
+  // Writing to a frame's series (as tests do) gives it values of its own: the builder's history stays.
+  FrameState edited = early;
+  edited.plots[1].series[0].values[0] = 42;
+  EXPECT_EQ(edited.plots[1].series[0].values[0], 42);
+  EXPECT_TRUE(sameBits(early.plots[1].series[0].values[0], before[early.plots[0].series.size()][0]));
+  EXPECT_NE(builder.frame(builder.frameCount() - 1).plots[1].series[0].values[0], 42);
+}
+
+// Paths and trails too: a frame kept while the builder walks on, dropping faded points, keeps its own.
+TEST(FrameBuilder, KeptFramesKeepTheirPathsAndTrails) {
+  const Scene scene = twoRunScene(R"(, "path_fade_seconds": 0.3, "trail_fade_seconds": 0.2)");
+  FrameBuilder builder = builderFor(scene);
+  const FrameState early = builder.frame(5);
+  const std::vector<Vec3> path(early.runs[0].path.begin(), early.runs[0].path.end());
+  const std::vector<double> times(early.runs[0].pathTimes.begin(), early.runs[0].pathTimes.end());
+  const std::vector<Vec2> trail(early.runs[0].trails[0].begin(), early.runs[0].trails[0].end());
+  ASSERT_EQ(path.size(), 13u);  // t = 0.2 .. 0.5 in steps of 0.025
+  ASSERT_EQ(trail.size(), 3u);  // frames 3, 4, 5
+  const FrameState late = builder.frame(builder.frameCount() - 1);
+  EXPECT_GT(late.runs[0].pathTimes.front(), times.back());  // everything the early frame shows has faded since
+  ASSERT_EQ(early.runs[0].path.size(), path.size());
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    EXPECT_EQ(early.runs[0].path[i].x, path[i].x) << i;
+    EXPECT_EQ(early.runs[0].pathTimes[i], times[i]) << i;
+  }
+  ASSERT_EQ(early.runs[0].trails[0].size(), trail.size());
+  for (std::size_t i = 0; i < trail.size(); ++i) EXPECT_EQ(early.runs[0].trails[0][i].y, trail[i].y) << i;
 }
 
 // Steady axes: every frame's plot carries the same y range, that of the values the whole animation plots

@@ -144,6 +144,24 @@ TEST(PlotLayoutTest, TitleLegendAndAreaNeverOverlapAtAnySize) {
   }
 }
 
+// A plot draws what its width can show: a series of a million samples costs about what one of ten thousand does
+// (every stride-th sample and the last), and a short series is drawn whole.
+TEST(PlotLayoutTest, LongSeriesAreThinnedToThePlotsWidth) {
+  const auto plotVertices = [](std::size_t samples) {
+    FrameState frame = syntheticFrame(7.0, 420);
+    std::vector<double> times(samples), values(samples);
+    for (std::size_t i = 0; i < samples; ++i) {
+      times[i] = 10.0 * double(i) / double(samples);
+      values[i] = 1e-10 * (2 + std::sin(0.01 * double(i)));
+    }
+    for (PlotSeries& series : frame.plots[1].series) series.times = times, series.values = values;
+    return FrameComposer(fourPanels(), {640, 360}).compose(frame).panels[3].shapes.vertices().size();
+  };
+  const std::size_t few = plotVertices(200), some = plotVertices(10'000), many = plotVertices(1'000'000);
+  EXPECT_LT(few, some);                          // 200 samples: all drawn
+  EXPECT_LT(double(many), 2.0 * double(some));  // without thinning: about 100 times as many
+}
+
 // Issue 12: a plot's lines nest like the runs' paths: each later series is narrower, so a line exactly under
 // another still shows along both its edges.
 TEST(PlotLayoutTest, CoincidingSeriesBothShow) {

@@ -194,7 +194,7 @@ TEST(SlackChains, KeepEnergyAndRodLengthsAndHaveNoSphere) {
     Trajectory run(chain, start, config);
     for (const double t : testing::evenTimes(5.0, 10)) {
       const std::optional<Sample> s = run.sampleAt(t);
-      ASSERT_TRUE(s) << run.stop()->detail;
+      ASSERT_TRUE(s) << run.stop()->detail();
       EXPECT_EQ(s->spherePoint.size(), 0);
       EXPECT_EQ(s->coords.size(), 0);
       EXPECT_LT(s->relativeEnergyDrift, 1e-9);

@@ -15,7 +15,7 @@ double maxErrorAgainstReference(Trajectory& run, const std::string& file) {
   double worst = 0;
   for (const testing::ReferenceRow& row : testing::loadReference(file)) {
     const auto s = run.sampleAt(row.time);
-    if (!s) throw std::runtime_error("stopped: " + nameOf(run.stop()->reason) + " " + run.stop()->detail);
+    if (!s) throw std::runtime_error("stopped: " + nameOf(run.stop()->reason) + " " + run.stop()->detail());
     worst = std::max(worst, (s->hinges - row.hinges).cwiseAbs().maxCoeff());
   }
   return worst;
@@ -81,7 +81,7 @@ TEST(PublishedMethods, StopWithPoleFoldBackOnAPolePassage) {
           break;
       ASSERT_TRUE(run.stop()) << method << "/" << integrator << " ran through the pole";
       std::cout << method << "/" << integrator << ": " << nameOf(run.stop()->reason) << " at t = " << run.stop()->time
-                << " (" << run.stop()->detail << ")\n";
+                << " (" << run.stop()->detail() << ")\n";
       // Pinned: all stop at the pole; christoffel-fd under dopri5 first sees its difference quotients turn to
       // noise at |cos phi| ~ 1.5e-3 and collapses its step there.
       const bool collapses = method == "christoffel-fd" && integrator == "dopri5";

@@ -25,7 +25,7 @@ void compareWithReference(const std::string& file, InitialState (*start)(const C
   double worst = 0, worstDrift = 0, worstRod = 0;
   for (size_t i = 0; i < rows.size(); i += 5) {
     const auto s = run.sampleAt(rows[i].time);
-    ASSERT_TRUE(s) << c.method << " stopped: " << nameOf(run.stop()->reason) << " " << run.stop()->detail;
+    ASSERT_TRUE(s) << c.method << " stopped: " << nameOf(run.stop()->reason) << " " << run.stop()->detail();
     worst = std::max(worst, (s->hinges - rows[i].hinges).cwiseAbs().maxCoeff());
     worstDrift = std::max(worstDrift, s->relativeEnergyDrift);
     worstRod = std::max(worstRod, s->rodLengthError);

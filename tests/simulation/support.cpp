@@ -10,7 +10,7 @@ InitialState poleCrossingStart(const Chain& chain, double arrival, const Eigen::
   backwards.sphereVelocity(dim - 1) = 0.0;
   Trajectory run(chain, backwards, config("ambient", "bulirsch-stoer", 1e-13));
   const std::optional<Sample> there = run.sampleAt(arrival);
-  if (!there) throw std::runtime_error("the backward run stopped: " + run.stop()->detail);
+  if (!there) throw std::runtime_error("the backward run stopped: " + run.stop()->detail());
   return {there->spherePoint, -there->sphereVelocity};
 }
 

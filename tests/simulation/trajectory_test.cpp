@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <limits>
 
 #include "contracts/limits.hpp"
 #include "support.hpp"
@@ -109,12 +110,58 @@ TEST(Trajectory, EnergyWatchdogCatchesAnUnstableStepSize) {
   EXPECT_EQ(run.stop()->reason, StopReason::EnergyBlowUp);
   EXPECT_LE(last->relativeEnergyDrift, c.maxRelativeEnergyDrift);
   // The frames say what tripped the watchdog: its reading against its limit (issue 12), a drift beyond the limit.
-  const std::string& measured = run.stop()->measured;
+  const std::string measured = run.stop()->reading();
   EXPECT_EQ(measured.rfind("energy drift ", 0), 0u) << measured;
   double drift = 0, limit = 0;
   ASSERT_EQ(std::sscanf(measured.c_str(), "energy drift %lf > limit %lf", &drift, &limit), 2) << measured;
   EXPECT_GT(drift, limit);
   EXPECT_DOUBLE_EQ(limit, c.maxRelativeEnergyDrift);
+}
+
+// A stop is recorded as numbers; its words are made where they are shown, the same words as when the integrator
+// loop wrote them (run reports, CSV and event files, the frames' text panel all show these).
+TEST(Trajectory, StopWordsAreMadeFromTheRecordedNumbers) {
+  StopInfo energy;
+  energy.reason = StopReason::EnergyBlowUp;
+  energy.time = 19.74;
+  energy.checkedAt = 19.760000000000002;
+  energy.measured = 2.1253323570632361;
+  energy.limit = 1;
+  EXPECT_EQ(energy.detail(), "relative energy drift 2.1253323570632361 at t = 19.760000000000002");
+  EXPECT_EQ(energy.reading(), "energy drift 2.13 > limit 1");
+  StopInfo rods = energy;
+  rods.reason = StopReason::RodLength;
+  rods.measured = 0.00123456;
+  rods.limit = 1e-3;
+  EXPECT_EQ(rods.detail(), "rod-length error 0.00123456 at t = 19.760000000000002");
+  EXPECT_EQ(rods.reading(), "rod-length error 0.00123 > limit 0.001");
+  StopInfo budget;
+  budget.reason = StopReason::MaxSteps;
+  budget.limit = 5000000;
+  EXPECT_EQ(budget.detail(), "reached maxSteps = 5000000");
+  EXPECT_EQ(budget.reading(), "");
+  StopInfo collapse;
+  collapse.reason = StopReason::StepSizeCollapse;
+  collapse.time = 2.5;
+  collapse.measured = 1e-300;
+  EXPECT_EQ(collapse.detail(), "step size 1e-300 at t = 2.5");
+  collapse.measured = std::numeric_limits<double>::quiet_NaN();
+  collapse.cause = "step too small";
+  EXPECT_EQ(collapse.detail(), "integrator gave up: step too small");
+  StopInfo pole;
+  pole.reason = StopReason::PoleFoldBack;
+  pole.checkedAt = 0.5;
+  pole.cause = "phi crossed the pole";
+  EXPECT_EQ(pole.detail(), "phi crossed the pole at t = 0.5");
+  StopInfo rank;
+  rank.reason = StopReason::ConstraintRankLoss;
+  rank.time = 1.25;
+  rank.cause = "the constraint lost rank";
+  EXPECT_EQ(rank.detail(), "the constraint lost rank in the step from t = 1.25");
+  StopInfo nan;
+  nan.time = 3;
+  nan.cause = "(phi, t) = (0.1, 0.2)";
+  EXPECT_EQ(nan.detail(), "state became non-finite in the step from t = 3; last good state (phi, t) = (0.1, 0.2)");
 }
 
 // The extremes the run tracks at its step ends equal the invariants of samples taken at those very times
