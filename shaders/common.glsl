@@ -10,6 +10,7 @@ uniform vec3 uRight;     // unit vectors spanning the image plane (world)
 uniform vec3 uUp;
 uniform vec2 uCentre;    // pixel where the viewing direction lands
 uniform float uAntialias;
+uniform float uUnit;     // pixels per 720 px of the frame's shorter side (render::frameUnit)
 
 vec3 pixelRay(vec2 pixel) {
   return normalize(uForward + uRight * (pixel.x - uCentre.x) - uUp * (pixel.y - uCentre.y));
@@ -23,6 +24,15 @@ vec3 screenNormal(vec3 n) {
 // Coverage of a pixel whose centre is `inside` pixels inside an edge (negative: outside).
 float edgeCoverage(float inside) {
   return uAntialias > 0.5 ? clamp(inside + 0.5, 0.0, 1.0) : step(0.0, inside);
+}
+
+// Coverage of a pixel whose centre is `offAxis` pixels from the axis of a band `halfWidth` pixels wide on each side:
+// the overlap of the pixel's span with the band, so a line thinner than a pixel is fainter instead of wider, and a
+// frame downscaled from a larger one shows the same line. Equal to edgeCoverage(halfWidth - offAxis) for bands
+// at least a pixel wide.
+float bandCoverage(float halfWidth, float offAxis) {
+  if (uAntialias < 0.5) return step(offAxis, max(halfWidth, 0.5));
+  return clamp(min(offAxis + 0.5, halfWidth) - max(offAxis - 0.5, -halfWidth), 0.0, 1.0);
 }
 
 // Pixel distance from a capsule's axis segment [0, len] x {0} (len < 0: an endless ribbon, |y|).

@@ -9,7 +9,7 @@ out vec4 fragColor;
 void main() {
   float cover = 1.0;
   if (vKind == 0) {
-    cover = edgeCoverage(vParams.x - capsuleDistance(vLocal, vParams.y));
+    cover = bandCoverage(vParams.x, capsuleDistance(vLocal, vParams.y));
   } else if (vKind == 1) {
     cover = edgeCoverage(vParams.x - length(vLocal));
   }

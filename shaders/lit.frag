@@ -37,7 +37,7 @@ void main() {
   float cover;
   vec3 n;
   if (vKind == 0) {  // capsule, or ribbon of a polyline (no caps): lit as a cylinder
-    cover = edgeCoverage(vParams.x - capsuleDistance(vLocal, vParams.y));
+    cover = bandCoverage(vParams.x, capsuleDistance(vLocal, vParams.y));
     vec2 across = vAxis * clamp(vLocal.y / size, -1.0, 1.0);
     n = vec3(across, sqrt(max(1.0 - dot(across, across), 0.0)));
   } else {  // disc, lit as a ball

@@ -1,5 +1,5 @@
 // The configuration sphere as a ray-traced impostor on a panel-sized quad: exact silhouette coverage,
-// per-pixel normals, and the (phi, t) chart grid drawn analytically (lines of constant pixel width).
+// per-pixel normals, and the (phi, t) chart grid drawn analytically (lines of constant width in frame units).
 // Mode 0: the opaque cream sphere with grid and poles. Mode 1: a faint glassy reference sphere. Mode 2: mode 0
 // with the colours of a scalar field (uField: a texture over (t, phi), render/color_map.hpp) under a fainter grid.
 uniform vec3 uSphereColor;
@@ -14,7 +14,7 @@ const float GRID_STEP = PI / 12.0;  // 15 degrees in phi and in t
 
 // Coverage of a grid line where f = 0, from the screen gradient of f (pixels across = |f| / |grad f|).
 float gridLine(float f, vec2 gradient, float halfWidth) {
-  return edgeCoverage(halfWidth - abs(f) / max(length(gradient), 1e-6));
+  return bandCoverage(halfWidth * uUnit, abs(f) / max(length(gradient), 1e-6));
 }
 
 float gridCoverage(vec3 p) {
@@ -55,6 +55,13 @@ void main() {
   // The chart's poles phi = +-90deg (x1 = x2 = 0), where t is undefined: small dark caps.
   float poleDistance = length(p.xy) / max(length(vec2(length(dFdx(p.xy)), length(dFdy(p.xy)))), 1e-6);
   float poleRadius = 0.035 / max(length(vec2(length(dFdx(p.xy)), length(dFdy(p.xy)))), 1e-6);
-  base = mix(base, uPoleColor, edgeCoverage(min(poleRadius, 7.0) - poleDistance));
+  base = mix(base, uPoleColor, edgeCoverage(min(poleRadius, 7.0 * uUnit) - poleDistance));
+  // A colour-mapped surface keeps its colours on the colour bar: ambient-heavy light that only darkens it a little
+  // towards the limb, no coloured highlight or rim that would bleach or tint it.
+  if (uMode == 2) {
+    const vec3 key = normalize(vec3(-0.45, -0.55, 0.70));
+    fragColor = vec4(base * (0.84 + 0.16 * max(dot(n, key), 0.0)) * cover, cover);
+    return;
+  }
   fragColor = vec4(lit(base, n, 0.18) * cover, cover);
 }

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "render/palette.hpp"
 
@@ -42,10 +43,47 @@ Rgba interpolate(const Stops& stops, double position) {
   return {a.r + f * (b.r - a.r), a.g + f * (b.g - a.g), a.b + f * (b.b - a.b), 1};
 }
 
-std::string tickLabel(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", value);
-  return std::string(text) == "-0" ? "0" : text;
+}  // namespace
+
+std::vector<double> niceTicks(double lo, double hi, int maxTicks) {
+  if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi) || maxTicks < 1) return {};
+  // The smallest step of the form {1, 2, 2.5, 5} x 10^k with at most maxTicks multiples in [lo, hi].
+  const double raw = (hi - lo) / maxTicks;
+  double decade = std::pow(10.0, std::floor(std::log10(raw)));
+  for (int guard = 0; guard < 4; ++guard, decade *= 10) {
+    for (double mantissa : {1.0, 2.0, 2.5, 5.0, 10.0}) {
+      const double step = mantissa * decade;
+      const double first = std::ceil(lo / step - 1e-9), last = std::floor(hi / step + 1e-9);
+      if (last - first + 1 > maxTicks) continue;
+      std::vector<double> ticks;
+      for (double k = first; k <= last; ++k) ticks.push_back(k * step == 0 ? 0.0 : k * step);
+      return ticks;
+    }
+  }
+  return {};
+}
+
+std::string tickLabel(double value, double step) {
+  // As many decimals as the step needs (0.25: two, 0.5: one, 20: none); a true minus sign (U+2212).
+  int decimals = 0;
+  for (double scaled = std::abs(step); decimals < 12 && std::abs(scaled - std::round(scaled)) > 1e-6 * scaled;
+       scaled *= 10)
+    ++decimals;
+  char text[48];
+  std::snprintf(text, sizeof text, "%.*f", decimals, std::abs(value));
+  const bool zero = std::strtod(text, nullptr) == 0;
+  return (value < 0 && !zero ? "\u2212" : "") + std::string(text);
+}
+
+namespace {
+
+// The step between consecutive ticks, for their labels' decimals (one tick alone: its own magnitude).
+double tickStep(const std::vector<double>& ticks) {
+  double step = 0;
+  for (std::size_t i = 1; i < ticks.size(); ++i)
+    step = step == 0 ? ticks[i] - ticks[i - 1] : std::min(step, ticks[i] - ticks[i - 1]);
+  if (step > 0) return step;
+  return ticks.empty() || ticks[0] == 0 ? 1.0 : std::pow(10.0, std::floor(std::log10(std::abs(ticks[0]))));
 }
 
 }  // namespace
@@ -94,7 +132,8 @@ void drawColorBar(const ColorScale& scale, const std::string& label, const std::
   const auto yOf = [&](double position) {
     return float(bottom - (position - lo) / std::max(hi - lo, 1e-12) * (bottom - top));
   };
-  constexpr int kSteps = 96;
+  // One band per pixel row (at least 96): no visible steps at any frame size.
+  const int kSteps = std::max(96, int(std::ceil(bottom - top)));
   for (int k = 0; k < kSteps; ++k) {
     const double p0 = lo + (hi - lo) * k / kSteps, p1 = lo + (hi - lo) * (k + 1) / kSteps;
     batch.rect(x0, yOf(p1), x1, yOf(p0) + 0.5f, scale.colorAt(0.5 * (p0 + p1)));
@@ -106,21 +145,35 @@ void drawColorBar(const ColorScale& scale, const std::string& label, const std::
   batch.rect(x0 - edge, top, x0, bottom, ink);
   batch.rect(x1, top, x1 + edge, bottom, ink);
 
-  // Ticks: the ends and the middle of each sign's half (and zero) on a diverging scale, five even steps otherwise.
-  std::vector<double> positions;
+  // Ticks at round values (niceTicks), as many as the bar's height has room for; on a two-slope (diverging) scale
+  // each sign's half gets its own, and zero, where the slope changes, is marked across the bar.
+  const float roomPerTick = 1.8f * line;
+  std::vector<double> values;
   if (scale.diverging) {
-    for (double p : {0.0, 0.25, 0.5, 0.75, 1.0})
-      if (p >= lo - 1e-9 && p <= hi + 1e-9) positions.push_back(p);
+    const float half = 0.5f * (bottom - top) / float(std::max(hi - lo, 1e-12));  // a half's height in pixels
+    const int each = std::clamp(int(half / roomPerTick), 1, 4);
+    if (scale.min < 0) values = niceTicks(scale.min, 0, each);
+    for (double v : niceTicks(0, scale.max, each))
+      if (values.empty() || v > values.back()) values.push_back(v);
+    if (scale.min < 0 && scale.max > 0) {
+      const float y = yOf(0.5);
+      batch.rect(x0, y - 0.5f * edge, x1, y + 0.5f * edge, ink);  // across the bar; its tick is drawn longer below
+    }
   } else {
-    for (int k = 0; k <= 4; ++k) positions.push_back(lo + (hi - lo) * k / 4);
+    values = niceTicks(scale.min, scale.max, std::clamp(int((bottom - top) / roomPerTick), 2, 6));
   }
+  // The labels' decimals per sign, from the steps of that sign's ticks.
+  std::vector<double> negative, positive;
+  for (double v : values) (v < 0 ? negative : positive).push_back(v);
+  const double negativeStep = tickStep(negative), positiveStep = tickStep(positive);
   const float tick = 0.6f * barWidth;
   const float ascent = font.ascent(TextSize::Small);
-  for (double p : positions) {
-    const float y = yOf(p);
-    batch.rect(x0 - tick, y - 0.5f * edge, x0, y + 0.5f * edge, ink);
-    const std::string text = tickLabel(scale.valueAt(p));
-    font.draw(batch, text, TextSize::Small, x0 - tick - 0.3f * line - font.width(text, TextSize::Small),
+  for (double v : values) {
+    const float y = yOf(scale.position(v));
+    const float length = scale.diverging && v == 0 ? 1.6f * tick : tick;
+    batch.rect(x0 - length, y - 0.5f * edge, x0, y + 0.5f * edge, ink);
+    const std::string text = tickLabel(v, v < 0 ? negativeStep : positiveStep);
+    font.draw(batch, text, TextSize::Small, x0 - length - 0.3f * line - font.width(text, TextSize::Small),
               y + 0.4f * ascent, ink);
   }
   // Label and note right-aligned to the bar, shortened with an ellipsis where the strip is narrower than they are.

@@ -34,6 +34,12 @@ ColorScale scaleOf(const SphereField& field);
 // RGBA8 texels of a field, row-major as the field (rows = phi, columns = t), for the sphere's texture.
 std::vector<std::uint8_t> fieldTexels(const SphereField& field);
 
+// Round tick values in [lo, hi] as matplotlib's MaxNLocator picks them: the multiples of the smallest step
+// {1, 2, 2.5, 5} x 10^k of which at most maxTicks lie in the range.
+std::vector<double> niceTicks(double lo, double hi, int maxTicks);
+// A tick value with the decimals its step needs and a true minus sign (U+2212): -0.25 -> "−0.25", 20 -> "20".
+std::string tickLabel(double value, double step);
+
 // A vertical colour bar in `area` (its full height; the bar itself is a narrow strip at the area's right),
 // with ticks and their values on its left, `label` above and `note` (if any) below.
 void drawColorBar(const ColorScale& scale, const std::string& label, const std::string& note, const PixelRect& area,

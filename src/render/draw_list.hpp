@@ -31,6 +31,13 @@ struct PanelDrawing {
   std::optional<SphereImpostor> sphere;  // sphere panels only
 };
 
+// The frame's unit of length: pixels per 720 px of its shorter side. Every line width, marker, glyph and gap is a
+// multiple of it, so a frame at any size is the same picture (1 at 1280x720, 3 at 3840x2160, 0.25 at 320x180).
+inline float frameUnit(ImageSize size) { return float(size.width < size.height ? size.width : size.height) / 720.0f; }
+// The unit of the smallest size a mark (a pin, a ball, a start cross) may have: frameUnit, but never below 720p's,
+// so that small frames keep their marks legible (lines there thin with the frame).
+inline float markUnit(float unit) { return unit > 1.0f ? unit : 1.0f; }
+
 struct DrawList {
   ImageSize size;
   ColorRGB background;

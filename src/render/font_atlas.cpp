@@ -14,12 +14,13 @@
 namespace sl::render {
 namespace {
 
-// Printable ASCII, Greek (phi, theta, ...), and a few symbols used in labels.
+// Printable ASCII, Greek (phi, theta, pi, ...), and the symbols labels use: degree, plus-minus, minus (U+2212),
+// square root (U+221A), perpendicular (U+22A5), superscript digits and minus, the ellipsis.
 std::vector<int> charset() {
   std::vector<int> codepoints;
   for (int c = 32; c < 127; ++c) codepoints.push_back(c);
   for (int c = 0x391; c <= 0x3C9; ++c) codepoints.push_back(c);
-  for (int c : {0xB0, 0xB1, 0xB7, 0xD7,   0x2013, 0x2014, 0x2026, 0x2212, 0x2248, 0x2192, 0x221E, 0x2070,
+  for (int c : {0xB0, 0xB1, 0xB7, 0xD7,   0x2013, 0x2014, 0x2026, 0x2212, 0x2248, 0x2192, 0x221E, 0x2070, 0x221A, 0x22A5,
                 0xB9, 0xB2, 0xB3, 0x2074, 0x2075, 0x2076, 0x2077, 0x2078, 0x2079, 0x207B, 0xFFFD})
     codepoints.push_back(c);
   return codepoints;
@@ -46,7 +47,15 @@ std::string FontAtlas::fitted(const std::string& utf8, TextSize size, float maxW
     while (end > 0 && (static_cast<unsigned char>(cut[end]) & 0xC0) == 0x80) --end;
     cut.erase(end);
     while (!cut.empty() && cut.back() == ' ') cut.pop_back();
-    if (width(cut + ellipsis, size) <= maxWidth) return cut + ellipsis;
+    if (width(cut + ellipsis, size) > maxWidth) continue;
+    // Whole words where the text has any: "K, Gaussian curvature" becomes "K, …", never "K, Gau…".
+    const std::size_t space = cut.find_last_of(' ');
+    if (space != std::string::npos && cut.size() < utf8.size() && utf8[cut.size()] != ' ') {
+      cut.erase(space);
+      while (!cut.empty() && (cut.back() == ' ' || cut.back() == ',' || cut.back() == ';' || cut.back() == ':'))
+        cut.pop_back();
+    }
+    return cut + ellipsis;
   }
   return width(ellipsis, size) <= maxWidth ? ellipsis : "";
 }

@@ -55,7 +55,7 @@ DrawList FrameComposer::compose(const FrameState& frame) const {
   for (std::size_t i = 0; i < panels_.size(); ++i) {
     PanelDrawing drawing;
     drawing.rect = rects_[i];
-    const PanelContext context{frame, view_, font_, rects_[i]};
+    const PanelContext context{frame, view_, font_, rects_[i], frameUnit(size_)};
     switch (panels_[i].kind) {
       case PanelKind::Linkage:
         drawLinkagePanel(context, drawing.shapes);
@@ -75,7 +75,7 @@ DrawList FrameComposer::compose(const FrameState& frame) const {
   if (titleLineShown()) {  // every frame says what it shows and when, text panel or not
     PanelDrawing drawing;
     drawing.rect = {0, 0, float(size_.width), float(size_.height)};
-    drawTitleLine(PanelContext{frame, view_, font_, drawing.rect}, drawing.shapes);
+    drawTitleLine(PanelContext{frame, view_, font_, drawing.rect, frameUnit(size_)}, drawing.shapes);
     list.panels.push_back(std::move(drawing));
   }
   return list;

@@ -12,12 +12,12 @@
 namespace sl::render {
 namespace {
 
-void drawFloor(const PlaneView& view, double base, float rod, ShapeBatch& batch) {
-  batch.capsule(view(0, 0), view(base, 0), std::max(1.0f, 0.25f * rod), palette::floorGrey);
+void drawFloor(const PlaneView& view, double base, float rod, float unit, ShapeBatch& batch) {
+  batch.capsule(view(0, 0), view(base, 0), std::max(unit, 0.25f * rod), palette::floorGrey);
   for (double pin : {0.0, base}) {  // ground hatching under each pin
     for (int k = -2; k <= 2; ++k) {
       const P2 top = view(pin + 0.06 * k, -0.02);
-      batch.capsule(top, {top.x - 0.8f * rod, top.y + 1.6f * rod}, std::max(0.6f, 0.12f * rod), palette::floorGrey);
+      batch.capsule(top, {top.x - 0.8f * rod, top.y + 1.6f * rod}, std::max(0.6f * unit, 0.12f * rod), palette::floorGrey);
     }
   }
 }
@@ -31,23 +31,24 @@ std::vector<P2> chainJoints(const std::vector<Vec2>& hinges, const PlaneView& vi
   return joints;
 }
 
-void drawTrails(const RunFrame& run, const PlaneView& view, float rod, ShapeBatch& batch) {
+void drawTrails(const RunFrame& run, const PlaneView& view, float rod, float unit, ShapeBatch& batch) {
   for (const auto& trail : run.trails) {
     std::vector<PolylinePoint> points;
     for (std::size_t i = 0; i < trail.size(); ++i) {
       if (!std::isfinite(trail[i].x) || !std::isfinite(trail[i].y)) continue;
       const float age = trail.size() > 1 ? float(i) / float(trail.size() - 1) : 1.0f;  // oldest first
-      points.push_back({view(trail[i]), std::max(0.8f, 0.22f * rod), toRgba(run.color, 0.75f * age), {}});
+      points.push_back({view(trail[i]), std::max(0.8f * unit, 0.22f * rod), toRgba(run.color, 0.75f * age), {}});
     }
     batch.polyline(points);
   }
 }
 
-void drawChain(const RunFrame& run, const PlaneView& view, double base, float rod, float outline, ShapeBatch& batch) {
+void drawChain(const RunFrame& run, const PlaneView& view, double base, float rod, float outline, float unit,
+               ShapeBatch& batch) {
   const std::vector<P2> joints = chainJoints(run.hinges, view, base);
-  // Joints as balls while a rod is long enough on screen to show them apart (8 px); a long chain's hinges
+  // Joints as balls while a rod is long enough on screen to show them apart (8 px at 720p); a long chain's hinges
   // would only blot it, and its rods, hairlines then, are drawn in the run's colour to stand out.
-  const bool jointsApart = view.scale >= 8;
+  const bool jointsApart = view.scale >= 8 * unit;
   const Rgba rodColor = jointsApart ? palette::silver : toRgba(run.color);
   // In overlay, each run's rods sit on an outline of its colour, narrower for each later run: runs that coincide
   // show as nested rings of their colours around the silver.
@@ -60,7 +61,7 @@ void drawChain(const RunFrame& run, const PlaneView& view, double base, float ro
     batch.disc(joints[k], 1.75f * rod, palette::jointSilver, true, 0.5f);
     batch.disc(joints[k], 0.85f * rod, toRgba(run.color), true, 0.4f);
   }
-  const float pinRadius = std::max(2.2f * rod, 3.3f);  // the pins stay visible however long the chain
+  const float pinRadius = std::max(2.2f * rod, 3.3f * markUnit(unit));  // the pins stay visible however long the chain
   for (const P2& pin : {joints.front(), joints.back()}) {
     batch.disc(pin, pinRadius, palette::pinCharcoal, true, 0.3f);
     batch.disc(pin, pinRadius * (0.7f / 2.2f), palette::silver);
@@ -68,13 +69,13 @@ void drawChain(const RunFrame& run, const PlaneView& view, double base, float ro
 }
 
 // The family's "feather": every member's chain as thin faint rods in the run's colour ramp, under the run's own.
-void drawFeather(const RunFrame& run, const PlaneView& view, double base, float rod, ShapeBatch& batch) {
+void drawFeather(const RunFrame& run, const PlaneView& view, double base, float rod, float unit, ShapeBatch& batch) {
   const std::size_t count = run.members.size();
   const float alpha = std::clamp(6.0f / float(count), 0.12f, 0.5f);  // many members: fainter each
   for (std::size_t m = 0; m < count; ++m) {
     const std::vector<P2> joints = chainJoints(run.members[m].hinges, view, base);
     for (std::size_t k = 0; k + 1 < joints.size(); ++k)
-      batch.capsule(joints[k], joints[k + 1], std::max(0.6f, 0.3f * rod), memberColor(run.color, m, count, alpha));
+      batch.capsule(joints[k], joints[k + 1], std::max(0.6f * unit, 0.3f * rod), memberColor(run.color, m, count, alpha));
   }
 }
 
@@ -85,15 +86,16 @@ void drawRun(const PanelContext& context, const RunFrame* run, const PixelRect& 
   // line at the foot of its area, and its caption sits just under the lowest place its chain can reach.
   const float line = context.font.lineHeight(TextSize::Small);
   const PlaneView view = fitFrameView(context.frame, area, label ? captionHeight(context.font) : 0);
-  // Rod half width: 4.5% of a rod's length on screen, at least 1.5 px while rods are long enough to carry it
+  // Rod half width: 4.5% of a rod's length on screen, at least 1.5 px at 720p while rods are long enough to carry it
   // (a chain of hundreds of rods is drawn with hairline rods instead of a solid band).
-  const float rod = std::max(std::min(1.5f, std::max(0.9f, float(0.12 * view.scale))), float(0.045 * view.scale));
+  const float u = context.unit;
+  const float rod = std::max(std::min(1.5f * u, std::max(0.9f * u, float(0.12 * view.scale))), float(0.045 * view.scale));
   const double base = run ? run->baseLength : context.frame.rods - 1;
-  drawFloor(view, base, rod, batch);
+  drawFloor(view, base, rod, u, batch);
   if (!run) return;
-  drawTrails(*run, view, rod, batch);
-  drawFeather(*run, view, base, rod, batch);
-  drawChain(*run, view, base, rod, outline * rod, batch);
+  drawTrails(*run, view, rod, u, batch);
+  drawFeather(*run, view, base, rod, u, batch);
+  drawChain(*run, view, base, rod, outline * rod, u, batch);
   if (label) {
     const std::string name = context.font.fitted(run->name, TextSize::Small, area.width);
     const float width = context.font.width(name, TextSize::Small);

@@ -20,6 +20,7 @@ struct PanelContext {
   const ViewSettings& settings;
   const FontAtlas& font;
   PixelRect rect;
+  float unit;  // frameUnit: pixels per 720 px of the frame's shorter side
 };
 
 void drawLinkagePanel(const PanelContext& context, ShapeBatch& batch);

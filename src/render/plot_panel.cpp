@@ -135,21 +135,21 @@ void drawAxes(const PanelContext& c, const PlotArea& area, const Axis& x, const 
   const float small = c.font.ascent(TextSize::Small);
   for (double v : y.ticks) {
     const P2 left = area.at(0, unit(y, v)), right = area.at(1, unit(y, v));
-    batch.capsule(left, right, 0.5f, palette::gridLight);
+    batch.capsule(left, right, 0.5f * c.unit, palette::gridLight);
     const std::string label = tickLabel(y, v);
     c.font.draw(batch, label, TextSize::Small, left.x - 0.5f * small - c.font.width(label, TextSize::Small),
                 left.y + 0.45f * small, palette::softInk);
   }
   for (double t : x.ticks) {
     const P2 bottom = area.at(unit(x, t), 0), top = area.at(unit(x, t), 1);
-    batch.capsule(bottom, top, 0.5f, palette::gridLight);
+    batch.capsule(bottom, top, 0.5f * c.unit, palette::gridLight);
     const std::string label = tickLabel(x, t);
     c.font.draw(batch, label, TextSize::Small, bottom.x - 0.5f * c.font.width(label, TextSize::Small),
                 bottom.y + 0.5f * small + small, palette::softInk);
   }
   const P2 corner = area.at(0, 0);
-  batch.capsule(corner, area.at(1, 0), 0.7f, palette::softInk);
-  batch.capsule(corner, area.at(0, 1), 0.7f, palette::softInk);
+  batch.capsule(corner, area.at(1, 0), 0.7f * c.unit, palette::softInk);
+  batch.capsule(corner, area.at(0, 1), 0.7f * c.unit, palette::softInk);
 }
 
 // Line half width: 1.1 px up to about 720-pixel frames, then growing with the text (3.4 px at 3840x2160), so
@@ -198,9 +198,10 @@ void drawSeries(const PlotSeries& series, const Axis& x, const Axis& y, const Pl
   for (const double t : series.markTimes) {
     if (!std::isfinite(t) || t < x.lo || t > x.hi) continue;
     const P2 foot = area.at(unit(x, t), 0), top = area.at(unit(x, t), 1);
-    batch.capsule(foot, top, 0.6f, toRgba(series.color, 0.45f));
-    batch.disc(foot, 3.2f, toRgba(series.color));
-    batch.disc(foot, 1.6f, palette::withAlpha(palette::gridLight, 1.0f));
+    // Sized by the stop cross's width, which grows with the text: the same marks at every frame size.
+    batch.capsule(foot, top, 0.45f * stopHalfWidth, toRgba(series.color, 0.45f));
+    batch.disc(foot, 2.4f * stopHalfWidth, toRgba(series.color));
+    batch.disc(foot, 1.2f * stopHalfWidth, palette::withAlpha(palette::gridLight, 1.0f));
   }
 }
 

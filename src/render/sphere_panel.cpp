@@ -70,7 +70,7 @@ void drawPath(const SharedSpan<Vec3>& path, const SharedSamples& times, Rgba col
     if (hidden) continue;
     const P2 at = camera.project(p);
     const bool last = i + 1 == path.size();
-    if (thin && !points.empty() && !last && std::abs(at.x - points.back().at.x) + std::abs(at.y - points.back().at.y) < 1.5f)
+    if (thin && !points.empty() && !last && std::abs(at.x - points.back().at.x) + std::abs(at.y - points.back().at.y) < 1.5f * context.unit)
       continue;
     const float halfWidth = std::max(minHalfWidth, float(radius * camera.pixelsPerUnitAt(p)));
     points.push_back({at, halfWidth, palette::withAlpha(color, color.a * alpha), placement.world(p)});
@@ -86,7 +86,7 @@ void drawFamily(const RunFrame& run, const PanelContext& context, const SphereCa
   const std::size_t count = run.members.size();
   for (std::size_t m = 0; m < count; ++m) {
     drawPath(run.members[m].path, run.members[m].pathTimes, memberColor(run.color, m, count, 0.85f),
-             0.3 * kTubeRadius, 0.6f, context, camera, placement, throughAntipode, batch, true);
+             0.3 * kTubeRadius, 0.6f * context.unit, context, camera, placement, throughAntipode, batch, true);
   }
   std::vector<PolylinePoint> front;
   auto flush = [&] {
@@ -99,7 +99,7 @@ void drawFamily(const RunFrame& run, const PanelContext& context, const SphereCa
     const bool jump = throughAntipode && m > 0 && distance(run.members[m - 1].current, at) > kMaxPathChord;
     if (!drawable(at) || !camera.inFront(p) || jump) flush();
     if (!drawable(at) || !camera.inFront(p)) continue;
-    const float halfWidth = std::max(1.0f, float(0.45 * kTubeRadius * camera.pixelsPerUnitAt(p)));
+    const float halfWidth = std::max(context.unit, float(0.45 * kTubeRadius * camera.pixelsPerUnitAt(p)));
     front.push_back({camera.project(p), halfWidth, palette::withAlpha(palette::ink, 0.9f), placement.world(p)});
   }
   flush();
@@ -108,8 +108,8 @@ void drawFamily(const RunFrame& run, const PanelContext& context, const SphereCa
     const V3 p = placement.place(member.current);
     if (!drawable(member.current) || !camera.inFront(p)) continue;
     const float pixelsPerUnit = float(camera.pixelsPerUnitAt(p));
-    const float radius = std::max(1.5f, 0.35f * float(kBallRadius) * pixelsPerUnit);
-    if (member.stopped) batch.disc(camera.project(p), radius + 1.5f, palette::stopRed, false, 0, placement.world(p));
+    const float radius = std::max(1.5f * context.unit, 0.35f * float(kBallRadius) * pixelsPerUnit);
+    if (member.stopped) batch.disc(camera.project(p), radius + 1.5f * context.unit, palette::stopRed, false, 0, placement.world(p));
     batch.disc(camera.project(p), radius, memberColor(run.color, m, count), true, 0.3f, placement.world(p),
                radius / pixelsPerUnit);
   }
@@ -117,32 +117,32 @@ void drawFamily(const RunFrame& run, const PanelContext& context, const SphereCa
 
 // The current state of a run, `style` its runStyleWidth: a later run's ball is smaller, so a run exactly under
 // another still shows as a ring around it, as its path does.
-void drawBall(const RunFrame& run, float style, const SphereCamera& camera, const Placement& placement,
+void drawBall(const RunFrame& run, float style, float unit, const SphereCamera& camera, const Placement& placement,
               ShapeBatch& batch) {
   Placement ballPlacement = placement;
   ballPlacement.lift = kBallRadius;
   const V3 centre = ballPlacement.place(run.current);
   if (!drawable(run.current)) return;
   const float pixelsPerUnit = float(camera.pixelsPerUnitAt(centre));
-  const float radius = std::max(3.5f, float(kBallRadius) * pixelsPerUnit) * (0.45f + 0.55f * style);
+  const float radius = std::max(3.5f * markUnit(unit), float(kBallRadius) * pixelsPerUnit) * (0.45f + 0.55f * style);
   const P2 at = camera.project(centre);
   // First a ghost that nothing hides: where the sphere is in front of the ball (behind it, or past its outline)
   // the state is still seen through it; where the ball shows, the ball covers its ghost.
   batch.disc(at, radius, palette::withAlpha(palette::ink, 0.45f));  // a dark rim: readable over any colour map
-  batch.disc(at, std::max(1.0f, radius - std::max(1.0f, 0.15f * radius)), toRgba(run.color, 0.6f));
+  batch.disc(at, std::max(unit, radius - std::max(unit, 0.15f * radius)), toRgba(run.color, 0.6f));
   if (run.stopped) batch.disc(at, 0.45f * radius, palette::withAlpha(palette::stopRed, 0.5f));
   if (!camera.inFront(centre)) return;
   const Occludable world = ballPlacement.world(centre);
   // A stopped run's ball sits on a red halo (a larger ball behind it, hidden with it by the sphere).
-  if (run.stopped) batch.disc(at, radius + 2.5f, palette::stopRed, true, 0.2f, world, (radius + 2.5f) / pixelsPerUnit);
+  if (run.stopped) batch.disc(at, radius + 2.5f * unit, palette::stopRed, true, 0.2f, world, (radius + 2.5f * unit) / pixelsPerUnit);
   // A thin dark rim sets the ball off from its own path, which has its colour (small frames lost it in the tube).
-  else batch.disc(at, radius + 1.0f, palette::withAlpha(palette::ink, 0.75f), false, 0, world, (radius + 1.0f) / pixelsPerUnit);
+  else batch.disc(at, radius + unit, palette::withAlpha(palette::ink, 0.75f), false, 0, world, (radius + unit) / pixelsPerUnit);
   batch.disc(at, radius, toRgba(run.color), true, 0.55f, world, radius / pixelsPerUnit);
 }
 
 // Conjugate points on the path (runs with Jacobi fields): an ink ring around a dot of the run's colour, where
 // the geodesics leaving the start together meet again.
-void drawConjugatePoints(const RunFrame& run, const SphereCamera& camera, const Placement& placement,
+void drawConjugatePoints(const RunFrame& run, float unit, const SphereCamera& camera, const Placement& placement,
                          ShapeBatch& batch) {
   Placement markPlacement = placement;
   markPlacement.lift = 1.5 * kTubeRadius;
@@ -150,11 +150,20 @@ void drawConjugatePoints(const RunFrame& run, const SphereCamera& camera, const 
     const V3 p = markPlacement.place(point);
     if (!drawable(point) || !camera.inFront(p)) continue;
     const float pixelsPerUnit = float(camera.pixelsPerUnitAt(p));
-    const float radius = std::max(3.0f, 0.7f * float(kBallRadius) * pixelsPerUnit);
+    const float radius = std::max(3.0f * markUnit(unit), 0.7f * float(kBallRadius) * pixelsPerUnit);
     const Occludable world = markPlacement.world(p);
     batch.disc(camera.project(p), radius, palette::ink, false, 0, world, radius / pixelsPerUnit);
     batch.disc(camera.project(p), 0.6f * radius, toRgba(run.color), true, 0.3f, world, 0.6f * radius / pixelsPerUnit);
   }
+}
+
+// n as superscript digits (U+2070.., as the plot ticks write exponents): S³, S¹⁰.
+std::string superscript(int n) {
+  static const char* const digits[] = {"\u2070", "\u00b9", "\u00b2", "\u00b3", "\u2074",
+                                       "\u2075", "\u2076", "\u2077", "\u2078", "\u2079"};
+  std::string out;
+  for (const char c : std::to_string(n)) out += c == '-' ? "\u207b" : digits[c - '0'];
+  return out;
 }
 
 // Phrases packed greedily into lines no wider than `width` ("; " between phrases on one line), each line fitted.
@@ -181,18 +190,18 @@ void drawBallGuide(const PanelContext& context, const SphereCamera& camera, Shap
   std::vector<PolylinePoint> ring;
   for (int k = 0; k <= 96; ++k) {
     const double a = 2 * std::acos(-1.0) * k / 96;
-    ring.push_back({{at.x + half * float(std::cos(a)), at.y + half * float(std::sin(a))}, 0.8f,
+    ring.push_back({{at.x + half * float(std::cos(a)), at.y + half * float(std::sin(a))}, 0.8f * context.unit,
                     palette::withAlpha(palette::softInk, 0.55f), {}});
   }
   batch.polyline(ring);
   const int rods = context.frame.rods;
-  std::vector<std::string> phrases = {"S^" + std::to_string(rods - 2) + " drawn in a ball", "+ the start",
-                                      "distance from it = angle / pi", "ring = 90 deg", "rim = the antipode"};
+  std::vector<std::string> phrases = {"S" + superscript(rods - 2) + " drawn in a ball", "+ the start",
+                                      "distance from it = angle / \u03c0", "ring = 90\u00b0", "rim = the antipode"};
   if (rods > 5) phrases.push_back("first 3 of " + std::to_string(rods - 2) + " directions");
   const float pad = 0.02f * context.rect.height, line = context.font.lineHeight(TextSize::Small);
   std::vector<std::string> lines = packPhrases(phrases, context.font, TextSize::Small, context.rect.width - 2 * pad);
   if (lines.size() > 2) {  // a small panel: the essentials in at most two lines, clear of the ball
-    lines = packPhrases({"+ start", "radius = angle / pi", "ring 90 deg"}, context.font, TextSize::Small,
+    lines = packPhrases({"+ start", "radius = angle / \u03c0", "ring 90\u00b0"}, context.font, TextSize::Small,
                         context.rect.width - 2 * pad);
     lines.resize(std::min<std::size_t>(lines.size(), 2));
   }
@@ -208,32 +217,33 @@ void drawBallGuide(const PanelContext& context, const SphereCamera& camera, Shap
 void drawBallStart(const PanelContext& context, const SphereCamera& camera, ShapeBatch& batch) {
   const V3 centre{0, 0, 0};
   const P2 at = camera.project(centre);
-  const float arm = std::max(4.0f, 0.035f * float(camera.pixelsPerUnitAt(centre)));
-  const float width = std::max(0.9f, 0.12f * arm);
+  const float arm = std::max(4.0f * markUnit(context.unit), 0.035f * float(camera.pixelsPerUnitAt(centre)));
+  const float width = std::max(0.9f * markUnit(context.unit), 0.12f * arm);
   const ColorRGB& b = context.settings.background;
   const Rgba halo{b.r, b.g, b.b, 0.9f};
-  batch.capsule({at.x - arm, at.y}, {at.x + arm, at.y}, width + 1.2f, halo);
-  batch.capsule({at.x, at.y - arm}, {at.x, at.y + arm}, width + 1.2f, halo);
+  batch.capsule({at.x - arm, at.y}, {at.x + arm, at.y}, width + 1.2f * markUnit(context.unit), halo);
+  batch.capsule({at.x, at.y - arm}, {at.x, at.y + arm}, width + 1.2f * markUnit(context.unit), halo);
   batch.capsule({at.x - arm, at.y}, {at.x + arm, at.y}, width, palette::ink);
   batch.capsule({at.x, at.y - arm}, {at.x, at.y + arm}, width, palette::ink);
 }
 
 // 3 rods: the configuration circle, the equator.
-void drawEquator(const SphereCamera& camera, ShapeBatch& batch) {
+void drawEquator(const SphereCamera& camera, float unit, ShapeBatch& batch) {
   std::vector<PolylinePoint> points;
   const double pi = std::acos(-1.0);
   for (int k = 0; k <= 256; ++k) {
     const V3 p{std::cos(2 * pi * k / 256), std::sin(2 * pi * k / 256), 0};
-    points.push_back({camera.project(p), 1.2f, palette::withAlpha(palette::softInk, 0.8f), {}});
+    points.push_back({camera.project(p), 1.2f * unit, palette::withAlpha(palette::softInk, 0.8f), {}});
   }
   batch.polyline(points);
 }
 
-// Stiffness ellipses as thin dark rings riding on the sphere, hidden where the sphere is in front of them.
+// Stiffness ellipses as light rings riding on the sphere (over the dark end of a colour map as over its light end:
+// a white stroke on a dark halo), hidden where the sphere is in front of them.
 void drawEllipses(const std::vector<SphereEllipse>& ellipses, const SphereCamera& camera, const Placement& placement,
-                  const PixelRect& rect, ShapeBatch& batch) {
+                  const PixelRect& rect, float unit, ShapeBatch& batch) {
   constexpr int kSegments = 40;
-  const float halfWidth = std::max(0.6f, 0.0011f * rect.height);
+  const float halfWidth = std::max(0.6f * unit, 0.0011f * rect.height);
   const V3 eye = camera.eye();
   const double eyeDistance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
   for (const SphereEllipse& e : ellipses) {
@@ -241,7 +251,8 @@ void drawEllipses(const std::vector<SphereEllipse>& ellipses, const SphereCamera
     const double facing = (e.centre.x * eye.x + e.centre.y * eye.y + e.centre.z * eye.z) / eyeDistance;
     const float alpha = float(0.85 * std::clamp((facing - 0.2) / 0.25, 0.0, 1.0));
     if (alpha <= 0) continue;
-    const Rgba color = palette::withAlpha(palette::ink, alpha);
+    const Rgba color{1, 1, 1, alpha};
+    const Rgba halo = palette::withAlpha(palette::ink, 0.35f * alpha);
     std::vector<PolylinePoint> points;
     bool visible = true;
     for (int k = 0; k <= kSegments && visible; ++k) {
@@ -253,7 +264,27 @@ void drawEllipses(const std::vector<SphereEllipse>& ellipses, const SphereCamera
       visible = camera.inFront(placed);
       points.push_back({camera.project(placed), halfWidth, color, placement.world(placed)});
     }
-    if (visible) batch.polyline(points);
+    if (!visible) continue;
+    // Filled, faintly: a strip along the major axis whose half width follows the ellipse's minor extent there.
+    std::vector<PolylinePoint> fill;
+    const P2 middle = camera.project(placement.place(e.centre));
+    for (int k = 0; k <= 16; ++k) {
+      const double s = -std::cos(std::acos(-1.0) * k / 16), across = std::sqrt(std::max(0.0, 1 - s * s));
+      const Vec3 p{e.centre.x + s * e.major.x, e.centre.y + s * e.major.y, e.centre.z + s * e.major.z};
+      const Vec3 side{e.centre.x + across * e.minor.x, e.centre.y + across * e.minor.y, e.centre.z + across * e.minor.z};
+      const V3 placed = placement.place(p);
+      const P2 edge = camera.project(placement.place(side));
+      const float half = std::hypot(edge.x - middle.x, edge.y - middle.y);
+      fill.push_back({camera.project(placed), half, Rgba{1, 1, 1, 0.3f * alpha}, placement.world(placed)});
+    }
+    batch.polyline(fill);
+    std::vector<PolylinePoint> under = points;
+    for (PolylinePoint& point : under) {
+      point.halfWidth += 0.6f * unit;
+      point.color = halo;
+    }
+    batch.polyline(under);
+    batch.polyline(points);
   }
 }
 
@@ -309,12 +340,12 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   if (colored) sphereRect.width -= colorBarStrip(context.rect);
   SphereCamera camera(context.settings.camera, context.frame.time, sphereRect);
   const Placement placement{space == ViewSpace::Sphere, kTubeRadius};
-  if (space == ViewSpace::Circle) drawEquator(camera, batch);
+  if (space == ViewSpace::Circle) drawEquator(camera, context.unit, batch);
   if (space == ViewSpace::Ball) drawBallGuide(context, camera, batch);
   if (decoration) {
     const float pad = 0.02f * context.rect.height;
     const Placement onSurface{true, 0.004};
-    drawEllipses(decoration->ellipses, camera, onSurface, context.rect, batch);
+    drawEllipses(decoration->ellipses, camera, onSurface, context.rect, context.unit, batch);
     if (!decoration->ellipseCaption.empty()) {
       const float width = context.rect.width - 2 * pad - (colored ? colorBarStrip(context.rect) : 0);
       context.font.draw(batch, context.font.fitted(decoration->ellipseCaption, TextSize::Small, width), TextSize::Small,
@@ -322,8 +353,10 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
     }
     if (colored) {
       const SphereField& field = *decoration->field;
+      // A gap of a text line from the panel's right edge: the bar never butts against a neighbouring plot's axis.
+      const float gap = context.font.lineHeight(TextSize::Small);
       const PixelRect bar{context.rect.x + context.rect.width - colorBarStrip(context.rect), context.rect.y + pad,
-                          colorBarStrip(context.rect) - pad, 0.8f * context.rect.height};
+                          colorBarStrip(context.rect) - pad - gap, 0.8f * context.rect.height};
       drawColorBar(scaleOf(field), field.label, field.diverging ? "each sign on its own scale" : "", bar,
                    context.font, batch);
     }
@@ -334,10 +367,10 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   // Each later run's tube is narrower (runStyleWidth), so a run exactly under another still shows around it.
   for (std::size_t k = 0; k < runs.size(); ++k)
     drawPath(runs[k].path, runs[k].pathTimes, toRgba(runs[k].color), kTubeRadius * runStyleWidth(k, runs.size()),
-             1.8f * runStyleWidth(k, runs.size()), context, camera, placement, throughAntipode, batch);
-  for (const RunFrame& run : context.frame.runs) drawConjugatePoints(run, camera, placement, batch);
+             1.8f * context.unit * runStyleWidth(k, runs.size()), context, camera, placement, throughAntipode, batch);
+  for (const RunFrame& run : context.frame.runs) drawConjugatePoints(run, context.unit, camera, placement, batch);
   if (space == ViewSpace::Ball) drawBallStart(context, camera, batch);
-  for (std::size_t k = 0; k < runs.size(); ++k) drawBall(runs[k], runStyleWidth(k, runs.size()), camera, placement, batch);
+  for (std::size_t k = 0; k < runs.size(); ++k) drawBall(runs[k], runStyleWidth(k, runs.size()), context.unit, camera, placement, batch);
   if (space == ViewSpace::Sphere) labelChartPoles(context, camera, batch);  // over the paths: never struck through
   const bool captioned = space == ViewSpace::Ball || (decoration && !decoration->ellipseCaption.empty());
   const std::vector<PanelSpec> panels = effectivePanels(context.settings);

@@ -43,6 +43,13 @@ void drawSwatch(const PanelContext& c, std::size_t k, TextSize size, float x, fl
 // line of its own saying what the reason means.
 enum class StopDetail { Reason, Measured, Explained };
 
+// "stopped at t = 5.2: reason", with the watchdog's reading unless only the reason is asked for.
+std::string stopSentence(const RunFrame& run, StopDetail detail) {
+  std::string stop = "stopped at t = " + format("%.3g", run.stopTime) + ": " + run.stopReason;
+  if (detail != StopDetail::Reason && !run.stopMeasured.empty()) stop += " (" + run.stopMeasured + ")";
+  return stop;
+}
+
 // The runs, each its swatch, name, method and (once stopped) why, as much of it as `detail` says, flowing left to
 // right from the baseline after `top` and wrapping. Draws into `batch` if given; returns the bottom of the last
 // row either way.
@@ -53,8 +60,9 @@ float flowRuns(const PanelContext& c, TextSize size, StopDetail detail, float pa
   for (std::size_t k = 0; k < c.frame.runs.size(); ++k) {
     const RunFrame& run = c.frame.runs[k];
     const std::string text = runLine(run);
-    std::string stop = run.stopped ? "  stopped at t = " + format("%.3g", run.stopTime) + ": " + run.stopReason : "";
-    if (run.stopped && detail != StopDetail::Reason && !run.stopMeasured.empty()) stop += " (" + run.stopMeasured + ")";
+    // One stop line per run: on the run's row, or, explained, on a line of its own below the rows.
+    const bool ownLine = detail == StopDetail::Explained && !run.stopWhy.empty();
+    std::string stop = run.stopped && !ownLine ? "  " + stopSentence(run, detail) : "";
     const float width = 2.5f * swatch + c.font.width(text + stop, size) + 2 * pad;
     if (width > c.rect.width) return INFINITY;  // one run alone is wider than the panel: this size does not fit
     if (x > c.rect.x + pad && x + width > c.rect.x + c.rect.width) {
@@ -72,8 +80,8 @@ float flowRuns(const PanelContext& c, TextSize size, StopDetail detail, float pa
   for (const RunFrame& run : c.frame.runs) {
     if (detail != StopDetail::Explained || !run.stopped || run.stopWhy.empty()) continue;
     y += c.font.lineHeight(TextSize::Small);
-    const std::string why =
-        c.font.fitted(run.name + " stopped: " + run.stopWhy, TextSize::Small, c.rect.width - 2 * pad);
+    const std::string why = c.font.fitted(run.name + " " + stopSentence(run, detail) + " \u2014 " + run.stopWhy,
+                                          TextSize::Small, c.rect.width - 2 * pad);
     if (batch) c.font.draw(*batch, why, TextSize::Small, c.rect.x + pad, y, palette::stopRed);
   }
   return y + (line - c.font.ascent(size));

@@ -62,6 +62,40 @@ TEST(ColorScale, FieldTexelsFollowTheScale) {
 }
 
 // Every shape of a colour bar lies inside its area, and the label and ticks are drawn (glyphs exist).
+// Ticks as matplotlib's MaxNLocator picks them (values checked by hand against matplotlib 3.6:
+// MaxNLocator(nbins, steps=[1, 2, 2.5, 5, 10]) on the same ranges), labelled with a true minus sign.
+TEST(ColorBar, TicksAreRoundValuesWithATrueMinus) {
+  EXPECT_EQ(niceTicks(0, 4.15, 4), (std::vector<double>{0, 2, 4}));
+  EXPECT_EQ(niceTicks(0, 4.15, 5), (std::vector<double>{0, 1, 2, 3, 4}));
+  EXPECT_EQ(niceTicks(-0.27, 0, 3), (std::vector<double>{-0.2, -0.1, 0}));
+  EXPECT_EQ(niceTicks(0.013, 0.087, 4).size(), 4u);  // 0.02 0.04 0.06 0.08
+  EXPECT_NEAR(niceTicks(0.013, 0.087, 4)[0], 0.02, 1e-12);
+  EXPECT_TRUE(niceTicks(1, 1, 4).empty());
+  for (int maxTicks = 1; maxTicks <= 8; ++maxTicks) {
+    const std::vector<double> ticks = niceTicks(-3.7, 12.9, maxTicks);
+    EXPECT_LE(int(ticks.size()), maxTicks);
+    EXPECT_GE(ticks.size(), 1u);
+    for (double t : ticks) EXPECT_TRUE(t >= -3.7 && t <= 12.9);
+  }
+  EXPECT_EQ(tickLabel(-0.25, 0.25), "\u22120.25");
+  EXPECT_EQ(tickLabel(-0.2, 0.1), "\u22120.2");
+  EXPECT_EQ(tickLabel(20, 10), "20");
+  EXPECT_EQ(tickLabel(2.5, 2.5), "2.5");
+  EXPECT_EQ(tickLabel(-1e-17, 0.1), "0.0");  // roundoff about zero is not negative
+  EXPECT_EQ(tickLabel(0, 1), "0");
+}
+
+// The bar is a smooth ramp at every size: one band per pixel row, no steps of several rows.
+TEST(ColorBar, HasNoBanding) {
+  const FrameComposer composer(ViewSettings{}, {3840, 2160});
+  const PixelRect area{100, 100, 300, 1600};
+  ShapeBatch batch;
+  drawColorBar({0, 1, false}, "bending", "", area, composer.font(), batch);
+  std::size_t bands = 0;
+  for (const ShapeVertex& v : batch.vertices()) bands += v.kind == float(ShapeKind::Rect);
+  EXPECT_GT(bands / 6, 1200u);  // two triangles (6 vertices) a rect: at least one per row of the bar's ~1400
+}
+
 TEST(ColorBar, StaysInsideItsArea) {
   const FrameComposer composer(ViewSettings{}, {640, 360});
   ShapeBatch batch;
@@ -121,7 +155,8 @@ TEST(SpherePanel, DecorationColoursTheSphereAndMakesRoomForTheBar) {
 namespace sl::render {
 namespace {
 
-// Titles and captions give way rather than overflow: cut at a code point, with an ellipsis, within the width.
+// Titles and captions give way rather than overflow: cut after a whole word (at a code point in a single word),
+// with an ellipsis, within the width.
 TEST(FontAtlas, FittedTextStaysWithinItsWidth) {
   const FrameComposer composer(ViewSettings{}, {640, 360});
   const FontAtlas& font = composer.font();
@@ -133,11 +168,38 @@ TEST(FontAtlas, FittedTextStaysWithinItsWidth) {
     EXPECT_LE(font.width(cut, TextSize::Normal), width);
     EXPECT_EQ(cut.substr(cut.size() - 3), "\u2026");
     EXPECT_EQ(cut.rfind(title.substr(0, cut.size() - 3), 0), 0u) << cut;
+    // Whole words: the kept text ends where a word of the title ends (a single word is cut at a code point).
+    const std::size_t kept = cut.size() - 3;
+    if (cut.find(' ') != std::string::npos) {
+      EXPECT_TRUE(kept < title.size() && (title[kept] == ' ' || title[kept] == ')')) << cut;
+    }
   }
+  EXPECT_EQ(font.fitted("K, Gaussian curvature", TextSize::Normal, font.width("K, Gau\u2026", TextSize::Normal)),
+            "K\u2026");
   EXPECT_EQ(font.fitted("\u03c6 = \u03c0/2 and more", TextSize::Normal, 1.0f), "");
   const std::string greek = font.fitted("\u03c6\u03c6\u03c6\u03c6\u03c6\u03c6\u03c6\u03c6", TextSize::Normal, 40.0f);
   EXPECT_EQ(decodeUtf8(greek).back(), 0x2026u);  // never half a code point
   for (std::uint32_t cp : decodeUtf8(greek)) EXPECT_NE(cp, 0xFFFDu);
+}
+
+// The symbols the labels use are in the atlas, not drawn as the replacement character: S³, π, φ, |J⊥|, √, −.
+TEST(FontAtlas, BakesTheLabelSymbols) {
+  const FrameComposer composer(ViewSettings{}, {1280, 720});
+  const FontAtlas& font = composer.font();
+  const auto quad = [&](const std::string& text) {
+    ShapeBatch batch;
+    font.draw(batch, text, TextSize::Normal, 10, 40, {0, 0, 0, 1});
+    std::vector<float> texture;
+    for (const ShapeVertex& v : batch.vertices()) texture.insert(texture.end(), {v.localX, v.localY});
+    return texture;
+  };
+  const std::vector<float> replacement = quad("\ufffd");
+  ASSERT_FALSE(replacement.empty());
+  for (const char* symbol : {"\u00b3", "\u03c0", "\u03c6", "\u22a5", "\u221a", "\u2212"}) {
+    const std::vector<float> drawn = quad(symbol);
+    EXPECT_FALSE(drawn.empty()) << symbol;
+    EXPECT_NE(drawn, replacement) << symbol;
+  }
 }
 
 // Notes wrap by words into the lines allowed, each within the width; what does not fit ends in an ellipsis.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "fixtures/synthetic_frame.hpp"
 #include "render/frame_composer.hpp"
@@ -123,7 +124,7 @@ TEST(PlotLayoutTest, TitleLegendAndAreaNeverOverlapAtAnySize) {
     for (const int p : {3, 4}) {
       SCOPED_TRACE(std::to_string(size.width) + "x" + std::to_string(size.height) + " plot " + std::to_string(p));
       const PixelRect rect = composer.rects()[std::size_t(p)];
-      const PanelContext context{frame, view, composer.font(), rect};
+      const PanelContext context{frame, view, composer.font(), rect, frameUnit(size)};
       const PlotLayout layout = layoutPlot(context, frame.plots[std::size_t(p - 3)]);
       ASSERT_TRUE(layout.areaShown);
       EXPECT_GT(layout.areaX1 - layout.areaX0, 0.4f * rect.width);
@@ -230,6 +231,27 @@ TEST(DrawList, AStopIsExplainedWhereThereIsRoom) {
       EXPECT_EQ(explained, plain) << "an explanation squeezed into a small frame";
     }
   }
+}
+
+// One stop line per run: explained, the stop is said on a line of its own (time, reason, reading, meaning) and not
+// again on the run's row: the stop colour's glyphs are exactly that line's.
+TEST(DrawList, AStopIsSaidOnceInTheTextPanel) {
+  SyntheticOptions stopping;
+  stopping.stopSecondRun = true;
+  FrameState frame = syntheticFrame(7.0, 420, stopping);
+  frame.runs[1].stopWhy = "the relative energy drift passed the watchdog's limit";
+  frame.runs[1].stopMeasured = "energy drift 2.13 > limit 1";
+  const FrameComposer composer(fourPanels(), {1280, 720});
+  std::size_t red = 0;
+  for (const ShapeVertex& v : composer.compose(frame).panels[0].shapes.vertices())
+    red += v.kind == float(ShapeKind::Glyph) && isStopRed(v);
+  char time[32];
+  std::snprintf(time, sizeof time, "%.3g", frame.runs[1].stopTime);
+  const std::string line = frame.runs[1].name + " stopped at t = " + time + ": " + frame.runs[1].stopReason + " (" +
+                           frame.runs[1].stopMeasured + ") \u2014 " + frame.runs[1].stopWhy;
+  ShapeBatch alone;
+  composer.font().draw(alone, line, TextSize::Small, 0, 20, palette::stopRed);
+  EXPECT_EQ(red, alone.vertices().size());
 }
 
 // Issue 12: the chart pole facing the eye is named in the sphere panel; a pole on the silhouette or behind the

@@ -110,6 +110,7 @@ struct Renderer::Impl {
     program.use();
     glUniform2f(program.uniform("uViewport"), float(size.width), float(size.height));
     glUniform1f(program.uniform("uAntialias"), antialias ? 1.0f : 0.0f);
+    glUniform1f(program.uniform("uUnit"), frameUnit(size));
     if (!camera) return;
     const auto set3 = [&](const char* name, const V3& v, double scale) {
       glUniform3f(program.uniform(name), float(v.x * scale), float(v.y * scale), float(v.z * scale));
