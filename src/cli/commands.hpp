@@ -19,6 +19,8 @@ void addBenchCommand(CLI::App& app);
 void addStabilityCommand(CLI::App& app);
 // `linkage geometry`: curvature, bending and stiffness of the configuration sphere.
 void addGeometryCommand(CLI::App& app);
+// `linkage connect`: the motions from the scene's start to a target shape (two routes).
+void addConnectCommand(CLI::App& app);
 // `linkage schema`: the JSON Schema of scene files.
 void addSchemaCommand(CLI::App& app);
 

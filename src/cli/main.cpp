@@ -80,6 +80,7 @@ int runCommand(int argc, char** argv) {
   sl::addBenchCommand(app);
   sl::addStabilityCommand(app);
   sl::addGeometryCommand(app);
+  sl::addConnectCommand(app);
   sl::addSchemaCommand(app);
   try {
     app.parse(argc, argv);
