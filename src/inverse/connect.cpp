@@ -8,6 +8,7 @@
 #include <Eigen/SparseLU>
 
 #include "inverse/geodesic_flow.hpp"
+#include "inverse/richardson.hpp"
 #include "linkage/chart.hpp"
 #include "simulation/ambient_system.hpp"
 #include "simulation/trajectory.hpp"
@@ -17,23 +18,6 @@ namespace sl {
 namespace {
 
 double maxAbs(const Eigen::VectorXd& v) { return v.cwiseAbs().maxCoeff(); }
-
-// Richardson extrapolation in h^2 of values on nodes halved each level: the diagonal of the table.
-struct Richardson {
-  std::vector<std::vector<Eigen::VectorXd>> table;
-  Eigen::VectorXd add(const Eigen::VectorXd& value) {
-    std::vector<Eigen::VectorXd> row{value};
-    if (!table.empty()) {
-      const auto& previous = table.back();
-      for (std::size_t k = 1; k <= previous.size(); ++k) {
-        const double factor = std::pow(4.0, static_cast<double>(k)) - 1.0;
-        row.push_back(row[k - 1] + (row[k - 1] - previous[k - 1]) / factor);
-      }
-    }
-    table.push_back(row);
-    return row.back();
-  }
-};
 
 // Newton's method on the discrete Euler-Lagrange equations with multipliers; nodes 0 and K fixed.
 bool solveDiscrete(const ConstrainedModel& model, std::vector<Eigen::VectorXd>& nodes, bool periodic = false) {
