@@ -81,6 +81,7 @@ int runCommand(int argc, char** argv) {
   sl::addStabilityCommand(app);
   sl::addGeometryCommand(app);
   sl::addConnectCommand(app);
+  sl::addPeriodicCommand(app);
   sl::addSchemaCommand(app);
   try {
     app.parse(argc, argv);

@@ -378,7 +378,12 @@ std::vector<ClosedGeodesic> chainClosedGeodesics(const Chain& chain, const Perio
   }
   PeriodicOptions bounded = options;
   if (bounded.maxLength <= 0) bounded.maxLength = scale > 0 ? 2.5 * scale : 24.0;
-  std::vector<ClosedGeodesic> found = findClosedGeodesics(model, &chain, points, bounded, starts, guesses);
+  // The symmetric guesses first; fans only when they do not give the three simple ones Lyusternik and
+  // Schnirelmann promise (always for asymmetric masses).
+  std::vector<ClosedGeodesic> found = findClosedGeodesics(model, &chain, {}, bounded, starts, guesses);
+  if (std::count_if(found.begin(), found.end(), [](const ClosedGeodesic& g) { return g.simple; }) < 3 ||
+      options.maxLength > 0)
+    found = findClosedGeodesics(model, &chain, points, bounded, starts, guesses);
 
   // Route 2.
   if (symmetricMasses(chain)) {
