@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/configuration_json.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/scene_input.hpp"
 #include "inverse/connect.hpp"
@@ -66,8 +67,8 @@ Eigen::VectorXd readTarget(const Chain& chain, const ConstrainedModel& model, co
   if (j.contains("hinges")) {
     const auto& h = j["hinges"];
     if (!h.is_array() || static_cast<int>(h.size()) != chain.hingeCount())
-      throw CommandExit(kExitBadInput, where + ": hinges: expected " + std::to_string(chain.hingeCount()) +
-                                           " points [x, y]");
+      throw CommandExit(kExitBadInput,
+                        where + ": hinges: expected " + std::to_string(chain.hingeCount()) + " points [x, y]");
     Eigen::Matrix2Xd hinges(2, chain.hingeCount());
     for (int k = 0; k < chain.hingeCount(); ++k) {
       const auto& p = h[static_cast<std::size_t>(k)];
@@ -84,25 +85,13 @@ Eigen::VectorXd readTarget(const Chain& chain, const ConstrainedModel& model, co
   throw CommandExit(kExitBadInput, where + ": expected an object with \"coords\" or \"hinges\"");
 }
 
-nlohmann::json vectorJson(const Eigen::VectorXd& v) {
-  nlohmann::json out = nlohmann::json::array();
-  for (double x : v) out.push_back(x);
-  return out;
-}
-
-nlohmann::json hingesJson(const Eigen::VectorXd& q) {
-  nlohmann::json out = nlohmann::json::array();
-  for (Eigen::Index k = 0; k + 1 < q.size(); k += 2) out.push_back({q(k), q(k + 1)});
-  return out;
-}
-
 void runConnect(const ConnectArguments& args) {
   const Scene scene = loadSceneForCommand(args.scene, args.overrides);
   const Chain& chain = scene.chain;
   const ConstrainedModel model = ConstrainedModel::fromChain(chain);
   const InitialState start = runStarts(scene).at(0);
-  const Eigen::VectorXd from = ConstrainedModel::stack(start.byHinges() ? start.hinges
-                                                                        : hingePositionsAt(chain, start.spherePoint));
+  const Eigen::VectorXd from =
+      ConstrainedModel::stack(start.byHinges() ? start.hinges : hingePositionsAt(chain, start.spherePoint));
   const Eigen::VectorXd to = readTarget(chain, model, args.target);
   ConnectOptions options;
   options.maxLength = args.maxLength;
@@ -163,15 +152,15 @@ void runConnect(const ConnectArguments& args) {
 
 void addConnectCommand(CLI::App& app) {
   auto args = std::make_shared<ConnectArguments>();
-  CLI::App* command = app.add_subcommand(
-      "connect", "Every force-free motion from the scene's start to a target shape, by two routes");
+  CLI::App* command =
+      app.add_subcommand("connect", "Every force-free motion from the scene's start to a target shape, by two routes");
   command->add_option("scene", args->scene, "scene file (JSON): its linkage and start point are used")->required();
   addSceneOverrideOption(*command, args->overrides);
-  command->add_option("--to", args->target,
-                      "target: {\"coords\": [...]} (chart 0) or {\"hinges\": [[x, y], ...]}, or a file holding it")
+  command
+      ->add_option("--to", args->target,
+                   "target: {\"coords\": [...]} (chart 0) or {\"hinges\": [[x, y], ...]}, or a file holding it")
       ->required();
-  command->add_option("--max-length", args->maxLength,
-                      "longest geodesic wanted (default: 2.5 times the shortest)")
+  command->add_option("--max-length", args->maxLength, "longest geodesic wanted (default: 2.5 times the shortest)")
       ->check(CLI::Range(0.0, 1000.0));
   command->add_flag("--json", args->json, "a JSON list of objects (length, shortest, coords, rates, ...)");
   command->footer(

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/configuration_json.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/scene_input.hpp"
 #include "inverse/periodic.hpp"
@@ -27,18 +28,6 @@ struct PeriodicArguments {
   double maxLength = 0;
   bool json = false;
 };
-
-nlohmann::json vectorJson(const Eigen::VectorXd& v) {
-  nlohmann::json out = nlohmann::json::array();
-  for (double x : v) out.push_back(x);
-  return out;
-}
-
-nlohmann::json hingesJson(const Eigen::VectorXd& q) {
-  nlohmann::json out = nlohmann::json::array();
-  for (Eigen::Index k = 0; k + 1 < q.size(); k += 2) out.push_back({q(k), q(k + 1)});
-  return out;
-}
 
 nlohmann::json geodesicJson(const Chain& chain, const ClosedGeodesic& g) {
   nlohmann::json o;
@@ -57,7 +46,8 @@ nlohmann::json geodesicJson(const Chain& chain, const ClosedGeodesic& g) {
   const Eigen::VectorXd x = spherePointFromHinges(chain, ConstrainedModel::unstack(g.point));
   const Eigen::VectorXd xdot = sphereVelocityFromHingeVelocities(chain, x, ConstrainedModel::unstack(g.velocity));
   const Eigen::VectorXd coords = coordinatesFromSpherePoint(x);
-  o["start"] = {{"coords", vectorJson(coords)}, {"velocity", vectorJson(coordinateRatesFromSphereVelocity(coords, xdot))}};
+  o["start"] = {{"coords", vectorJson(coords)},
+                {"velocity", vectorJson(coordinateRatesFromSphereVelocity(coords, xdot))}};
   o["start_hinges"] = hingesJson(g.point);
   o["start_hinge_velocities"] = hingesJson(g.velocity);
   o["closure_position"] = g.positionClosure;
@@ -76,8 +66,8 @@ void runPeriodic(const PeriodicArguments& args) {
   const Chain& chain = scene.chain;
   if ((chain.rods != 3 && chain.rods != 4) || chain.isSlack())
     throw CommandExit(kExitBadInput, args.scene + ": linkage: periodic needs 3 or 4 rods with n - 2 < L < n (got " +
-                                         std::to_string(chain.rods) + " rods, L = " +
-                                         std::to_string(chain.baseLength) + ")");
+                                         std::to_string(chain.rods) + " rods, L = " + std::to_string(chain.baseLength) +
+                                         ")");
   std::vector<ClosedGeodesic> found;
   if (chain.rods == 3) {
     found.push_back(circleClosedGeodesic(chain));
@@ -114,7 +104,8 @@ void addPeriodicCommand(CLI::App& app) {
       app.add_subcommand("periodic", "Closed geodesics (periodic motions) of the scene's linkage, 3 or 4 rods");
   command->add_option("scene", args->scene, "scene file (JSON): its linkage is used")->required();
   addSceneOverrideOption(*command, args->overrides);
-  command->add_option("--max-length", args->maxLength, "longest closed geodesic wanted (default: about 2.5x the shortest)")
+  command
+      ->add_option("--max-length", args->maxLength, "longest closed geodesic wanted (default: about 2.5x the shortest)")
       ->check(CLI::Range(0.0, 200.0));
   command->add_flag("--json", args->json,
                     "a JSON list of objects (length, simple, symmetry, stability, eigenvalues, start, ...)");

@@ -230,8 +230,10 @@ std::vector<std::vector<Eigen::VectorXd>> sphereArcPaths(const Chain& chain, con
     std::vector<Eigen::VectorXd> path;
     for (int i = 0; i <= intervals; ++i) {
       const double s = total * i / intervals;
-      path.push_back(i == 0 ? from : i == intervals ? to
-                            : ConstrainedModel::stack(hingePositionsAt(chain, std::cos(s) * a + std::sin(s) * w)));
+      path.push_back(i == 0 ? from
+                     : i == intervals
+                         ? to
+                         : ConstrainedModel::stack(hingePositionsAt(chain, std::cos(s) * a + std::sin(s) * w)));
     }
     out.push_back(path);
   }
@@ -244,7 +246,8 @@ int morseIndexOnChain(const Chain& chain, const Eigen::VectorXd& from, const Eig
   const double length = model.norm(velocity);
   if (chain.isSlack()) return -1;  // the Jacobi fields start from a point of the configuration sphere
   const Eigen::VectorXd x = spherePointFromHinges(chain, ConstrainedModel::unstack(from));
-  const InitialState start(x, sphereVelocityFromHingeVelocities(chain, x, ConstrainedModel::unstack(velocity / length)));
+  const InitialState start(x,
+                           sphereVelocityFromHingeVelocities(chain, x, ConstrainedModel::unstack(velocity / length)));
   RunConfig config;
   config.jacobi = true;
   Trajectory run(chain, start, config);
@@ -365,8 +368,8 @@ std::vector<Connection> findConnections(const ConstrainedModel& model, const Cha
   for (Connection& c : found) {
     if (c.discrete) continue;
     const int intervals = kPathSamples * std::max(5, static_cast<int>(std::ceil(2 * c.length)));
-    const auto g = discreteGeodesic(model, shootingPath(model, from, c.velocity, intervals, options.tolerance),
-                                    "shooting path");
+    const auto g =
+        discreteGeodesic(model, shootingPath(model, from, c.velocity, intervals, options.tolerance), "shooting path");
     if (g && match(*g) == &c) record(&c, *g);
   }
   return found;

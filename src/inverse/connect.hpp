@@ -32,15 +32,15 @@ struct DiscreteGeodesic {
 };
 
 struct Connection {
-  double length = 0;              // route 1: |v|_M
-  Eigen::VectorXd velocity;       // initial velocity over time 1 (stacked hinges for a chain)
-  double endError = 0;            // max |q(1) - target| over the coordinates
+  double length = 0;         // route 1: |v|_M
+  Eigen::VectorXd velocity;  // initial velocity over time 1 (stacked hinges for a chain)
+  double endError = 0;       // max |q(1) - target| over the coordinates
   int newtonIterations = 0;
   std::vector<Eigen::VectorXd> path;  // route 1 at t = j / kPathSamples
-  int morseIndex = -1;            // conjugate points passed (chains: from the Jacobi fields of the ambient run)
+  int morseIndex = -1;                // conjugate points passed (chains: from the Jacobi fields of the ambient run)
   std::optional<DiscreteGeodesic> discrete;  // route 2, when it found this geodesic
-  double lengthDifference = 0;    // |route 1 - route 2|
-  double pathDifference = 0;      // max over the samples and coordinates
+  double lengthDifference = 0;               // |route 1 - route 2|
+  double pathDifference = 0;                 // max over the samples and coordinates
 };
 
 struct ConnectOptions {
@@ -52,7 +52,8 @@ struct ConnectOptions {
 
 // Route 1 from one initial velocity (over time 1): the converged connection, or nothing.
 std::optional<Connection> shootConnection(const ConstrainedModel& model, const Eigen::VectorXd& from,
-                                          const Eigen::VectorXd& to, Eigen::VectorXd velocity, double tolerance = 1e-12);
+                                          const Eigen::VectorXd& to, Eigen::VectorXd velocity,
+                                          double tolerance = 1e-12);
 
 // Route 2 from a seed path (K + 1 nodes, K a multiple of kPathSamples, end points the fixed ones).
 std::optional<DiscreteGeodesic> discreteGeodesic(const ConstrainedModel& model, std::vector<Eigen::VectorXd> seed,

@@ -20,7 +20,7 @@ struct QuadraticConstraint {
     int row, col;
     double value;
   };
-  std::vector<Entry> hessian;  // the entries of A (both (i, j) and (j, i) of a symmetric pair)
+  std::vector<Entry> hessian;                  // the entries of A (both (i, j) and (j, i) of a symmetric pair)
   std::vector<std::pair<int, double>> linear;  // b
   double constant = 0;
 };

@@ -87,8 +87,8 @@ bool isSimple(const std::vector<Eigen::VectorXd>& orbit, double spacing) {
     for (int j = i + 4; j < n; ++j) {
       if (n - (j - i) < 4) continue;
       if (segmentDistance(orbit[static_cast<std::size_t>(i)], orbit[static_cast<std::size_t>((i + 1) % n)],
-                          orbit[static_cast<std::size_t>(j)], orbit[static_cast<std::size_t>((j + 1) % n)]) <
-          0.1 * spacing)
+                          orbit[static_cast<std::size_t>(j)],
+                          orbit[static_cast<std::size_t>((j + 1) % n)]) < 0.1 * spacing)
         return false;
     }
   return true;
@@ -115,8 +115,8 @@ void classify(ClosedGeodesic& g) {
 
 }  // namespace
 
-std::optional<ClosedGeodesic> shootClosedGeodesic(const ConstrainedModel& model, Eigen::VectorXd q0,
-                                                  Eigen::VectorXd v0, double period) {
+std::optional<ClosedGeodesic> shootClosedGeodesic(const ConstrainedModel& model, Eigen::VectorXd q0, Eigen::VectorXd v0,
+                                                  double period) {
   if (model.freedom() != 2) throw std::invalid_argument("shootClosedGeodesic: a 2-dimensional model is needed");
   const GeodesicFlow flow(model, 1e-12);
   if (!model.projectPosition(q0)) return std::nullopt;
@@ -159,7 +159,8 @@ std::optional<ClosedGeodesic> shootClosedGeodesic(const ConstrainedModel& model,
     jac.col(1) << s.dq.col(1), s.dv.col(1) - n0;
     jac.col(2) << s.v, flow.acceleration(s.q, s.v);
     Eigen::Vector3d step = jac.colPivHouseholderQr().solve(-residual);
-    const double scale = std::max({std::abs(step(0)) / 0.3, std::abs(step(1)) / 0.3, std::abs(step(2)) / (0.3 * period), 1.0});
+    const double scale =
+        std::max({std::abs(step(0)) / 0.3, std::abs(step(1)) / 0.3, std::abs(step(2)) / (0.3 * period), 1.0});
     step /= scale;
     q0 += step(0) * n0;
     if (!model.projectPosition(q0)) return std::nullopt;
@@ -217,7 +218,8 @@ std::vector<ClosedGeodesic> findClosedGeodesics(const ConstrainedModel& model, c
   }
   std::sort(seeds.begin(), seeds.end(), [](const Seed& a, const Seed& b) { return a.residual < b.residual; });
   if (seeds.size() > 48) seeds.resize(48);
-  for (auto it = guesses.rbegin(); it != guesses.rend(); ++it) seeds.insert(seeds.begin(), {0.0, it->point, it->velocity, it->period});
+  for (auto it = guesses.rbegin(); it != guesses.rend(); ++it)
+    seeds.insert(seeds.begin(), {0.0, it->point, it->velocity, it->period});
 
   std::vector<ClosedGeodesic> found;
   std::vector<std::vector<Eigen::VectorXd>> orbits;
@@ -355,7 +357,8 @@ std::vector<ClosedGeodesic> chainClosedGeodesics(const Chain& chain, const Perio
   double scale = 0;  // a length the simple ones are expected near, for the default bound
   if (symmetricMasses(chain)) {
     const double w = kPi / 4, h = 1e-6;
-    starts.emplace_back(endSwapFixedPoint(chain, w), (endSwapFixedPoint(chain, w + h) - endSwapFixedPoint(chain, w - h)) / (2 * h));
+    starts.emplace_back(endSwapFixedPoint(chain, w),
+                        (endSwapFixedPoint(chain, w + h) - endSwapFixedPoint(chain, w - h)) / (2 * h));
     // Every geodesic between the half turn's two fixed points closes up, continued by its image under the half
     // turn, at twice its length: the motions between them (connect.hpp, shooting only) are guesses.
     const auto poles = halfTurnFixedPoints(chain);
@@ -419,7 +422,8 @@ std::vector<ClosedGeodesic> chainClosedGeodesics(const Chain& chain, const Perio
       }
       if (discrete && std::abs(g.length - 2 * discrete->length) < 1e-6) {
         g.independentLength = 2 * discrete->length;
-        g.independentRoute = "twice the discrete geodesic between the half turn's fixed points (seeded by the shooting path)";
+        g.independentRoute =
+            "twice the discrete geodesic between the half turn's fixed points (seeded by the shooting path)";
       }
     }
   }

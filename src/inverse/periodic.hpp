@@ -26,15 +26,15 @@
 namespace sl {
 
 struct ClosedGeodesic {
-  double length = 0;                  // route 1: the period at unit speed
-  Eigen::VectorXd point, velocity;    // a unit-speed start on it (stacked hinges for a chain)
+  double length = 0;                                // route 1: the period at unit speed
+  Eigen::VectorXd point, velocity;                  // a unit-speed start on it (stacked hinges for a chain)
   double positionClosure = 0, velocityClosure = 0;  // max |q(T) - q0|, max |v(T) - v0|
   bool simple = true;
   Eigen::Matrix2d monodromy = Eigen::Matrix2d::Identity();
-  std::string stability;              // "elliptic", "hyperbolic", "parabolic" ("-" on a circle)
-  double rotationNumber = 0;          // elliptic: acos(tr / 2) / (2 pi), in (0, 1/2)
+  std::string stability;      // "elliptic", "hyperbolic", "parabolic" ("-" on a circle)
+  double rotationNumber = 0;  // elliptic: acos(tr / 2) / (2 pi), in (0, 1/2)
   Eigen::Vector2cd eigenvalues;
-  std::string symmetry;               // the chain symmetries it is invariant under ("" if none / not a chain)
+  std::string symmetry;                     // the chain symmetries it is invariant under ("" if none / not a chain)
   std::optional<double> independentLength;  // route 2
   std::string independentRoute;
 };
@@ -55,12 +55,12 @@ struct ClosedGeodesicGuess {
 };
 
 // Closed geodesics of a 2-dimensional model up to the length bound, from fans at the given points (and from
-// the given starts: point and direction), simple ones first then by length. For a chain (`chain` given) symmetries are named and route 2 run where it applies.
-std::vector<ClosedGeodesic> findClosedGeodesics(const ConstrainedModel& model, const Chain* chain,
-                                                const std::vector<Eigen::VectorXd>& seedPoints,
-                                                const PeriodicOptions& options,
-                                                const std::vector<std::pair<Eigen::VectorXd, Eigen::VectorXd>>& starts = {},
-                                                const std::vector<ClosedGeodesicGuess>& guesses = {});
+// the given starts: point and direction), simple ones first then by length. For a chain (`chain` given) symmetries are
+// named and route 2 run where it applies.
+std::vector<ClosedGeodesic> findClosedGeodesics(
+    const ConstrainedModel& model, const Chain* chain, const std::vector<Eigen::VectorXd>& seedPoints,
+    const PeriodicOptions& options, const std::vector<std::pair<Eigen::VectorXd, Eigen::VectorXd>>& starts = {},
+    const std::vector<ClosedGeodesicGuess>& guesses = {});
 
 // The 4-rod chain: its seed points and its closed geodesics with both routes.
 std::vector<ClosedGeodesic> chainClosedGeodesics(const Chain& chain, const PeriodicOptions& options);

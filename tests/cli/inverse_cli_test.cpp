@@ -39,14 +39,16 @@ TEST(ConnectCli, TargetByHingesAndRefusals) {
   const std::string scene = shippedScene("default.json");
   // The arc shape's hinges of a 4-rod chain on L = 3 (unit rods).
   const ProcessResult byHinges = runLinkage(
-      {"connect", scene, "--to", R"({"hinges": [[0.5, -0.8660254037844386], [1.5, -0.8660254037844386], [2.5, -0.8660254037844386]]})"},
+      {"connect", scene, "--to",
+       R"({"hinges": [[0.5, -0.8660254037844386], [1.5, -0.8660254037844386], [2.5, -0.8660254037844386]]})"},
       folder.path());
   EXPECT_EQ(byHinges.code, 0) << byHinges.err;
   EXPECT_NE(byHinges.out.find("distance "), std::string::npos);
   const ProcessResult wrongCount = runLinkage({"connect", scene, "--to", R"({"coords": [1]})"}, folder.path());
   EXPECT_EQ(wrongCount.code, 2);
   EXPECT_NE(wrongCount.err.find("coords: expected an array of 2 numbers"), std::string::npos) << wrongCount.err;
-  const ProcessResult offRods = runLinkage({"connect", scene, "--to", R"({"hinges": [[0, 0], [1, 0], [2, 0]]})"}, folder.path());
+  const ProcessResult offRods =
+      runLinkage({"connect", scene, "--to", R"({"hinges": [[0, 0], [1, 0], [2, 0]]})"}, folder.path());
   EXPECT_EQ(offRods.code, 2);
   EXPECT_NE(offRods.err.find("not within 0.01"), std::string::npos) << offRods.err;
 }

@@ -2,17 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include "support.hpp"
+
 #include "inverse/connect.hpp"
 #include "linkage/chart.hpp"
 
 namespace sl {
 namespace {
-
-Eigen::VectorXd pointOf(const Chain& chain, double phi, double t) {
-  Eigen::VectorXd c(2);
-  c << phi, t;
-  return ConstrainedModel::stack(hingePositions(chain, c));
-}
 
 void expectRoutesAgree(const std::vector<Connection>& found) {
   ASSERT_FALSE(found.empty());

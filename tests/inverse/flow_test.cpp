@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support.hpp"
+
 #include "inverse/constrained_model.hpp"
 #include "inverse/geodesic_flow.hpp"
 #include "linkage/chart.hpp"
@@ -10,12 +12,6 @@
 
 namespace sl {
 namespace {
-
-Eigen::VectorXd pointOf(const Chain& chain, double phi, double t) {
-  Eigen::VectorXd c(2);
-  c << phi, t;
-  return ConstrainedModel::stack(hingePositions(chain, c));
-}
 
 // The constraints of the chain model are the rods: a configuration from the chart satisfies them.
 TEST(ConstrainedModel, ChainConstraintsVanishOnTheChart) {

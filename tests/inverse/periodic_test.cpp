@@ -37,7 +37,8 @@ TEST(Periodic, FourRodChainHasThreeSimpleClosedGeodesics) {
 TEST(Periodic, TriaxialEllipsoidPrincipalEllipses) {
   const double a = 1.0, b = 1.5, c = 2.0;
   const ConstrainedModel model = ConstrainedModel::ellipsoid(a, b, c);
-  const std::vector<Eigen::VectorXd> points{Eigen::Vector3d(a, 0, 0), Eigen::Vector3d(0, b, 0), Eigen::Vector3d(0, 0, c)};
+  const std::vector<Eigen::VectorXd> points{Eigen::Vector3d(a, 0, 0), Eigen::Vector3d(0, b, 0),
+                                            Eigen::Vector3d(0, 0, c)};
   PeriodicOptions options;
   options.maxLength = 14;
   const auto found = findClosedGeodesics(model, nullptr, points, options);
