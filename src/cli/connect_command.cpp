@@ -15,6 +15,7 @@
 #include "cli/configuration_json.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/scene_input.hpp"
+#include "contracts/limits.hpp"
 #include "inverse/connect.hpp"
 #include "linkage/chart.hpp"
 #include "simulation/ambient_system.hpp"
@@ -88,6 +89,10 @@ Eigen::VectorXd readTarget(const Chain& chain, const ConstrainedModel& model, co
 void runConnect(const ConnectArguments& args) {
   const Scene scene = loadSceneForCommand(args.scene, args.overrides);
   const Chain& chain = scene.chain;
+  if (chain.rods > limits::kMaxConnectRods)
+    throw CommandExit(kExitBadInput, args.scene + ": linkage.rods: connect handles at most " +
+                                         std::to_string(limits::kMaxConnectRods) + " rods (got " +
+                                         std::to_string(chain.rods) + ")");
   const ConstrainedModel model = ConstrainedModel::fromChain(chain);
   const InitialState start = runStarts(scene).at(0);
   const Eigen::VectorXd from =

@@ -45,5 +45,7 @@ inline constexpr double kMaxFieldOfViewDegrees = 120;
 // How long a render waits for a lock another process holds on its output folder before giving up (a process
 // stopped with SIGSTOP, or hung, holds it for ever); it says what it waits for after the first second.
 inline constexpr double kMaxLockWaitSeconds = 60;
+// `connect` (src/inverse) solves the constrained geodesic flow with a dense KKT system, n^3 per evaluation.
+inline constexpr int kMaxConnectRods = 40;
 
 }  // namespace sl::limits

@@ -303,7 +303,7 @@ std::vector<Connection> findConnections(const ConstrainedModel& model, const Cha
     for (int i = 0; i < d; ++i) {
       directions.push_back(basis.col(i));
       directions.push_back(-basis.col(i));
-      for (int j = i + 1; j < d; ++j)
+      for (int j = i + 1; j < std::min(d, 4); ++j)  // diagonals among the first four only: O(d) rays
         for (double s : {1.0, -1.0}) {
           directions.push_back((basis.col(i) + s * basis.col(j)) / std::sqrt(2.0));
           directions.push_back(-(basis.col(i) + s * basis.col(j)) / std::sqrt(2.0));

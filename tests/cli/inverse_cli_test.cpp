@@ -69,6 +69,14 @@ TEST(PeriodicCli, ThreeSimpleClosedGeodesicsAsJson) {
   EXPECT_NEAR(list[0]["length"].get<double>(), 6.593902692917, 1e-8);
 }
 
+TEST(ConnectCli, RefusesChainsBeyondItsLimit) {
+  TempFolder folder;
+  const ProcessResult result =
+      runLinkage({"connect", shippedScene("rope.json"), "--to", R"({"coords": [0]})"}, folder.path());
+  EXPECT_EQ(result.code, 2);
+  EXPECT_NE(result.err.find("connect handles at most 40 rods"), std::string::npos) << result.err;
+}
+
 TEST(PeriodicCli, RefusesLongChains) {
   TempFolder folder;
   const ProcessResult result = runLinkage({"periodic", shippedScene("five-rods.json")}, folder.path());
