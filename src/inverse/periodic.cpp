@@ -116,7 +116,7 @@ void classify(ClosedGeodesic& g) {
 }  // namespace
 
 std::optional<ClosedGeodesic> shootClosedGeodesic(const ConstrainedModel& model, Eigen::VectorXd q0, Eigen::VectorXd v0,
-                                                  double period) {
+                                                  double period, const Eigen::MatrixXd* twist) {
   if (model.freedom() != 2) throw std::invalid_argument("shootClosedGeodesic: a 2-dimensional model is needed");
   const GeodesicFlow flow(model, 1e-12);
   if (!model.projectPosition(q0)) return std::nullopt;
@@ -139,8 +139,12 @@ std::optional<ClosedGeodesic> shootClosedGeodesic(const ConstrainedModel& model,
     }
     const Eigen::Index n = q0.size();
     Eigen::VectorXd residual(2 * n);
-    residual << s.q - q0, s.v - v0;
+    const Eigen::MatrixXd identity = Eigen::MatrixXd::Identity(n, n);
+    const Eigen::MatrixXd& map = twist != nullptr ? *twist : identity;
+    residual << s.q - map * q0, s.v - map * v0;
     const double error = maxAbs(residual);
+    if (twist != nullptr && (error <= 1e-13 || (error <= 1e-11 && error >= previous * 0.5)))
+      return shootClosedGeodesic(model, q0, v0, 2 * period);  // the whole orbit, checked without the twist
     if (error <= 1e-13 || (error <= 1e-11 && error >= previous * 0.5)) {
       ClosedGeodesic g;
       g.length = period;
@@ -155,8 +159,8 @@ std::optional<ClosedGeodesic> shootClosedGeodesic(const ConstrainedModel& model,
     }
     previous = error;
     Eigen::MatrixXd jac(2 * n, 3);
-    jac.col(0) << s.dq.col(0) - n0, s.dv.col(0) - dvs;
-    jac.col(1) << s.dq.col(1), s.dv.col(1) - n0;
+    jac.col(0) << s.dq.col(0) - map * n0, s.dv.col(0) - map * dvs;
+    jac.col(1) << s.dq.col(1), s.dv.col(1) - map * n0;
     jac.col(2) << s.v, flow.acceleration(s.q, s.v);
     Eigen::Vector3d step = jac.colPivHouseholderQr().solve(-residual);
     const double scale =
@@ -182,6 +186,7 @@ std::vector<ClosedGeodesic> findClosedGeodesics(const ConstrainedModel& model, c
     double residual;
     Eigen::VectorXd q, v;
     double period;
+    bool twisted = false;
   };
   std::vector<Seed> seeds;
   const GeodesicFlow flow(model, 1e-9);
@@ -200,13 +205,22 @@ std::vector<ClosedGeodesic> findClosedGeodesics(const ConstrainedModel& model, c
       u = model.projectVelocity(q, u);
       u /= model.norm(u);
       FlowState s{q, u, Eigen::MatrixXd(q.size(), 0), Eigen::MatrixXd(q.size(), 0)};
-      double r2 = INFINITY, r1 = INFINITY, t1 = 0;
+      double r2 = INFINITY, r1 = INFINITY, t1 = 0, w2 = INFINITY, w1 = INFINITY;
       bool left = false;
+      const bool twisted = options.twist.size() > 0;
+      const Eigen::VectorXd twistedQ = twisted ? Eigen::VectorXd(options.twist * q) : q;
+      const Eigen::VectorXd twistedU = twisted ? Eigen::VectorXd(options.twist * u) : u;
       try {
         flow.advance(s, maxLength * 1.02, [&](double t, const FlowState& st) {
           const double r0 = model.norm(st.q - q) + model.norm(st.v - u);
           if (r0 > 0.5) left = true;
           if (left && r1 < r2 && r1 <= r0 && r1 < 0.5) seeds.push_back({r1, q, u, t1});
+          if (twisted) {  // returns to the mirror image, at half the period
+            const double w0 = model.norm(st.q - twistedQ) + model.norm(st.v - twistedU);
+            if (t <= maxLength / 2 && w1 < w2 && w1 <= w0 && w1 < 0.5) seeds.push_back({w1, q, u, t1, true});
+            w2 = w1;
+            w1 = w0;
+          }
           r2 = r1;
           r1 = r0;
           t1 = t;
@@ -227,12 +241,13 @@ std::vector<ClosedGeodesic> findClosedGeodesics(const ConstrainedModel& model, c
   for (const Seed& seed : seeds) {
     bool covered = false;  // a seed on a known orbit with a multiple of its period: nothing new
     for (std::size_t i = 0; i < found.size() && !covered; ++i) {
-      const double ratio = seed.period / found[i].length;
+      const double ratio = (seed.twisted ? 2 : 1) * seed.period / found[i].length;
       covered = std::abs(ratio - std::round(ratio)) < 0.02 && std::round(ratio) >= 1 &&
                 distanceToOrbit(orbits[i], u * seed.q) < 1e-3;
     }
     if (covered) continue;
-    std::optional<ClosedGeodesic> g = shootClosedGeodesic(model, seed.q, seed.v, seed.period);
+    std::optional<ClosedGeodesic> g =
+        shootClosedGeodesic(model, seed.q, seed.v, seed.period, seed.twisted ? &options.twist : nullptr);
     if (!g || g->length > maxLength * (1 + 1e-9)) continue;
     bool known = false;
     for (std::size_t i = 0; i < found.size() && !known; ++i) {
@@ -379,8 +394,18 @@ std::vector<ClosedGeodesic> chainClosedGeodesics(const Chain& chain, const Perio
     c << 0.4, t;
     points.push_back(ConstrainedModel::stack(hingePositions(chain, c)));
   }
+  if (!symmetricMasses(chain))  // no symmetric guesses: fan from more points
+    for (const auto& [phi, t] : {std::pair{0.0, 0.0}, {1.2, 1.0}, {-0.8, -1.2}, {0.0, 1.57}}) {
+      Eigen::VectorXd c(2);
+      c << phi, t;
+      points.push_back(ConstrainedModel::stack(hingePositions(chain, c)));
+    }
   PeriodicOptions bounded = options;
   if (bounded.maxLength <= 0) bounded.maxLength = scale > 0 ? 2.5 * scale : 24.0;
+  if (!symmetricMasses(chain)) {  // the mirror is still an isometry: seek the closed geodesics it maps to themselves
+    bounded.twist = Eigen::MatrixXd::Identity(6, 6);
+    for (int k = 1; k < 6; k += 2) bounded.twist(k, k) = -1;
+  }
   // The symmetric guesses first; fans only when they do not give the three simple ones Lyusternik and
   // Schnirelmann promise (always for asymmetric masses).
   std::vector<ClosedGeodesic> found = findClosedGeodesics(model, &chain, {}, bounded, starts, guesses);

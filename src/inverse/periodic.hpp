@@ -39,13 +39,16 @@ struct ClosedGeodesic {
   std::string independentRoute;
 };
 
-// Route 1 from a start (q0, v0 of unit speed) and a period guess.
+// Route 1 from a start (q0, v0 of unit speed) and a period guess. With a twist S (a linear isometry of the
+// model that is an involution, e.g. the chain's mirror), the guess is for half a period and Newton solves
+// (q, v)(T) = S (q0, v0): the closed geodesics invariant under S, found from half their length.
 std::optional<ClosedGeodesic> shootClosedGeodesic(const ConstrainedModel& model, Eigen::VectorXd q0, Eigen::VectorXd v0,
-                                                  double period);
+                                                  double period, const Eigen::MatrixXd* twist = nullptr);
 
 struct PeriodicOptions {
-  double maxLength = 0;  // <= 0: 3 times the shortest one found (chains), 30 otherwise
-  int directions = 36;   // per seed point, over a half turn
+  double maxLength = 0;   // <= 0: 3 times the shortest one found (chains), 30 otherwise
+  int directions = 36;    // per seed point, over a half turn
+  Eigen::MatrixXd twist;  // if given: also seek returns to the twisted start (see shootClosedGeodesic)
 };
 
 // A start (point, unit velocity) and period to shoot from directly.

@@ -32,6 +32,20 @@ TEST(Periodic, FourRodChainHasThreeSimpleClosedGeodesics) {
   }
 }
 
+// Asymmetric hinge masses: only the mirror is left; shooting half a period to the mirror image finds the three.
+TEST(Periodic, AsymmetricMassesStillThreeSimple) {
+  Chain chain = Chain::uniform(4, 3.0);
+  chain.hingeMasses << 1.0, 2.0, 3.0;
+  const auto found = chainClosedGeodesics(chain, PeriodicOptions{});
+  int simple = 0;
+  for (const ClosedGeodesic& g : found) {
+    EXPECT_LT(std::max(g.positionClosure, g.velocityClosure), 1e-10);
+    EXPECT_EQ(g.symmetry.find("end swap"), std::string::npos);  // not an isometry here
+    simple += g.simple;
+  }
+  EXPECT_GE(simple, 3);
+}
+
 // A triaxial ellipsoid through the same code: its three principal ellipses, lengths by elliptic integrals; the
 // middle one is hyperbolic, the others elliptic.
 TEST(Periodic, TriaxialEllipsoidPrincipalEllipses) {
