@@ -6,6 +6,7 @@
 #   scene       scene files -> Scene
 #   simulation  geodesic methods, integrators, runs
 #   analysis    work-precision and stability sweeps
+#   inverse     two-point motions and closed geodesics (shooting and discrete action)
 #   frames      scene + runs -> FrameState per frame
 #   render      FrameState -> pixels (draw lists on the CPU; gl: OpenGL through OSMesa)
 #   output      pixels -> PNG files + manifest, video
@@ -14,17 +15,18 @@
 # Each stage is a static library sl_<stage> whose include path holds only its own folder and, through
 # linking, the folders of the stages it may use. An include of any other stage does not compile, and the
 # layer test (tests/architecture) checks every #include against this table as well.
-set(SL_STAGES contracts linkage geometry scene simulation analysis frames render output cli)
+set(SL_STAGES contracts linkage geometry scene simulation analysis inverse frames render output cli)
 set(SL_USES_contracts "")
 set(SL_USES_linkage contracts)
 set(SL_USES_geometry contracts linkage)
 set(SL_USES_scene contracts linkage)
 set(SL_USES_simulation contracts linkage)
 set(SL_USES_analysis contracts linkage simulation)
+set(SL_USES_inverse contracts linkage simulation)
 set(SL_USES_frames contracts linkage geometry scene simulation)
 set(SL_USES_render contracts)
 set(SL_USES_output contracts)
-set(SL_USES_cli contracts linkage geometry scene simulation analysis frames render output)
+set(SL_USES_cli contracts linkage geometry scene simulation analysis inverse frames render output)
 
 # The table as a file for the layer test: one line per stage, "stage: used used ...".
 set(_layers "")

@@ -25,6 +25,10 @@ void addStillCommand(CLI::App& app);
 void addContactSheetCommand(CLI::App& app);
 // `linkage numbers`: what a scene computes (energy, drift, stops, conjugate points, curvature) as JSON.
 void addNumbersCommand(CLI::App& app);
+// `linkage connect`: the motions from the scene's start to a target shape (two routes).
+void addConnectCommand(CLI::App& app);
+// `linkage periodic`: closed geodesics of the scene's linkage (3 or 4 rods).
+void addPeriodicCommand(CLI::App& app);
 // `linkage schema`: the JSON Schema of scene files.
 void addSchemaCommand(CLI::App& app);
 

@@ -89,6 +89,8 @@ int runCommand(int argc, char** argv) {
   sl::addStabilityCommand(app);
   sl::addGeometryCommand(app);
   sl::addNumbersCommand(app);
+  sl::addConnectCommand(app);
+  sl::addPeriodicCommand(app);
   sl::addSchemaCommand(app);
   try {
     app.parse(argc, argv);

@@ -56,5 +56,7 @@ inline constexpr double kMaxLockWaitSeconds = 60;
 // How long the video encoder may read nothing of a frame before the render gives up on it (an encoder stopped
 // or hung); it says what it waits for after the first second. LINKAGE_ENCODER_WAIT (seconds) overrides it.
 inline constexpr double kMaxEncoderStallSeconds = 60;
+// `connect` (src/inverse) solves the constrained geodesic flow with a dense KKT system, n^3 per evaluation.
+inline constexpr int kMaxConnectRods = 40;
 
 }  // namespace sl::limits

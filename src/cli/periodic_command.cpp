@@ -1,0 +1,120 @@
+// `linkage periodic SCENE.json`: the closed geodesics (periodic force-free motions) of the scene's linkage,
+// 4 rods (the configuration sphere) or 3 (its circle), by shooting and by an independent route
+// (src/inverse/periodic.hpp).
+
+#include <complex>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/configuration_json.hpp"
+#include "cli/exit_codes.hpp"
+#include "cli/scene_input.hpp"
+#include "inverse/periodic.hpp"
+#include "linkage/chart.hpp"
+#include "simulation/ambient_system.hpp"
+
+namespace sl {
+
+namespace {
+
+struct PeriodicArguments {
+  std::vector<std::string> overrides;
+  std::string scene;
+  double maxLength = 0;
+  bool json = false;
+};
+
+nlohmann::json geodesicJson(const Chain& chain, const ClosedGeodesic& g) {
+  nlohmann::json o;
+  o["length"] = g.length;
+  o["simple"] = g.simple;
+  o["symmetry"] = g.symmetry;
+  o["stability"] = g.stability;
+  if (g.stability == "elliptic") o["rotation_number"] = g.rotationNumber;
+  if (g.stability != "-") {
+    nlohmann::json eigen = nlohmann::json::array();
+    for (int i = 0; i < 2; ++i) eigen.push_back({g.eigenvalues(i).real(), g.eigenvalues(i).imag()});
+    o["eigenvalues"] = eigen;
+    o["monodromy_trace"] = g.monodromy.trace();
+  }
+  // A unit-speed start: a scene's "initial" with these coords and velocity (chart 0) animates it.
+  const Eigen::VectorXd x = spherePointFromHinges(chain, ConstrainedModel::unstack(g.point));
+  const Eigen::VectorXd xdot = sphereVelocityFromHingeVelocities(chain, x, ConstrainedModel::unstack(g.velocity));
+  const Eigen::VectorXd coords = coordinatesFromSpherePoint(x);
+  o["start"] = {{"coords", vectorJson(coords)},
+                {"velocity", vectorJson(coordinateRatesFromSphereVelocity(coords, xdot))}};
+  o["start_hinges"] = hingesJson(g.point);
+  o["start_hinge_velocities"] = hingesJson(g.velocity);
+  o["closure_position"] = g.positionClosure;
+  o["closure_velocity"] = g.velocityClosure;
+  if (g.independentLength) {
+    o["independent_length"] = *g.independentLength;
+    o["independent_route"] = g.independentRoute;
+  } else {
+    o["independent_length"] = nullptr;
+  }
+  return o;
+}
+
+void runPeriodic(const PeriodicArguments& args) {
+  const Scene scene = loadSceneForCommand(args.scene, args.overrides);
+  const Chain& chain = scene.chain;
+  if ((chain.rods != 3 && chain.rods != 4) || chain.isSlack())
+    throw CommandExit(kExitBadInput, args.scene + ": linkage: periodic needs 3 or 4 rods with n - 2 < L < n (got " +
+                                         std::to_string(chain.rods) + " rods, L = " + std::to_string(chain.baseLength) +
+                                         ")");
+  std::vector<ClosedGeodesic> found;
+  if (chain.rods == 3) {
+    found.push_back(circleClosedGeodesic(chain));
+  } else {
+    PeriodicOptions options;
+    options.maxLength = args.maxLength;
+    found = chainClosedGeodesics(chain, options);
+  }
+  if (args.json) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const ClosedGeodesic& g : found) list.push_back(geodesicJson(chain, g));
+    std::cout << list.dump(2) << "\n";
+    return;
+  }
+  std::printf("%3s %16s %16s %6s %-10s %9s %9s %9s  %s\n", "#", "length", "independent", "simple", "stability",
+              "rotation", "trace", "closure", "symmetry");
+  for (std::size_t i = 0; i < found.size(); ++i) {
+    const ClosedGeodesic& g = found[i];
+    char independent[32] = "-", rotation[32] = "-", trace[32] = "-";
+    if (g.independentLength) std::snprintf(independent, sizeof independent, "%.12f", *g.independentLength);
+    if (g.stability == "elliptic") std::snprintf(rotation, sizeof rotation, "%.6f", g.rotationNumber);
+    if (g.stability != "-") std::snprintf(trace, sizeof trace, "%.6f", g.monodromy.trace());
+    std::printf("%3zu %16.12f %16s %6s %-10s %9s %9s %9.1e  %s\n", i, g.length, independent, g.simple ? "yes" : "no",
+                g.stability.c_str(), rotation, trace, std::max(g.positionClosure, g.velocityClosure),
+                g.symmetry.empty() ? "-" : g.symmetry.c_str());
+  }
+}
+
+}  // namespace
+
+void addPeriodicCommand(CLI::App& app) {
+  auto args = std::make_shared<PeriodicArguments>();
+  CLI::App* command =
+      app.add_subcommand("periodic", "Closed geodesics (periodic motions) of the scene's linkage, 3 or 4 rods");
+  command->add_option("scene", args->scene, "scene file (JSON): its linkage is used")->required();
+  addSceneOverrideOption(*command, args->overrides);
+  command
+      ->add_option("--max-length", args->maxLength, "longest closed geodesic wanted (default: about 2.5x the shortest)")
+      ->check(CLI::Range(0.0, 200.0));
+  command->add_flag("--json", args->json,
+                    "a JSON list of objects (length, simple, symmetry, stability, eigenvalues, start, ...)");
+  command->footer(
+      "Route 1 shoots on the return map (Newton with the monodromy); 'independent' is route 2's length where it\n"
+      "applies (the end swap's fixed curve, twice a discrete geodesic between the half turn's fixed points, the\n"
+      "3-rod circle). Stability from the linearised return map: elliptic (rotation number) or hyperbolic.\n"
+      "Example:\n  linkage periodic scenes/default.json --json");
+  command->callback([args] { runPeriodic(*args); });
+}
+
+}  // namespace sl

@@ -1,0 +1,378 @@
+#include "inverse/connect.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseLU>
+
+#include "inverse/geodesic_flow.hpp"
+#include "inverse/richardson.hpp"
+#include "linkage/chart.hpp"
+#include "simulation/ambient_system.hpp"
+#include "simulation/trajectory.hpp"
+
+namespace sl {
+
+namespace {
+
+double maxAbs(const Eigen::VectorXd& v) { return v.cwiseAbs().maxCoeff(); }
+
+// Newton's method on the discrete Euler-Lagrange equations with multipliers; nodes 0 and K fixed.
+bool solveDiscrete(const ConstrainedModel& model, std::vector<Eigen::VectorXd>& nodes, bool periodic = false) {
+  const int n = model.dimension(), m = model.constraintCount(), block = n + m;
+  const int count = static_cast<int>(nodes.size());
+  const int first = periodic ? 0 : 1, last = periodic ? count - 1 : count - 2;  // unknown nodes
+  const int unknowns = last - first + 1;
+  if (unknowns <= 0) return true;
+  auto node = [&](int i) -> const Eigen::VectorXd& {
+    if (periodic) return nodes[static_cast<std::size_t>((i + count) % count)];
+    return nodes[static_cast<std::size_t>(i)];
+  };
+  // Multipliers from least squares on the current nodes.
+  std::vector<Eigen::VectorXd> mu(static_cast<std::size_t>(count), Eigen::VectorXd::Zero(m));
+  for (int i = first; i <= last; ++i) {
+    const Eigen::MatrixXd g = model.jacobian(node(i));
+    const Eigen::VectorXd r = model.mass() * (node(i + 1) - 2 * node(i) + node(i - 1));
+    mu[static_cast<std::size_t>(i)] = -(g * g.transpose()).ldlt().solve(g * r);
+  }
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+  bool analysed = false;
+  for (int iteration = 0; iteration < 40; ++iteration) {
+    std::vector<Eigen::Triplet<double>> entries;
+    Eigen::VectorXd residual(unknowns * block);
+    for (int i = first; i <= last; ++i) {
+      const int row = (i - first) * block;
+      const Eigen::VectorXd& q = node(i);
+      const Eigen::VectorXd& mui = mu[static_cast<std::size_t>(i)];
+      const Eigen::MatrixXd g = model.jacobian(q);
+      residual.segment(row, n) = model.mass() * (node(i + 1) - 2 * q + node(i - 1)) + g.transpose() * mui;
+      residual.segment(row + n, m) = model.values(q);
+      const Eigen::MatrixXd diagonal = -2.0 * model.mass() + model.hessianMatrix(mui);
+      for (int r = 0; r < n; ++r) {
+        for (int c = 0; c < n; ++c) {
+          if (diagonal(r, c) != 0.0) entries.emplace_back(row + r, row + c, diagonal(r, c));
+          const double mass = model.mass()(r, c);
+          if (mass == 0.0) continue;
+          for (int neighbour : {i - 1, i + 1}) {
+            int j = neighbour;
+            if (periodic) j = (j + count) % count;
+            if (j < first || j > last) continue;
+            entries.emplace_back(row + r, (j - first) * block + c, mass);
+          }
+        }
+        for (int k = 0; k < m; ++k) {
+          if (g(k, r) == 0.0) continue;
+          entries.emplace_back(row + r, row + n + k, g(k, r));
+          entries.emplace_back(row + n + k, row + r, g(k, r));
+        }
+      }
+      // Keep the structural diagonal of the multiplier rows (zero) so the pattern never changes.
+      for (int k = 0; k < m; ++k) entries.emplace_back(row + n + k, row + n + k, 0.0);
+    }
+    Eigen::SparseMatrix<double> jac(unknowns * block, unknowns * block);
+    jac.setFromTriplets(entries.begin(), entries.end());
+    if (!analysed) {
+      lu.analyzePattern(jac);
+      analysed = true;
+    }
+    lu.factorize(jac);
+    if (lu.info() != Eigen::Success) return false;
+    const Eigen::VectorXd step = lu.solve(-residual);
+    if (!step.allFinite()) return false;
+    double largest = 0;
+    for (int i = first; i <= last; ++i) {
+      const int row = (i - first) * block;
+      Eigen::VectorXd& q = nodes[static_cast<std::size_t>(i)];
+      q += step.segment(row, n);
+      mu[static_cast<std::size_t>(i)] += step.segment(row + n, m);
+      largest = std::max(largest, maxAbs(step.segment(row, n)));
+    }
+    if (largest > 10.0) return false;  // diverging
+    if (largest < 1e-14) return true;
+  }
+  return false;
+}
+
+double polygonLength(const ConstrainedModel& model, const std::vector<Eigen::VectorXd>& nodes) {
+  double length = 0;
+  for (std::size_t i = 0; i + 1 < nodes.size(); ++i) length += model.norm(nodes[i + 1] - nodes[i]);
+  return length;
+}
+
+std::vector<Eigen::VectorXd> refine(const ConstrainedModel& model, const std::vector<Eigen::VectorXd>& nodes) {
+  std::vector<Eigen::VectorXd> finer;
+  for (std::size_t i = 0; i + 1 < nodes.size(); ++i) {
+    finer.push_back(nodes[i]);
+    Eigen::VectorXd middle = (nodes[i] + nodes[i + 1]) / 2.0;
+    model.projectPosition(middle);
+    finer.push_back(middle);
+  }
+  finer.push_back(nodes.back());
+  return finer;
+}
+
+Eigen::VectorXd samplesOf(const std::vector<Eigen::VectorXd>& nodes) {
+  const int intervals = static_cast<int>(nodes.size()) - 1, n = static_cast<int>(nodes[0].size());
+  Eigen::VectorXd out((kPathSamples + 1) * n);
+  for (int j = 0; j <= kPathSamples; ++j)
+    out.segment(j * n, n) = nodes[static_cast<std::size_t>(j * intervals / kPathSamples)];
+  return out;
+}
+
+std::vector<Eigen::VectorXd> unpackSamples(const Eigen::VectorXd& packed, int n) {
+  std::vector<Eigen::VectorXd> out;
+  for (int j = 0; j <= kPathSamples; ++j) out.push_back(packed.segment(j * n, n));
+  return out;
+}
+
+double pathDistance(const std::vector<Eigen::VectorXd>& a, const std::vector<Eigen::VectorXd>& b) {
+  double worst = 0;
+  for (std::size_t j = 0; j < a.size() && j < b.size(); ++j) worst = std::max(worst, maxAbs(a[j] - b[j]));
+  return worst;
+}
+
+}  // namespace
+
+std::vector<Eigen::VectorXd> shootingPath(const ConstrainedModel& model, const Eigen::VectorXd& from,
+                                          const Eigen::VectorXd& velocity, int intervals, double tolerance) {
+  const GeodesicFlow flow(model, tolerance);
+  const int n = model.dimension();
+  FlowState state{from, velocity, Eigen::MatrixXd(n, 0), Eigen::MatrixXd(n, 0)};
+  std::vector<Eigen::VectorXd> path{from};
+  for (int j = 1; j <= intervals; ++j) {
+    flow.advance(state, 1.0 / intervals);
+    path.push_back(state.q);
+  }
+  return path;
+}
+
+std::optional<Connection> shootConnection(const ConstrainedModel& model, const Eigen::VectorXd& from,
+                                          const Eigen::VectorXd& to, Eigen::VectorXd velocity, double tolerance) {
+  const GeodesicFlow flow(model, tolerance);
+  const int n = model.dimension();
+  const Eigen::MatrixXd basis = model.tangentBasis(from);
+  velocity = model.projectVelocity(from, velocity);
+  double previous = INFINITY;
+  for (int iteration = 1; iteration <= 40; ++iteration) {
+    FlowState state{from, velocity, Eigen::MatrixXd::Zero(n, basis.cols()), basis};
+    try {
+      flow.advance(state, 1.0);
+    } catch (const std::runtime_error&) {
+      return std::nullopt;
+    }
+    const Eigen::VectorXd residual = state.q - to;
+    const double error = maxAbs(residual);
+    if (error <= 1e-13 || (error <= 1e-12 && error >= previous * 0.5)) {
+      Connection c;
+      c.velocity = velocity;
+      c.length = model.norm(velocity);
+      c.endError = error;
+      c.newtonIterations = iteration;
+      return c;
+    }
+    previous = error;
+    // Gauss-Newton in the mass metric: min |J x + r|_M.
+    const Eigen::MatrixXd& j = state.dq;
+    const Eigen::MatrixXd normal = j.transpose() * model.mass() * j;
+    const Eigen::VectorXd x = normal.ldlt().solve(-(j.transpose() * model.mass() * residual));
+    Eigen::VectorXd step = basis * x;
+    const double limit = 0.5 * std::max(1.0, model.norm(velocity));
+    if (model.norm(step) > limit) step *= limit / model.norm(step);
+    velocity += step;
+    if (!velocity.allFinite()) return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+std::optional<DiscreteGeodesic> discreteGeodesic(const ConstrainedModel& model, std::vector<Eigen::VectorXd> nodes,
+                                                 const std::string& seedName) {
+  for (std::size_t i = 1; i + 1 < nodes.size(); ++i) model.projectPosition(nodes[i]);
+  Richardson lengths, paths;
+  DiscreteGeodesic out;
+  out.seed = seedName;
+  Eigen::VectorXd previousLength;
+  Eigen::VectorXd previousPath;
+  for (int level = 0; level < 7; ++level) {
+    if (level > 0) nodes = refine(model, nodes);
+    if (!solveDiscrete(model, nodes)) return std::nullopt;
+    const Eigen::VectorXd length = lengths.add(Eigen::VectorXd::Constant(1, polygonLength(model, nodes)));
+    const Eigen::VectorXd path = paths.add(samplesOf(nodes));
+    out.nodes = static_cast<int>(nodes.size()) - 1;
+    if (level > 0) {
+      out.lengthChange = std::abs(length(0) - previousLength(0));
+      const double pathChange = maxAbs(path - previousPath);
+      out.length = length(0);
+      out.path = unpackSamples(path, model.dimension());
+      if (level >= 3 && out.lengthChange < 1e-11 && pathChange < 1e-10) return out;
+    }
+    previousLength = length;
+    previousPath = path;
+  }
+  return out;  // the best estimate; lengthChange says how good
+}
+
+std::vector<std::vector<Eigen::VectorXd>> sphereArcPaths(const Chain& chain, const Eigen::VectorXd& from,
+                                                         const Eigen::VectorXd& to, int intervals) {
+  std::vector<std::vector<Eigen::VectorXd>> out;
+  if (chain.isSlack()) return out;
+  const Eigen::VectorXd a = spherePointFromHinges(chain, ConstrainedModel::unstack(from));
+  const Eigen::VectorXd b = spherePointFromHinges(chain, ConstrainedModel::unstack(to));
+  Eigen::VectorXd w = b - a.dot(b) * a;
+  if (w.norm() < 1e-9) {  // antipodal or equal: any perpendicular direction
+    w = Eigen::VectorXd::Unit(a.size(), 0) - a(0) * a;
+    if (w.norm() < 1e-3) w = Eigen::VectorXd::Unit(a.size(), 1) - a(1) * a;
+  }
+  w.normalize();
+  const double angle = std::atan2(b.dot(w), a.dot(b));  // in [0, pi]
+  for (double total : {angle, angle - 2 * std::numbers::pi}) {
+    std::vector<Eigen::VectorXd> path;
+    for (int i = 0; i <= intervals; ++i) {
+      const double s = total * i / intervals;
+      path.push_back(i == 0 ? from
+                     : i == intervals
+                         ? to
+                         : ConstrainedModel::stack(hingePositionsAt(chain, std::cos(s) * a + std::sin(s) * w)));
+    }
+    out.push_back(path);
+  }
+  return out;
+}
+
+int morseIndexOnChain(const Chain& chain, const Eigen::VectorXd& from, const Eigen::VectorXd& velocity) {
+  if (chain.rods < 4) return 0;  // a circle has no conjugate points
+  const ConstrainedModel model = ConstrainedModel::fromChain(chain);
+  const double length = model.norm(velocity);
+  if (chain.isSlack()) return -1;  // the Jacobi fields start from a point of the configuration sphere
+  const Eigen::VectorXd x = spherePointFromHinges(chain, ConstrainedModel::unstack(from));
+  const InitialState start(x,
+                           sphereVelocityFromHingeVelocities(chain, x, ConstrainedModel::unstack(velocity / length)));
+  RunConfig config;
+  config.jacobi = true;
+  Trajectory run(chain, start, config);
+  run.sampleAt(length);
+  int count = 0;
+  for (double t : run.conjugateTimes())
+    if (t < length * (1 - 1e-9)) ++count;
+  return count;
+}
+
+std::optional<Connection> directConnection(const ConstrainedModel& model, const Chain* chain,
+                                           const Eigen::VectorXd& from, const Eigen::VectorXd& to, double tolerance) {
+  if (chain == nullptr || chain->isSlack()) return shootConnection(model, from, to, to - from, tolerance);
+  // Continuation along the great-circle arc: shoot at the arc's points one stage further each time, from
+  // the previous stage's velocity stretched to the longer arc, so Newton always starts close.
+  const int intervals = 64, stages = 4;
+  const auto arc = sphereArcPaths(*chain, from, to, intervals)[0];
+  Eigen::VectorXd velocity = (arc[1] - arc[0]) * intervals / stages;
+  std::optional<Connection> c;
+  for (int stage = 1; stage <= stages; ++stage) {
+    c = shootConnection(model, from, arc[static_cast<std::size_t>(stage * intervals / stages)], velocity, tolerance);
+    if (!c) return shootConnection(model, from, to, (arc[1] - arc[0]) * intervals, tolerance);
+    velocity = c->velocity * (stage + 1.0) / stage;
+  }
+  return c;
+}
+
+std::vector<Connection> findConnections(const ConstrainedModel& model, const Chain* chain, const Eigen::VectorXd& from,
+                                        const Eigen::VectorXd& to, const ConnectOptions& options) {
+  std::vector<Connection> found;
+  auto add = [&](std::optional<Connection> c) {
+    if (!c) return;
+    for (const Connection& known : found)
+      if (model.norm(known.velocity - c->velocity) < 1e-6 * std::max(1.0, c->length)) return;
+    found.push_back(*c);
+  };
+  add(directConnection(model, chain, from, to, options.tolerance));
+  double maxLength = options.maxLength;
+  if (maxLength <= 0) maxLength = found.empty() ? 10.0 : 2.5 * found[0].length;
+
+  // The fan: unit-speed geodesics from the start, their closest approaches to the target as seeds.
+  const Eigen::MatrixXd basis = model.tangentBasis(from);
+  const int d = static_cast<int>(basis.cols());
+  std::vector<Eigen::VectorXd> directions;
+  if (d == 1) {
+    directions = {basis.col(0), -basis.col(0)};
+  } else if (d == 2) {
+    for (int k = 0; k < options.directions; ++k) {
+      const double a = 2 * std::numbers::pi * (k + 0.5) / options.directions;
+      directions.push_back(std::cos(a) * basis.col(0) + std::sin(a) * basis.col(1));
+    }
+  } else {
+    for (int i = 0; i < d; ++i) {
+      directions.push_back(basis.col(i));
+      directions.push_back(-basis.col(i));
+      for (int j = i + 1; j < std::min(d, 4); ++j)  // diagonals among the first four only: O(d) rays
+        for (double s : {1.0, -1.0}) {
+          directions.push_back((basis.col(i) + s * basis.col(j)) / std::sqrt(2.0));
+          directions.push_back(-(basis.col(i) + s * basis.col(j)) / std::sqrt(2.0));
+        }
+    }
+  }
+  struct Seed {
+    double distance;
+    Eigen::VectorXd velocity;
+  };
+  std::vector<Seed> seeds;
+  const GeodesicFlow flow(model, 1e-9);
+  const int n = model.dimension();
+  for (const Eigen::VectorXd& u : directions) {
+    FlowState state{from, u, Eigen::MatrixXd(n, 0), Eigen::MatrixXd(n, 0)};
+    double d2 = INFINITY, d1 = INFINITY, t1 = 0;
+    try {
+      flow.advance(state, maxLength * 1.05, [&](double t, const FlowState& s) {
+        const double d0 = model.norm(s.q - to);
+        if (d1 < d2 && d1 <= d0 && d1 < 0.6 && t1 > 0) seeds.push_back({d1, t1 * u});
+        d2 = d1;
+        d1 = d0;
+        t1 = t;
+        return true;
+      });
+    } catch (const std::runtime_error&) {
+    }
+  }
+  std::sort(seeds.begin(), seeds.end(), [](const Seed& a, const Seed& b) { return a.distance < b.distance; });
+  if (seeds.size() > 60) seeds.resize(60);
+  for (const Seed& seed : seeds) add(shootConnection(model, from, to, seed.velocity, options.tolerance));
+  found.erase(std::remove_if(found.begin(), found.end(),
+                             [&](const Connection& c) { return c.length > maxLength * (1 + 1e-12); }),
+              found.end());
+  std::sort(found.begin(), found.end(), [](const Connection& a, const Connection& b) { return a.length < b.length; });
+
+  for (Connection& c : found) {
+    c.path = shootingPath(model, from, c.velocity, kPathSamples, options.tolerance);
+    if (chain != nullptr) c.morseIndex = morseIndexOnChain(*chain, from, c.velocity);
+  }
+  if (!options.discreteRoute) return found;
+
+  // Route 2: first from seeds that know nothing of route 1, then from route 1's paths for the rest.
+  auto match = [&](const DiscreteGeodesic& g) -> Connection* {
+    for (Connection& c : found)
+      if (std::abs(c.length - g.length) < 1e-6 && pathDistance(c.path, g.path) < 1e-5) return &c;
+    return nullptr;
+  };
+  auto record = [&](Connection* c, const DiscreteGeodesic& g) {
+    if (c == nullptr || c->discrete) return;
+    c->discrete = g;
+    c->lengthDifference = std::abs(c->length - g.length);
+    c->pathDifference = pathDistance(c->path, g.path);
+  };
+  if (chain != nullptr) {
+    const auto arcs = sphereArcPaths(*chain, from, to, 5 * kPathSamples);
+    for (std::size_t k = 0; k < arcs.size(); ++k) {
+      const auto g = discreteGeodesic(model, arcs[k], k == 0 ? "sphere arc" : "sphere arc, long way");
+      if (g) record(match(*g), *g);
+    }
+  }
+  for (Connection& c : found) {
+    if (c.discrete) continue;
+    const int intervals = kPathSamples * std::max(5, static_cast<int>(std::ceil(2 * c.length)));
+    const auto g =
+        discreteGeodesic(model, shootingPath(model, from, c.velocity, intervals, options.tolerance), "shooting path");
+    if (g && match(*g) == &c) record(&c, *g);
+  }
+  return found;
+}
+
+}  // namespace sl

@@ -1,0 +1,152 @@
+#include "inverse/constrained_model.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "linkage/kinetic_metric.hpp"
+
+namespace sl {
+
+ConstrainedModel ConstrainedModel::fromChain(const Chain& chain) {
+  chain.validate(/*allowSlack=*/true);
+  ConstrainedModel model;
+  const int hinges = chain.hingeCount();
+  model.dimension_ = 2 * hinges;
+  model.mass_ = stackedMassMatrix(chain);
+  model.inverseMass_ = model.mass_.inverse();
+  const double length = chain.baseLength;
+  for (int rod = 1; rod <= chain.rods; ++rod) {
+    QuadraticConstraint c;
+    const int head = rod - 1;  // hinge p_rod, 0-based column, or the pin (L, 0) for the last rod
+    const int tail = rod - 2;  // hinge p_(rod-1), or the pin 0 for the first rod
+    for (int axis = 0; axis < 2; ++axis) {
+      if (rod < chain.rods) c.hessian.push_back({2 * head + axis, 2 * head + axis, 1.0});
+      if (rod > 1) c.hessian.push_back({2 * tail + axis, 2 * tail + axis, 1.0});
+      if (rod > 1 && rod < chain.rods) {
+        c.hessian.push_back({2 * head + axis, 2 * tail + axis, -1.0});
+        c.hessian.push_back({2 * tail + axis, 2 * head + axis, -1.0});
+      }
+    }
+    c.constant = -0.5;
+    if (rod == chain.rods) {  // |(L, 0) - p|^2 = L^2 - 2 L x + |p|^2
+      c.linear.push_back({2 * tail, -length});
+      c.constant = (length * length - 1.0) / 2.0;
+    }
+    model.constraints_.push_back(c);
+  }
+  return model;
+}
+
+ConstrainedModel ConstrainedModel::ellipsoid(double a, double b, double c) {
+  if (!(a > 0 && b > 0 && c > 0 && std::isfinite(a) && std::isfinite(b) && std::isfinite(c)))
+    throw std::invalid_argument("ellipsoid: the semi-axes must be positive and finite");
+  ConstrainedModel model;
+  model.dimension_ = 3;
+  model.mass_ = Eigen::MatrixXd::Identity(3, 3);
+  model.inverseMass_ = model.mass_;
+  QuadraticConstraint constraint;  // (x^2/a^2 + y^2/b^2 + z^2/c^2 - 1)/2
+  constraint.hessian = {{0, 0, 1.0 / (a * a)}, {1, 1, 1.0 / (b * b)}, {2, 2, 1.0 / (c * c)}};
+  constraint.constant = -0.5;
+  model.constraints_.push_back(constraint);
+  return model;
+}
+
+Eigen::VectorXd ConstrainedModel::values(const Eigen::VectorXd& q) const {
+  Eigen::VectorXd out(constraintCount());
+  for (int i = 0; i < constraintCount(); ++i) {
+    const QuadraticConstraint& c = constraints_[static_cast<std::size_t>(i)];
+    double value = c.constant;
+    for (const auto& e : c.hessian) value += 0.5 * q(e.row) * e.value * q(e.col);
+    for (const auto& [index, coefficient] : c.linear) value += coefficient * q(index);
+    out(i) = value;
+  }
+  return out;
+}
+
+Eigen::MatrixXd ConstrainedModel::jacobian(const Eigen::VectorXd& q) const {
+  Eigen::MatrixXd g = Eigen::MatrixXd::Zero(constraintCount(), dimension_);
+  for (int i = 0; i < constraintCount(); ++i) {
+    const QuadraticConstraint& c = constraints_[static_cast<std::size_t>(i)];
+    for (const auto& e : c.hessian) g(i, e.row) += e.value * q(e.col);
+    for (const auto& [index, coefficient] : c.linear) g(i, index) += coefficient;
+  }
+  return g;
+}
+
+Eigen::VectorXd ConstrainedModel::secondDerivatives(const Eigen::VectorXd& u, const Eigen::VectorXd& w) const {
+  Eigen::VectorXd out(constraintCount());
+  for (int i = 0; i < constraintCount(); ++i) {
+    double value = 0;
+    for (const auto& e : constraints_[static_cast<std::size_t>(i)].hessian) value += u(e.row) * e.value * w(e.col);
+    out(i) = value;
+  }
+  return out;
+}
+
+Eigen::VectorXd ConstrainedModel::hessianCombination(const Eigen::VectorXd& mu, const Eigen::VectorXd& u) const {
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(dimension_);
+  for (int i = 0; i < constraintCount(); ++i)
+    for (const auto& e : constraints_[static_cast<std::size_t>(i)].hessian) out(e.row) += mu(i) * e.value * u(e.col);
+  return out;
+}
+
+Eigen::MatrixXd ConstrainedModel::hessianMatrix(const Eigen::VectorXd& mu) const {
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(dimension_, dimension_);
+  for (int i = 0; i < constraintCount(); ++i)
+    for (const auto& e : constraints_[static_cast<std::size_t>(i)].hessian) out(e.row, e.col) += mu(i) * e.value;
+  return out;
+}
+
+Eigen::VectorXd ConstrainedModel::correctionFor(const Eigen::VectorXd& q, const Eigen::VectorXd& residual) const {
+  const Eigen::MatrixXd g = jacobian(q);
+  const Eigen::MatrixXd mg = inverseMass_ * g.transpose();
+  const Eigen::MatrixXd schur = g * mg;
+  return -mg * schur.ldlt().solve(residual);
+}
+
+bool ConstrainedModel::projectPosition(Eigen::VectorXd& q) const {
+  for (int iteration = 0; iteration < 50; ++iteration) {
+    const Eigen::VectorXd c = values(q);
+    if (c.cwiseAbs().maxCoeff() <= 1e-15) return true;
+    q += correctionFor(q, c);
+  }
+  return values(q).cwiseAbs().maxCoeff() <= 1e-13;
+}
+
+Eigen::VectorXd ConstrainedModel::projectVelocity(const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
+  return v + correctionFor(q, jacobian(q) * v);
+}
+
+void ConstrainedModel::projectVariation(const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& dq,
+                                        Eigen::VectorXd& dv) const {
+  const Eigen::MatrixXd g = jacobian(q);
+  dq += correctionFor(q, g * dq);
+  dv += correctionFor(q, g * dv + secondDerivatives(dq, v));
+}
+
+Eigen::MatrixXd ConstrainedModel::tangentBasis(const Eigen::VectorXd& q) const {
+  // Project the coordinate axes onto the tangent space and orthonormalise (Gram-Schmidt in M, twice),
+  // keeping the first `freedom` independent ones: deterministic for a given q.
+  Eigen::MatrixXd basis(dimension_, freedom());
+  int found = 0;
+  for (int axis = 0; axis < dimension_ && found < freedom(); ++axis) {
+    Eigen::VectorXd u = projectVelocity(q, Eigen::VectorXd::Unit(dimension_, axis));
+    for (int pass = 0; pass < 2; ++pass)
+      for (int j = 0; j < found; ++j) u -= inner(basis.col(j), u) * basis.col(j);
+    const double size = norm(u);
+    if (size < 1e-3) continue;
+    basis.col(found++) = u / size;
+  }
+  if (found < freedom()) throw std::runtime_error("tangentBasis: the constraints lost rank at this point");
+  return basis;
+}
+
+Eigen::VectorXd ConstrainedModel::stack(const Eigen::Matrix2Xd& hinges) {
+  return Eigen::Map<const Eigen::VectorXd>(hinges.data(), hinges.size());
+}
+
+Eigen::Matrix2Xd ConstrainedModel::unstack(const Eigen::VectorXd& q) {
+  return Eigen::Map<const Eigen::Matrix2Xd>(q.data(), 2, q.size() / 2);
+}
+
+}  // namespace sl

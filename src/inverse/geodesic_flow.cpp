@@ -1,0 +1,114 @@
+#include "inverse/geodesic_flow.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include <boost/numeric/odeint.hpp>
+
+namespace sl {
+
+namespace {
+
+using Packed = std::vector<double>;
+
+void pack(const FlowState& s, Packed& y) {
+  const Eigen::Index n = s.q.size(), k = s.dq.cols();
+  y.resize(static_cast<std::size_t>(2 * n * (1 + k)));
+  Eigen::Map<Eigen::VectorXd>(y.data(), n) = s.q;
+  Eigen::Map<Eigen::VectorXd>(y.data() + n, n) = s.v;
+  Eigen::Map<Eigen::MatrixXd>(y.data() + 2 * n, n, k) = s.dq;
+  Eigen::Map<Eigen::MatrixXd>(y.data() + 2 * n + n * k, n, k) = s.dv;
+}
+
+void unpack(const Packed& y, FlowState& s) {
+  const Eigen::Index n = s.q.size(), k = s.dq.cols();
+  s.q = Eigen::Map<const Eigen::VectorXd>(y.data(), n);
+  s.v = Eigen::Map<const Eigen::VectorXd>(y.data() + n, n);
+  s.dq = Eigen::Map<const Eigen::MatrixXd>(y.data() + 2 * n, n, k);
+  s.dv = Eigen::Map<const Eigen::MatrixXd>(y.data() + 2 * n + n * k, n, k);
+}
+
+}  // namespace
+
+GeodesicFlow::GeodesicFlow(const ConstrainedModel& model, double tolerance) : model_(model), tolerance_(tolerance) {}
+
+void GeodesicFlow::derivative(const Packed& y, Packed& dydt, int columns) const {
+  ++evaluations_;
+  const int n = model_.dimension(), m = model_.constraintCount();
+  const Eigen::Map<const Eigen::VectorXd> q(y.data(), n), v(y.data() + n, n);
+  const Eigen::MatrixXd g = model_.jacobian(q);
+  Eigen::MatrixXd kkt = Eigen::MatrixXd::Zero(n + m, n + m);
+  kkt.topLeftCorner(n, n) = model_.mass();
+  kkt.topRightCorner(n, m) = g.transpose();
+  kkt.bottomLeftCorner(m, n) = g;
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(kkt);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n + m);
+  rhs.tail(m) = -model_.secondDerivatives(v, v);
+  const Eigen::VectorXd solution = lu.solve(rhs);
+  const Eigen::VectorXd a = solution.head(n), mu = solution.tail(m);
+  dydt.resize(y.size());
+  Eigen::Map<Eigen::VectorXd>(dydt.data(), n) = v;
+  Eigen::Map<Eigen::VectorXd>(dydt.data() + n, n) = a;
+  for (int j = 0; j < columns; ++j) {
+    const Eigen::Map<const Eigen::VectorXd> dq(y.data() + 2 * n + n * j, n),
+        dv(y.data() + 2 * n + n * columns + n * j, n);
+    rhs.head(n) = -model_.hessianCombination(mu, dq);
+    rhs.tail(m) = -2.0 * model_.secondDerivatives(v, dv) - model_.secondDerivatives(dq, a);
+    Eigen::Map<Eigen::VectorXd>(dydt.data() + 2 * n + n * j, n) = dv;
+    Eigen::Map<Eigen::VectorXd>(dydt.data() + 2 * n + n * columns + n * j, n) = lu.solve(rhs).head(n);
+  }
+}
+
+Eigen::VectorXd GeodesicFlow::acceleration(const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
+  FlowState s{q, v, Eigen::MatrixXd(q.size(), 0), Eigen::MatrixXd(q.size(), 0)};
+  Packed y, dydt;
+  pack(s, y);
+  derivative(y, dydt, 0);
+  return Eigen::Map<const Eigen::VectorXd>(dydt.data() + q.size(), q.size());
+}
+
+bool GeodesicFlow::advance(FlowState& state, double duration,
+                           const std::function<bool(double, const FlowState&)>& observer) const {
+  namespace odeint = boost::numeric::odeint;
+  using Stepper = odeint::runge_kutta_fehlberg78<Packed>;
+  auto stepper = odeint::make_controlled<Stepper>(tolerance_, tolerance_);
+  const int columns = static_cast<int>(state.dq.cols());
+  auto system = [&](const Packed& y, Packed& dydt, double) { derivative(y, dydt, columns); };
+  Packed y;
+  pack(state, y);
+  if (observer && !observer(0.0, state)) return duration == 0.0;
+  double t = 0.0, dt = std::min(0.05, duration);
+  int failures = 0;
+  while (t < duration) {
+    const bool last = dt >= duration - t;
+    if (last) dt = duration - t;
+    const double before = t;
+    const odeint::controlled_step_result result = stepper.try_step(system, y, t, dt);
+    if (result == odeint::fail) {
+      if (++failures > 500 || dt < 1e-12 * std::max(1.0, t))
+        throw std::runtime_error("geodesic flow: the step size collapsed at t = " + std::to_string(t));
+      continue;
+    }
+    failures = 0;
+    if (last && t - before >= (duration - before) * (1 - 1e-15)) t = duration;
+    unpack(y, state);
+    if (model_.values(state.q).cwiseAbs().maxCoeff() > 1e-14) {
+      model_.projectPosition(state.q);
+      state.v = model_.projectVelocity(state.q, state.v);
+      for (Eigen::Index j = 0; j < state.dq.cols(); ++j) {
+        Eigen::VectorXd dq = state.dq.col(j), dv = state.dv.col(j);
+        model_.projectVariation(state.q, state.v, dq, dv);
+        state.dq.col(j) = dq;
+        state.dv.col(j) = dv;
+      }
+      pack(state, y);
+    }
+    if (observer && !observer(t, state)) return t >= duration;
+  }
+  unpack(y, state);
+  return true;
+}
+
+}  // namespace sl

@@ -1,0 +1,502 @@
+#include "inverse/periodic.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <stdexcept>
+
+#include <boost/math/special_functions/ellint_2.hpp>
+
+#include "inverse/connect.hpp"
+#include "inverse/geodesic_flow.hpp"
+#include "inverse/richardson.hpp"
+#include "linkage/chart.hpp"
+
+namespace sl {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr int kOrbitSamples = 512;
+
+// How close a point of a sampled orbit must come to count as on it: the chords of kOrbitSamples points stray
+// from the curve by about (spacing)^2 curvature / 8; 1e-3 of the length squared bounds that with margin.
+double onOrbitTolerance(double length) {
+  const double spacing = length / kOrbitSamples;
+  return 2 * spacing * spacing + 1e-9;
+}
+
+double maxAbs(const Eigen::VectorXd& v) { return v.cwiseAbs().maxCoeff(); }
+
+// A unit tangent vector M-orthogonal to the unit velocity v at q (2-dimensional models).
+Eigen::VectorXd across(const ConstrainedModel& model, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
+  const Eigen::MatrixXd basis = model.tangentBasis(q);
+  Eigen::VectorXd best;
+  double bestSize = -1;
+  for (Eigen::Index j = 0; j < basis.cols(); ++j) {
+    Eigen::VectorXd n = basis.col(j) - model.inner(basis.col(j), v) * v;
+    const double size = model.norm(n);
+    if (size > bestSize) {
+      bestSize = size;
+      best = n / size;
+    }
+  }
+  return best;
+}
+
+// The orbit sampled at kOrbitSamples points, in coordinates where M is the identity (y = U q, M = U^T U).
+std::vector<Eigen::VectorXd> sampledOrbit(const ConstrainedModel& model, const Eigen::VectorXd& q0,
+                                          const Eigen::VectorXd& v0, double period) {
+  const GeodesicFlow flow(model, 1e-12);
+  const Eigen::MatrixXd u = model.mass().llt().matrixU();
+  FlowState s{q0, v0, Eigen::MatrixXd(q0.size(), 0), Eigen::MatrixXd(q0.size(), 0)};
+  std::vector<Eigen::VectorXd> out{u * q0};
+  for (int i = 1; i < kOrbitSamples; ++i) {
+    flow.advance(s, period / kOrbitSamples);
+    out.push_back(u * s.q);
+  }
+  return out;
+}
+
+double segmentDistance(const Eigen::VectorXd& a0, const Eigen::VectorXd& a1, const Eigen::VectorXd& b0,
+                       const Eigen::VectorXd& b1) {
+  const Eigen::VectorXd u = a1 - a0, w = b1 - b0, r = a0 - b0;
+  const double uu = u.dot(u), ww = w.dot(w), uw = u.dot(w), ur = u.dot(r), wr = w.dot(r);
+  if (ww == 0.0) return (r + std::clamp(-ur / uu, 0.0, 1.0) * u).norm();  // b is a point
+  const double det = uu * ww - uw * uw;
+  double s = det > 1e-300 ? std::clamp((uw * wr - ww * ur) / det, 0.0, 1.0) : 0.0;
+  const double t = std::clamp((uw * s + wr) / ww, 0.0, 1.0);
+  s = std::clamp((uw * t - ur) / uu, 0.0, 1.0);
+  return (r + s * u - t * w).norm();
+}
+
+// Distance from a point (in the U coordinates) to the closed polyline.
+double distanceToOrbit(const std::vector<Eigen::VectorXd>& orbit, const Eigen::VectorXd& y) {
+  double best = INFINITY;
+  const std::size_t n = orbit.size();
+  for (std::size_t i = 0; i < n; ++i) best = std::min(best, segmentDistance(orbit[i], orbit[(i + 1) % n], y, y));
+  return best;
+}
+
+// A transversal self-crossing brings two non-neighbouring segments within O(h^2); a simple curve keeps them
+// about its injectivity scale apart.
+bool isSimple(const std::vector<Eigen::VectorXd>& orbit, double spacing) {
+  const int n = static_cast<int>(orbit.size());
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 4; j < n; ++j) {
+      if (n - (j - i) < 4) continue;
+      if (segmentDistance(orbit[static_cast<std::size_t>(i)], orbit[static_cast<std::size_t>((i + 1) % n)],
+                          orbit[static_cast<std::size_t>(j)],
+                          orbit[static_cast<std::size_t>((j + 1) % n)]) < 0.1 * spacing)
+        return false;
+    }
+  return true;
+}
+
+bool symmetricMasses(const Chain& chain) {
+  return chain.hingeMasses.isApprox(chain.hingeMasses.reverse().eval(), 1e-14) &&
+         chain.rodMasses.isApprox(chain.rodMasses.reverse().eval(), 1e-14);
+}
+
+void classify(ClosedGeodesic& g) {
+  const double trace = g.monodromy.trace(), det = g.monodromy.determinant();
+  const std::complex<double> root = std::sqrt(std::complex<double>(trace * trace / 4 - det));
+  g.eigenvalues << trace / 2 + root, trace / 2 - root;
+  if (std::abs(std::abs(trace) - 2) < 1e-9) {
+    g.stability = "parabolic";
+  } else if (std::abs(trace) < 2) {
+    g.stability = "elliptic";
+    g.rotationNumber = std::acos(trace / 2) / (2 * kPi);
+  } else {
+    g.stability = "hyperbolic";
+  }
+}
+
+}  // namespace
+
+std::optional<ClosedGeodesic> shootClosedGeodesic(const ConstrainedModel& model, Eigen::VectorXd q0, Eigen::VectorXd v0,
+                                                  double period, const Eigen::MatrixXd* twist) {
+  if (model.freedom() != 2) throw std::invalid_argument("shootClosedGeodesic: a 2-dimensional model is needed");
+  const GeodesicFlow flow(model, 1e-12);
+  if (!model.projectPosition(q0)) return std::nullopt;
+  v0 = model.projectVelocity(q0, v0);
+  v0 /= model.norm(v0);
+  double previous = INFINITY;
+  for (int iteration = 0; iteration < 30; ++iteration) {
+    const Eigen::VectorXd n0 = across(model, q0, v0);
+    Eigen::VectorXd dq = n0, dvs = Eigen::VectorXd::Zero(q0.size());
+    model.projectVariation(q0, v0, dq, dvs);
+    FlowState s{q0, v0, Eigen::MatrixXd(q0.size(), 2), Eigen::MatrixXd(q0.size(), 2)};
+    s.dq.col(0) = n0;
+    s.dq.col(1).setZero();
+    s.dv.col(0) = dvs;
+    s.dv.col(1) = n0;
+    try {
+      flow.advance(s, period);
+    } catch (const std::runtime_error&) {
+      return std::nullopt;
+    }
+    const Eigen::Index n = q0.size();
+    Eigen::VectorXd residual(2 * n);
+    const Eigen::MatrixXd identity = Eigen::MatrixXd::Identity(n, n);
+    const Eigen::MatrixXd& map = twist != nullptr ? *twist : identity;
+    residual << s.q - map * q0, s.v - map * v0;
+    const double error = maxAbs(residual);
+    if (twist != nullptr && (error <= 1e-13 || (error <= 1e-11 && error >= previous * 0.5)))
+      return shootClosedGeodesic(model, q0, v0, 2 * period);  // the whole orbit, checked without the twist
+    if (error <= 1e-13 || (error <= 1e-11 && error >= previous * 0.5)) {
+      ClosedGeodesic g;
+      g.length = period;
+      g.point = q0;
+      g.velocity = v0;
+      g.positionClosure = maxAbs(s.q - q0);
+      g.velocityClosure = maxAbs(s.v - v0);
+      g.monodromy << model.inner(s.dq.col(0), n0), model.inner(s.dq.col(1), n0), model.inner(s.dv.col(0), n0),
+          model.inner(s.dv.col(1), n0);
+      classify(g);
+      return g;
+    }
+    previous = error;
+    Eigen::MatrixXd jac(2 * n, 3);
+    jac.col(0) << s.dq.col(0) - map * n0, s.dv.col(0) - map * dvs;
+    jac.col(1) << s.dq.col(1), s.dv.col(1) - map * n0;
+    jac.col(2) << s.v, flow.acceleration(s.q, s.v);
+    Eigen::Vector3d step = jac.colPivHouseholderQr().solve(-residual);
+    const double scale =
+        std::max({std::abs(step(0)) / 0.3, std::abs(step(1)) / 0.3, std::abs(step(2)) / (0.3 * period), 1.0});
+    step /= scale;
+    q0 += step(0) * n0;
+    if (!model.projectPosition(q0)) return std::nullopt;
+    v0 = model.projectVelocity(q0, v0 + step(1) * n0);
+    v0 /= model.norm(v0);
+    period += step(2);
+    if (!(period > 1e-3) || !q0.allFinite()) return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+std::vector<ClosedGeodesic> findClosedGeodesics(const ConstrainedModel& model, const Chain* chain,
+                                                const std::vector<Eigen::VectorXd>& seedPoints,
+                                                const PeriodicOptions& options,
+                                                const std::vector<std::pair<Eigen::VectorXd, Eigen::VectorXd>>& starts,
+                                                const std::vector<ClosedGeodesicGuess>& guesses) {
+  const double maxLength = options.maxLength > 0 ? options.maxLength : 30.0;
+  struct Seed {
+    double residual;
+    Eigen::VectorXd q, v;
+    double period;
+    bool twisted = false;
+  };
+  std::vector<Seed> seeds;
+  const GeodesicFlow flow(model, 1e-9);
+  std::vector<std::pair<Eigen::VectorXd, Eigen::VectorXd>> rays = starts;
+  for (Eigen::VectorXd q : seedPoints) {
+    model.projectPosition(q);
+    const Eigen::MatrixXd basis = model.tangentBasis(q);
+    for (int k = 0; k < options.directions; ++k) {
+      const double angle = kPi * k / options.directions;
+      rays.emplace_back(q, std::cos(angle) * basis.col(0) + std::sin(angle) * basis.col(1));
+    }
+  }
+  {
+    for (auto [q, u] : rays) {
+      model.projectPosition(q);
+      u = model.projectVelocity(q, u);
+      u /= model.norm(u);
+      FlowState s{q, u, Eigen::MatrixXd(q.size(), 0), Eigen::MatrixXd(q.size(), 0)};
+      double r2 = INFINITY, r1 = INFINITY, t1 = 0, w2 = INFINITY, w1 = INFINITY;
+      bool left = false;
+      const bool twisted = options.twist.size() > 0;
+      const Eigen::VectorXd twistedQ = twisted ? Eigen::VectorXd(options.twist * q) : q;
+      const Eigen::VectorXd twistedU = twisted ? Eigen::VectorXd(options.twist * u) : u;
+      try {
+        flow.advance(s, maxLength * 1.02, [&](double t, const FlowState& st) {
+          const double r0 = model.norm(st.q - q) + model.norm(st.v - u);
+          if (r0 > 0.5) left = true;
+          if (left && r1 < r2 && r1 <= r0 && r1 < 0.5) seeds.push_back({r1, q, u, t1});
+          if (twisted) {  // returns to the mirror image, at half the period
+            const double w0 = model.norm(st.q - twistedQ) + model.norm(st.v - twistedU);
+            if (t <= maxLength / 2 && w1 < w2 && w1 <= w0 && w1 < 0.5) seeds.push_back({w1, q, u, t1, true});
+            w2 = w1;
+            w1 = w0;
+          }
+          r2 = r1;
+          r1 = r0;
+          t1 = t;
+          return true;
+        });
+      } catch (const std::runtime_error&) {
+      }
+    }
+  }
+  std::sort(seeds.begin(), seeds.end(), [](const Seed& a, const Seed& b) { return a.residual < b.residual; });
+  if (seeds.size() > 48) seeds.resize(48);
+  for (auto it = guesses.rbegin(); it != guesses.rend(); ++it)
+    seeds.insert(seeds.begin(), {0.0, it->point, it->velocity, it->period});
+
+  std::vector<ClosedGeodesic> found;
+  std::vector<std::vector<Eigen::VectorXd>> orbits;
+  const Eigen::MatrixXd u = model.mass().llt().matrixU();
+  for (const Seed& seed : seeds) {
+    bool covered = false;  // a seed on a known orbit with a multiple of its period: nothing new
+    for (std::size_t i = 0; i < found.size() && !covered; ++i) {
+      const double ratio = (seed.twisted ? 2 : 1) * seed.period / found[i].length;
+      covered = std::abs(ratio - std::round(ratio)) < 0.02 && std::round(ratio) >= 1 &&
+                distanceToOrbit(orbits[i], u * seed.q) < 1e-3;
+    }
+    if (covered) continue;
+    std::optional<ClosedGeodesic> g =
+        shootClosedGeodesic(model, seed.q, seed.v, seed.period, seed.twisted ? &options.twist : nullptr);
+    if (!g || g->length > maxLength * (1 + 1e-9)) continue;
+    bool known = false;
+    for (std::size_t i = 0; i < found.size() && !known; ++i) {
+      const double ratio = g->length / found[i].length;
+      if (std::abs(ratio - std::round(ratio)) < 1e-7 && std::round(ratio) >= 1 &&
+          distanceToOrbit(orbits[i], u * g->point) < onOrbitTolerance(found[i].length))
+        known = true;  // the same one, or a multiple cover of it
+      else if (std::abs(1 / ratio - std::round(1 / ratio)) < 1e-7 &&
+               distanceToOrbit(sampledOrbit(model, g->point, g->velocity, g->length), u * found[i].point) <
+                   onOrbitTolerance(g->length)) {
+        found[i] = *g;  // a multiple cover was found first: keep the primitive one
+        orbits[i] = sampledOrbit(model, g->point, g->velocity, g->length);
+        known = true;
+      }
+    }
+    if (known) continue;
+    orbits.push_back(sampledOrbit(model, g->point, g->velocity, g->length));
+    g->simple = isSimple(orbits.back(), g->length / kOrbitSamples);
+    found.push_back(*g);
+  }
+  if (chain != nullptr) {
+    for (std::size_t i = 0; i < found.size(); ++i) {
+      std::string names;
+      for (const char* name : {"mirror", "end swap", "half turn"}) {
+        if (std::string(name) != "mirror" && !symmetricMasses(*chain)) continue;
+        const Eigen::VectorXd image = applyChainSymmetry(*chain, name, found[i].point);
+        if (distanceToOrbit(orbits[i], u * image) > onOrbitTolerance(found[i].length)) continue;
+        bool fixed = true;
+        for (int k = 0; k < kOrbitSamples; k += kOrbitSamples / 16) {
+          const Eigen::VectorXd q = u.triangularView<Eigen::Upper>().solve(orbits[i][static_cast<std::size_t>(k)]);
+          if (maxAbs(applyChainSymmetry(*chain, name, q) - q) > 1e-6) fixed = false;
+        }
+        names += std::string(names.empty() ? "" : ", ") + (fixed ? "fixed by " : "") + name;
+      }
+      found[i].symmetry = names;
+    }
+  }
+  std::stable_sort(found.begin(), found.end(), [](const ClosedGeodesic& a, const ClosedGeodesic& b) {
+    if (a.simple != b.simple) return a.simple;
+    return a.length < b.length;
+  });
+  return found;
+}
+
+double closedCurveLength(const ConstrainedModel& model, const std::function<Eigen::VectorXd(double)>& curve) {
+  Richardson table;
+  double previous = NAN;
+  for (int level = 0; level < 9; ++level) {
+    const int points = 16 << level;
+    double length = 0;
+    Eigen::VectorXd first = curve(0.0), last = first;
+    for (int i = 1; i <= points; ++i) {
+      const Eigen::VectorXd q = i == points ? first : curve(2 * kPi * i / points);
+      length += model.norm(q - last);
+      last = q;
+    }
+    const double estimate = table.add(Eigen::VectorXd::Constant(1, length))(0);
+    if (level >= 3 && std::abs(estimate - previous) < 1e-13 * std::max(1.0, estimate)) return estimate;
+    previous = estimate;
+  }
+  return previous;
+}
+
+Eigen::VectorXd endSwapFixedPoint(const Chain& chain, double w) {
+  // p1 = e^(ia), p2 = p1 + e^(ib) with cos a + cos b = L/2 (p2 on x = L/2), p3 = (L - x1, y1); the oval
+  // cos a + cos b = L/2 round (0, 0) is star-shaped: (a, b) = r (cos w, sin w), r by bisection.
+  const double half = chain.baseLength / 2;
+  auto f = [&](double r) { return std::cos(r * std::cos(w)) + std::cos(r * std::sin(w)) - half; };
+  double lo = 0, hi = kPi;
+  for (int i = 0; i < 200 && hi - lo > 1e-16; ++i) {
+    const double mid = (lo + hi) / 2;
+    (f(mid) > 0 ? lo : hi) = mid;
+  }
+  const double r = (lo + hi) / 2, a = r * std::cos(w), b = r * std::sin(w);
+  Eigen::VectorXd q(6);
+  q << std::cos(a), std::sin(a), std::cos(a) + std::cos(b), std::sin(a) + std::sin(b), chain.baseLength - std::cos(a),
+      std::sin(a);
+  return q;
+}
+
+std::vector<Eigen::VectorXd> halfTurnFixedPoints(const Chain& chain) {
+  const double length = chain.baseLength, x = length / 4, y = std::sqrt(1 - x * x);
+  std::vector<Eigen::VectorXd> out;
+  for (double sign : {1.0, -1.0}) {
+    Eigen::VectorXd q(6);
+    q << x, sign * y, length / 2, 0.0, length - x, -sign * y;
+    out.push_back(q);
+  }
+  return out;
+}
+
+double ellipsePerimeter(double a, double b) {
+  const double major = std::max(a, b), minor = std::min(a, b);
+  return 4 * major * boost::math::ellint_2(std::sqrt(1 - (minor / major) * (minor / major)));
+}
+
+Eigen::VectorXd applyChainSymmetry(const Chain& chain, const std::string& name, const Eigen::VectorXd& q) {
+  const int hinges = chain.hingeCount();
+  Eigen::VectorXd out(q.size());
+  for (int k = 0; k < hinges; ++k) {
+    if (name == "mirror") {
+      out(2 * k) = q(2 * k);
+      out(2 * k + 1) = -q(2 * k + 1);
+    } else {
+      const int other = hinges - 1 - k;  // p_k <- p_(n-k)
+      out(2 * k) = chain.baseLength - q(2 * other);
+      out(2 * k + 1) = (name == "end swap" ? 1.0 : -1.0) * q(2 * other + 1);
+    }
+  }
+  return out;
+}
+
+std::vector<ClosedGeodesic> chainClosedGeodesics(const Chain& chain, const PeriodicOptions& options) {
+  if (chain.rods != 4 || chain.isSlack())
+    throw std::invalid_argument("closed geodesics of the configuration sphere need 4 rods and n - 2 < L < n");
+  const ConstrainedModel model = ConstrainedModel::fromChain(chain);
+  // Seeds: the chain's symmetric geodesic candidates as starts (the end swap's fixed curve along itself; the
+  // shortest motion between the half turn's fixed points, both ways), and fans from two chart points.
+  std::vector<std::pair<Eigen::VectorXd, Eigen::VectorXd>> starts;
+  std::vector<ClosedGeodesicGuess> guesses;
+  std::vector<Connection> betweenPoles;
+  double scale = 0;  // a length the simple ones are expected near, for the default bound
+  if (symmetricMasses(chain)) {
+    const double w = kPi / 4, h = 1e-6;
+    starts.emplace_back(endSwapFixedPoint(chain, w),
+                        (endSwapFixedPoint(chain, w + h) - endSwapFixedPoint(chain, w - h)) / (2 * h));
+    // Every geodesic between the half turn's two fixed points closes up, continued by its image under the half
+    // turn, at twice its length: the motions between them (connect.hpp, shooting only) are guesses.
+    const auto poles = halfTurnFixedPoints(chain);
+    if (const auto c = directConnection(model, &chain, poles[0], poles[1])) {
+      scale = 2 * c->length;
+      ConnectOptions connect;
+      connect.maxLength = options.maxLength > 0 ? options.maxLength / 2 : 1.25 * scale;
+      connect.discreteRoute = false;
+      connect.directions = 24;
+      betweenPoles = findConnections(model, nullptr, poles[0], poles[1], connect);
+      for (const Connection& between : betweenPoles)
+        guesses.push_back({poles[0], between.velocity / between.length, 2 * between.length});
+    }
+  }
+  std::vector<Eigen::VectorXd> points;
+  for (double t : {0.3, 2.0}) {
+    Eigen::VectorXd c(2);
+    c << 0.4, t;
+    points.push_back(ConstrainedModel::stack(hingePositions(chain, c)));
+  }
+  if (!symmetricMasses(chain))  // no symmetric guesses: fan from more points
+    for (const auto& [phi, t] : {std::pair{0.0, 0.0}, {1.2, 1.0}, {-0.8, -1.2}, {0.0, 1.57}}) {
+      Eigen::VectorXd c(2);
+      c << phi, t;
+      points.push_back(ConstrainedModel::stack(hingePositions(chain, c)));
+    }
+  PeriodicOptions bounded = options;
+  if (bounded.maxLength <= 0) bounded.maxLength = scale > 0 ? 2.5 * scale : 24.0;
+  if (!symmetricMasses(chain)) {  // the mirror is still an isometry: seek the closed geodesics it maps to themselves
+    bounded.twist = Eigen::MatrixXd::Identity(6, 6);
+    for (int k = 1; k < 6; k += 2) bounded.twist(k, k) = -1;
+  }
+  // The symmetric guesses first; fans only when they do not give the three simple ones Lyusternik and
+  // Schnirelmann promise (always for asymmetric masses).
+  std::vector<ClosedGeodesic> found = findClosedGeodesics(model, &chain, {}, bounded, starts, guesses);
+  if (std::count_if(found.begin(), found.end(), [](const ClosedGeodesic& g) { return g.simple; }) < 3 ||
+      options.maxLength > 0)
+    found = findClosedGeodesics(model, &chain, points, bounded, starts, guesses);
+
+  // Route 2.
+  if (symmetricMasses(chain)) {
+    const double fixedSet = closedCurveLength(model, [&](double w) { return endSwapFixedPoint(chain, w); });
+    for (ClosedGeodesic& g : found)
+      if (g.symmetry.find("fixed by end swap") != std::string::npos && std::abs(g.length - fixedSet) < 1e-6) {
+        g.independentLength = fixedSet;
+        g.independentRoute = "fixed set of the end swap, polygons extrapolated";
+      }
+    const auto poles = halfTurnFixedPoints(chain);
+    const Eigen::MatrixXd u = model.mass().llt().matrixU();
+    auto throughPoles = [&](const ClosedGeodesic& g) {
+      return distanceToOrbit(sampledOrbit(model, g.point, g.velocity, g.length), u * poles[0]) <
+             onOrbitTolerance(g.length);
+    };
+    std::vector<DiscreteGeodesic> halves;
+    for (const auto& arc : sphereArcPaths(chain, poles[0], poles[1], 5 * kPathSamples))
+      if (const auto half = discreteGeodesic(model, arc, "sphere arc")) halves.push_back(*half);
+    for (ClosedGeodesic& g : found) {
+      if (g.independentLength || !throughPoles(g)) continue;
+      for (const DiscreteGeodesic& half : halves)
+        if (std::abs(g.length - 2 * half.length) < 1e-6) {
+          g.independentLength = 2 * half.length;
+          g.independentRoute = "twice the discrete geodesic between the half turn's fixed points";
+        }
+      if (g.independentLength) continue;
+      // Not reached from the arcs: the discrete route from route 1's path between the poles.
+      std::optional<DiscreteGeodesic> discrete;
+      for (const Connection& between : betweenPoles) {
+        if (discrete || std::abs(g.length - 2 * between.length) > 1e-6) continue;
+        const int intervals = kPathSamples * std::max(5, static_cast<int>(std::ceil(2 * between.length)));
+        discrete = discreteGeodesic(model, shootingPath(model, poles[0], between.velocity, intervals), "shooting path");
+      }
+      if (discrete && std::abs(g.length - 2 * discrete->length) < 1e-6) {
+        g.independentLength = 2 * discrete->length;
+        g.independentRoute =
+            "twice the discrete geodesic between the half turn's fixed points (seeded by the shooting path)";
+      }
+    }
+  }
+  return found;
+}
+
+ClosedGeodesic circleClosedGeodesic(const Chain& chain) {
+  if (chain.rods != 3 || chain.isSlack()) throw std::invalid_argument("the circle needs 3 rods and 1 < L < 3");
+  const ConstrainedModel model = ConstrainedModel::fromChain(chain);
+  const Eigen::VectorXd q0 = ConstrainedModel::stack(hingePositionsAt(chain, Eigen::Vector2d(1, 0)));
+  Eigen::VectorXd v0 = model.tangentBasis(q0).col(0);
+  const GeodesicFlow flow(model, 1e-12);
+  // Route 1: the first return, then Newton on <q(T) - q0, v(T)> = 0.
+  double period = 0, r1 = INFINITY, r2 = INFINITY;
+  bool left = false;
+  FlowState s{q0, v0, Eigen::MatrixXd(q0.size(), 0), Eigen::MatrixXd(q0.size(), 0)};
+  flow.advance(s, 100.0, [&](double t, const FlowState& st) {
+    const double r0 = model.norm(st.q - q0);
+    if (r0 > 0.5) left = true;
+    if (left && r1 < r2 && r1 <= r0) return false;
+    r2 = r1;
+    r1 = r0;
+    period = t;
+    return true;
+  });
+  for (int iteration = 0; iteration < 20; ++iteration) {
+    s = FlowState{q0, v0, Eigen::MatrixXd(q0.size(), 0), Eigen::MatrixXd(q0.size(), 0)};
+    flow.advance(s, period);
+    const Eigen::VectorXd a = flow.acceleration(s.q, s.v);
+    const double g = model.inner(s.q - q0, s.v), slope = model.inner(s.v, s.v) + model.inner(s.q - q0, a);
+    period -= g / slope;
+    if (std::abs(g) < 1e-15) break;
+  }
+  ClosedGeodesic out;
+  out.length = period;
+  out.point = q0;
+  out.velocity = v0;
+  s = FlowState{q0, v0, Eigen::MatrixXd(q0.size(), 0), Eigen::MatrixXd(q0.size(), 0)};
+  flow.advance(s, period);
+  out.positionClosure = maxAbs(s.q - q0);
+  out.velocityClosure = maxAbs(s.v - v0);
+  out.stability = "-";
+  out.symmetry = "mirror";
+  out.independentLength = closedCurveLength(model, [&](double w) {
+    return ConstrainedModel::stack(hingePositionsAt(chain, Eigen::Vector2d(std::cos(w), std::sin(w))));
+  });
+  out.independentRoute = "the circle as a closed curve, polygons extrapolated";
+  return out;
+}
+
+}  // namespace sl

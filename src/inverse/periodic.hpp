@@ -1,0 +1,85 @@
+#pragma once
+// Closed geodesics (periodic force-free motions) of a 2-dimensional ConstrainedModel (the 4-rod chain's
+// configuration sphere, a triaxial ellipsoid) and of a 1-dimensional one (the 3-rod chain's circle).
+//   Route 1, shooting on the return map: unknowns the start's offset s across the motion, the turn theta of
+//   its unit velocity and the period T; Gauss-Newton on (q(T) - q0, v(T) - v0), the derivative from the
+//   flow's variations (the monodromy) and (v(T), a(T)) for T. Seeds: fans of unit-speed geodesics from a
+//   few points, their near-returns in position and velocity.
+//   Route 2 (independent lengths, no integration): the fixed set of an isometry reflecting the chain end for
+//   end (a closed geodesic when the masses are symmetric), as a closed curve whose polygons are
+//   Richardson-extrapolated; a closed geodesic through the two fixed points of the half-turn isometry is
+//   twice a geodesic between them, found by the discrete action (connect.hpp); the ellipsoid's principal
+//   ellipses by complete elliptic integrals; the 3-rod circle as a closed curve.
+// Stability: the linearised return map on the Jacobi field across the motion, P = [[J1, J2], [J1', J2']] at
+// T for J1 = 1, J1' = 0 and J2 = 0, J2' = 1 (det P = 1): elliptic for |tr P| < 2 with rotation number
+// acos(tr P / 2) / (2 pi), hyperbolic for |tr P| > 2.
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "inverse/constrained_model.hpp"
+#include "linkage/chain.hpp"
+
+namespace sl {
+
+struct ClosedGeodesic {
+  double length = 0;                                // route 1: the period at unit speed
+  Eigen::VectorXd point, velocity;                  // a unit-speed start on it (stacked hinges for a chain)
+  double positionClosure = 0, velocityClosure = 0;  // max |q(T) - q0|, max |v(T) - v0|
+  bool simple = true;
+  Eigen::Matrix2d monodromy = Eigen::Matrix2d::Identity();
+  std::string stability;      // "elliptic", "hyperbolic", "parabolic" ("-" on a circle)
+  double rotationNumber = 0;  // elliptic: acos(tr / 2) / (2 pi), in (0, 1/2)
+  Eigen::Vector2cd eigenvalues;
+  std::string symmetry;                     // the chain symmetries it is invariant under ("" if none / not a chain)
+  std::optional<double> independentLength;  // route 2
+  std::string independentRoute;
+};
+
+// Route 1 from a start (q0, v0 of unit speed) and a period guess. With a twist S (a linear isometry of the
+// model that is an involution, e.g. the chain's mirror), the guess is for half a period and Newton solves
+// (q, v)(T) = S (q0, v0): the closed geodesics invariant under S, found from half their length.
+std::optional<ClosedGeodesic> shootClosedGeodesic(const ConstrainedModel& model, Eigen::VectorXd q0, Eigen::VectorXd v0,
+                                                  double period, const Eigen::MatrixXd* twist = nullptr);
+
+struct PeriodicOptions {
+  double maxLength = 0;   // <= 0: 3 times the shortest one found (chains), 30 otherwise
+  int directions = 36;    // per seed point, over a half turn
+  Eigen::MatrixXd twist;  // if given: also seek returns to the twisted start (see shootClosedGeodesic)
+};
+
+// A start (point, unit velocity) and period to shoot from directly.
+struct ClosedGeodesicGuess {
+  Eigen::VectorXd point, velocity;
+  double period = 0;
+};
+
+// Closed geodesics of a 2-dimensional model up to the length bound, from fans at the given points (and from
+// the given starts: point and direction), simple ones first then by length. For a chain (`chain` given) symmetries are
+// named and route 2 run where it applies.
+std::vector<ClosedGeodesic> findClosedGeodesics(
+    const ConstrainedModel& model, const Chain* chain, const std::vector<Eigen::VectorXd>& seedPoints,
+    const PeriodicOptions& options, const std::vector<std::pair<Eigen::VectorXd, Eigen::VectorXd>>& starts = {},
+    const std::vector<ClosedGeodesicGuess>& guesses = {});
+
+// The 4-rod chain: its seed points and its closed geodesics with both routes.
+std::vector<ClosedGeodesic> chainClosedGeodesics(const Chain& chain, const PeriodicOptions& options);
+// The 3-rod chain's configuration space is a circle: itself a closed geodesic.
+ClosedGeodesic circleClosedGeodesic(const Chain& chain);
+
+// Route 2 pieces, exposed for the tests.
+// The length of a closed curve from its polygons on 2^k points, Richardson-extrapolated (periodic, smooth).
+double closedCurveLength(const ConstrainedModel& model, const std::function<Eigen::VectorXd(double)>& curve);
+// The fixed set of the end-for-end reflection of a 4-rod chain (p_k -> (L - x, y) of p_(4-k)), at parameter w.
+Eigen::VectorXd endSwapFixedPoint(const Chain& chain, double w);
+// The two fixed points of the half turn p_k -> (L, 0) - p_(4-k) (p2 at (L/2, 0)).
+std::vector<Eigen::VectorXd> halfTurnFixedPoints(const Chain& chain);
+// Perimeter of the ellipse with semi-axes a, b (complete elliptic integral of the second kind).
+double ellipsePerimeter(double a, double b);
+// The chain's three symmetries applied to stacked hinges: "mirror" (y -> -y), "end swap", "half turn".
+Eigen::VectorXd applyChainSymmetry(const Chain& chain, const std::string& name, const Eigen::VectorXd& q);
+
+}  // namespace sl

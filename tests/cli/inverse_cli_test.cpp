@@ -1,0 +1,88 @@
+// `linkage connect` and `linkage periodic` from the command line: what a user sees (the JSON keys, the
+// shortest first, both routes agreeing) and the refusals. The numbers are pinned by tests/inverse.
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "support/files.hpp"
+#include "support/linkage_binary.hpp"
+#include "support/scene_files.hpp"
+#include "support/temp_folder.hpp"
+
+namespace sl::testing {
+namespace {
+
+TEST(ConnectCli, JsonListsTheShortestFirstWithBothRoutes) {
+  TempFolder folder;
+  const ProcessResult result = runLinkage(
+      {"connect", shippedScene("default.json"), "--to", R"({"coords": [-0.6, 2.2]})", "--max-length", "5", "--json"},
+      folder.path());
+  ASSERT_EQ(result.code, 0) << result.err;
+  const nlohmann::json list = nlohmann::json::parse(result.out);
+  ASSERT_GE(list.size(), 2u);
+  EXPECT_TRUE(list[0]["shortest"].get<bool>());
+  EXPECT_EQ(list[0]["morse_index"].get<int>(), 0);
+  for (const auto& c : list) {
+    EXPECT_LE(c["length"].get<double>(), 5.0);
+    EXPECT_GE(c["length"].get<double>(), list[0]["length"].get<double>());
+    EXPECT_LE(c["end_error"].get<double>(), 1e-12);
+    EXPECT_EQ(c["coords"].size(), 2u);
+    EXPECT_EQ(c["hinge_velocities"].size(), 3u);
+  }
+  EXPECT_LT(list[0]["length_difference"].get<double>(), 1e-8);
+}
+
+TEST(ConnectCli, TargetByHingesAndRefusals) {
+  TempFolder folder;
+  const std::string scene = shippedScene("default.json");
+  // The arc shape's hinges of a 4-rod chain on L = 3 (unit rods).
+  const ProcessResult byHinges = runLinkage(
+      {"connect", scene, "--to",
+       R"({"hinges": [[0.5, -0.8660254037844386], [1.5, -0.8660254037844386], [2.5, -0.8660254037844386]]})"},
+      folder.path());
+  EXPECT_EQ(byHinges.code, 0) << byHinges.err;
+  EXPECT_NE(byHinges.out.find("distance "), std::string::npos);
+  const ProcessResult wrongCount = runLinkage({"connect", scene, "--to", R"({"coords": [1]})"}, folder.path());
+  EXPECT_EQ(wrongCount.code, 2);
+  EXPECT_NE(wrongCount.err.find("coords: expected an array of 2 numbers"), std::string::npos) << wrongCount.err;
+  const ProcessResult offRods =
+      runLinkage({"connect", scene, "--to", R"({"hinges": [[0, 0], [1, 0], [2, 0]]})"}, folder.path());
+  EXPECT_EQ(offRods.code, 2);
+  EXPECT_NE(offRods.err.find("not within 0.01"), std::string::npos) << offRods.err;
+}
+
+TEST(PeriodicCli, ThreeSimpleClosedGeodesicsAsJson) {
+  TempFolder folder;
+  const ProcessResult result = runLinkage({"periodic", shippedScene("default.json"), "--json"}, folder.path());
+  ASSERT_EQ(result.code, 0) << result.err;
+  const nlohmann::json list = nlohmann::json::parse(result.out);
+  int simple = 0;
+  for (const auto& g : list) {
+    simple += g["simple"].get<bool>();
+    EXPECT_TRUE(g.contains("length"));
+    EXPECT_EQ(g["start"]["coords"].size(), 2u);
+    EXPECT_LT(g["closure_position"].get<double>(), 1e-10);
+  }
+  EXPECT_GE(simple, 3);
+  EXPECT_NEAR(list[0]["length"].get<double>(), 6.593902692917, 1e-8);
+}
+
+TEST(ConnectCli, RefusesChainsBeyondItsLimit) {
+  TempFolder folder;
+  const ProcessResult result =
+      runLinkage({"connect", shippedScene("rope.json"), "--to", R"({"coords": [0]})"}, folder.path());
+  EXPECT_EQ(result.code, 2);
+  EXPECT_NE(result.err.find("connect handles at most 40 rods"), std::string::npos) << result.err;
+}
+
+TEST(PeriodicCli, RefusesLongChains) {
+  TempFolder folder;
+  const ProcessResult result = runLinkage({"periodic", shippedScene("five-rods.json")}, folder.path());
+  EXPECT_EQ(result.code, 2);
+  EXPECT_NE(result.err.find("periodic needs 3 or 4 rods"), std::string::npos) << result.err;
+}
+
+}  // namespace
+}  // namespace sl::testing

@@ -1,0 +1,69 @@
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "support.hpp"
+
+#include "inverse/connect.hpp"
+#include "linkage/chart.hpp"
+
+namespace sl {
+namespace {
+
+void expectRoutesAgree(const std::vector<Connection>& found) {
+  ASSERT_FALSE(found.empty());
+  int both = 0;
+  for (const Connection& c : found) {
+    EXPECT_LE(c.endError, 1e-12);
+    if (!c.discrete) continue;
+    ++both;
+    EXPECT_LT(c.lengthDifference, 1e-8) << "length " << c.length;
+    EXPECT_LT(c.pathDifference, 1e-7) << "length " << c.length;
+  }
+  EXPECT_GE(both, 1);
+  ASSERT_TRUE(found[0].discrete.has_value());
+  EXPECT_EQ(found[0].discrete->seed, "sphere arc");  // the shortest, found by route 2 on its own
+  EXPECT_EQ(found[0].morseIndex, 0);                 // a shortest path passes no conjugate point
+}
+
+TEST(Connect, FourRodsBothRoutesAgree) {
+  const Chain chain = Chain::uniform(4, 3.0);
+  const ConstrainedModel model = ConstrainedModel::fromChain(chain);
+  ConnectOptions options;
+  options.maxLength = 6.0;
+  const auto found = findConnections(model, &chain, pointOf(chain, 0.5, 0.3), pointOf(chain, -0.6, 2.2), options);
+  expectRoutesAgree(found);
+  EXPECT_GE(found.size(), 2u);  // the shortest and more round the sphere
+  for (std::size_t i = 1; i < found.size(); ++i) EXPECT_GE(found[i].length, found[0].length);
+}
+
+TEST(Connect, HeavyRodsAndFiveRods) {
+  Chain chain = Chain::uniform(5, 3.5);
+  chain.rodMasses = Eigen::VectorXd::Constant(5, 2.0);
+  const ConstrainedModel model = ConstrainedModel::fromChain(chain);
+  Eigen::VectorXd a(3), b(3);
+  a << 0.4, -0.3, 0.2;
+  b << -0.5, 0.6, -0.1;
+  const Eigen::VectorXd from = ConstrainedModel::stack(hingePositionsAt(chain, a.normalized()));
+  const Eigen::VectorXd to = ConstrainedModel::stack(hingePositionsAt(chain, b.normalized()));
+  ConnectOptions options;
+  options.maxLength = 0;  // default bound
+  expectRoutesAgree(findConnections(model, &chain, from, to, options));
+}
+
+// Route 2 alone on a path that is not a geodesic converges to the same one (the end points are fixed).
+TEST(Connect, DiscreteRouteEndsOnTheTarget) {
+  const Chain chain = Chain::uniform(4, 2.5);
+  const ConstrainedModel model = ConstrainedModel::fromChain(chain);
+  const Eigen::VectorXd from = pointOf(chain, 0.2, 0.1), to = pointOf(chain, 0.9, -1.0);
+  const auto arcs = sphereArcPaths(chain, from, to, 40);
+  const auto g = discreteGeodesic(model, arcs[0], "sphere arc");
+  ASSERT_TRUE(g.has_value());
+  EXPECT_LT((g->path.back() - to).cwiseAbs().maxCoeff(), 1e-15);
+  const auto shot = directConnection(model, &chain, from, to);
+  ASSERT_TRUE(shot.has_value());
+  EXPECT_NEAR(shot->length, g->length, 1e-8);
+}
+
+}  // namespace
+}  // namespace sl

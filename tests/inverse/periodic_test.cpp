@@ -1,0 +1,92 @@
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "inverse/periodic.hpp"
+
+namespace sl {
+namespace {
+
+// The 4-rod chain with unit hinge masses: at least three simple closed geodesics (Lyusternik-Schnirelmann),
+// each closing to 1e-10 and, where route 2 applies, agreeing with it to 1e-8; the end swap's fixed curve is
+// one of them.
+TEST(Periodic, FourRodChainHasThreeSimpleClosedGeodesics) {
+  for (double length : {2.5, 3.0, 3.5}) {
+    const auto found = chainClosedGeodesics(Chain::uniform(4, length), PeriodicOptions{});
+    int simple = 0, checked = 0;
+    bool fixedSet = false;
+    for (const ClosedGeodesic& g : found) {
+      EXPECT_LT(g.positionClosure, 1e-10);
+      EXPECT_LT(g.velocityClosure, 1e-10);
+      EXPECT_NEAR(g.monodromy.determinant(), 1.0, 1e-6) << "L = " << length;
+      if (g.simple) ++simple;
+      if (g.independentLength) {
+        ++checked;
+        EXPECT_NEAR(g.length, *g.independentLength, 1e-8) << g.independentRoute;
+      }
+      if (g.symmetry.find("fixed by end swap") != std::string::npos) fixedSet = true;
+    }
+    EXPECT_GE(simple, 3) << "L = " << length;
+    EXPECT_GE(checked, 3) << "L = " << length;
+    EXPECT_TRUE(fixedSet);
+  }
+}
+
+// Asymmetric hinge masses: only the mirror is left; shooting half a period to the mirror image finds the three.
+TEST(Periodic, AsymmetricMassesStillThreeSimple) {
+  Chain chain = Chain::uniform(4, 3.0);
+  chain.hingeMasses << 1.0, 2.0, 3.0;
+  const auto found = chainClosedGeodesics(chain, PeriodicOptions{});
+  int simple = 0;
+  for (const ClosedGeodesic& g : found) {
+    EXPECT_LT(std::max(g.positionClosure, g.velocityClosure), 1e-10);
+    EXPECT_EQ(g.symmetry.find("end swap"), std::string::npos);  // not an isometry here
+    simple += g.simple;
+  }
+  EXPECT_GE(simple, 3);
+}
+
+// A triaxial ellipsoid through the same code: its three principal ellipses, lengths by elliptic integrals; the
+// middle one is hyperbolic, the others elliptic.
+TEST(Periodic, TriaxialEllipsoidPrincipalEllipses) {
+  const double a = 1.0, b = 1.5, c = 2.0;
+  const ConstrainedModel model = ConstrainedModel::ellipsoid(a, b, c);
+  const std::vector<Eigen::VectorXd> points{Eigen::Vector3d(a, 0, 0), Eigen::Vector3d(0, b, 0),
+                                            Eigen::Vector3d(0, 0, c)};
+  PeriodicOptions options;
+  options.maxLength = 14;
+  const auto found = findClosedGeodesics(model, nullptr, points, options);
+  const double expected[3] = {ellipsePerimeter(a, b), ellipsePerimeter(a, c), ellipsePerimeter(b, c)};
+  const char* stability[3] = {"elliptic", "hyperbolic", "elliptic"};
+  ASSERT_GE(found.size(), 3u);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_TRUE(found[static_cast<std::size_t>(i)].simple);
+    EXPECT_NEAR(found[static_cast<std::size_t>(i)].length, expected[i], 1e-8);
+    EXPECT_EQ(found[static_cast<std::size_t>(i)].stability, stability[i]);
+  }
+}
+
+// The 3-rod chain's circle: the period of its motion at unit speed is the circle's length.
+TEST(Periodic, ThreeRodCircle) {
+  const ClosedGeodesic g = circleClosedGeodesic(Chain::uniform(3, 2.0));
+  EXPECT_LT(g.positionClosure, 1e-10);
+  EXPECT_LT(g.velocityClosure, 1e-10);
+  ASSERT_TRUE(g.independentLength.has_value());
+  EXPECT_NEAR(g.length, *g.independentLength, 1e-8);
+  EXPECT_GT(g.length, 2 * 3.14159);  // longer than the innermost hinge's own unit circle
+}
+
+// The fixed curve of the end swap really is fixed by it, and lies on the rods.
+TEST(Periodic, EndSwapFixedCurve) {
+  const Chain chain = Chain::uniform(4, 3.0);
+  const ConstrainedModel model = ConstrainedModel::fromChain(chain);
+  for (double w : {0.0, 0.7, 2.0, 4.5}) {
+    const Eigen::VectorXd q = endSwapFixedPoint(chain, w);
+    EXPECT_LT(model.values(q).cwiseAbs().maxCoeff(), 1e-14);
+    EXPECT_LT((applyChainSymmetry(chain, "end swap", q) - q).cwiseAbs().maxCoeff(), 1e-14);
+    EXPECT_GT((applyChainSymmetry(chain, "mirror", q) - q).cwiseAbs().maxCoeff(), 1e-3);
+  }
+}
+
+}  // namespace
+}  // namespace sl
