@@ -120,11 +120,12 @@ void writeGridCsv(const std::string& file, const ConfigurationSurface& surface, 
     }
   };
   emit(std::string(kSampleColumns) + "\n");
-  constexpr std::size_t kRowsPerBlock = 16;
-  for (std::size_t first = 0; first < grid.phis.size(); first += kRowsPerBlock) {
+  // At most 16 rows held at once, and at least 20 blocks, so progress has a line at every tenth.
+  const std::size_t rowsPerBlock = std::clamp<std::size_t>(grid.phis.size() / 20, 1, 16);
+  for (std::size_t first = 0; first < grid.phis.size(); first += rowsPerBlock) {
     const std::vector<double> phis(grid.phis.begin() + static_cast<std::ptrdiff_t>(first),
                                    grid.phis.begin() +
-                                       static_cast<std::ptrdiff_t>(std::min(grid.phis.size(), first + kRowsPerBlock)));
+                                       static_cast<std::ptrdiff_t>(std::min(grid.phis.size(), first + rowsPerBlock)));
     std::string text;
     for (const CurvatureSample& sample : curvatureGrid(surface, phis, grid.ts)) text += sampleRow(sample) + "\n";
     emit(text);

@@ -41,7 +41,7 @@ nlohmann::json runNumbers(const RunSpec& spec, Trajectory& run, double duration,
   json["outcome"] = stopped ? "stopped" : "ran";
   json["end_time"] = stopped ? stop->time : duration;
   if (stopped)
-    json["stop"] = {{"reason", nameOf(stop->reason)}, {"time", stop->time}, {"detail", stop->detail}};
+    json["stop"] = {{"reason", nameOf(stop->reason)}, {"time", stop->time}, {"detail", stop->detail()}};
   // Over every step integrated: beyond `duration` by at most the step in flight.
   json["max_relative_energy_drift"] = run.invariantExtremes().maxRelativeEnergyDrift;
   json["max_rod_length_error"] = run.invariantExtremes().maxRodLengthError;

@@ -1,9 +1,9 @@
 #include "cli/render_folder.hpp"
 
 #include <filesystem>
-#include <fstream>
 
 #include "cli/exit_codes.hpp"
+#include "output/frame_manifest.hpp"
 
 namespace sl {
 
@@ -24,11 +24,17 @@ ImageSize previewSize(ImageSize size) {
 }
 
 void refuseJoiningAnotherRender(const std::string& folder, const nlohmann::json& ours) {
-  std::ifstream in(std::filesystem::path(folder) / "manifest.json");
-  if (!in) return;  // nothing to join yet
-  const nlohmann::json manifest = nlohmann::json::parse(in, nullptr, false);
-  if (manifest.is_discarded() || !manifest.contains("info")) return;  // the manifest's own checks report it
-  const nlohmann::json& theirs = manifest["info"];
+  const std::string path = (std::filesystem::path(folder) / "manifest.json").string();
+  if (!std::filesystem::exists(path)) return;  // nothing to join yet
+  output::ManifestContents manifest;
+  try {
+    manifest = output::readManifestFile(path);
+  } catch (const output::ManifestInvalid&) {
+    return;  // the manifest's own checks report it
+  }
+  // An earlier version's render: FrameManifest says so (it is never joined, whatever its scene).
+  if (manifest.format != output::kCurrentManifestFormat) return;
+  const nlohmann::json& theirs = manifest.info;
   const auto text = [](const nlohmann::json& info, const char* key) {
     return info.contains(key) ? info[key].dump() : std::string("none");
   };

@@ -74,8 +74,11 @@ struct ManifestInvalid : std::invalid_argument {
 };
 
 // A manifest's content, checked: every entry well formed, frame numbers unique and in range.
+// The manifest format this version writes; format 1 (earlier versions) is read, never joined.
+inline constexpr int kCurrentManifestFormat = 2;
+
 struct ManifestContents {
-  int format = 2;
+  int format = kCurrentManifestFormat;
   nlohmann::json info;
   std::vector<std::string> renderers;
   std::map<int, FrameEntry> frames;

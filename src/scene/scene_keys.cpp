@@ -83,7 +83,8 @@ std::vector<SceneKey> describeKeys() {
        .type = KeyType::String,
        .summary = "shown in the frames",
        .target = "Scene::title",
-       .meaning = "shown in the frames",
+       .meaning = "shown in the frames; `{L}`, `{n}`, `{name}`, `{method}` and `{integrator}` (the first run's) are "
+                  "filled in from the scene, so `--set linkage.L=3.2` shows",
        .allowed = "any string",
        .defaultText = "`name`"},
       {.path = "linkage",
