@@ -44,8 +44,11 @@ CsvTable syntheticStabilityRows() {
   return rows;
 }
 
+// The test command installs gnuplot (scripts/install-deps.sh): a missing one is a failure, never a skip.
+constexpr const char* kGnuplotIsInstalled = "gnuplot with pngcairo is missing; scripts/install-deps.sh installs it";
+
 TEST(StabilityCharts, TheSameRowsDrawTheSameBytes) {
-  if (!gnuplotAvailable()) GTEST_SKIP() << "gnuplot with pngcairo not installed (apt-get install gnuplot-nox)";
+  ASSERT_TRUE(gnuplotAvailable()) << kGnuplotIsInstalled;
   const std::string first = sl::testing::freshTestFolder("a"), second = sl::testing::freshTestFolder("b");
   const CsvTable rows = syntheticStabilityRows();
   const auto a = writeStabilityCharts(rows, "pole", first);
@@ -61,7 +64,7 @@ TEST(StabilityCharts, TheSameRowsDrawTheSameBytes) {
 // -12 to -3, not a fixed -16..0 with an empty end), in a sequential map, and failed cells are grey, not the
 // failure-mode key's black for non-finite.
 TEST(StabilityCharts, TheErrorScaleIsTrimmedToTheData) {
-  if (!gnuplotAvailable()) GTEST_SKIP() << "gnuplot with pngcairo not installed (apt-get install gnuplot-nox)";
+  ASSERT_TRUE(gnuplotAvailable()) << kGnuplotIsInstalled;
   const std::string folder = sl::testing::freshTestFolder("trimmed");
   const CsvTable rows = syntheticStabilityRows();
   const auto written = writeStabilityCharts(rows, "pole", folder);
@@ -74,7 +77,7 @@ TEST(StabilityCharts, TheErrorScaleIsTrimmedToTheData) {
 }
 
 TEST(WorkPrecisionCharts, DrawsThreeChartsPerStartAndTheWorstCase) {
-  if (!gnuplotAvailable()) GTEST_SKIP() << "gnuplot with pngcairo not installed (apt-get install gnuplot-nox)";
+  ASSERT_TRUE(gnuplotAvailable()) << kGnuplotIsInstalled;
   std::vector<WorkPrecisionPoint> points;
   for (double h : {0.1, 0.01})
     for (const std::string start : {"generic", "seam-crossing"}) {
@@ -127,7 +130,7 @@ std::vector<WorkPrecisionPoint> everySeries() {
 }
 
 TEST(WorkPrecisionCharts, TwentySeriesBecomeOnePanelPerIntegratorWithAFailureEntryPerMethodAndTrimmedAxes) {
-  if (!gnuplotAvailable()) GTEST_SKIP() << "gnuplot with pngcairo not installed (apt-get install gnuplot-nox)";
+  ASSERT_TRUE(gnuplotAvailable()) << kGnuplotIsInstalled;
   const std::string folder = sl::testing::freshTestFolder("wp-multiples");
   writeWorkPrecisionCharts(everySeries(), folder);
   const std::string script = fileBytes(folder + "/wp-generic-error-time.gp");
