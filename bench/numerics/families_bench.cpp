@@ -1,4 +1,4 @@
-// Families and Jacobi fields (issue 15): a fan of 64 geodesics to T = 20 at tolerance 1e-10, its members spread
+// Families and Jacobi fields: a fan of 64 geodesics to T = 20 at tolerance 1e-10, its members spread
 // over the cores as the frames stage does it (contracts/parallel_for.hpp); a run with its Jacobi field against the
 // same run alone (4 rods: one field; 6 rods: a matrix field of three).
 #include <benchmark/benchmark.h>

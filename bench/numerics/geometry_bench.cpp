@@ -1,4 +1,4 @@
-// Curvature of the configuration sphere (issue 14), 4 rods, L = 3, unit hinge masses.
+// Curvature of the configuration sphere, 4 rods, L = 3, unit hinge masses.
 //   BM_CurvatureGrid/256/threads: every quantity (K, bending, stiffness max/min/angle, area density) on a
 //     256 x 256 chart 0 grid, both poles included (target: under 50 ms on 2 cores); wall time.
 //   BM_CurvatureSample: one point, everything; BM_SecondFundamentalForm: the jet pass and the projection only.

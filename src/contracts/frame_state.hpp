@@ -73,7 +73,7 @@ class SharedSpan {
 
 using SharedSamples = SharedSpan<double>;
 
-// One member of a run's family of geodesics (issue 15) at this frame: drawn thin, with the others.
+// One member of a run's family of geodesics at this frame: drawn thin, with the others.
 struct MemberFrame {
   bool stopped = false;     // stopped at or before this frame's time (frozen where it stopped)
   std::vector<Vec2> hinges;  // the linkage panel's "feather": every member's chain, faint

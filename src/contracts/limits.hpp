@@ -19,7 +19,7 @@ inline constexpr double kMaxMass = 1e6;
 inline constexpr double kMaxOrbitDegreesPerSecond = 3600;
 inline constexpr int kMinRods = 3;
 inline constexpr int kMaxRods = 12;          // the chart methods: their charts stay well conditioned up to here
-inline constexpr int kMaxAmbientRods = 1000;  // the chart-free ambient method (O(n) per step; issue 16)
+inline constexpr int kMaxAmbientRods = 1000;  // the chart-free ambient method (O(n) per step)
 inline constexpr int kMaxFps = 1000;
 inline constexpr int kMaxPathSamplesPerFrame = 100;
 // Hinge trails (view.trails): how many hinges, and how long a trail stays visible; together with kMaxFps they
@@ -30,7 +30,7 @@ inline constexpr double kMaxTrailFadeSeconds = 60;
 // kRecentPathPoints at full resolution: its memory is bounded whatever the duration and sampling.
 inline constexpr std::size_t kMaxPathPoints = 20000;
 inline constexpr std::size_t kRecentPathPoints = 2000;
-// A run's family (issue 15): members beside the run, their spread and a cloud's perturbation size.
+// A run's family: members beside the run, their spread and a cloud's perturbation size.
 inline constexpr int kMaxFamilyMembers = 256;
 inline constexpr double kMaxFamilySpread = 3.141592653589793;  // a fan's whole angle, a parallel family's width
 inline constexpr double kMaxCloudEpsilon = 0.1;

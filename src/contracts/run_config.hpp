@@ -27,7 +27,7 @@ struct RunConfig {
   double accuracySetting() const { return traits(integrator).adaptive ? tolerance : step; }
 };
 
-// A family of geodesics around a run (issue 15): `count` members beside the run itself, sharing its chain,
+// A family of geodesics around a run: `count` members beside the run itself, sharing its chain,
 // method and integrator. Fan: the run's point, directions at angles spread evenly over [-spread/2, spread/2]
 // from the run's in a g-orthonormal frame, the run's speed. Parallel: points at geodesic distances evenly over
 // [-spread/2, spread/2] along the geodesic orthogonal to the run's velocity, velocities g-orthogonal to it there
@@ -44,7 +44,7 @@ struct FamilySpec {
 // The start of the motion as a scene states it; simulation/initial_state.hpp turns it into an InitialState.
 struct InitialSpec {
   // Hinges: positions and velocities of the interior hinges (any chain, slack ones included; ambient method),
-  // given point by point or as a named shape with a push (issue 16: long chains).
+  // given point by point or as a named shape with a push (long chains).
   enum class Kind { ChartCoordinates, Drag, Hinges };
   enum class Shape { Given, Arc };  // Arc: the hinges on the circular arc through both pins, rods as its chords
   Kind kind = Kind::ChartCoordinates;

@@ -49,7 +49,7 @@ struct ViewSettings {
   double trailFadeSeconds = 2;
   ColorRGB background{0.96f, 0.95f, 0.92f};
   bool antialias = true;
-  // Without a text panel, the scene's title and the time on a line across the top of the frame (issue 12).
+  // Without a text panel, the scene's title and the time on a line across the top of the frame.
   bool titleLine = true;
 
   std::vector<PlotSpec> plots;   // one per Plot panel, in layout order (PanelSpec::plotIndex)

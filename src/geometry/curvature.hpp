@@ -1,5 +1,5 @@
 #pragma once
-// Pointwise extrinsic and intrinsic geometry of the configuration sphere of a 4-rod chain (issue 14).
+// Pointwise extrinsic and intrinsic geometry of the configuration sphere of a 4-rod chain.
 //
 // The stacked hinges q = Psi(x) in R^6 = (R^2)^3 embed the sphere in the ambient space with the mass inner
 // product <u, w>_M = u^T M w (spec section 1; M block-tridiagonal, linkage/chain.hpp). The kinetic metric is
@@ -50,7 +50,7 @@ struct OrthonormalFrameForm {
   Eigen::Matrix3d gram;
 };
 
-// The quantities of issue 14 at one configuration.
+// The pointwise quantities at one configuration.
 struct CurvatureSample {
   Eigen::Vector3d spherePoint;  // x
   double phi = 0.0, t = 0.0;    // chart 0 coordinates (as given, or from x with t in (-pi, pi])

@@ -1,5 +1,5 @@
 #pragma once
-// The configuration sphere as a whole (issue 14): maps of the pointwise quantities of geometry/curvature.hpp,
+// The configuration sphere as a whole: maps of the pointwise quantities of geometry/curvature.hpp,
 // the area and the Gauss-Bonnet integral, the extrema of K and of the bending, a summary per chain and a sweep
 // over L. Everything is computed through the best-conditioned chart at each point, so nothing here is special
 // at chart 0's poles or seams.

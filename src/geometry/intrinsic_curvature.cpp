@@ -1,4 +1,4 @@
-// The intrinsic route to K (issue 14's cross-check): Brioschi's formula from the kinetic metric and its exact
+// The intrinsic route to K (the Gauss route's cross-check): Brioschi's formula from the kinetic metric and its exact
 // first and second derivatives. It shares nothing with the Gauss-equation route past the chart itself: the
 // derivatives come from the generic third-order Taylor jet (the metric needs q_a, its second derivatives need
 // q_abc), not from the second-order jet, and no normal space or projection appears.

@@ -2,7 +2,7 @@
 // A truncated second-order Taylor jet in two variables: value, gradient and Hessian carried together through
 // arithmetic (forward-mode AD to second order). The chart Psi (linkage/chart.hpp) is templated on its scalar, so
 // hingePositionsInChart<SecondOrderJet> gives the stacked hinges q with their exact first and second
-// derivatives q_a, q_ab in one pass: what the Gauss equation needs (issue 14). Hand-rolled rather than Eigen's
+// derivatives q_a, q_ab in one pass: what the Gauss equation needs. Hand-rolled rather than Eigen's
 // nested AutoDiffScalar because the curvature grid evaluates it 65,536 times per map and nested AutoDiff
 // allocates and repeats work (the cross term is computed once here, twice there).
 

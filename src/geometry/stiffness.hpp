@@ -1,5 +1,5 @@
 #pragma once
-// Directional stiffness (issue 14): S(a) = |II(v, v)|^2_M for the g-unit tangent vector
+// Directional stiffness: S(a) = |II(v, v)|^2_M for the g-unit tangent vector
 // v = cos(a) e1 + sin(a) e2 of a g-orthonormal frame, with A = II(e1, e1), B = II(e1, e2), C = II(e2, e2).
 //
 // II(v, v) = P + Q cos 2a + R sin 2a with P = (A + C)/2, Q = (A - C)/2, R = B: as a runs over a half turn,

@@ -2,7 +2,7 @@
 // Truncated Taylor polynomials in two variables to any order N <= 3: f(c + (u, v)) = sum_{i+j<=N} a_ij u^i v^j.
 // Generic and deliberately plain (no sharing with second_order_jet.hpp): the intrinsic route to K needs the
 // chart's third derivatives (Brioschi's formula differentiates the metric g = J^T M J twice), and it is kept
-// independent of the Gauss-equation route's jet so that the two routes check each other (issue 14).
+// independent of the Gauss-equation route's jet so that the two routes check each other.
 // Unary functions are composed as f(a0 + d) = sum_n f^(n)(a0)/n! d^n with d nilpotent of order N + 1.
 
 #include <array>

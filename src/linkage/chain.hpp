@@ -1,6 +1,6 @@
 #pragma once
 // The chain model (spec section 1): n unit rods, p0 = 0 and pn = (L, 0) pinned, n-2 < L < n. A slack chain
-// (0 < L <= n-2, issue 16) is a chain too, but its configuration space is no longer a sphere: only the
+// (0 < L <= n-2) is a chain too, but its configuration space is no longer a sphere: only the
 // chart-free ambient method moves it.
 // Mass lives at the n-1 interior hinges (M_j) and uniformly along the rods (m_k).
 

@@ -25,7 +25,7 @@ struct RunSpec {
   bool ownLinkage = false;  // the run gave "linkage" / "initial" (messages name runs[i].linkage ...)
   bool ownInitial = false;
   std::optional<ColorRGB> color;  // default: a palette colour by position
-  std::optional<FamilySpec> family;  // geodesics around the run, drawn beside it (issue 15)
+  std::optional<FamilySpec> family;  // geodesics around the run, drawn beside it
 };
 
 struct Scene {

@@ -162,7 +162,7 @@ std::optional<Eigen::Matrix2Xd> readPoints(const JsonObject& object, const std::
   return points;
 }
 
-// A start by hinges (issue 16; any chain, slack ones included; ambient method): "hinges" is "arc" or the n-1
+// A start by hinges (any chain, slack ones included; ambient method): "hinges" is "arc" or the n-1
 // points, then "velocities" (n-1 vectors) or a "push": {"hinge": k, "velocity": [vx, vy]} or {"seed": s,
 // "size": v} (a random velocity of size about v at every hinge). Both are projected onto the rod constraints
 // when the run starts (simulation/initial_state.hpp), and the commands say if they had to move.
@@ -324,7 +324,7 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
   RunSpec spec;
   spec.name = run.string("name", true).value_or("");
   if (run.has("name") && spec.name.empty()) run.report("name", "is empty; expected a name shown in the panels");
-  // The run's own physics and start, defaulting to the scene's (issue 15: compare physics, not only methods).
+  // The run's own physics and start, defaulting to the scene's (compare physics, not only methods).
   spec.chain = scene.chain;
   spec.initial = scene.initial;
   spec.ownLinkage = run.has("linkage");

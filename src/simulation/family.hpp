@@ -1,5 +1,5 @@
 #pragma once
-// Families of geodesics around a run (issue 15): the starts of a fan, a parallel family or a cloud
+// Families of geodesics around a run: the starts of a fan, a parallel family or a cloud
 // (contracts/run_config.hpp, FamilySpec), each a valid start on the run's chain. Members share the run's
 // method and integrator; the frames stage and `simulate` integrate them beside the run.
 

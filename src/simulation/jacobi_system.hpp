@@ -1,5 +1,5 @@
 #pragma once
-// Jacobi fields along a geodesic of the chart-free method (issue 15; spec section 1's constrained system).
+// Jacobi fields along a geodesic of the chart-free method (spec section 1's constrained system).
 // A Jacobi field is the variation of a family of geodesics: along the motion (q, v) of AmbientSystem,
 // (dq, dv) solves the linearised equations dq' = dv, dv' = da with, from M a = G^T mu and G a = r(v):
 //   M da = dG^T mu + G^T dmu,   G da = dr - dG a,   dr_k = -2 (V_k . dV_k)

@@ -5,7 +5,7 @@
 // Chart-0 coordinates (t unwrapped) and rates, energy = (1/2) g(v, v). status is "ok", or the stop reason on
 // one final row at the stop time of a stopped run. Numbers are shortest round-trip decimals (std::to_chars),
 // so the file is deterministic and reads back to the same doubles.
-// Two optional columns (TrajectoryCsvLayout), present only when a scene asks for them (issue 15):
+// Two optional columns (TrajectoryCsvLayout), present only when a scene asks for them:
 //   member   after run: 0 for the run itself, 1..count for the members of its family (one row group each);
 //   jacobi   before status: the size of the run's Jacobi field across the motion (|J_perp| for 4 rods), empty
 //            for runs without Jacobi fields.

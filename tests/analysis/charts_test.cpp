@@ -60,7 +60,7 @@ TEST(StabilityCharts, TheSameRowsDrawTheSameBytes) {
   EXPECT_EQ(fileBytes(a[0]), fileBytes(b[0]));
 }
 
-// Issue 12: the error map's colours span the whole decades its data reach (cells ok at 1e-3 and 1e-12 here:
+// The error map's colours span the whole decades its data reach (cells ok at 1e-3 and 1e-12 here:
 // -12 to -3, not a fixed -16..0 with an empty end), in a sequential map, and failed cells are grey, not the
 // failure-mode key's black for non-finite.
 TEST(StabilityCharts, TheErrorScaleIsTrimmedToTheData) {
@@ -146,7 +146,7 @@ TEST(WorkPrecisionCharts, TwentySeriesBecomeOnePanelPerIntegratorWithAFailureEnt
   }
   EXPECT_EQ(script.find("failed: ambient"), std::string::npos);
   // Errors from 1e-8 to 1e-5: the y axis starts at 1e-8, not at the old fixed 1e-17, and ends just above the
-  // failure band, whose label no decade label crowds (issue 12: 10^2 sat right above 'failed').
+  // failure band, whose label no decade label crowds (10^2 sat right above 'failed').
   EXPECT_NE(script.find("set yrange [1e-08:60]"), std::string::npos) << script;
   EXPECT_NE(script.find("'10^{0}' 1e0, "), std::string::npos) << script;
   EXPECT_EQ(script.find("1e1,"), std::string::npos) << script;

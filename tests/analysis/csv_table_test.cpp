@@ -21,7 +21,7 @@ TEST(CsvTable, NumbersRoundTripExactly) {
   EXPECT_THROW(parseNumber("1.5x"), std::invalid_argument);
 }
 
-// The console tables of bench and stability (issue 12): every column starts at the same offset on every line
+// The console tables of bench and stability: every column starts at the same offset on every line
 // (bulirsch-stoer rows were misaligned), and a field with no value shows as "-".
 TEST(CsvTable, AlignedTextLinesUpItsColumns) {
   const CsvTable table{{"method", "integrator", "error"},

@@ -37,7 +37,7 @@ TEST(CheapestSettings, PicksTheFewestEvaluationsReachingTheTargetOnEveryStart) {
   EXPECT_FALSE(cheapest[3].reached);
   const std::string text = cheapestSettingsText(cheapest, {1e-6, 1e-9, 1e-12, 1e-14});
   EXPECT_NE(text.find("never"), std::string::npos);
-  // Issue 12: the table shows the cost the choice was made by (evaluations), so a tighter target never looks
+  // The table shows the cost the choice was made by (evaluations), so a tighter target never looks
   // cheaper than a looser one; the noisy wall time comes second.
   EXPECT_NE(text.find("900 evals"), std::string::npos) << text;
   for (std::size_t i = 1; i < 3; ++i) EXPECT_GE(cheapest[i].worstEvaluations, cheapest[i - 1].worstEvaluations);

@@ -1,4 +1,4 @@
-// Sweeps sized for a cluster (issue 16): `stability --plan N` prints the shard jobs; run as printed, they and
+// Sweeps sized for a cluster: `stability --plan N` prints the shard jobs; run as printed, they and
 // the merge equal a single sweep byte for byte; a missing shard is named; rerunning one shard replaces only it.
 #include <filesystem>
 #include <sstream>

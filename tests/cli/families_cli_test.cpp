@@ -1,4 +1,4 @@
-// Families and Jacobi fields from the command line (issue 15): simulate's member and jacobi columns, its
+// Families and Jacobi fields from the command line: simulate's member and jacobi columns, its
 // --events file, diff of such files, and the shipped scenes that show them.
 #include <cmath>
 #include <sstream>

@@ -30,7 +30,7 @@ TEST(GeometryCli, SummaryMatchesTheIndependentFiniteDifferenceFigures) {
   const ProcessResult result = runLinkage({"geometry", shippedScene("default.json"), "--summary"}, folder.path());
   ASSERT_EQ(result.code, 0) << result.err;
   const nlohmann::json summary = nlohmann::json::parse(result.out);
-  // Figures of an independent finite-difference calculation (issue 14), good to about 1e-4.
+  // Figures of an independent finite-difference calculation, good to about 1e-4.
   EXPECT_NEAR(summary["area"].get<double>(), 21.326, 1e-3);
   EXPECT_NEAR(summary["K_min"]["value"].get<double>(), -0.272, 1e-3);
   EXPECT_NEAR(std::abs(summary["K_min"]["phi"].get<double>()), 0.39, 0.01);

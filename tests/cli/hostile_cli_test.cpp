@@ -1,4 +1,4 @@
-// Hostile options, outputs and inputs from the command line (issue 13): each test pins one class of defect so
+// Hostile options, outputs and inputs from the command line: each test pins one class of defect so
 // that it cannot come back. Crashes, hangs and silent loss first; then what validate must refuse; then files.
 #include <fcntl.h>
 #include <sys/file.h>
@@ -146,7 +146,7 @@ TEST(HostileCli, WriteErrorsOnStandardOutputAreFailures) {
   EXPECT_NE(full.err.find("cannot write the CSV to standard output"), std::string::npos) << full.err;
 }
 
-// Principle 1 of issue 13: every command that writes to standard output fails when it cannot (its output is
+// docs/hardening.md, principle 1: every command that writes to standard output fails when it cannot (its output is
 // flushed and checked before exit), and succeeds on the same command into a file.
 TEST(HostileCli, EveryCommandsStandardOutputIsCheckedBeforeExit) {
   TempFolder folder;

@@ -1,4 +1,4 @@
-// Long and slack chains from the command line (issue 16): the shipped rope, its CSV without chart columns,
+// Long and slack chains from the command line: the shipped rope, its CSV without chart columns,
 // the note when a start had to move onto the constraints, and the rod limit of the chart methods.
 #include <sstream>
 #include <string>

@@ -86,7 +86,7 @@ TEST(RenderCli, EditAndRenderAgainReplacesTheEarlierRender) {
       << shard.err;
 }
 
-// Issue 13.4: two different scenes rendered into one folder at the same time. Whatever the timing, the folder ends
+// Two different scenes rendered into one folder at the same time. Whatever the timing, the folder ends
 // up holding one whole render that exited 0, whose manifest matches every file on disk (diff checks each file's
 // hash against it), and nothing else: a render that lost the folder says so and exits non-zero.
 TEST(RenderCli, TwoScenesRenderingIntoOneFolderAtOnceNeverMix) {

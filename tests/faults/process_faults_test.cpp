@@ -200,7 +200,7 @@ TEST_F(ProcessFaults, FullDiskGivesAClearErrorAndKeepsCompletedFrames) {
   expectOnlyCompleteFrames("disk/frames");
 }
 
-// Issues 13.2 and 13.3: a CSV that does not fit, written by simulate to a file or to standard output, is a failure
+// A CSV that does not fit, written by simulate to a file or to standard output, is a failure
 // (exit 3, the reason and what is incomplete), never a CSV cut mid-row with exit 0; a --csv file leaves nothing
 // behind (no CSV, no temporary).
 TEST_F(ProcessFaults, ACsvThatDoesNotFitIsAFailureNotACutFile) {

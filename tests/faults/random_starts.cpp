@@ -1,4 +1,4 @@
-// Random starts through the whole pipeline (issue 13): random chains (3 to 6 rods, L anywhere in (n-2, n) and often
+// Random starts through the whole pipeline: random chains (3 to 6 rods, L anywhere in (n-2, n) and often
 // within 1e-7..1e-1 of an end, random hinge and rod masses in 40% of cases), random starts (chart or drag, velocity
 // components up to a size drawn log-uniformly from 1e-6 to 1e2, unit_speed or not), 1 to 3 runs each of a random
 // method x integrator, a few frames each built and rendered at 160x90. Each case must be refused (a SceneError, or

@@ -148,7 +148,7 @@ TEST(FrameBuilder, ValuesMatchDirectSampling) {
   }
 }
 
-// Runs with their own linkage and start (issue 15): each run is its own chain's motion from its own start, and
+// Runs with their own linkage and start: each run is its own chain's motion from its own start, and
 // each frame carries the run's own pin distance for the linkage panel.
 TEST(FrameBuilder, RunsWithTheirOwnLinkageAndStartFollowTheirOwnPhysics) {
   const Scene scene = parseScene(R"({"name": "t", "linkage": {"rods": 4, "L": 3},
@@ -187,7 +187,7 @@ TEST(FrameBuilder, RunsWithTheirOwnLinkageAndStartFollowTheirOwnPhysics) {
   EXPECT_NEAR(start.y, std::cos(-0.4) * std::sin(1.0), 1e-12);
 }
 
-// A run's family (issue 15): every member in every frame, in member order, each the motion of its own start;
+// A run's family: every member in every frame, in member order, each the motion of its own start;
 // a shard's first frame equals the full walk's, members included.
 TEST(FrameBuilder, FamilyMembersAreSampledWithTheRunInEveryShard) {
   const Scene scene = parseScene(R"({"name": "t", "linkage": {"rods": 4, "L": 3},

@@ -64,7 +64,7 @@ InitialSpec dragSpec(Eigen::Vector3d point, Eigen::Vector3d direction, bool unit
   return spec;
 }
 
-// Issue 13.11: a drag direction's scale never decides whether the start moves. With unit_speed, huge and tiny
+// A drag direction's scale never decides whether the start moves. With unit_speed, huge and tiny
 // directions give the same unit-speed start as a plain one; without it, a huge one is refused for its
 // overflowing energy and a tiny one for its underflowing energy, each with the reason.
 TEST(InitialSpec, DragDirectionsOfAnyScale) {
@@ -93,7 +93,7 @@ TEST(InitialSpec, DragDirectionsOfAnyScale) {
   }
 }
 
-// Issue 13.11: a direction along the point leaves only rounding noise across the sphere: refused with and without
+// A direction along the point leaves only rounding noise across the sphere: refused with and without
 // unit_speed (a frozen linkage, or noise blown up to an arbitrary direction), whatever its scale.
 TEST(InitialSpec, DragAlongThePointIsRefused) {
   const Chain chain = Chain::uniform(4, 3.0);

@@ -1,4 +1,4 @@
-// Pointwise geometry of the configuration sphere (issue 14): the Gauss-equation route against Brioschi's
+// Pointwise geometry of the configuration sphere: the Gauss-equation route against Brioschi's
 // formula, the Gauss equation in an orthonormal frame, symmetries, scaling, poles and seams, and the printed
 // metric of the spec differenced as the author's demo does.
 #include <gtest/gtest.h>
@@ -265,7 +265,7 @@ TEST(Curvature, PrintedMetricDifferencedAgreesAwayFromPolesAndSeams) {
 }
 
 TEST(Curvature, ValuesAtLThreeUnitHingeMasses) {
-  // Issue 14's figures: min K ~ -0.272 near (0.39, 1.34) and its mirror; max K ~ 4.15; K at the pole 143/35.
+  // docs/geometry.md: min K ~ -0.272 near (0.39, 1.34) and its mirror; max K ~ 4.15; K at the pole 143/35.
   const ConfigurationSurface surface(Chain::uniform(4, 3.0));
   EXPECT_NEAR(surface.curvatureAtCoordinates(0.3869716820, 1.3386317898).gaussianCurvature, -0.271846, 1e-6);
   EXPECT_NEAR(surface.curvatureAtCoordinates(-0.3869716820, 1.3386317898 - M_PI).gaussianCurvature, -0.271846, 1e-6);

@@ -1,4 +1,4 @@
-// The configuration sphere as a whole (issue 14): Gauss-Bonnet, area, maps, extrema, summaries and the L at
+// The configuration sphere as a whole: Gauss-Bonnet, area, maps, extrema, summaries and the L at
 // which K turns positive everywhere.
 #include <gtest/gtest.h>
 
@@ -118,7 +118,7 @@ TEST(CurvatureMaps, GridIsRowMajorOverBothPolesAndMatchesPointwiseValues) {
 }
 
 TEST(CurvatureExtrema, LThreeUnitHingeMasses) {
-  // Issue 14: min K ~ -0.272 near (0.39, 1.34) and its mirror (-0.39, 1.34 - pi); max K ~ 4.15.
+  // docs/geometry.md: min K ~ -0.272 near (0.39, 1.34) and its mirror (-0.39, 1.34 - pi); max K ~ 4.15.
   const ConfigurationSurface surface(Chain::uniform(4, 3.0));
   const CurvatureExtrema extrema = curvatureExtrema(surface);
   EXPECT_NEAR(extrema.curvatureMin.value, -0.272, 1e-3);

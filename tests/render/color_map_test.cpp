@@ -108,7 +108,7 @@ TEST(ColorBar, StaysInsideItsArea) {
     EXPECT_GE(v.y, area.y - 1);
     EXPECT_LE(v.y, area.y + area.height + 1);
   }
-  // Issue 12: in a strip narrower than its label and note (small frames), both are shortened, never cut by the panel.
+  // In a strip narrower than its label and note (small frames), both are shortened, never cut by the panel.
   ShapeBatch narrow;
   const PixelRect strip{580, 20, 50, 300};
   drawColorBar({-0.27, 4.15, true}, "K, Gaussian curvature", "each sign on its own scale", strip, composer.font(), narrow);

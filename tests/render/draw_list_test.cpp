@@ -47,7 +47,7 @@ TEST(DrawList, OnePanelDrawingPerPanelInLayoutOrder) {
   EXPECT_FALSE(list.panels[3].shapes.vertices().empty());
 }
 
-// Issue 12: without a text panel, the title and the time go across the top of the frame, glyphs in its top
+// Without a text panel, the title and the time go across the top of the frame, glyphs in its top
 // line only; a text panel, or view.title_line false, leaves them out.
 TEST(DrawList, ATitleLineWhenThereIsNoTextPanel) {
   ViewSettings noText = fourPanels();
@@ -67,7 +67,7 @@ bool isStopRed(const ShapeVertex& v) {
          std::abs(v.b - palette::stopRed.b) < 1e-6f;
 }
 
-// Issue 12: a run's stop is shown where it happened in its plots: red shapes (the cross) inside the plot area at
+// A run's stop is shown where it happened in its plots: red shapes (the cross) inside the plot area at
 // the stop time's x, and none while every run still moves.
 TEST(DrawList, AStoppedRunIsCrossedOutInItsPlotWhereItStopped) {
   ViewSettings view = fourPanels();
@@ -92,7 +92,7 @@ TEST(DrawList, AStoppedRunIsCrossedOutInItsPlotWhereItStopped) {
   for (const ShapeVertex& v : running.panels[3].shapes.vertices()) EXPECT_FALSE(isStopRed(v));
 }
 
-// Issue 12: the automatic layout keeps the title line's band free, so the title and the time never sit on a panel
+// The automatic layout keeps the title line's band free, so the title and the time never sit on a panel
 // (default-like scenes without a text panel), at every frame size.
 TEST(DrawList, TheTitleLineHasABandOfItsOwn) {
   ViewSettings view;
@@ -109,7 +109,7 @@ TEST(DrawList, TheTitleLineHasABandOfItsOwn) {
   }
 }
 
-// Issue 12: a plot's parts never overlap and stay inside its panel at every frame size: title, then legend, then
+// A plot's parts never overlap and stay inside its panel at every frame size: title, then legend, then
 // the plot area (which the legend never covers), with room for the y labels, the last x label and "t"; plots of the
 // comparison layout (two plots beside the sphere) keep a plot area even at 320x180.
 TEST(PlotLayoutTest, TitleLegendAndAreaNeverOverlapAtAnySize) {
@@ -163,7 +163,7 @@ TEST(PlotLayoutTest, LongSeriesAreThinnedToThePlotsWidth) {
   EXPECT_LT(double(many), 2.0 * double(some));  // without thinning: about 100 times as many
 }
 
-// Issue 12: a plot's lines nest like the runs' paths: each later series is narrower, so a line exactly under
+// A plot's lines nest like the runs' paths: each later series is narrower, so a line exactly under
 // another still shows along both its edges.
 TEST(PlotLayoutTest, CoincidingSeriesBothShow) {
   ViewSettings view = fourPanels();
@@ -182,7 +182,7 @@ TEST(PlotLayoutTest, CoincidingSeriesBothShow) {
   EXPECT_GT(widthFirst, widthSecond + 0.5f) << "the first line would hide under the second";
 }
 
-// Issue 12: side by side, each run's caption sits just under the lowest place its chain can reach, not at the
+// Side by side, each run's caption sits just under the lowest place its chain can reach, not at the
 // foot of a tall panel (it floated about 100 px below its linkage).
 TEST(DrawList, SideBySideCaptionsSitUnderTheirLinkages) {
   ViewSettings view = fourPanels();
@@ -204,7 +204,7 @@ TEST(DrawList, SideBySideCaptionsSitUnderTheirLinkages) {
   EXPECT_LT(boxBottom + 2 * line, panel.y + panel.height) << "the test's panel is not tall enough to tell";
 }
 
-// Issue 12: a stopped run's reason is explained in the text panel where there is room (a line of its own, in the
+// A stopped run's reason is explained in the text panel where there is room (a line of its own, in the
 // stop colour), and left out where there is not.
 TEST(DrawList, AStopIsExplainedWhereThereIsRoom) {
   SyntheticOptions stopping;
@@ -254,7 +254,7 @@ TEST(DrawList, AStopIsSaidOnceInTheTextPanel) {
   EXPECT_EQ(red, alone.vertices().size());
 }
 
-// Issue 12: the chart pole facing the eye is named in the sphere panel; a pole on the silhouette or behind the
+// The chart pole facing the eye is named in the sphere panel; a pole on the silhouette or behind the
 // sphere is not (the camera level with the equator sees neither).
 TEST(DrawList, TheChartPoleFacingTheEyeIsLabelled) {
   ViewSettings view = fourPanels();
@@ -264,7 +264,7 @@ TEST(DrawList, TheChartPoleFacingTheEyeIsLabelled) {
   EXPECT_FALSE(hasProgram(FrameComposer(view, {640, 360}).compose(frame).panels[1].shapes, ShapeProgram::Glyph));
 }
 
-// Issue 12: a family on the sphere is explained in the sphere panel when no text panel does it (fan.json).
+// A family on the sphere is explained in the sphere panel when no text panel does it (fan.json).
 TEST(DrawList, AFamilyIsCaptionedWithoutATextPanel) {
   ViewSettings view;
   view.panels = {{PanelKind::Sphere, std::nullopt, 0}, {PanelKind::Linkage, std::nullopt, 0}};

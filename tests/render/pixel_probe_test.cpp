@@ -97,7 +97,7 @@ TEST_F(PixelProbe, PathBehindTheSphereIsHidden) {
 
 bool isRunBlue(Rgb8 c) { return c.b > c.r + 40 && c.b > c.g + 10; }
 
-// Issue 12: two runs on exactly the same path both show: across the path, the first run's colour at the tube's
+// Two runs on exactly the same path both show: across the path, the first run's colour at the tube's
 // edge and the second's in its middle (each later run is drawn narrower).
 TEST_F(PixelProbe, CoincidingRunsBothShowAcrossThePath) {
   FrameState two = frame;
@@ -118,7 +118,7 @@ TEST_F(PixelProbe, CoincidingRunsBothShowAcrossThePath) {
   EXPECT_TRUE(isRunBlue(pixel(picture, int(at.x), int(at.y))));
 }
 
-// Issue 12: the current state behind the sphere is ghosted through it instead of vanishing.
+// The current state behind the sphere is ghosted through it instead of vanishing.
 TEST_F(PixelProbe, CurrentStateBehindTheSphereIsGhostedThroughIt) {
   const Vec3 behind = onSphere(7.5 * kDeg, 187.5 * kDeg);  // the path's end, on the far side
   const render::P2 at = camera.project({behind.x * 1.055, behind.y * 1.055, behind.z * 1.055});
@@ -155,7 +155,7 @@ TEST_F(PixelProbe, NoAntialiasingStillDrawsTheSameScene) {
 
 // The ball view (5+ rods): a path through the antipode jumps from one side of the boundary to the other; the
 // jump is a gap, not a line across the ball. The same line sampled densely is drawn (so the probe can see it).
-// Issue 12: the start of a 5+ rod path (the ball's centre) is marked over the path, not hidden under it.
+// The start of a 5+ rod path (the ball's centre) is marked over the path, not hidden under it.
 TEST_F(PixelProbe, BallViewMarksTheStartOverThePath) {
   FrameState ball = probeFrame();
   ball.viewSpace = ViewSpace::Ball;

@@ -55,7 +55,7 @@ TEST(BadScenes, EachNamesItsJsonPathAndWhatIsWrong) {
   }
 }
 
-// Issue 13.19: an invalid "rods" is the only problem of a scene whose other sizes fit the n it meant; nothing is
+// An invalid "rods" is the only problem of a scene whose other sizes fit the n it meant; nothing is
 // compared with a made-up n (masses, starts in every form, runs' linkages, families, Jacobi fields, the sphere).
 TEST(BadScenes, AnInvalidRodCountIsNotMeasuredAgainstAMadeUpOne) {
   for (const char* file : {"rods_beyond_limit_sized_for_it.json", "rods_not_integer_sized_for_five.json"}) {

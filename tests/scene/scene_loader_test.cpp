@@ -219,7 +219,7 @@ TEST(SceneLoader, MissingFileIsAProblemNotACrash) {
   }
 }
 
-// Issue 13.19: a scene file past kMaxSceneBytes is refused by its size, after one bounded read (a 100 MB file took
+// A scene file past kMaxSceneBytes is refused by its size, after one bounded read (a 100 MB file took
 // 2 GB of memory); one of exactly that size is read and judged as JSON.
 TEST(SceneLoader, FilesBeyondTheSizeLimitAreRefusedWithoutBeingReadWhole) {
   testing::TempFolder folder;

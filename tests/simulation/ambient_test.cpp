@@ -138,7 +138,7 @@ TEST(Ambient, CheapChartAngleMatchesTheChartInverse) {
 }  // namespace
 }  // namespace sl
 
-// Long and slack chains (issue 16): starts by hinges, the arc shape, the projection onto the constraints, the
+// Long and slack chains: starts by hinges, the arc shape, the projection onto the constraints, the
 // invariants of a slack chain's motion, and the stop where the rod constraints lose rank.
 namespace sl {
 namespace {

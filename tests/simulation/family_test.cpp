@@ -1,4 +1,4 @@
-// Families of geodesics (issue 15): the members' starts against their definitions in the kinetic metric, the
+// Families of geodesics: the members' starts against their definitions in the kinetic metric, the
 // invariants of every member's motion, and a fan launched at a pole of the chart integrated through it.
 #include <cmath>
 
@@ -109,7 +109,7 @@ TEST(Family, CloudIsSmallDeterministicAndDependsOnTheSeed) {
   }
 }
 
-// Cross-check (3) of issue 15: every member of a fan keeps its energy and its rod lengths.
+// Cross-check: every member of a fan keeps its energy and its rod lengths.
 TEST(Family, EveryMemberKeepsItsEnergyAndRodLengths) {
   const Chain chain = massiveChain();
   const InitialState start = genericStart(chain);

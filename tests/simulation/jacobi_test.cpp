@@ -1,4 +1,4 @@
-// Jacobi fields and conjugate points (issue 15) against independent routes: the linearisation against central
+// Jacobi fields and conjugate points against independent routes: the linearisation against central
 // differences of the motion's own vector field; the field against central differences of two geodesics of a
 // fan launched +-delta apart; for 4 rods, the field and its zeros against the scalar Jacobi equation
 // y'' + K(gamma(t)) y = 0 with the exact Gaussian curvature of geometry/curvature.hpp.

@@ -109,7 +109,7 @@ TEST(Trajectory, EnergyWatchdogCatchesAnUnstableStepSize) {
   ASSERT_TRUE(run.stop());
   EXPECT_EQ(run.stop()->reason, StopReason::EnergyBlowUp);
   EXPECT_LE(last->relativeEnergyDrift, c.maxRelativeEnergyDrift);
-  // The frames say what tripped the watchdog: its reading against its limit (issue 12), a drift beyond the limit.
+  // The frames say what tripped the watchdog: its reading against its limit, a drift beyond the limit.
   const std::string measured = run.stop()->reading();
   EXPECT_EQ(measured.rfind("energy drift ", 0), 0u) << measured;
   double drift = 0, limit = 0;
