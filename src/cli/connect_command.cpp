@@ -12,6 +12,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/summary.hpp"
+#include "contracts/csv_format.hpp"
 #include "cli/configuration_json.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/scene_input.hpp"
@@ -30,6 +32,7 @@ struct ConnectArguments {
   std::string target;
   double maxLength = 0;
   bool json = false;
+  bool quiet = false;
 };
 
 // TARGET: JSON text, or a file holding it: {"coords": [...]} (chart 0) or {"hinges": [[x, y], ...]}.
@@ -86,7 +89,13 @@ Eigen::VectorXd readTarget(const Chain& chain, const ConstrainedModel& model, co
   throw CommandExit(kExitBadInput, where + ": expected an object with \"coords\" or \"hinges\"");
 }
 
-void runConnect(const ConnectArguments& args) {
+std::string foundWords(const std::vector<Connection>& found) {
+  return std::to_string(found.size()) + (found.size() == 1 ? " geodesic" : " geodesics") +
+         " to the target, distance " + shortest(found[0].length);
+}
+
+// Prints the motions found; returns what the summary line says of them.
+std::string runConnect(const ConnectArguments& args) {
   const Scene scene = loadSceneForCommand(args.scene, args.overrides);
   const Chain& chain = scene.chain;
   if (chain.rods > limits::kMaxConnectRods)
@@ -131,7 +140,7 @@ void runConnect(const ConnectArguments& args) {
       list.push_back(o);
     }
     std::cout << list.dump(2) << "\n";
-    return;
+    return foundWords(found);
   }
   std::printf("distance %.12f (the shortest of %zu geodesics up to the length bound)\n", found[0].length, found.size());
   std::printf("%3s %16s %16s %6s %10s %10s %10s  %s\n", "#", "length", "discrete", "morse", "end err", "len diff",
@@ -151,6 +160,7 @@ void runConnect(const ConnectArguments& args) {
       std::printf("%3zu %16.12f %16s %6d %10.1e %10s %10s  %s\n", i, c.length, "-", c.morseIndex, c.endError, "-", "-",
                   velocities.c_str());
   }
+  return foundWords(found);
 }
 
 }  // namespace
@@ -173,7 +183,11 @@ void addConnectCommand(CLI::App& app) {
       "route 2 makes a discrete action stationary under the rod constraints. 'discrete' is route 2's length\n"
       "where it found the same geodesic; 'morse' the conjugate points passed.\n"
       "Example:\n  linkage connect scenes/default.json --to '{\"coords\": [-0.6, 2.2]}' --max-length 8");
-  command->callback([args] { runConnect(*args); });
+  command->add_flag("--quiet", args->quiet, "errors only: no summary line");
+  command->callback([args] {
+    const CommandSummary summary("connect", args->quiet);
+    summary.print(runConnect(*args));
+  });
 }
 
 }  // namespace sl

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/summary.hpp"
 #include "cli/configuration_json.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/scene_input.hpp"
@@ -27,6 +28,7 @@ struct PeriodicArguments {
   std::string scene;
   double maxLength = 0;
   bool json = false;
+  bool quiet = false;
 };
 
 nlohmann::json geodesicJson(const Chain& chain, const ClosedGeodesic& g) {
@@ -61,7 +63,12 @@ nlohmann::json geodesicJson(const Chain& chain, const ClosedGeodesic& g) {
   return o;
 }
 
-void runPeriodic(const PeriodicArguments& args) {
+std::string foundWords(const std::vector<ClosedGeodesic>& found) {
+  return std::to_string(found.size()) + (found.size() == 1 ? " closed geodesic" : " closed geodesics");
+}
+
+// Prints the closed geodesics found; returns what the summary line says of them.
+std::string runPeriodic(const PeriodicArguments& args) {
   const Scene scene = loadSceneForCommand(args.scene, args.overrides);
   const Chain& chain = scene.chain;
   if ((chain.rods != 3 && chain.rods != 4) || chain.isSlack())
@@ -80,7 +87,7 @@ void runPeriodic(const PeriodicArguments& args) {
     nlohmann::json list = nlohmann::json::array();
     for (const ClosedGeodesic& g : found) list.push_back(geodesicJson(chain, g));
     std::cout << list.dump(2) << "\n";
-    return;
+    return foundWords(found);
   }
   std::printf("%3s %16s %16s %6s %-10s %9s %9s %9s  %s\n", "#", "length", "independent", "simple", "stability",
               "rotation", "trace", "closure", "symmetry");
@@ -94,6 +101,7 @@ void runPeriodic(const PeriodicArguments& args) {
                 g.stability.c_str(), rotation, trace, std::max(g.positionClosure, g.velocityClosure),
                 g.symmetry.empty() ? "-" : g.symmetry.c_str());
   }
+  return foundWords(found);
 }
 
 }  // namespace
@@ -114,7 +122,11 @@ void addPeriodicCommand(CLI::App& app) {
       "applies (the end swap's fixed curve, twice a discrete geodesic between the half turn's fixed points, the\n"
       "3-rod circle). Stability from the linearised return map: elliptic (rotation number) or hyperbolic.\n"
       "Example:\n  linkage periodic scenes/default.json --json");
-  command->callback([args] { runPeriodic(*args); });
+  command->add_flag("--quiet", args->quiet, "errors only: no summary line");
+  command->callback([args] {
+    const CommandSummary summary("periodic", args->quiet);
+    summary.print(runPeriodic(*args));
+  });
 }
 
 }  // namespace sl

@@ -76,6 +76,8 @@ std::vector<CommandCase> everyCommand() {
       {"stability", {"stability", "--kind", "pole", "--grid", "3", "--methods", "ambient", "--no-charts", "--out", "s"}},
       {"geometry", {"geometry", four, "--summary"}},
       {"numbers", {"numbers", seam}},
+      {"connect", {"connect", four, "--to", R"({"coords": [-0.6, 2.2]})", "--max-length", "3"}},
+      {"periodic", {"periodic", four, "--max-length", "7"}},
       {"schema", {"schema"}},
   };
 }
