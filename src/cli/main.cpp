@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/environment.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/help_format.hpp"
 #include "cli/typo_hints.hpp"
@@ -24,7 +25,7 @@ namespace {
 void printVersion() {
   std::string gl;
   try {
-    const sl::Renderer renderer(sl::ViewSettings{}, {16, 16});
+    const sl::Renderer renderer(sl::ViewSettings{}, {16, 16}, sl::environment().shaderFolder);
     gl = renderer.glRenderer() + ", OpenGL " + renderer.glVersion();
   } catch (const std::exception& error) {
     gl = std::string("unavailable (") + error.what() + ")";

@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/environment.hpp"
 #include "cli/disk_space.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/frame_range.hpp"
@@ -206,7 +207,7 @@ void runRender(const RenderArguments& args) {
   const CommandSummary summary("render", args.quiet);
   const RenderPlan plan = planRender(args);
   const Scene& scene = plan.scene;
-  Renderer renderer(scene.view, scene.output.size);
+  Renderer renderer(scene.view, scene.output.size, environment().shaderFolder);
   const nlohmann::json info = manifestInfo(plan);
   sweepOutputFolders(plan);  // first: a killed render's leftovers must not count against the free space
   std::vector<std::string> notes;
@@ -235,11 +236,14 @@ void runRender(const RenderArguments& args) {
   if (!plan.video.empty()) {
     videoManifest = std::make_unique<output::FrameManifest>(videoFolder(plan.video), info,
                                                             fs::path(plan.video).filename().string() + ".manifest.json",
-                                                            output::FrameManifest::Existing::replace);
+                                                            output::FrameManifest::Existing::replace,
+                                                            output::FrameManifest::Claim::join, nullptr,
+                                                            environment().lockWaitSeconds);
     videoManifest->addRenderer(renderer.glRenderer(), renderer.glVersion());
     output::VideoSettings settings{plan.video, *videoFormatOfPath(plan.video), scene.output.videoQuality,
                                    scene.output.size.width, scene.output.size.height, double(scene.output.fps)};
     settings.cancelled = interruptRequested;
+    settings.maxStallSeconds = environment().encoderWaitSeconds;
     videoSink = std::make_unique<output::VideoSink>(settings, *videoManifest);
   }
   if (plan.png) {
@@ -249,7 +253,8 @@ void runRender(const RenderArguments& args) {
     try {
       pngManifest = std::make_unique<output::FrameManifest>(
           plan.folder, info, "manifest.json", output::FrameManifest::Existing::merge,
-          whole ? output::FrameManifest::Claim::supersede : output::FrameManifest::Claim::join, interruptRequested);
+          whole ? output::FrameManifest::Claim::supersede : output::FrameManifest::Claim::join, interruptRequested,
+          environment().lockWaitSeconds);
     } catch (const output::LockWaitCancelled&) {  // a signal while another render held the folder
       stopIfInterrupted("nothing was written yet");
       throw;

@@ -14,6 +14,7 @@
 #include <stb_image_write.h>
 
 #include "cli/commands.hpp"
+#include "cli/environment.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/frame_range.hpp"
 #include "cli/interrupt.hpp"
@@ -107,14 +108,14 @@ void runStill(const StillArguments& args) {
   }
   std::vector<std::uint8_t> png;
   if (!args.transparent) {
-    Renderer renderer(scene.view, scene.output.size);
+    Renderer renderer(scene.view, scene.output.size, environment().shaderFolder);
     png = output::PngEncoder().encode(renderer.render(state));
   } else {
     ViewSettings black = scene.view, white = scene.view;
     black.background = {0, 0, 0};
     white.background = {1, 1, 1};
-    const Image onBlack = Renderer(black, scene.output.size).render(state);
-    const Image onWhite = Renderer(white, scene.output.size).render(state);
+    const Image onBlack = Renderer(black, scene.output.size, environment().shaderFolder).render(state);
+    const Image onWhite = Renderer(white, scene.output.size, environment().shaderFolder).render(state);
     const std::vector<std::uint8_t> rgba = unblend(onBlack, onWhite);
     if (!stbi_write_png_to_func(appendBytes, &png, onBlack.width, onBlack.height, 4, rgba.data(), onBlack.width * 4))
       throw CommandExit(kExitFailure, args.out + ": cannot encode the PNG");

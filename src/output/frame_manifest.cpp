@@ -27,21 +27,9 @@ constexpr const char* kFormat = "sphere-linkages frame manifest 2";
 constexpr const char* kFormat1 = "sphere-linkages frame manifest 1";  // read, never joined (see the header)
 
 // flock(2) with a bounded wait: polls, says once (after a second) what it waits for, and gives up after
-// limits::kMaxLockWaitSeconds naming the file. A process stopped while holding a lock must not hang the others.
-// The environment variable LINKAGE_LOCK_WAIT (seconds) overrides the bound, e.g. for a cluster whose shared file
-// system is slow to answer.
-double maxLockWaitSeconds() {
-  if (const char* text = std::getenv("LINKAGE_LOCK_WAIT")) {
-    char* end = nullptr;
-    const double seconds = std::strtod(text, &end);
-    if (end != text && *end == '\0' && std::isfinite(seconds) && seconds >= 0) return seconds;
-  }
-  return limits::kMaxLockWaitSeconds;
-}
-
-void lockWithTimeout(int fd, int operation, const std::string& path, bool (*cancelled)() = nullptr) {
+// maxWait seconds naming the file. A process stopped while holding a lock must not hang the others.
+void lockWithTimeout(int fd, int operation, const std::string& path, double maxWait, bool (*cancelled)() = nullptr) {
   using Clock = std::chrono::steady_clock;
-  const double maxWait = maxLockWaitSeconds();
   const auto start = Clock::now();
   bool announced = false;
   while (::flock(fd, operation | LOCK_NB) != 0) {
@@ -70,11 +58,12 @@ int openLockFile(const std::string& path) {
 // processes. The manifest itself cannot carry the lock: each write replaces it with a new file.
 class ManifestLock {
  public:
-  ManifestLock(const std::string& folder, const std::string& manifestName, bool (*cancelled)() = nullptr) {
+  ManifestLock(const std::string& folder, const std::string& manifestName, double maxWait,
+               bool (*cancelled)() = nullptr) {
     const std::string path = folder + "/." + manifestName + ".lock";
     fd_ = openLockFile(path);
     try {
-      lockWithTimeout(fd_, LOCK_EX, path, cancelled);
+      lockWithTimeout(fd_, LOCK_EX, path, maxWait, cancelled);
     } catch (...) {
       ::close(fd_);
       throw;
@@ -220,10 +209,11 @@ ManifestContents readManifestFile(const std::string& path) {
 }
 
 FrameManifest::FrameManifest(std::string folder, nlohmann::json info, std::string fileName, Existing existing,
-                             Claim claim, bool (*cancelled)())
+                             Claim claim, bool (*cancelled)(), double lockWaitSeconds)
     : folder_(std::move(folder)),
       fileName_(std::move(fileName)),
       info_(std::move(info)),
+      lockWaitSeconds_(lockWaitSeconds),
       existing_(existing),
       lastFlush_(std::chrono::steady_clock::now()) {
   std::filesystem::create_directories(folder_);
@@ -231,9 +221,9 @@ FrameManifest::FrameManifest(std::string folder, nlohmann::json info, std::strin
   const std::string activePath = folder_ + "/." + fileName_ + ".active";
   activeFd_ = openLockFile(activePath);
   try {
-    lockWithTimeout(activeFd_, LOCK_SH, activePath, cancelled);  // waits only while a render takes the folder over
+    lockWithTimeout(activeFd_, LOCK_SH, activePath, lockWaitSeconds_, cancelled);  // waits only while a render takes the folder over
     {
-      ManifestLock lock(folder_, fileName_, cancelled);
+      ManifestLock lock(folder_, fileName_, lockWaitSeconds_, cancelled);
       const nlohmann::json manifest = readAnyLocked();
       if (claim == Claim::supersede && manifest.at("info") != info_) supersedeLocked(manifest);
       // The manifest's file exists from the start: if the file system later runs out of inodes, the entries
@@ -311,7 +301,7 @@ void FrameManifest::reload() {
   nlohmann::json manifest;
   {
     // The manifest lock is released before taking mutex_: flushLocked() takes them in the other order.
-    ManifestLock lock(folder_, fileName_);
+    ManifestLock lock(folder_, fileName_, lockWaitSeconds_);
     manifest = readLocked();
   }
   std::lock_guard guard(mutex_);
@@ -347,7 +337,7 @@ void FrameManifest::flushLocked() {
   // merge: what other processes wrote since, plus ours, under the lock; replace: ours alone (known_ holds
   // earlier flushes), with no lock, as nothing is merged.
   std::optional<ManifestLock> lock;
-  if (existing_ == Existing::merge) lock.emplace(folder_, fileName_);
+  if (existing_ == Existing::merge) lock.emplace(folder_, fileName_, lockWaitSeconds_);
   nlohmann::json manifest = lock ? readLocked() : emptyManifest();
   std::map<int, FrameEntry> merged = lock ? std::map<int, FrameEntry>{} : known_;
   for (const auto& j : manifest.at("frames")) merged[j.at("frame").get<int>()] = fromJson(j);

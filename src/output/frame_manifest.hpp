@@ -57,6 +57,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "contracts/limits.hpp"
+
 namespace sl::output {
 
 struct FrameEntry {
@@ -101,7 +103,8 @@ class FrameManifest {
   // it says yes, the wait ends with LockWaitCancelled, so SIGINT/SIGTERM are answered within a second before any
   // frame is written. Later waits (flushes) are not cancelled: they save finished frames.
   FrameManifest(std::string folder, nlohmann::json info, std::string fileName = "manifest.json",
-                Existing existing = Existing::merge, Claim claim = Claim::join, bool (*cancelled)() = nullptr);
+                Existing existing = Existing::merge, Claim claim = Claim::join, bool (*cancelled)() = nullptr,
+                double lockWaitSeconds = limits::kMaxLockWaitSeconds);
   ~FrameManifest();  // flushes; never throws
   FrameManifest(const FrameManifest&) = delete;
   FrameManifest& operator=(const FrameManifest&) = delete;
@@ -131,6 +134,7 @@ class FrameManifest {
 
   std::string folder_, fileName_;
   nlohmann::json info_;
+  double lockWaitSeconds_;  // how long a lock another process holds is waited for (then: an error naming it)
   Existing existing_;
   mutable std::mutex mutex_;
   std::map<int, FrameEntry> known_, pending_;

@@ -35,16 +35,6 @@ using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// limits::kMaxEncoderStallSeconds, or LINKAGE_ENCODER_WAIT (seconds, a finite number >= 0) if set.
-double maxStallSeconds() {
-  if (const char* text = std::getenv("LINKAGE_ENCODER_WAIT")) {
-    char* end = nullptr;
-    const double seconds = std::strtod(text, &end);
-    if (end != text && *end == '\0' && std::isfinite(seconds) && seconds >= 0) return seconds;
-  }
-  return limits::kMaxEncoderStallSeconds;
-}
-
 // Runs `args` (args[0] found on the PATH) with stdin from /dev/null and returns what it wrote to stdout and
 // stderr, with its exit status.
 std::pair<int, std::string> capture(const std::vector<std::string>& args) {
@@ -183,7 +173,7 @@ void VideoSink::consume(int frameIndex, Image image) {
 // Writes without blocking: while ffmpeg reads nothing, the wait asks for cancellation every 20 ms, says what it
 // waits for after a second and gives up after the stall bound.
 void VideoSink::writeFrame(const std::uint8_t* data, std::size_t size) {
-  const double maxStall = maxStallSeconds();
+  const double maxStall = settings_.maxStallSeconds;
   auto progress = Clock::now();
   bool announced = false;
   while (size > 0) {

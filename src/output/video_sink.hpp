@@ -38,6 +38,7 @@ struct VideoSettings {
   std::string ffmpeg = "ffmpeg";  // program name or path
   std::string ffprobe = "";       // empty: "ffprobe" beside ffmpeg (the same folder, or the PATH)
   bool (*cancelled)() = nullptr;  // asked while waiting for ffmpeg; true ends the video (EncodingCancelled)
+  double maxStallSeconds = limits::kMaxEncoderStallSeconds;  // ffmpeg reading nothing this long: given up
 };
 
 // The video was abandoned because `cancelled` said so (a signal): nothing was replaced.

@@ -16,8 +16,9 @@ namespace sl {
 
 class Renderer {
  public:
-  // Throws std::invalid_argument for a size outside contracts/limits.hpp.
-  Renderer(const ViewSettings& view, ImageSize size);
+  // Throws std::invalid_argument for a size outside contracts/limits.hpp. `shaderFolder`, when not empty, is read
+  // for the shaders instead of the ones built in.
+  Renderer(const ViewSettings& view, ImageSize size, const std::string& shaderFolder = "");
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/files.hpp"
+#include "support/child_process.hpp"
 #include "support/linkage_binary.hpp"
 #include "support/scene_files.hpp"
 #include "support/temp_folder.hpp"
@@ -79,6 +80,21 @@ TEST(EdgesCli, SupersedingDeletesOnlyItsOwnFrameNames) {
   EXPECT_EQ(readFile(folder.path() / "victim.txt"), "keep");
   EXPECT_EQ(readFile(folder.path() / "out" / "notes.txt"), "keep");
   EXPECT_EQ(readFile(folder.path() / "out" / "sub" / "frame_00000.png"), "keep");
+}
+
+// The environment is read in one place (cli/environment.hpp): a value that is not a number of seconds is refused
+// with the variable's name before any work, never taken silently as the default.
+TEST(EdgesCli, UnusableEnvironmentValuesAreNamed) {
+  TempFolder folder;
+  const std::string render = shellQuoted(linkageBinary()) + " render " + shellQuoted(shippedScene("seam.json")) +
+                             " --size 160x90 --frames 0:1 --out r --quiet";
+  for (const std::string variable : {"LINKAGE_LOCK_WAIT", "LINKAGE_ENCODER_WAIT"}) {
+    const ProcessResult refused = runShell(variable + "=soon " + render, folder.path());
+    EXPECT_EQ(refused.code, 2) << refused.err;
+    EXPECT_NE(refused.err.find(variable + ": found \"soon\"; expected seconds"), std::string::npos) << refused.err;
+    EXPECT_FALSE(fs::exists(folder.path() / "r"));
+  }
+  EXPECT_EQ(runShell("LINKAGE_LOCK_WAIT=2.5 " + render, folder.path()).code, 0);
 }
 
 }  // namespace

@@ -128,15 +128,14 @@ TEST(FrameManifest, LockWaitsAreBoundedAndNamed) {
   int status = 0;
   ASSERT_EQ(waitpid(holder, &status, WUNTRACED), holder);
   ASSERT_TRUE(WIFSTOPPED(status));
-  ::setenv("LINKAGE_LOCK_WAIT", "1.5", 1);
   const auto start = std::chrono::steady_clock::now();
   try {
-    FrameManifest blocked(folder, kInfo);
+    FrameManifest blocked(folder, kInfo, "manifest.json", FrameManifest::Existing::merge, FrameManifest::Claim::join,
+                          nullptr, 1.5);
     ADD_FAILURE() << "no error";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find(".manifest.json.lock"), std::string::npos) << e.what();
   }
-  ::unsetenv("LINKAGE_LOCK_WAIT");
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
   ::kill(holder, SIGKILL);
   waitpid(holder, &status, 0);

@@ -13,26 +13,26 @@
 namespace sl {
 namespace {
 
-std::string messageOf(const ViewSettings& settings, ImageSize size = testing::kSmallSize) {
+std::string messageOf(const ViewSettings& settings, ImageSize size = testing::kSmallSize,
+                      const std::string& shaderFolder = "") {
   try {
-    Renderer renderer(settings, size);
+    Renderer renderer(settings, size, shaderFolder);
   } catch (const std::exception& e) {
     return e.what();
   }
   return "";
 }
 
-// The shaders are built into the program; SL_SHADER_DIR reads them from a folder instead (shader work).
+// The shaders are built into the program; a shader folder (the command line's SL_SHADER_DIR) is read instead.
 TEST(RenderErrors, MissingShaderFolderIsNamed) {
-  ::setenv("SL_SHADER_DIR", "/nonexistent/shaders", 1);
-  const std::string message = messageOf(testing::smallSettings());
-  ::unsetenv("SL_SHADER_DIR");
+  const std::string message = messageOf(testing::smallSettings(), testing::kSmallSize, "/nonexistent/shaders");
   EXPECT_NE(message.find("/nonexistent/shaders/"), std::string::npos) << message;
 }
 
 TEST(RenderErrors, ShadersNeedNoSourceTree) {
-  ::unsetenv("SL_SHADER_DIR");
+  ::setenv("SL_SHADER_DIR", "/nonexistent/shaders", 1);  // the stages read no environment: only the folder given
   EXPECT_EQ(messageOf(testing::smallSettings()), "");
+  ::unsetenv("SL_SHADER_DIR");
 }
 
 TEST(RenderErrors, FrameSizeOutOfRange) {

@@ -41,14 +41,14 @@ struct Renderer::Impl {
   const SphereDecoration* uploadedDecoration = nullptr;
   const SphereDecoration* cachedDecoration = nullptr;  // the decoration the cached sphere layer shows  // the field in fieldTexture (and in the cached layer)
 
-  Impl(const ViewSettings& view, ImageSize frameSize)
+  Impl(const ViewSettings& view, ImageSize frameSize, const std::string& shaderFolder)
       : composer(view, frameSize),
         size(frameSize),
         context(size.width, size.height),
-        flat(stage("shapes.vert"), stage("flat.frag")),
-        glyph(stage("shapes.vert"), stage("glyph.frag")),
-        lit(stage("shapes.vert"), stage("lit.frag")),
-        sphere(stage("shapes.vert"), stage("sphere.frag")) {
+        flat(stage("shapes.vert"), stage("flat.frag"), shaderFolder),
+        glyph(stage("shapes.vert"), stage("glyph.frag"), shaderFolder),
+        lit(stage("shapes.vert"), stage("lit.frag"), shaderFolder),
+        sphere(stage("shapes.vert"), stage("sphere.frag"), shaderFolder) {
     createVertexArray();
     createGlyphTexture();
   }
@@ -228,7 +228,8 @@ extern "C" const char* __lsan_default_suppressions() {
 }
 #endif
 
-Renderer::Renderer(const ViewSettings& view, ImageSize size) : impl_(std::make_unique<Impl>(view, size)) {}
+Renderer::Renderer(const ViewSettings& view, ImageSize size, const std::string& shaderFolder)
+    : impl_(std::make_unique<Impl>(view, size, shaderFolder)) {}
 Renderer::~Renderer() = default;
 
 Image Renderer::render(const FrameState& frame) { return impl_->draw(impl_->composer.compose(frame)); }

@@ -1,6 +1,5 @@
 #include "render/gl/shader_program.hpp"
 
-#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -13,13 +12,12 @@ const char* embeddedShader(const char* name);  // generated: cmake/EmbedFiles.cm
 
 namespace {
 
-// The shaders are compiled into the program (cmake/EmbedFiles.cmake); SL_SHADER_DIR, when set, names a
-// folder to read them from instead, for work on the shaders without rebuilding.
-std::string readText(const std::string& name) {
-  if (const char* folder = std::getenv("SL_SHADER_DIR"); folder != nullptr && *folder != '\0') {
-    const std::string path = std::string(folder) + "/" + name;
+// The shaders are compiled into the program (cmake/EmbedFiles.cmake); a folder, when given, is read instead.
+std::string readText(const std::string& name, const std::string& folder) {
+  if (!folder.empty()) {
+    const std::string path = folder + "/" + name;
     std::ifstream in(path);
-    if (!in) throw std::runtime_error("cannot read shader " + path + " (from SL_SHADER_DIR)");
+    if (!in) throw std::runtime_error("cannot read shader " + path + " (the shader folder given)");
     std::stringstream text;
     text << in.rdbuf();
     return text.str();
@@ -35,9 +33,9 @@ std::string joined(const std::vector<std::string>& paths) {
   return text;
 }
 
-GLuint compile(GLenum kind, const std::vector<std::string>& paths) {
+GLuint compile(GLenum kind, const std::vector<std::string>& paths, const std::string& folder) {
   std::string source;
-  for (const auto& path : paths) source += readText(path) + "\n";
+  for (const auto& path : paths) source += readText(path, folder) + "\n";
   const std::string path = joined(paths);
   const char* text = source.c_str();
   GLuint shader = glCreateShader(kind);
@@ -57,9 +55,9 @@ GLuint compile(GLenum kind, const std::vector<std::string>& paths) {
 }  // namespace
 
 ShaderProgram::ShaderProgram(const std::vector<std::string>& vertexFiles,
-                             const std::vector<std::string>& fragmentFiles) {
-  GLuint vertex = compile(GL_VERTEX_SHADER, vertexFiles);
-  GLuint fragment = compile(GL_FRAGMENT_SHADER, fragmentFiles);
+                             const std::vector<std::string>& fragmentFiles, const std::string& folder) {
+  GLuint vertex = compile(GL_VERTEX_SHADER, vertexFiles, folder);
+  GLuint fragment = compile(GL_FRAGMENT_SHADER, fragmentFiles, folder);
   program_ = glCreateProgram();
   glAttachShader(program_, vertex);
   glAttachShader(program_, fragment);

@@ -1,0 +1,24 @@
+#pragma once
+// Everything the program reads from its environment, in one place: read here, at the command line's edge, and
+// passed down to the stages as plain values (the stages read no environment variable themselves).
+
+#include <string>
+
+namespace sl {
+
+struct Environment {
+  // LINKAGE_LOCK_WAIT: seconds a render waits for a lock another process holds on its folder (a cluster whose
+  // shared file system is slow may want more); limits::kMaxLockWaitSeconds if unset.
+  double lockWaitSeconds;
+  // LINKAGE_ENCODER_WAIT: seconds the video encoder may read nothing before the render gives up on it;
+  // limits::kMaxEncoderStallSeconds if unset.
+  double encoderWaitSeconds;
+  // SL_SHADER_DIR: a folder to read the shaders from instead of the ones built into the program (work on the
+  // shaders without rebuilding); empty if unset.
+  std::string shaderFolder;
+};
+
+// Read once, at the first call. Throws CommandExit (exit 2) naming the variable when a value is unusable.
+const Environment& environment();
+
+}  // namespace sl
