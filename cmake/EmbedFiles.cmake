@@ -1,6 +1,6 @@
 # Writes a C++ source that holds files as string constants, so the program carries them (no run-time
 # path to its source tree). Run as a script:
-#   cmake -DOUTPUT=out.cpp -DNAMESPACE=sl::render -DFUNCTION=embeddedShader -DFILES="a|b" -P EmbedFiles.cmake
+#   cmake -DOUTPUT=out.cpp -DNAMESPACE=sl -DFUNCTION=embeddedShader -DFILES="a|b" -P EmbedFiles.cmake
 # (FILES separated by |, which survives the shell). The function returns a file's text by its base name, or
 # nullptr.
 string(REPLACE "|" ";" FILES "${FILES}")

@@ -163,15 +163,15 @@ struct Split {
 Split runOnce(const Options& o, sl::Renderer& renderer, const sl::SyntheticOptions& synthetic, double fps) {
   std::filesystem::remove_all(o.out);
   std::filesystem::create_directories(o.out);
-  sl::output::FrameManifest manifest(o.out, {{"bench", "render"}});
+  sl::FrameManifest manifest(o.out, {{"bench", "render"}});
   manifest.addRenderer(renderer.glRenderer(), renderer.glVersion());
-  std::unique_ptr<sl::output::FrameSink> sink;
-  if (o.sink == "png") sink = std::make_unique<sl::output::PngSequenceSink>(o.out, manifest, o.encoders, o.compression);
+  std::unique_ptr<sl::FrameSink> sink;
+  if (o.sink == "png") sink = std::make_unique<sl::PngSequenceSink>(o.out, manifest, o.encoders, o.compression);
   if (o.sink == "mp4") {
-    sl::output::VideoSettings video{o.out + "/bench.mp4", sl::VideoFormat::Mp4, sl::VideoQuality::High, o.width, o.height, fps};
-    sink = std::make_unique<sl::output::VideoSink>(video, manifest);
+    sl::VideoSettings video{o.out + "/bench.mp4", sl::VideoFormat::Mp4, sl::VideoQuality::High, o.width, o.height, fps};
+    sink = std::make_unique<sl::VideoSink>(video, manifest);
   }
-  sl::output::PngEncoder encoder(o.compression);
+  sl::PngEncoder encoder(o.compression);
   Split split;
   const ThreadTimes threadsAtStart = threadTimes();
   const double cpuStart = cpuSeconds();
@@ -187,7 +187,7 @@ Split runOnce(const Options& o, sl::Renderer& renderer, const sl::SyntheticOptio
       const double t2 = threadCpuSeconds();
       split.encode += t2 - t1;
       split.bytes += png.size();
-      sl::output::sha256Hex(png);
+      sl::sha256Hex(png);
       split.hash += threadCpuSeconds() - t2;
     }
     if (sink) sink->consume(k, std::move(image));

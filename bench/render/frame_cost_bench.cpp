@@ -57,7 +57,7 @@ sl::FrameBuilder builderAt(const Setup& s, int first) {
 void BM_BuilderAndComposer(benchmark::State& state) {
   const int first = int(state.range(0));
   const Setup s = setupFor(int(state.range(1)), int(state.range(2)));
-  const sl::render::FrameComposer composer(s.scene.view, s.scene.output.size);
+  const sl::FrameComposer composer(s.scene.view, s.scene.output.size);
   sl::FrameBuilder builder = builderAt(s, first);
   int k = first;
   for (auto _ : state) {

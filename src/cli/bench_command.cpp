@@ -85,7 +85,7 @@ void runBench(BenchArguments& args) {
   if (args.charts && !gnuplotAvailable())
     throw std::runtime_error("charts need gnuplot with pngcairo: apt-get install gnuplot-nox (or pass --no-charts)");
   std::filesystem::create_directories(args.out);
-  output::removeStaleTemporaries(args.out);  // what a killed run of this command left (docs/hardening.md)
+  removeStaleTemporaries(args.out);  // what a killed run of this command left (docs/hardening.md)
   long total = 0;  // points: every start x method x integrator x its settings
   for (const Integrator integrator : args.options.integrators.empty() ? kindsOf(kIntegrators) : args.options.integrators)
     total += long((traits(integrator).adaptive ? args.options.tolerances : args.options.steps).size());
@@ -96,9 +96,9 @@ void runBench(BenchArguments& args) {
   progress.reset();
 
   const std::string csvPath = (std::filesystem::path(args.out) / "work-precision.csv").string();
-  output::writeFileAtomically(csvPath, csvText(workPrecisionTable(points)));
+  writeFileAtomically(csvPath, csvText(workPrecisionTable(points)));
   const std::string table = cheapestSettingsText(cheapestSettings(points, args.targets), args.targets);
-  output::writeFileAtomically((std::filesystem::path(args.out) / "cheapest-settings.txt").string(), table);
+  writeFileAtomically((std::filesystem::path(args.out) / "cheapest-settings.txt").string(), table);
   std::cout << "Cheapest setting reaching each max position error on every start: fewest field evaluations (worst "
                "start), then its median wall time:\n"
             << table << "wrote " << csvPath << "\n";

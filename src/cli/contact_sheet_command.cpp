@@ -108,7 +108,7 @@ void runContactSheet(const SheetArguments& args) {
                   frameTime(chosen[size_t(i)].frame, fps));
     drawLabel(sheet, x, y + tileHeight + 3 * kLabelScale, label);
   }
-  output::writeFileAtomically(args.out, output::PngEncoder().encode(sheet));
+  writeFileAtomically(args.out, PngEncoder().encode(sheet));
   summary.print(std::to_string(count) + " of " + std::to_string(frames.size()) + " frames of " + args.folder +
                 " in " + std::to_string(rows) + " x " + std::to_string(columns) + " -> " + args.out);
 }

@@ -21,7 +21,7 @@ namespace sl {
 FolderFrames readFolderFrames(const std::string& folder) {
   const std::string path = folder + "/manifest.json";
   if (!std::filesystem::exists(path)) throw std::invalid_argument(path + ": cannot read (is " + folder + " a render folder?)");
-  const output::ManifestContents manifest = output::readManifestFile(path);
+  const ManifestContents manifest = readManifestFile(path);
   FolderFrames result;
   result.folder = folder;
   if (manifest.format >= 2 && manifest.info.is_object() && manifest.info.contains("png") && manifest.info["png"].is_string())
@@ -34,7 +34,7 @@ FolderFrames readFolderFrames(const std::string& folder) {
     const std::string framePath = folder + "/" + entry.file;
     if (!std::filesystem::is_regular_file(framePath))
       throw std::invalid_argument(framePath + ": listed in " + path + " but missing");
-    if (output::sha256OfFile(framePath) != entry.fileSha256)
+    if (sha256OfFile(framePath) != entry.fileSha256)
       throw std::invalid_argument(framePath + ": does not match its entry in " + path +
                                   " (changed after the render, or written by another one)");
     result.fileHashes[frame] = entry.fileSha256;
@@ -47,7 +47,7 @@ FolderFrames readFolderFrames(const std::string& folder) {
 std::vector<std::string> readRenderers(const std::string& folder) {
   const std::string path = folder + "/manifest.json";
   if (!std::filesystem::exists(path)) throw std::invalid_argument(path + ": cannot read (is " + folder + " a render folder?)");
-  return output::readManifestFile(path).renderers;
+  return readManifestFile(path).renderers;
 }
 
 namespace {
@@ -74,7 +74,7 @@ std::map<int, std::string> pixelHashesOf(const FolderFrames& side) {
     }
     const DecodedImage image = decodePng(side.folder + "/" + side.files.at(frame));
     const std::size_t bytes = std::size_t(image.width) * image.height * 3;
-    hashes[frame] = output::sha256Hex(image.pixels.get(), bytes);
+    hashes[frame] = sha256Hex(image.pixels.get(), bytes);
   }
   return hashes;
 }
@@ -106,7 +106,7 @@ FolderDifference compareFolders(const std::map<int, std::string>& before, const 
 
 PixelDifference comparePixels(const std::string& before, const std::string& after, int frame, int levels,
                               const std::string& imageFolder) {
-  const std::string name = output::frameFileName(frame);
+  const std::string name = frameFileName(frame);
   const DecodedImage a = decodePng(before + "/" + name), b = decodePng(after + "/" + name);
   if (a.width != b.width || a.height != b.height)
     return {1.0, 255, "", "the frames are " + std::to_string(a.width) + "x" + std::to_string(a.height) + " and " +
@@ -131,7 +131,7 @@ PixelDifference comparePixels(const std::string& before, const std::string& afte
   if (!imageFolder.empty()) {
     std::filesystem::create_directories(imageFolder);
     path = imageFolder + "/diff_" + name;
-    output::writeFileAtomically(path, output::PngEncoder().encode(diff));
+    writeFileAtomically(path, PngEncoder().encode(diff));
   }
   return {differing / double(size_t(a.width) * a.height), largest, path, ""};
 }

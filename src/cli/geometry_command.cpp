@@ -101,7 +101,7 @@ void writeOrPrint(const std::string& file, const std::string& text) {
     std::cout << text << std::flush;
     if (!std::cout) throw CommandExit(kExitFailure, "linkage geometry: cannot write to standard output");
   } else {
-    output::writeFileAtomically(file, text);
+    writeFileAtomically(file, text);
   }
 }
 
@@ -110,7 +110,7 @@ void writeOrPrint(const std::string& file, const std::string& text) {
 // samplesCsv of the whole grid: each sample depends on its (phi, t) alone.
 void writeGridCsv(const std::string& file, const ConfigurationSurface& surface, const ChartGrid& grid,
                   Progress& progress) {
-  std::optional<output::AtomicFileWriter> writer;
+  std::optional<AtomicFileWriter> writer;
   if (!file.empty()) writer.emplace(file);
   auto emit = [&](const std::string& text) {
     if (writer) {
@@ -256,12 +256,12 @@ void runGeometry(const GeometryArguments& args) {
   if (!args.chart.empty() && args.sweep.empty())
     throw CommandExit(kExitBadInput, "--chart: draws the L sweep; expected --sweep-L A:B:N with it");
   const std::vector<std::string> formats = chartFormats(args.chartFormats);
-  std::vector<output::NamedFile> outputs = {{"--csv", args.csv}, {"--chart", args.chart}};
+  std::vector<NamedFile> outputs = {{"--csv", args.csv}, {"--chart", args.chart}};
   if (!args.maps.empty())
     for (const char* map : {"/curvature.png", "/bending.png", "/stiffness.png"})
       outputs.push_back({"--maps", args.maps + map});
   try {
-    output::requireDistinctFiles({{"the scene", args.scene}, {"--points", args.points}}, outputs);
+    requireDistinctFiles({{"the scene", args.scene}, {"--points", args.points}}, outputs);
   } catch (const std::invalid_argument& error) {
     throw CommandExit(kExitBadInput, "linkage geometry: " + std::string(error.what()));
   }

@@ -83,7 +83,7 @@ void runNumbersCommand(const NumbersArguments& args) {
   if (args.out.empty()) {
     std::cout << text;
   } else {
-    output::writeFileAtomically(args.out, text);
+    writeFileAtomically(args.out, text);
   }
   reportStops(scene, runs, args.quiet);
   summary.print(std::to_string(runs.size()) + " run" + (runs.size() == 1 ? "" : "s") + " of \"" + scene.name + "\"" +

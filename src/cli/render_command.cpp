@@ -99,7 +99,7 @@ RenderPlan planRender(const RenderArguments& args) {
       checkImageSize(scene.output.size, format && traits(*format).needsEvenSize, args.size.empty() ? "output" : "--size");
   if (!plan.video.empty()) {
     for (SceneProblem& problem : checkVideoPath(plan.video, videoPath)) problems.push_back(problem);
-    if (output::sameFile(plan.video, args.scene))
+    if (sameFile(plan.video, args.scene))
       problems.push_back({videoPath, "is the scene file itself; an output never replaces an input"});
   }
   if (!args.videoQuality.empty()) {
@@ -122,14 +122,14 @@ RenderPlan planRender(const RenderArguments& args) {
 nlohmann::json manifestInfo(const RenderPlan& plan) {
   const Scene& scene = plan.scene;
   nlohmann::json info{{"scene", scene.name},
-          {"sceneSha256", output::sha256Hex(reinterpret_cast<const std::uint8_t*>(scene.identity.data()),
+          {"sceneSha256", sha256Hex(reinterpret_cast<const std::uint8_t*>(scene.identity.data()),
                                              scene.identity.size())},
           {"width", scene.output.size.width},
           {"height", scene.output.size.height},
           {"fps", scene.output.fps},
           {"frames", scene.frameCount()}};
   // The encoder decides the files' bytes: shards and resumes of another encoder must not join.
-  if (plan.png) info["png"] = output::PngEncoder::identity(scene.output.pngCompression);
+  if (plan.png) info["png"] = PngEncoder::identity(scene.output.pngCompression);
   return info;
 }
 
@@ -146,17 +146,17 @@ void checkSpaceForFrames(const RenderPlan& plan, Renderer& renderer, FrameBuilde
   if (!plan.png) return;  // x264's output size depends on the motion; a full disk shows up as ffmpeg's error
   const int first = plan.range.first;
   const Image image = renderer.render(builder.frame(first));
-  FrameSpaceNeed need{plan.folder, 0, first, output::PngEncoder(plan.scene.output.pngCompression).encode(image).size(),
+  FrameSpaceNeed need{plan.folder, 0, first, PngEncoder(plan.scene.output.pngCompression).encode(image).size(),
                       image.width, image.height};
   for (int frame = first; frame < plan.range.end; frame += plan.range.step)
-    need.framesToWrite += !fs::exists(fs::path(plan.folder) / output::frameFileName(frame));
+    need.framesToWrite += !fs::exists(fs::path(plan.folder) / frameFileName(frame));
   refuseIfFramesCannotFit(need);
 }
 
 // The frames of the plan's range into the sinks; returns false if interrupted. Counts what it drew and what
 // --resume found complete.
-bool renderFrames(const RenderPlan& plan, output::FrameManifest* pngManifest,
-                  const std::vector<output::FrameSink*>& sinks, Renderer& renderer, FrameBuilder& builder,
+bool renderFrames(const RenderPlan& plan, FrameManifest* pngManifest,
+                  const std::vector<FrameSink*>& sinks, Renderer& renderer, FrameBuilder& builder,
                   int& drawn, int& skipped) {
   Progress progress(plan.range.count(), plan.quiet, "render", "frame");
   long done = 0;
@@ -184,7 +184,7 @@ void sweepOutputFolders(const RenderPlan& plan) {
   if (plan.png) folders.push_back(plan.folder);
   if (!plan.video.empty()) folders.push_back(videoFolder(plan.video));
   for (const std::string& folder : folders) {
-    const std::vector<std::string> removed = output::removeStaleTemporaries(folder);
+    const std::vector<std::string> removed = removeStaleTemporaries(folder);
     if (!removed.empty() && !plan.quiet)
       std::cerr << "removed " << removed.size() << " temporary file(s) an interrupted render left in " << folder
                 << "\n";
@@ -228,34 +228,34 @@ void runRender(const RenderArguments& args) {
   }
   checkSpaceForFrames(plan, renderer, builder);
 
-  std::unique_ptr<output::FrameManifest> pngManifest, videoManifest;
-  std::unique_ptr<output::PngSequenceSink> pngSink;
-  std::unique_ptr<output::VideoSink> videoSink;
-  std::vector<output::FrameSink*> sinks;
+  std::unique_ptr<FrameManifest> pngManifest, videoManifest;
+  std::unique_ptr<PngSequenceSink> pngSink;
+  std::unique_ptr<VideoSink> videoSink;
+  std::vector<FrameSink*> sinks;
   // The encoder starts first: if it cannot, nothing of an earlier render has been replaced yet.
   if (!plan.video.empty()) {
-    videoManifest = std::make_unique<output::FrameManifest>(videoFolder(plan.video), info,
+    videoManifest = std::make_unique<FrameManifest>(videoFolder(plan.video), info,
                                                             fs::path(plan.video).filename().string() + ".manifest.json",
-                                                            output::FrameManifest::Existing::replace,
-                                                            output::FrameManifest::Claim::join, nullptr,
+                                                            FrameManifest::Existing::replace,
+                                                            FrameManifest::Claim::join, nullptr,
                                                             environment().lockWaitSeconds);
     videoManifest->addRenderer(renderer.glRenderer(), renderer.glVersion());
-    output::VideoSettings settings{plan.video, *videoFormatOfPath(plan.video), scene.output.videoQuality,
+    VideoSettings settings{plan.video, *videoFormatOfPath(plan.video), scene.output.videoQuality,
                                    scene.output.size.width, scene.output.size.height, double(scene.output.fps)};
     settings.cancelled = interruptRequested;
     settings.maxStallSeconds = environment().encoderWaitSeconds;
-    videoSink = std::make_unique<output::VideoSink>(settings, *videoManifest);
+    videoSink = std::make_unique<VideoSink>(settings, *videoManifest);
   }
   if (plan.png) {
     // A whole render replaces what the folder held (the edit-render loop); shards and --resume only join.
     const bool whole = (args.frames.empty() && !plan.resume) || args.replace;
     if (!whole) refuseJoiningAnotherRender(plan.folder, info);  // naming what differs, before anything is written
     try {
-      pngManifest = std::make_unique<output::FrameManifest>(
-          plan.folder, info, "manifest.json", output::FrameManifest::Existing::merge,
-          whole ? output::FrameManifest::Claim::supersede : output::FrameManifest::Claim::join, interruptRequested,
+      pngManifest = std::make_unique<FrameManifest>(
+          plan.folder, info, "manifest.json", FrameManifest::Existing::merge,
+          whole ? FrameManifest::Claim::supersede : FrameManifest::Claim::join, interruptRequested,
           environment().lockWaitSeconds);
-    } catch (const output::LockWaitCancelled&) {  // a signal while another render held the folder
+    } catch (const LockWaitCancelled&) {  // a signal while another render held the folder
       stopIfInterrupted("nothing was written yet");
       throw;
     }
@@ -265,7 +265,7 @@ void runRender(const RenderArguments& args) {
                 << " frames removed)\n";
     }
     pngManifest->addRenderer(renderer.glRenderer(), renderer.glVersion());
-    pngSink = std::make_unique<output::PngSequenceSink>(plan.folder, *pngManifest, 2, scene.output.pngCompression);
+    pngSink = std::make_unique<PngSequenceSink>(plan.folder, *pngManifest, 2, scene.output.pngCompression);
     sinks.push_back(pngSink.get());
   }
   if (videoSink) sinks.push_back(videoSink.get());
@@ -275,12 +275,12 @@ void runRender(const RenderArguments& args) {
   try {
     finished = renderFrames(plan, pngManifest.get(), sinks, renderer, builder, drawn, skipped);
   } catch (const RunCancelled&) {  // a signal in the middle of a long frame: handled like one between frames
-  } catch (const output::EncodingCancelled&) {  // a signal while the encoder was not reading
+  } catch (const EncodingCancelled&) {  // a signal while the encoder was not reading
   }
   if (pngSink) pngSink->finish();  // every frame handed over is written whole, interrupted or not
   try {
     if (videoSink && finished) videoSink->finish();
-  } catch (const output::EncodingCancelled&) {  // a signal while the encoder finished the video
+  } catch (const EncodingCancelled&) {  // a signal while the encoder finished the video
     finished = false;
   }
   videoSink.reset();  // unfinished: reaps ffmpeg and removes its temporary, so the video never gets its name

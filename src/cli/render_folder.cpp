@@ -26,14 +26,14 @@ ImageSize previewSize(ImageSize size) {
 void refuseJoiningAnotherRender(const std::string& folder, const nlohmann::json& ours) {
   const std::string path = (std::filesystem::path(folder) / "manifest.json").string();
   if (!std::filesystem::exists(path)) return;  // nothing to join yet
-  output::ManifestContents manifest;
+  ManifestContents manifest;
   try {
-    manifest = output::readManifestFile(path);
-  } catch (const output::ManifestInvalid&) {
+    manifest = readManifestFile(path);
+  } catch (const ManifestInvalid&) {
     return;  // the manifest's own checks report it
   }
   // An earlier version's render: FrameManifest says so (it is never joined, whatever its scene).
-  if (manifest.format != output::kCurrentManifestFormat) return;
+  if (manifest.format != kCurrentManifestFormat) return;
   const nlohmann::json& theirs = manifest.info;
   const auto text = [](const nlohmann::json& info, const char* key) {
     return info.contains(key) ? info[key].dump() : std::string("none");

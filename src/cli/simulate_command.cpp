@@ -69,7 +69,7 @@ class CsvOutput {
                       std::string("linkage simulate: cannot write the CSV to standard output: ") + std::strerror(errno) +
                           (wroteToStdout_ ? " (what went out is incomplete)" : ""));
   }
-  std::optional<output::AtomicFileWriter> file_;
+  std::optional<AtomicFileWriter> file_;
   bool wroteToStdout_ = false;
 };
 
@@ -107,7 +107,7 @@ void runSimulate(const SimulateArguments& args) {
   // Checked before any work, like render's outputs: a writable place that is not a folder or a device, and not
   // the scene or the other output.
   try {
-    output::requireDistinctFiles({{"the scene", args.scene}}, {{"--csv", args.csv}, {"--events", args.events}});
+    requireDistinctFiles({{"the scene", args.scene}}, {{"--csv", args.csv}, {"--events", args.events}});
   } catch (const std::invalid_argument& error) {
     throw CommandExit(kExitBadInput, "linkage simulate: " + std::string(error.what()));
   }
@@ -115,7 +115,7 @@ void runSimulate(const SimulateArguments& args) {
     if (path.empty()) continue;
     std::vector<SceneProblem> problems;
     try {
-      output::outputTarget(path);
+      outputTarget(path);
     } catch (const std::invalid_argument& error) {
       problems.push_back({option, error.what()});
     }
@@ -168,7 +168,7 @@ void runSimulate(const SimulateArguments& args) {
         if (run.stop() && run.stop()->time <= last) add(scene.runs[i].name, m, nameOf(run.stop()->reason), run.stop()->time);
       }
     }
-    output::writeFileAtomically(args.events, text);
+    writeFileAtomically(args.events, text);
   }
   reportStops(scene, runs, args.quiet);
   summary.print(std::to_string(runs.size()) + " run" + (runs.size() == 1 ? "" : "s") + " x " +

@@ -77,10 +77,10 @@ void writeSweepOutputs(const std::vector<StabilityRow>& sweep, const StabilityAr
   const std::string& kind = args.options.kind;
   const std::string csvPath = stabilityCsvPath(args.out, kind);
   const CsvTable rows = stabilityTable(sweep);
-  output::writeFileAtomically(csvPath, csvText(rows));
+  writeFileAtomically(csvPath, csvText(rows));
   const CsvTable summary = stabilitySummary(sweep);
   const std::string summaryText = csvText(summary);
-  output::writeFileAtomically((std::filesystem::path(args.out) / ("stability-" + kind + "-summary.csv")).string(),
+  writeFileAtomically((std::filesystem::path(args.out) / ("stability-" + kind + "-summary.csv")).string(),
                               summaryText);
   std::cout << alignedText(summary) << "wrote " << csvPath << "\n";
   if (args.charts) {
@@ -129,7 +129,7 @@ std::string runStability(StabilityArguments& args) {
   if (args.charts && !gnuplotAvailable())
     throw std::runtime_error("charts need gnuplot with pngcairo: apt-get install gnuplot-nox (or pass --no-charts)");
   std::filesystem::create_directories(args.out);
-  output::removeStaleTemporaries(args.out);  // what a killed run of this command left (docs/hardening.md)
+  removeStaleTemporaries(args.out);  // what a killed run of this command left (docs/hardening.md)
 
   if (args.merge) {
     std::vector<StabilityRow> merged;
@@ -161,7 +161,7 @@ std::string runStability(StabilityArguments& args) {
     return sweep + " -> " + args.out;
   }
   const std::string shardPath = stabilityShardPath(args.out, options.kind, options.shard);
-  output::writeFileAtomically(shardPath, stabilityShardText(options, rows));
+  writeFileAtomically(shardPath, stabilityShardText(options, rows));
   std::cout << "wrote " << shardPath << "\n";
   std::vector<StabilityRow> merged;  // the last shard to finish merges them all
   const std::string shard = sweep + ", shard " + std::to_string(options.shard.index) + "/" +

@@ -109,7 +109,7 @@ void runStill(const StillArguments& args) {
   std::vector<std::uint8_t> png;
   if (!args.transparent) {
     Renderer renderer(scene.view, scene.output.size, environment().shaderFolder);
-    png = output::PngEncoder().encode(renderer.render(state));
+    png = PngEncoder().encode(renderer.render(state));
   } else {
     ViewSettings black = scene.view, white = scene.view;
     black.background = {0, 0, 0};
@@ -120,7 +120,7 @@ void runStill(const StillArguments& args) {
     if (!stbi_write_png_to_func(appendBytes, &png, onBlack.width, onBlack.height, 4, rgba.data(), onBlack.width * 4))
       throw CommandExit(kExitFailure, args.out + ": cannot encode the PNG");
   }
-  output::writeFileAtomically(args.out, png);
+  writeFileAtomically(args.out, png);
   char time[32];
   std::snprintf(time, sizeof time, "%.10g", scene.frameTime(frame));
   summary.print("\"" + scene.name + "\" at t = " + time + ", " + std::to_string(scene.output.size.width) + "x" +

@@ -28,7 +28,7 @@ void runValidate(const ValidateArguments& args) {
   std::vector<SceneProblem> problems = checkOutputFolder(scene.output.folder, "output.folder");
   if (!scene.output.video.empty())
     for (SceneProblem& problem : checkVideoPath(scene.output.video, "output.video")) problems.push_back(problem);
-  if (!scene.output.video.empty() && output::sameFile(scene.output.video, file))
+  if (!scene.output.video.empty() && sameFile(scene.output.video, file))
     problems.push_back({"output.video", "is the scene file itself; an output never replaces an input"});
   failOnProblems(file, problems);
   std::vector<std::string> notes;

@@ -11,7 +11,7 @@
 
 #include "output/temporary_file.hpp"
 
-namespace sl::output {
+namespace sl {
 namespace {
 
 // Removes the temporary (keeping errno for the message) and throws.
@@ -125,4 +125,4 @@ void writeFileAtomically(const std::string& path, const std::string& text, Sync 
   writeFileAtomically(path, reinterpret_cast<const std::uint8_t*>(text.data()), text.size(), sync);
 }
 
-}  // namespace sl::output
+}  // namespace sl

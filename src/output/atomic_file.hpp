@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace sl::output {
+namespace sl {
 
 enum class Sync { none, data };
 
@@ -56,4 +56,4 @@ class AtomicFileWriter {
   int fd_ = -1;
 };
 
-}  // namespace sl::output
+}  // namespace sl

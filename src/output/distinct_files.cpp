@@ -7,7 +7,7 @@
 
 #include "output/atomic_file.hpp"
 
-namespace sl::output {
+namespace sl {
 
 namespace {
 
@@ -50,4 +50,4 @@ void requireDistinctFiles(const std::vector<NamedFile>& inputs, const std::vecto
   }
 }
 
-}  // namespace sl::output
+}  // namespace sl

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace sl::output {
+namespace sl {
 
 struct NamedFile {
   std::string role;  // how the command line or the scene names it: "--csv", "the scene", "output.video"
@@ -20,4 +20,4 @@ void requireDistinctFiles(const std::vector<NamedFile>& inputs, const std::vecto
 // same absolute path otherwise).
 bool sameFile(const std::string& a, const std::string& b);
 
-}  // namespace sl::output
+}  // namespace sl

@@ -13,7 +13,7 @@
 #define SL_FAST_PNG_X86 1
 #endif
 
-namespace sl::output {
+namespace sl {
 namespace {
 
 // === The byte-level work, twice: portable and AVX2. Both compute exactly the same results.
@@ -454,4 +454,4 @@ std::vector<std::uint8_t> encodeFastPng(const Image& image, FastPngScratch& scra
   return png;
 }
 
-}  // namespace sl::output
+}  // namespace sl

@@ -18,7 +18,7 @@
 
 #include "contracts/image.hpp"
 
-namespace sl::output {
+namespace sl {
 
 enum class FastPngPath {
   automatic,  // AVX2 where the CPU has it, else portable
@@ -39,4 +39,4 @@ struct FastPngScratch {
 std::vector<std::uint8_t> encodeFastPng(const Image& image, FastPngScratch& scratch,
                                         FastPngPath path = FastPngPath::automatic);
 
-}  // namespace sl::output
+}  // namespace sl

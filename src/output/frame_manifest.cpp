@@ -20,7 +20,7 @@
 #include "output/atomic_file.hpp"
 #include "output/sha256.hpp"
 
-namespace sl::output {
+namespace sl {
 namespace {
 
 constexpr const char* kFormat = "sphere-linkages frame manifest 2";
@@ -377,4 +377,4 @@ bool FrameManifest::isFrameComplete(int frame) const {
   return sha256OfFile(folder_ + "/" + e->file) == e->fileSha256;
 }
 
-}  // namespace sl::output
+}  // namespace sl

@@ -59,7 +59,7 @@
 
 #include "contracts/limits.hpp"
 
-namespace sl::output {
+namespace sl {
 
 struct FrameEntry {
   int frame = 0;
@@ -146,4 +146,4 @@ class FrameManifest {
   int supersededFrames_ = 0;
 };
 
-}  // namespace sl::output
+}  // namespace sl

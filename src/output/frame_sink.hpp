@@ -5,7 +5,7 @@
 
 #include "contracts/image.hpp"
 
-namespace sl::output {
+namespace sl {
 
 class FrameSink {
  public:
@@ -14,4 +14,4 @@ class FrameSink {
   virtual void finish() = 0;
 };
 
-}  // namespace sl::output
+}  // namespace sl

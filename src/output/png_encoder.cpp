@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace sl::output {
+namespace sl {
 namespace {
 
 void put32(std::vector<std::uint8_t>& out, std::uint32_t v) {
@@ -72,4 +72,4 @@ std::vector<std::uint8_t> PngEncoder::encode(const Image& image) {
   return png;
 }
 
-}  // namespace sl::output
+}  // namespace sl

@@ -17,7 +17,7 @@
 #include "contracts/registry.hpp"
 #include "output/fast_png.hpp"
 
-namespace sl::output {
+namespace sl {
 
 class PngEncoder {
  public:
@@ -39,4 +39,4 @@ class PngEncoder {
   std::vector<std::uint8_t> filtered_;  // for small; reused between frames
 };
 
-}  // namespace sl::output
+}  // namespace sl

@@ -7,7 +7,7 @@
 #include "output/png_encoder.hpp"
 #include "output/sha256.hpp"
 
-namespace sl::output {
+namespace sl {
 
 std::string frameFileName(int frameIndex) {
   char name[32];
@@ -42,4 +42,4 @@ void PngSequenceSink::finish() {
   manifest_.flush();
 }
 
-}  // namespace sl::output
+}  // namespace sl

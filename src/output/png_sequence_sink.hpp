@@ -11,7 +11,7 @@
 #include "output/frame_sink.hpp"
 #include "output/worker_pool.hpp"
 
-namespace sl::output {
+namespace sl {
 
 // "frame_00042.png" (at least five digits).
 std::string frameFileName(int frameIndex);
@@ -35,4 +35,4 @@ class PngSequenceSink : public FrameSink {
   std::unique_ptr<WorkerPool> workers_;
 };
 
-}  // namespace sl::output
+}  // namespace sl

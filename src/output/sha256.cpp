@@ -5,7 +5,7 @@
 #include <fstream>
 #include <stdexcept>
 
-namespace sl::output {
+namespace sl {
 namespace {
 
 std::string hex(const unsigned char* digest, unsigned size) {
@@ -44,4 +44,4 @@ std::string sha256OfFile(const std::string& path) {
   return hex(digest, length);
 }
 
-}  // namespace sl::output
+}  // namespace sl

@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <sstream>
 
-namespace sl::output {
+namespace sl {
 namespace {
 
 constexpr const char* kMarker = ".tmp.";
@@ -75,4 +75,4 @@ std::vector<std::string> removeStaleTemporaries(const std::string& folder) {
   return removed;
 }
 
-}  // namespace sl::output
+}  // namespace sl

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace sl::output {
+namespace sl {
 
 // A fresh temporary path for `finalPath`, unique within this process (serial) and across processes (host, pid).
 // Anything appended to it (an extension) is still recognised by the sweep.
@@ -22,4 +22,4 @@ std::string temporaryPathFor(const std::string& finalPath);
 // their names. Temporaries of live processes and of other hosts stay. A missing folder has none.
 std::vector<std::string> removeStaleTemporaries(const std::string& folder);
 
-}  // namespace sl::output
+}  // namespace sl

@@ -28,7 +28,7 @@
 
 extern char** environ;
 
-namespace sl::output {
+namespace sl {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -279,4 +279,4 @@ void VideoSink::finish() {
   manifest_.flush();
 }
 
-}  // namespace sl::output
+}  // namespace sl

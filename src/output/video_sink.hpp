@@ -27,7 +27,7 @@
 #include "output/frame_sink.hpp"
 #include "output/worker_pool.hpp"
 
-namespace sl::output {
+namespace sl {
 
 struct VideoSettings {
   std::string path;  // e.g. "out/animation.mp4"
@@ -73,4 +73,4 @@ class VideoSink : public FrameSink {
   std::unique_ptr<WorkerPool> writer_;
 };
 
-}  // namespace sl::output
+}  // namespace sl

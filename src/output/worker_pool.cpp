@@ -4,7 +4,7 @@
 
 #include "contracts/parallel_for.hpp"
 
-namespace sl::output {
+namespace sl {
 
 WorkerPool::WorkerPool(int threads, int capacity) : capacity_(static_cast<std::size_t>(std::max(1, capacity))) {
   // A thread that cannot start (a process limit, no memory) leaves fewer workers; with none, submit() runs
@@ -80,4 +80,4 @@ void WorkerPool::run() {
   }
 }
 
-}  // namespace sl::output
+}  // namespace sl

@@ -12,7 +12,7 @@
 #include <thread>
 #include <vector>
 
-namespace sl::output {
+namespace sl {
 
 class WorkerPool {
  public:
@@ -37,4 +37,4 @@ class WorkerPool {
   std::vector<std::thread> threads_;
 };
 
-}  // namespace sl::output
+}  // namespace sl

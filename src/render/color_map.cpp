@@ -8,7 +8,7 @@
 
 #include "render/palette.hpp"
 
-namespace sl::render {
+namespace sl {
 namespace {
 
 using Stops = std::array<Rgba, 9>;
@@ -186,4 +186,4 @@ void drawColorBar(const ColorScale& scale, const std::string& label, const std::
   }
 }
 
-}  // namespace sl::render
+}  // namespace sl

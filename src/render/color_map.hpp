@@ -13,7 +13,7 @@
 #include "render/shape_batch.hpp"
 #include "render/sphere_camera.hpp"
 
-namespace sl::render {
+namespace sl {
 
 struct ColorScale {
   double min = 0, max = 1;
@@ -45,4 +45,4 @@ std::string tickLabel(double value, double step);
 void drawColorBar(const ColorScale& scale, const std::string& label, const std::string& note, const PixelRect& area,
                   const FontAtlas& font, ShapeBatch& batch);
 
-}  // namespace sl::render
+}  // namespace sl

@@ -13,7 +13,7 @@
 #include "render/shape_batch.hpp"
 #include "render/sphere_camera.hpp"
 
-namespace sl::render {
+namespace sl {
 
 // How the unit sphere of a sphere panel is shaded: opaque with the chart grid (4 rods), glass (the ball
 // of 5+ rods, the circle of 3), or opaque and coloured by DrawList::sphereField (4 rods, view.sphere.color_by).
@@ -51,4 +51,4 @@ struct DrawList {
   std::vector<PanelDrawing> panels;         // in layout order
 };
 
-}  // namespace sl::render
+}  // namespace sl

@@ -11,7 +11,7 @@
 #define STBTT_STATIC
 #include <stb/stb_truetype.h>
 
-namespace sl::render {
+namespace sl {
 namespace {
 
 // Printable ASCII, Greek (phi, theta, pi, ...), and the symbols labels use: degree, plus-minus, minus (U+2212),
@@ -176,4 +176,4 @@ float FontAtlas::draw(ShapeBatch& batch, const std::string& utf8, TextSize size,
   return x;
 }
 
-}  // namespace sl::render
+}  // namespace sl

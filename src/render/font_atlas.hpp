@@ -10,7 +10,7 @@
 
 #include "render/shape_batch.hpp"
 
-namespace sl::render {
+namespace sl {
 
 enum class TextSize { Small = 0, Normal = 1, Title = 2 };
 
@@ -51,4 +51,4 @@ class FontAtlas {
 // UTF-8 to code points; malformed bytes become U+FFFD.
 std::vector<std::uint32_t> decodeUtf8(const std::string& text);
 
-}  // namespace sl::render
+}  // namespace sl

@@ -9,7 +9,7 @@
 #include "render/panel_layout.hpp"
 #include "render/panels.hpp"
 
-namespace sl::render {
+namespace sl {
 namespace {
 
 constexpr const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";  // Debian's fonts-dejavu-core
@@ -81,4 +81,4 @@ DrawList FrameComposer::compose(const FrameState& frame) const {
   return list;
 }
 
-}  // namespace sl::render
+}  // namespace sl

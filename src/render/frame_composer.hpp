@@ -10,7 +10,7 @@
 #include "render/draw_list.hpp"
 #include "render/font_atlas.hpp"
 
-namespace sl::render {
+namespace sl {
 
 class FrameComposer {
  public:
@@ -36,4 +36,4 @@ class FrameComposer {
   std::vector<PixelRect> rects_;
 };
 
-}  // namespace sl::render
+}  // namespace sl

@@ -9,7 +9,7 @@
 #include "render/panels.hpp"
 #include "render/plane_view.hpp"
 
-namespace sl::render {
+namespace sl {
 namespace {
 
 void drawFloor(const PlaneView& view, double base, float rod, float unit, ShapeBatch& batch) {
@@ -125,4 +125,4 @@ void drawLinkagePanel(const PanelContext& context, ShapeBatch& batch) {
   }
 }
 
-}  // namespace sl::render
+}  // namespace sl

@@ -3,7 +3,7 @@
 
 #include "render/shape_batch.hpp"
 
-namespace sl::render::palette {
+namespace sl::palette {
 
 inline constexpr Rgba sphereCream{0.93f, 0.87f, 0.74f, 1};
 inline constexpr Rgba sphereGrid{0.55f, 0.47f, 0.38f, 1};
@@ -20,4 +20,4 @@ inline constexpr Rgba stopRed{0.70f, 0.12f, 0.10f, 1};
 
 inline Rgba withAlpha(Rgba c, float a) { return {c.r, c.g, c.b, a}; }
 
-}  // namespace sl::render::palette
+}  // namespace sl::palette

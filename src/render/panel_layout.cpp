@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace sl::render {
+namespace sl {
 
 std::vector<PanelSpec> effectivePanels(const ViewSettings& settings) {
   if (!settings.panels.empty()) return settings.panels;
@@ -65,4 +65,4 @@ std::vector<PixelRect> layoutPanels(const std::vector<PanelSpec>& panels, int wi
   return rects;
 }
 
-}  // namespace sl::render
+}  // namespace sl

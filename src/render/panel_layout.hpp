@@ -9,7 +9,7 @@
 #include "contracts/view_settings.hpp"
 #include "render/sphere_camera.hpp"
 
-namespace sl::render {
+namespace sl {
 
 // The panels to draw: settings.panels, or sphere + linkage + text when none are given.
 std::vector<PanelSpec> effectivePanels(const ViewSettings& settings);
@@ -18,4 +18,4 @@ std::vector<PanelSpec> effectivePanels(const ViewSettings& settings);
 std::vector<PixelRect> layoutPanels(const std::vector<PanelSpec>& panels, int width, int height,
                                     float reservedTop = 0);
 
-}  // namespace sl::render
+}  // namespace sl

@@ -13,7 +13,7 @@
 #include "render/shape_batch.hpp"
 #include "render/sphere_camera.hpp"
 
-namespace sl::render {
+namespace sl {
 
 struct PanelContext {
   const FrameState& frame;
@@ -69,4 +69,4 @@ inline Rgba memberColor(const ColorRGB& c, std::size_t m, std::size_t count, flo
   return {ramp(c.r), ramp(c.g), ramp(c.b), alpha};
 }
 
-}  // namespace sl::render
+}  // namespace sl

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace sl::render {
+namespace sl {
 
 namespace {
 
@@ -64,4 +64,4 @@ PlaneView fitFrameView(const FrameState& frame, const PixelRect& area, float cap
   return fitBox(box, chains);
 }
 
-}  // namespace sl::render
+}  // namespace sl

@@ -6,7 +6,7 @@
 #include "render/shape_batch.hpp"
 #include "render/sphere_camera.hpp"
 
-namespace sl::render {
+namespace sl {
 
 struct PlaneView {
   double scale, originX, originY;
@@ -24,4 +24,4 @@ PlaneView fitChainView(int rods, double baseLength, const PixelRect& area);
 // `captionHeight` pixels at the area's foot are kept for a caption (side-by-side runs are named underneath).
 PlaneView fitFrameView(const FrameState& frame, const PixelRect& area, float captionHeight = 0);
 
-}  // namespace sl::render
+}  // namespace sl

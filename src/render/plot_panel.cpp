@@ -9,7 +9,7 @@
 #include "render/palette.hpp"
 #include "render/panels.hpp"
 
-namespace sl::render {
+namespace sl {
 namespace {
 
 struct Axis {
@@ -331,4 +331,4 @@ void drawPlotPanel(const PanelContext& c, int plotIndex, ShapeBatch& batch) {
     layLegend(c, plot, layout.legendX, layout.legendRight, layout.legendBaseline, line, layout.legendRows, &batch);
 }
 
-}  // namespace sl::render
+}  // namespace sl

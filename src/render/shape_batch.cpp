@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace sl::render {
+namespace sl {
 namespace {
 
 constexpr float kMargin = 1.0f;  // pixels of quad beyond the shape, room for the anti-aliased edge
@@ -147,4 +147,4 @@ void ShapeBatch::glyph(float x0, float y0, float x1, float y1, float u0, float v
   quad(corners);
 }
 
-}  // namespace sl::render
+}  // namespace sl

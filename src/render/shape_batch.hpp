@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace sl::render {
+namespace sl {
 
 struct P2 {
   float x = 0, y = 0;
@@ -78,4 +78,4 @@ class ShapeBatch {
   std::vector<ShapeSegment> segments_;
 };
 
-}  // namespace sl::render
+}  // namespace sl

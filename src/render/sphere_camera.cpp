@@ -5,7 +5,7 @@
 
 #include "contracts/limits.hpp"
 
-namespace sl::render {
+namespace sl {
 namespace {
 
 V3 operator*(double s, const V3& v) { return {s * v.x, s * v.y, s * v.z}; }
@@ -56,4 +56,4 @@ double SphereCamera::pixelsPerUnitAt(const V3& p) const { return focal_ / std::m
 
 bool SphereCamera::inFront(const V3& p) const { return dot(p - eye_, forward_) > 1e-3; }
 
-}  // namespace sl::render
+}  // namespace sl

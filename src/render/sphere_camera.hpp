@@ -6,7 +6,7 @@
 #include "contracts/view_settings.hpp"
 #include "render/shape_batch.hpp"
 
-namespace sl::render {
+namespace sl {
 
 struct PixelRect {
   float x = 0, y = 0, width = 0, height = 0;  // pixels, y down
@@ -39,4 +39,4 @@ class SphereCamera {
   P2 centre_;
 };
 
-}  // namespace sl::render
+}  // namespace sl

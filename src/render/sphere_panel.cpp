@@ -10,7 +10,7 @@
 #include "render/panels.hpp"
 #include "render/panel_layout.hpp"
 
-namespace sl::render {
+namespace sl {
 namespace {
 
 constexpr double kTubeRadius = 0.014;  // world units (sphere radius 1)
@@ -381,4 +381,4 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   return {camera, look};
 }
 
-}  // namespace sl::render
+}  // namespace sl

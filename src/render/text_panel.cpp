@@ -7,7 +7,7 @@
 #include "render/palette.hpp"
 #include "render/panels.hpp"
 
-namespace sl::render {
+namespace sl {
 namespace {
 
 std::string format(const char* pattern, double value) {
@@ -156,4 +156,4 @@ void drawTitleLine(const PanelContext& c, ShapeBatch& batch) {
   c.font.draw(batch, time, TextSize::Normal, c.rect.x + c.rect.width - pad - timeWidth, y, palette::ink);
 }
 
-}  // namespace sl::render
+}  // namespace sl

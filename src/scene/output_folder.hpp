@@ -19,7 +19,7 @@ std::vector<SceneProblem> checkOutputFolder(const std::string& folder, const std
 
 // A file path that can work (a CSV, an events file): a usable path naming a file, not a folder (no trailing '/'),
 // whose name leaves room for the temporary beside it, in a folder where a file can be created. Links and devices
-// are output::outputTarget's to judge.
+// are outputTarget's to judge.
 std::vector<SceneProblem> checkOutputFile(const std::string& file, const std::string& jsonPath);
 
 // A video path that can work: a known extension (.mp4, .webm, .gif), a file name (not a folder, no trailing

@@ -79,7 +79,7 @@ TEST(StabilitySweep, MergedShardsEqualASingleRunByteForByte) {
     StabilityOptions shard = options;
     shard.shard = {k, 3};
     shard.threads = 1;
-    output::writeFileAtomically(stabilityShardPath(folder, options.kind, shard.shard),
+    writeFileAtomically(stabilityShardPath(folder, options.kind, shard.shard),
                                 stabilityShardText(shard, runStabilitySweep(shard)));
   }
   EXPECT_EQ(stabilityShardCounts(folder, options.kind), std::vector<int>{3});
@@ -108,12 +108,12 @@ TEST(StabilitySweep, MergingShardsOfDifferentSweepsIsRefusedNamingTheDifference)
     const std::string folder = sl::testing::freshTestFolder("mixed");
     StabilityOptions first = options;
     first.shard = {1, 2};
-    output::writeFileAtomically(stabilityShardPath(folder, "seam", first.shard),
+    writeFileAtomically(stabilityShardPath(folder, "seam", first.shard),
                                 stabilityShardText(first, runStabilitySweep(first)));
     StabilityOptions second = options;
     change(second);
     second.shard = {2, 2};
-    output::writeFileAtomically(stabilityShardPath(folder, "seam", second.shard),
+    writeFileAtomically(stabilityShardPath(folder, "seam", second.shard),
                                 stabilityShardText(second, runStabilitySweep(second)));
     std::vector<StabilityRow> merged;
     try {
@@ -152,8 +152,8 @@ TEST(StabilitySweep, ShardFilesAreReadStrictly) {
   for (const auto& [text, expected] : cases) {
     SCOPED_TRACE(expected);
     const std::string folder = sl::testing::freshTestFolder("strict");
-    output::writeFileAtomically(stabilityShardPath(folder, "seam", {1, 2}), text);
-    output::writeFileAtomically(stabilityShardPath(folder, "seam", {2, 2}), other);
+    writeFileAtomically(stabilityShardPath(folder, "seam", {1, 2}), text);
+    writeFileAtomically(stabilityShardPath(folder, "seam", {2, 2}), other);
     std::vector<StabilityRow> merged;
     try {
       mergeStabilityShards(folder, "seam", 2, merged);

@@ -41,10 +41,10 @@ void simulateAnotherRenderer(const fs::path& folder) {
       std::uint8_t& value = image.rgb[3 * p + size_t(channel)];
       value = static_cast<std::uint8_t>(value + delta >= 0 && value + delta <= 255 ? value + delta : value - delta);
     }
-    const std::vector<std::uint8_t> png = output::PngEncoder().encode(image);
+    const std::vector<std::uint8_t> png = PngEncoder().encode(image);
     writeFile(file, std::string(png.begin(), png.end()));
-    entry["pixelSha256"] = output::sha256Hex(image.rgb);
-    entry["fileSha256"] = output::sha256Hex(png);
+    entry["pixelSha256"] = sha256Hex(image.rgb);
+    entry["fileSha256"] = sha256Hex(png);
   }
   manifest["renderers"] = {"simulated other renderer | 4.5 (Core Profile) Mesa 99.0"};
   writeFile(folder / "manifest.json", manifest.dump(1));

@@ -11,7 +11,7 @@
 #include "support/files.hpp"
 #include "support/temp_folder.hpp"
 
-namespace sl::output {
+namespace sl {
 namespace {
 
 TEST(AtomicFile, ReadersSeeOnlyWholeFiles) {
@@ -47,4 +47,4 @@ TEST(AtomicFile, UnwritableFolderNamesThePath) {
 }
 
 }  // namespace
-}  // namespace sl::output
+}  // namespace sl

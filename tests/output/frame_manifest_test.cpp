@@ -19,7 +19,7 @@
 #include "support/files.hpp"
 #include "support/temp_folder.hpp"
 
-namespace sl::output {
+namespace sl {
 namespace {
 
 using testing::readFile;
@@ -289,4 +289,4 @@ TEST(FrameManifest, SurvivesSigkill) {
 }
 
 }  // namespace
-}  // namespace sl::output
+}  // namespace sl

@@ -18,7 +18,7 @@
 #include "output/png_encoder.hpp"
 #include "output/sha256.hpp"
 
-namespace sl::output {
+namespace sl {
 namespace {
 
 Image gradientWithNoise(int w, int h) {
@@ -205,4 +205,4 @@ TEST(Sha256, KnownDigests) {
 }
 
 }  // namespace
-}  // namespace sl::output
+}  // namespace sl

@@ -13,7 +13,7 @@
 #include "output/video_sink.hpp"
 #include "support/temp_folder.hpp"
 
-namespace sl::output {
+namespace sl {
 namespace {
 
 Image gradient(int w, int h, int frame) {
@@ -189,4 +189,4 @@ TEST(VideoSink, FfmpegFailureIsReported) {
 }
 
 }  // namespace
-}  // namespace sl::output
+}  // namespace sl

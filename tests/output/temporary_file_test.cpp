@@ -11,7 +11,7 @@
 #include "output/temporary_file.hpp"
 #include "support/temp_folder.hpp"
 
-namespace sl::output {
+namespace sl {
 namespace {
 
 namespace fs = std::filesystem;
@@ -68,4 +68,4 @@ TEST(TemporaryFile, SweepRemovesOnlyLeftoversOfEndedLocalWriters) {
 }
 
 }  // namespace
-}  // namespace sl::output
+}  // namespace sl

@@ -7,7 +7,7 @@
 
 #include "contracts/parallel_for.hpp"
 
-namespace sl::output {
+namespace sl {
 namespace {
 
 TEST(WorkerPool, ThreadsThatCannotStartLeaveFewerWorkersOrNone) {
@@ -42,4 +42,4 @@ TEST(WorkerPool, AJobsExceptionReachesTheCallerWithOrWithoutThreads) {
 }
 
 }  // namespace
-}  // namespace sl::output
+}  // namespace sl

@@ -7,7 +7,7 @@
 #include "render/color_map.hpp"
 #include "render/frame_composer.hpp"
 
-namespace sl::render {
+namespace sl {
 namespace {
 
 float lightness(Rgba c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
@@ -150,9 +150,9 @@ TEST(SpherePanel, DecorationColoursTheSphereAndMakesRoomForTheBar) {
 }
 
 }  // namespace
-}  // namespace sl::render
+}  // namespace sl
 
-namespace sl::render {
+namespace sl {
 namespace {
 
 // Titles and captions give way rather than overflow: cut after a whole word (at a code point in a single word),
@@ -224,4 +224,4 @@ TEST(FontAtlas, WrappedTextKeepsItsWordsWithinTheWidth) {
 }
 
 }  // namespace
-}  // namespace sl::render
+}  // namespace sl

@@ -13,7 +13,7 @@
 #include "render/plane_view.hpp"
 #include "render/shape_batch.hpp"
 
-namespace sl::render {
+namespace sl {
 namespace {
 
 ViewSettings fourPanels() {
@@ -334,4 +334,4 @@ TEST(DrawList, SizeOutsideTheLimitsIsRefusedBeforeAnyGl) {
 }
 
 }  // namespace
-}  // namespace sl::render
+}  // namespace sl

@@ -57,13 +57,13 @@ double differingFraction(const Image& a, const Image& b, int levels, Image& diff
 void regenerate(Renderer& renderer) {
   nlohmann::json reference{
       {"glRenderer", renderer.glRenderer()}, {"glVersion", renderer.glVersion()}, {"frames", nlohmann::json::array()}};
-  output::PngEncoder encoder;
+  PngEncoder encoder;
   for (const auto& [name, state] : testing::referenceFrames()) {
     const Image image = renderer.render(state);
-    output::writeFileAtomically(kFolder + "/" + name + ".png", encoder.encode(image));
-    reference["frames"].push_back({{"name", name}, {"pixelSha256", output::sha256Hex(image.rgb)}});
+    writeFileAtomically(kFolder + "/" + name + ".png", encoder.encode(image));
+    reference["frames"].push_back({{"name", name}, {"pixelSha256", sha256Hex(image.rgb)}});
   }
-  output::writeFileAtomically(kFolder + "/reference.json", reference.dump(1) + "\n");
+  writeFileAtomically(kFolder + "/reference.json", reference.dump(1) + "\n");
 }
 
 TEST(FrameChecksum, ReferenceFramesMatch) {
@@ -79,7 +79,7 @@ TEST(FrameChecksum, ReferenceFramesMatch) {
       reference.at("glRenderer") == renderer.glRenderer() && reference.at("glVersion") == renderer.glVersion();
   const auto frames = testing::referenceFrames();
   ASSERT_EQ(reference.at("frames").size(), frames.size());
-  output::PngEncoder encoder;
+  PngEncoder encoder;
   for (std::size_t k = 0; k < frames.size(); ++k) {
     const auto& entry = reference.at("frames")[k];
     ASSERT_EQ(entry.at("name"), frames[k].name);
@@ -87,13 +87,13 @@ TEST(FrameChecksum, ReferenceFramesMatch) {
     const Image expected = decodePng(kFolder + "/" + frames[k].name + ".png");
     ASSERT_EQ(expected.rgb.size(), image.rgb.size()) << frames[k].name << ".png unreadable or of another size";
     // The stored PNG is lossless: its pixels must hash to the recorded checksum.
-    ASSERT_EQ(output::sha256Hex(expected.rgb), entry.at("pixelSha256")) << frames[k].name << ".png was edited";
+    ASSERT_EQ(sha256Hex(expected.rgb), entry.at("pixelSha256")) << frames[k].name << ".png was edited";
     Image diff;
     const double fraction = differingFraction(image, expected, 8, diff);
-    const bool ok = sameRenderer ? output::sha256Hex(image.rgb) == entry.at("pixelSha256") : fraction <= 0.01;
+    const bool ok = sameRenderer ? sha256Hex(image.rgb) == entry.at("pixelSha256") : fraction <= 0.01;
     if (!ok) {
-      output::writeFileAtomically(frames[k].name + "_actual.png", encoder.encode(image));
-      output::writeFileAtomically(frames[k].name + "_diff.png", encoder.encode(diff));
+      writeFileAtomically(frames[k].name + "_actual.png", encoder.encode(image));
+      writeFileAtomically(frames[k].name + "_diff.png", encoder.encode(diff));
     }
     EXPECT_TRUE(ok) << frames[k].name << ": " << (sameRenderer ? "raw-pixel SHA-256 differs" : "too many pixels differ")
                     << " (" << 100 * fraction << "% beyond 8 levels); wrote " << frames[k].name << "_diff.png";

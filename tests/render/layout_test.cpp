@@ -12,7 +12,7 @@
 #include "render/plane_view.hpp"
 #include "render/sphere_camera.hpp"
 
-namespace sl::render {
+namespace sl {
 namespace {
 
 TEST(LinkageView, EveryConfigurationFitsInsideThePanel) {
@@ -168,4 +168,4 @@ TEST(SphereCamera, ProjectionAgreesWithPixelRays) {
 }
 
 }  // namespace
-}  // namespace sl::render
+}  // namespace sl

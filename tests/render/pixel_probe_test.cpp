@@ -33,8 +33,8 @@ ViewSettings probeSettings() {
   return s;
 }
 
-render::PixelRect panelRect(const ViewSettings& s, PanelKind kind) {
-  const auto rects = render::layoutPanels(s.panels, testing::kWidth, testing::kHeight);
+PixelRect panelRect(const ViewSettings& s, PanelKind kind) {
+  const auto rects = layoutPanels(s.panels, testing::kWidth, testing::kHeight);
   for (std::size_t i = 0; i < s.panels.size(); ++i)
     if (s.panels[i].kind == kind) return rects[i];
   return {};
@@ -65,7 +65,7 @@ class PixelProbe : public ::testing::Test {
   Renderer renderer{settings, testing::kSmallSize};
   FrameState frame = probeFrame();
   Image image = renderer.render(frame);
-  render::SphereCamera camera{settings.camera, frame.time, panelRect(settings, PanelKind::Sphere)};
+  SphereCamera camera{settings.camera, frame.time, panelRect(settings, PanelKind::Sphere)};
 };
 
 TEST_F(PixelProbe, BackgroundInTheCorner) {
@@ -75,21 +75,21 @@ TEST_F(PixelProbe, BackgroundInTheCorner) {
 }
 
 TEST_F(PixelProbe, SphereColourAtItsCentre) {
-  const render::P2 centre = camera.project({0, 0, 0});
+  const P2 centre = camera.project({0, 0, 0});
   const Rgb8 c = pixel(image, int(centre.x), int(centre.y) - 6);  // above the path, mid-cell
   EXPECT_TRUE(isCream(c)) << c.r << " " << c.g << " " << c.b;
 }
 
 TEST_F(PixelProbe, PathColourAtAProjectedPathPoint) {
   const Vec3 p = onSphere(7.5 * kDeg, 30 * kDeg);  // visible: 22.5 deg from the view direction
-  const render::P2 at = camera.project({p.x * 1.014, p.y * 1.014, p.z * 1.014});
+  const P2 at = camera.project({p.x * 1.014, p.y * 1.014, p.z * 1.014});
   const Rgb8 c = pixel(image, int(at.x), int(at.y));
   EXPECT_TRUE(isRunRed(c)) << c.r << " " << c.g << " " << c.b;
 }
 
 TEST_F(PixelProbe, PathBehindTheSphereIsHidden) {
   const Vec3 p = onSphere(7.5 * kDeg, 150 * kDeg);  // 142.5 deg from the view direction: far side
-  const render::P2 at = camera.project({p.x * 1.014, p.y * 1.014, p.z * 1.014});
+  const P2 at = camera.project({p.x * 1.014, p.y * 1.014, p.z * 1.014});
   const Rgb8 c = pixel(image, int(at.x), int(at.y));
   EXPECT_FALSE(isRunRed(c)) << c.r << " " << c.g << " " << c.b;
   EXPECT_TRUE(isCream(c)) << c.r << " " << c.g << " " << c.b;
@@ -106,7 +106,7 @@ TEST_F(PixelProbe, CoincidingRunsBothShowAcrossThePath) {
   two.runs[1].color = {0.0f, 0.45f, 0.70f};
   const Image picture = renderer.render(two);
   const Vec3 p = onSphere(7.5 * kDeg, 30 * kDeg);
-  const render::P2 at = camera.project({p.x * 1.014, p.y * 1.014, p.z * 1.014});
+  const P2 at = camera.project({p.x * 1.014, p.y * 1.014, p.z * 1.014});
   bool red = false, blue = false;
   for (int dy = -8; dy <= 8; ++dy) {  // the path runs roughly across the panel here: step across it
     const Rgb8 c = pixel(picture, int(at.x), int(at.y) + dy);
@@ -121,7 +121,7 @@ TEST_F(PixelProbe, CoincidingRunsBothShowAcrossThePath) {
 // The current state behind the sphere is ghosted through it instead of vanishing.
 TEST_F(PixelProbe, CurrentStateBehindTheSphereIsGhostedThroughIt) {
   const Vec3 behind = onSphere(7.5 * kDeg, 187.5 * kDeg);  // the path's end, on the far side
-  const render::P2 at = camera.project({behind.x * 1.055, behind.y * 1.055, behind.z * 1.055});
+  const P2 at = camera.project({behind.x * 1.055, behind.y * 1.055, behind.z * 1.055});
   const Rgb8 c = pixel(image, int(at.x), int(at.y));
   FrameState without = frame;
   without.runs[0].current = {NAN, NAN, NAN};  // no state drawn at all
@@ -132,11 +132,11 @@ TEST_F(PixelProbe, CurrentStateBehindTheSphereIsGhostedThroughIt) {
 
 TEST_F(PixelProbe, PinsAreCharcoal) {
   // Side by side (one run): the run's name has its line at the foot of the panel.
-  const render::FrameComposer composer(settings, testing::kSmallSize);
-  const auto view = render::fitFrameView(frame, panelRect(settings, PanelKind::Linkage),
-                                         render::captionHeight(composer.font()));
+  const FrameComposer composer(settings, testing::kSmallSize);
+  const auto view = fitFrameView(frame, panelRect(settings, PanelKind::Linkage),
+                                         captionHeight(composer.font()));
   for (double x : {0.0, frame.runs[0].baseLength}) {
-    const render::P2 pin = view(x, 0);
+    const P2 pin = view(x, 0);
     const float rod = std::max(1.5f, float(0.045 * view.scale));
     const Rgb8 c = pixel(image, int(pin.x), int(pin.y - 1.4f * rod));  // on the bolt, off its silver centre
     EXPECT_LT(std::max({c.r, c.g, c.b}), 110) << "pin at x = " << x << ": " << c.r << " " << c.g << " " << c.b;
@@ -148,7 +148,7 @@ TEST_F(PixelProbe, NoAntialiasingStillDrawsTheSameScene) {
   aliased.antialias = false;
   Renderer plain(aliased, testing::kSmallSize);
   const Image hard = plain.render(frame);
-  const render::P2 centre = camera.project({0, 0, 0});
+  const P2 centre = camera.project({0, 0, 0});
   EXPECT_TRUE(isCream(pixel(hard, int(centre.x), int(centre.y) - 6)));
   EXPECT_NE(hard.rgb, image.rgb);  // edges differ
 }
@@ -167,7 +167,7 @@ TEST_F(PixelProbe, BallViewMarksTheStartOverThePath) {
     run.pathTimes.push_back(ball.time);
   }
   run.current = run.path.back();
-  const render::P2 centre = camera.project({0, 0, 0});
+  const P2 centre = camera.project({0, 0, 0});
   const Rgb8 mark = pixel(renderer.render(ball), int(centre.x), int(centre.y));
   EXPECT_FALSE(isRunRed(mark)) << "the path hides the start: " << mark.r << " " << mark.g << " " << mark.b;
   EXPECT_LT(mark.r + mark.g + mark.b, 3 * 90) << "expected the dark start mark";
@@ -189,7 +189,7 @@ TEST_F(PixelProbe, BallViewLeavesAGapWhereThePathJumpsThroughTheAntipode) {
     return ball;
   };
   // Probed beside the centre, where the start's cross is drawn over the path.
-  const render::P2 probe = camera.project({0.4, 0, 0});
+  const P2 probe = camera.project({0.4, 0, 0});
   const Rgb8 drawn = pixel(renderer.render(ballFrame(false)), int(probe.x), int(probe.y));
   EXPECT_TRUE(isRunRed(drawn)) << drawn.r << " " << drawn.g << " " << drawn.b;
   const Rgb8 gap = pixel(renderer.render(ballFrame(true)), int(probe.x), int(probe.y));
@@ -211,12 +211,12 @@ TEST_F(PixelProbe, ColouredSphereShowsTheFieldWhereItIs) {
   side.camera.viewDirection = {1, 0, 0};
   Renderer sideRenderer(side, testing::kSmallSize);
   const Image picture = sideRenderer.render(colored);
-  render::PixelRect rect = panelRect(side, PanelKind::Sphere);
+  PixelRect rect = panelRect(side, PanelKind::Sphere);
   // The sphere is framed left of the colour bar: find its centre through the same camera the panel uses.
   rect.width -= std::min(0.24f * rect.width, 0.45f * rect.height);
-  const render::SphereCamera sideCamera(side.camera, colored.time, rect);
-  const render::P2 north = sideCamera.project({std::cos(40 * kDeg), 0, std::sin(40 * kDeg)});
-  const render::P2 south = sideCamera.project({std::cos(40 * kDeg), 0, -std::sin(40 * kDeg)});
+  const SphereCamera sideCamera(side.camera, colored.time, rect);
+  const P2 north = sideCamera.project({std::cos(40 * kDeg), 0, std::sin(40 * kDeg)});
+  const P2 south = sideCamera.project({std::cos(40 * kDeg), 0, -std::sin(40 * kDeg)});
   const Rgb8 up = pixel(picture, int(north.x) + 2, int(north.y) + 2);
   const Rgb8 down = pixel(picture, int(south.x) + 2, int(south.y) - 2);
   EXPECT_GT(up.r, up.b + 60) << up.r << " " << up.g << " " << up.b;

@@ -1,6 +1,6 @@
 // The same picture at every size: a 3840x2160 frame box-downscaled (3x3 pixels to one) to 1280x720 matches the
 // 1280x720 frame. Line widths, markers, glyphs and gaps are defined per 720 px of the frame's shorter side
-// (render::frameUnit), so only anti-aliasing and glyph rasterisation may differ.
+// (frameUnit), so only anti-aliasing and glyph rasterisation may differ.
 //
 // Measure: among the pixels drawn in either frame (not the background colour), the fraction whose largest channel
 // difference exceeds 48 levels. Thresholds: 1% for the synthetic 4-rod frames (sphere, ball, linkage, plots, text),

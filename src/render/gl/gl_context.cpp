@@ -5,7 +5,7 @@
 #include "render/gl/gl.hpp"
 #include "render/sphere_camera.hpp"
 
-namespace sl::render {
+namespace sl {
 
 GlContext::GlContext(int width, int height) : width_(width), height_(height) {
   // Asking for 3.3 core; llvmpipe answers with its newest core profile (4.5 on Debian 12).
@@ -103,4 +103,4 @@ std::string GlContext::version() const {
   return name ? reinterpret_cast<const char*>(name) : "";
 }
 
-}  // namespace sl::render
+}  // namespace sl

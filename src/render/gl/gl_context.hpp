@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace sl::render {
+namespace sl {
 
 struct PixelRect;
 
@@ -55,4 +55,4 @@ class GlContext {
   std::unique_ptr<GlLayer> frame_;          // the frame itself
 };
 
-}  // namespace sl::render
+}  // namespace sl

@@ -23,7 +23,6 @@
 namespace sl {
 namespace {
 
-using namespace sl::render;
 
 // Each program: common.glsl (version line, shared functions) before its own stage files.
 std::vector<std::string> stage(const char* file) { return {"common.glsl", file}; }

@@ -6,7 +6,7 @@
 
 #include "render/gl/gl.hpp"
 
-namespace sl::render {
+namespace sl {
 
 const char* embeddedShader(const char* name);  // generated: cmake/EmbedFiles.cmake
 
@@ -80,4 +80,4 @@ void ShaderProgram::use() const { glUseProgram(program_); }
 
 int ShaderProgram::uniform(const char* name) const { return glGetUniformLocation(program_, name); }
 
-}  // namespace sl::render
+}  // namespace sl

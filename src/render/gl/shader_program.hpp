@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace sl::render {
+namespace sl {
 
 class ShaderProgram {
  public:
@@ -24,4 +24,4 @@ class ShaderProgram {
   unsigned program_ = 0;
 };
 
-}  // namespace sl::render
+}  // namespace sl
