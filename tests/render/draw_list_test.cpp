@@ -242,8 +242,9 @@ TEST(DrawList, AStopIsSaidOnceInTheTextPanel) {
   frame.runs[1].stopWhy = "the relative energy drift passed the watchdog's limit";
   frame.runs[1].stopMeasured = "energy drift 2.13 > limit 1";
   const FrameComposer composer(fourPanels(), {1280, 720});
+  const DrawList list = composer.compose(frame);  // kept: a range-for over a temporary's member would dangle
   std::size_t red = 0;
-  for (const ShapeVertex& v : composer.compose(frame).panels[0].shapes.vertices())
+  for (const ShapeVertex& v : list.panels[0].shapes.vertices())
     red += v.kind == float(ShapeKind::Glyph) && isStopRed(v);
   char time[32];
   std::snprintf(time, sizeof time, "%.3g", frame.runs[1].stopTime);
