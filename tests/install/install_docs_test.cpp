@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "install_prefix.hpp"
 #include "support/child_process.hpp"
 #include "support/files.hpp"
 #include "support/temp_folder.hpp"
@@ -18,9 +19,7 @@ namespace fs = std::filesystem;
 TEST(InstallDocs, ReadmeLinksResolveAndTheManPageIsInstalled) {
   TempFolder temp;
   const fs::path prefix = temp.path() / "prefix";
-  const ProcessResult install = runShell(std::string(SL_CMAKE_COMMAND) + " --install " + shellQuoted(SL_BUILD_DIR) +
-                                             " --prefix " + shellQuoted(prefix.string()),
-                                         temp.path(), 300);
+  const ProcessResult install = installInto(prefix, temp.path());
   ASSERT_EQ(install.code, 0) << install.out << install.err;
   const fs::path doc = prefix / "share" / "doc" / "linkage";
   const std::string readme = readFile(doc / "README.md");

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "install_prefix.hpp"
 #include "support/child_process.hpp"
 #include "support/files.hpp"
 #include "support/linkage_binary.hpp"
@@ -19,9 +20,7 @@ namespace fs = std::filesystem;
 TEST(Install, MovedPrefixRendersTheSameBytesAsTheBuildTree) {
   TempFolder temp;
   const fs::path prefix = temp.path() / "prefix";
-  const ProcessResult install = runShell(std::string(SL_CMAKE_COMMAND) + " --install " + shellQuoted(SL_BUILD_DIR) +
-                                             " --prefix " + shellQuoted(prefix.string()),
-                                         temp.path(), 300);
+  const ProcessResult install = installInto(prefix, temp.path());
   ASSERT_EQ(install.code, 0) << install.out << install.err;
   // Moved: a cluster node or another user's prefix has none of the paths the build knew.
   const fs::path moved = temp.path() / "elsewhere";
