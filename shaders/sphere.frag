@@ -56,11 +56,11 @@ void main() {
   float poleDistance = length(p.xy) / max(length(vec2(length(dFdx(p.xy)), length(dFdy(p.xy)))), 1e-6);
   float poleRadius = 0.035 / max(length(vec2(length(dFdx(p.xy)), length(dFdy(p.xy)))), 1e-6);
   base = mix(base, uPoleColor, edgeCoverage(min(poleRadius, 7.0 * uUnit) - poleDistance));
-  // A colour-mapped surface keeps its colours on the colour bar: ambient-heavy light that only darkens it a little
-  // towards the limb, no coloured highlight or rim that would bleach or tint it.
+  // A colour-mapped surface keeps its colours on the colour bar: ambient-heavy light that darkens it by at most 7%
+  // away from the key light, no coloured highlight or rim that would bleach or tint it.
   if (uMode == 2) {
     const vec3 key = normalize(vec3(-0.45, -0.55, 0.70));
-    fragColor = vec4(base * (0.84 + 0.16 * max(dot(n, key), 0.0)) * cover, cover);
+    fragColor = vec4(base * (0.93 + 0.07 * max(dot(n, key), 0.0)) * cover, cover);
     return;
   }
   fragColor = vec4(lit(base, n, 0.18) * cover, cover);

@@ -156,6 +156,7 @@ struct SphereDecoration {
   std::optional<SphereField> field;
   std::vector<SphereEllipse> ellipses;
   std::string ellipseCaption;  // a line explaining the ellipses
+  bool seam = false;           // the seams t = +-pi/2 drawn and named
 };
 
 struct FrameState {

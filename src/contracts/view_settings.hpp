@@ -36,7 +36,8 @@ struct PlotSpec {
 struct SphereSurfaceSpec {
   SphereColoring colorBy = SphereColoring::None;
   bool stiffness = false;
-  bool decorated() const { return colorBy != SphereColoring::None || stiffness; }
+  bool seam = false;  // the seams t = +-pi/2 drawn and named
+  bool decorated() const { return colorBy != SphereColoring::None || stiffness || seam; }
 };
 
 struct ViewSettings {

@@ -73,8 +73,20 @@ ColorRGB runColor(const Scene& scene, size_t run) {
   // Okabe-Ito: distinguishable with the common colour-vision deficiencies.
   static const ColorRGB palette[] = {{0.00f, 0.45f, 0.70f}, {0.84f, 0.37f, 0.00f}, {0.00f, 0.62f, 0.45f},
                                      {0.80f, 0.47f, 0.65f}, {0.90f, 0.62f, 0.00f}, {0.34f, 0.71f, 0.91f}};
+  // On a coloured sphere the runs take colours away from its map: no blue or red on the curvature map (blue-white-
+  // red, where blue means K < 0), no blue, green or yellow on viridis (the bending map).
+  static const ColorRGB offCurvature[] = {{0.00f, 0.62f, 0.45f}, {0.10f, 0.10f, 0.12f}, {0.90f, 0.62f, 0.00f},
+                                          {0.80f, 0.47f, 0.65f}};
+  static const ColorRGB offBending[] = {{0.84f, 0.37f, 0.00f}, {0.80f, 0.47f, 0.65f}, {0.96f, 0.96f, 0.96f},
+                                        {0.55f, 0.10f, 0.10f}};
   const std::optional<ColorRGB>& chosen = scene.runs[run].color;
-  return chosen ? *chosen : palette[run % std::size(palette)];
+  if (chosen) return *chosen;
+  switch (scene.view.sphereSurface.colorBy) {
+    case SphereColoring::Curvature: return offCurvature[run % std::size(offCurvature)];
+    case SphereColoring::Bending: return offBending[run % std::size(offBending)];
+    case SphereColoring::None: break;
+  }
+  return palette[run % std::size(palette)];
 }
 
 FrameBuilder::FrameBuilder(const Scene& scene, const std::vector<InitialState>& starts, std::vector<Trajectory> runs,

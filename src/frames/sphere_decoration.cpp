@@ -69,6 +69,7 @@ std::shared_ptr<const SphereDecoration> makeSphereDecoration(const Chain& chain,
   const ConfigurationSurface surface(chain);
   auto decoration = std::make_shared<SphereDecoration>();
   if (spec.colorBy != SphereColoring::None) decoration->field = colourField(surface, spec.colorBy);
+  decoration->seam = spec.seam;
   if (spec.stiffness) {
     decoration->ellipses = stiffnessEllipses(surface);
     decoration->ellipseCaption = "ellipses: stiffness |II(v,v)|\u00b2 over directions v, half-axes ~ sqrt(max), sqrt(min)";

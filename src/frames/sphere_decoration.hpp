@@ -1,6 +1,6 @@
 #pragma once
 // The sphere panel's static surface for 4 rods (view.sphere in the scene): the sphere coloured by the Gaussian
-// curvature K or the bending |II|^2 of the kinetic metric, and stiffness ellipses, computed once per render
+// curvature K or the bending |II|^2 of the kinetic metric, stiffness ellipses and the seams t = +-pi/2, computed once per render
 // from the exact geometry of docs/geometry.md (geometry/curvature.hpp).
 
 #include <memory>

@@ -23,6 +23,8 @@ enum class SphereLook { Opaque = 0, Glass = 1, Colored = 2 };
 struct SphereImpostor {
   SphereCamera camera;
   SphereLook look;
+  std::vector<PixelRect> labels;  // the boxes of the labels placed on the sphere (poles, seams)
+  std::vector<PixelRect> balls;   // the boxes kept free around the runs' balls
 };
 
 struct PanelDrawing {

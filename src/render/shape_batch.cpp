@@ -130,6 +130,64 @@ void ShapeBatch::strip(const std::vector<PolylinePoint>& all, std::size_t begin,
   }
 }
 
+void ShapeBatch::dashedPolyline(const std::vector<PolylinePoint>& points, float dash, float gap) {
+  if (points.empty()) return;
+  const float period = dash + gap;
+  std::vector<PolylinePoint> piece{points[0]};
+  float phase = 0;  // where the pattern is at the current point: in a dash below `dash`, in a gap above
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    const PolylinePoint &a = points[i - 1], &b = points[i];
+    const float len = length(b.at - a.at);
+    float done = 0;
+    for (;;) {
+      const bool on = phase < dash;
+      const float toNext = (on ? dash : period) - phase;
+      if (done + toNext > len) {
+        phase += len - done;
+        break;
+      }
+      done += toNext;
+      const float u = len > 0 ? done / len : 1;
+      PolylinePoint cut = a;
+      cut.at = a.at + u * (b.at - a.at);
+      cut.halfWidth = a.halfWidth + u * (b.halfWidth - a.halfWidth);
+      piece.push_back(cut);
+      if (on) {
+        polyline(piece);
+        piece.clear();
+        phase = dash;
+      } else {
+        phase = 0;
+      }
+    }
+    if (phase < dash) piece.push_back(b);
+  }
+  polyline(piece);
+}
+
+void ShapeBatch::ring(P2 centre, float radius, float halfWidth, Rgba color) {
+  constexpr int kSegments = 40;
+  std::vector<PolylinePoint> points;
+  for (int k = 0; k <= kSegments; ++k) {
+    const float a = 6.2831853f * float(k) / kSegments;
+    points.push_back({centre + P2{radius * std::cos(a), radius * std::sin(a)}, halfWidth, color, {}});
+  }
+  polyline(points);
+}
+
+void ShapeBatch::append(const ShapeBatch& other) {
+  for (const ShapeSegment& segment : other.segments_) {
+    const std::size_t first = vertices_.size();
+    vertices_.insert(vertices_.end(), other.vertices_.begin() + std::ptrdiff_t(segment.first),
+                     other.vertices_.begin() + std::ptrdiff_t(segment.first + segment.count));
+    if (!segments_.empty() && segments_.back().program == segment.program &&
+        segments_.back().first + segments_.back().count == first)
+      segments_.back().count += segment.count;
+    else
+      segments_.push_back({segment.program, first, segment.count});
+  }
+}
+
 void ShapeBatch::rect(float x0, float y0, float x1, float y1, Rgba color) {
   auto make = [&](float x, float y) {
     return vertex({x, y}, {0, 0}, ShapeKind::Rect, 0, 0, color, false, 0, {0, 1}, {});

@@ -61,7 +61,13 @@ class ShapeBatch {
   // Joined strip through the points (mitred), width and colour interpolated; no double blending at
   // joints, so translucent fading paths stay smooth.
   void polyline(const std::vector<PolylinePoint>& points, bool shaded = false, float specular = 0);
+  // The polyline as dashes of `dash` pixels with `gap` pixels between them (measured along it), flat.
+  void dashedPolyline(const std::vector<PolylinePoint>& points, float dash, float gap);
+  // A hollow circle: a flat stroke of `halfWidth` about `radius`, nothing inside.
+  void ring(P2 centre, float radius, float halfWidth, Rgba color);
   void rect(float x0, float y0, float x1, float y1, Rgba color);
+  // Everything in `other`, drawn after what is here.
+  void append(const ShapeBatch& other);
   void glyph(float x0, float y0, float x1, float y1, float u0, float v0, float u1, float v1, Rgba color);
 
   const std::vector<ShapeVertex>& vertices() const { return vertices_; }

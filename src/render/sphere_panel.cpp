@@ -1,9 +1,19 @@
 // The sphere panel: configuration-space paths of every run on (or, for 5+ rods, inside) the sphere.
 // The sphere itself is drawn by shaders/sphere.frag; here the paths become shaded tubes that fade with
 // age, lifted just above the surface and hidden per pixel where the sphere is in front of them.
+//
+// One convention for the far side: whatever the sphere hides (a path's section, a ball, a member's dot, a mark, a
+// pole) is drawn over the sphere faint and hollow (paths dashed and flat, balls and dots as rings), never as a
+// filled disc, so front and back are never confused. Time: a bar across each path's start, an arrowhead at the
+// current state along its last section, older sections thinner and fainter where several runs share the sphere.
+// Coinciding runs lie side by side (each path and ball shifted across its direction by its place among the runs),
+// never nested by width, which would read as a ranking. Labels are placed where they cover nothing (LabelPlacer).
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
+#include <vector>
 
 #include "render/color_map.hpp"
 #include "render/palette.hpp"
@@ -30,6 +40,96 @@ double distance(const Vec3& a, const Vec3& b) {
   return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z));
 }
 
+// Hidden by the opaque unit sphere: the sight line from the eye to p passes through the sphere's inside before
+// reaching p (p itself lies on or outside the sphere).
+bool behindSphere(const SphereCamera& camera, const V3& p) {
+  const V3 e = camera.eye();
+  const V3 d{p.x - e.x, p.y - e.y, p.z - e.z};
+  const double dd = d.x * d.x + d.y * d.y + d.z * d.z;
+  if (!(dd > 0)) return false;
+  const double s = -(e.x * d.x + e.y * d.y + e.z * d.z) / dd;  // the sight line's closest approach to the centre
+  if (s <= 0 || s >= 1) return false;
+  const V3 c{e.x + s * d.x, e.y + s * d.y, e.z + s * d.z};
+  return c.x * c.x + c.y * c.y + c.z * c.z < 1.0;
+}
+
+// The far side's look: the colour at a fraction of its opacity, drawn flat over the sphere.
+constexpr float kGhostAlpha = 0.55f;
+Rgba ghost(Rgba c) { return palette::withAlpha(c, c.a * kGhostAlpha); }
+// Dashes and gaps of hidden paths, in frame units.
+constexpr float kGhostDash = 5.0f, kGhostGap = 3.5f;
+
+P2 plus(P2 a, P2 b, float s = 1) { return {a.x + s * b.x, a.y + s * b.y}; }
+P2 unitDirection(P2 from, P2 to) {
+  const float dx = to.x - from.x, dy = to.y - from.y, len = std::hypot(dx, dy);
+  return len > 1e-6f ? P2{dx / len, dy / len} : P2{1, 0};
+}
+
+// Each point moved sideways (across the line's direction there) by `offset` times its half width.
+void shiftAcross(std::vector<PolylinePoint>& points, float offset) {
+  if (offset == 0 || points.size() < 2) return;
+  std::vector<P2> across(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const P2 d = unitDirection(points[i == 0 ? 0 : i - 1].at, points[i + 1 < points.size() ? i + 1 : i].at);
+    across[i] = {-d.y, d.x};
+  }
+  for (std::size_t i = 0; i < points.size(); ++i) points[i].at = plus(points[i].at, across[i], offset * points[i].halfWidth);
+}
+
+// The labels and marks of the panel, as boxes, for a label to find a place that covers none of them.
+struct Box {
+  float x0, y0, x1, y1;
+};
+float overlapArea(const Box& a, const Box& b) {
+  const float w = std::min(a.x1, b.x1) - std::max(a.x0, b.x0), h = std::min(a.y1, b.y1) - std::max(a.y0, b.y0);
+  return w > 0 && h > 0 ? w * h : 0;
+}
+
+// Candidate places around an anchor: 8 directions, near and then at growing distances (with a leader line). A
+// candidate that overlaps anything already placed (a ball, a label) or leaves the area is refused; of the others the
+// one covering the fewest path points wins, nearer first on a tie. Nothing outside the area: a label never reaches
+// the title band, a neighbouring panel or the colour bar's strip. No place at all: no label.
+class LabelPlacer {
+ public:
+  explicit LabelPlacer(const PixelRect& area) : area_(area) {}
+  void avoid(const Box& box) { taken_.push_back(box); }
+  void avoidPoint(P2 p) { points_.push_back(p); }
+  // The box of a label of `width` x `height` placed near `anchor`, and whether it is far enough to need a leader.
+  std::optional<std::pair<Box, bool>> place(P2 anchor, float width, float height, float clearance) {
+    std::optional<std::pair<Box, bool>> best;
+    float bestScore = 0;
+    for (const float reach : {1.0f, 2.5f, 4.5f, 7.0f}) {
+      for (int k = 0; k < 8; ++k) {
+        const float a = 0.7853982f * float(k) - 0.7853982f;  // up-right first, then clockwise
+        const float dx = std::cos(a), dy = std::sin(a);
+        const float r = reach * clearance;
+        // The box touches the circle of radius r about the anchor on the side facing it.
+        const float cx = anchor.x + dx * (r + 0.5f * width * std::abs(dx));
+        const float cy = anchor.y + dy * (r + 0.5f * height * std::abs(dy));
+        const Box box{cx - 0.5f * width, cy - 0.5f * height, cx + 0.5f * width, cy + 0.5f * height};
+        if (box.x0 < area_.x || box.y0 < area_.y || box.x1 > area_.x + area_.width || box.y1 > area_.y + area_.height)
+          continue;
+        if (std::any_of(taken_.begin(), taken_.end(), [&](const Box& t) { return overlapArea(box, t) > 0; }))
+          continue;
+        float score = reach;  // nearer wins a tie
+        for (const P2& p : points_)
+          if (p.x > box.x0 && p.x < box.x1 && p.y > box.y0 && p.y < box.y1) score += 10;
+        if (!best || score < bestScore) {
+          best = std::make_pair(box, reach > 1);
+          bestScore = score;
+        }
+      }
+    }
+    if (best) taken_.push_back(best->first);
+    return best;
+  }
+
+ private:
+  PixelRect area_;
+  std::vector<Box> taken_;
+  std::vector<P2> points_;
+};
+
 // On the opaque sphere, points ride on a shell just outside it so the tube's front half is never
 // inside the sphere; lines elsewhere are not occluded.
 struct Placement {
@@ -49,58 +149,107 @@ float pathAlpha(const ViewSettings& settings, double age) {
   return static_cast<float>(std::clamp(1.0 - age / settings.pathFadeSeconds, 0.0, 1.0));
 }
 
-// A path as a tube of `radius` (world units, at least `minHalfWidth` pixels) in `color`, fading with age. Thin
-// paths (a family's members, many at once) are flat lines with points closer than a pixel merged: the same
-// picture at a fraction of the fill.
-void drawPath(const SharedSpan<Vec3>& path, const SharedSamples& times, Rgba color, double radius,
-              float minHalfWidth, const PanelContext& context, const SphereCamera& camera, const Placement& placement,
-              bool throughAntipode, ShapeBatch& batch, bool thin = false) {
-  std::vector<PolylinePoint> points;
+// How a path is drawn: a tube of `radius` (world units, at least `minHalfWidth` pixels) in `color`, or for `thin`
+// paths (a family's members, many at once) flat lines with points closer than a pixel merged: the same picture at a
+// fraction of the fill. `offset`: shifted sideways by that many half widths (coinciding runs side by side).
+// `aging`: sections thinner and fainter the older they are (down to 60% of the width and 45% of the opacity at the
+// start), so a long path carries its time.
+struct PathLook {
+  Rgba color;
+  double radius;
+  float minHalfWidth;
+  bool thin = false;
+  float offset = 0;
+  bool aging = false;
+};
+
+// The path, fading with age (view.path_fade_seconds); sections the sphere hides go dashed and faint into `back`
+// (drawn before everything in front). The points drawn in front are added to `drawn` (for label placement).
+void drawPath(const SharedSpan<Vec3>& path, const SharedSamples& times, const PathLook& look,
+              const PanelContext& context, const SphereCamera& camera, const Placement& placement,
+              bool throughAntipode, ShapeBatch& back, ShapeBatch& front, std::vector<P2>* drawn = nullptr) {
+  std::vector<PolylinePoint> points, hiddenPoints;
   points.reserve(path.size() + 1);
+  const double start = times.size() > 0 ? times[0] : 0.0;
+  const double span = context.frame.time - start;
+  const float ghostHalfWidth = (look.thin ? 0.4f : 0.7f) * markUnit(context.unit);
+  auto flushHidden = [&] {
+    back.dashedPolyline(hiddenPoints, kGhostDash * markUnit(context.unit), kGhostGap * markUnit(context.unit));
+    hiddenPoints.clear();
+  };
+  auto flush = [&] {
+    shiftAcross(points, look.offset);
+    if (drawn)
+      for (const PolylinePoint& point : points) drawn->push_back(point.at);
+    front.polyline(points, !look.thin, 0.35f);
+    points.clear();
+  };
   for (std::size_t i = 0; i < path.size(); ++i) {
     const double age = i < times.size() ? context.frame.time - times[i] : 0.0;
-    const float alpha = pathAlpha(context.settings, age);
+    float alpha = pathAlpha(context.settings, age);
+    float widthScale = 1;
+    if (look.aging && span > 0 && i < times.size()) {
+      const float young = float(std::clamp((times[i] - start) / span, 0.0, 1.0));
+      alpha *= 0.45f + 0.55f * young;
+      widthScale = 0.6f + 0.4f * young;
+    }
     const V3 p = placement.place(path[i]);
     const bool hidden = alpha <= 0.0f || !drawable(path[i]) || !camera.inFront(p);
     const bool jump = throughAntipode && i > 0 && distance(path[i - 1], path[i]) > kMaxPathChord;
+    const bool behind = !hidden && placement.onSphere && behindSphere(camera, p);
     if (hidden || jump) {  // a gap: draw what came before, start afresh (with this point, unless hidden)
-      batch.polyline(points, !thin, 0.35f);
-      points.clear();
+      flush();
+      flushHidden();
     }
     if (hidden) continue;
     const P2 at = camera.project(p);
+    const Rgba color = palette::withAlpha(look.color, look.color.a * alpha);
+    if (behind) {
+      hiddenPoints.push_back({at, ghostHalfWidth, ghost(color), {}});
+    } else if (!hiddenPoints.empty()) {  // out from behind: the dashes reach the limb
+      hiddenPoints.push_back({at, ghostHalfWidth, ghost(color), {}});
+      flushHidden();
+    }
     const bool last = i + 1 == path.size();
-    if (thin && !points.empty() && !last && std::abs(at.x - points.back().at.x) + std::abs(at.y - points.back().at.y) < 1.5f * context.unit)
+    if (look.thin && !points.empty() && !last &&
+        std::abs(at.x - points.back().at.x) + std::abs(at.y - points.back().at.y) < 1.5f * context.unit)
       continue;
-    const float halfWidth = std::max(minHalfWidth, float(radius * camera.pixelsPerUnitAt(p)));
-    points.push_back({at, halfWidth, palette::withAlpha(color, color.a * alpha), placement.world(p)});
+    const float halfWidth = widthScale * std::max(look.minHalfWidth, float(look.radius * camera.pixelsPerUnitAt(p)));
+    points.push_back({at, halfWidth, color, placement.world(p)});
   }
-  batch.polyline(points, !thin, 0.35f);
+  flush();
+  flushHidden();
 }
 
 // A run's family: each member's path as a thin line in the run's colour ramp, then the wavefront, the curve
 // through the members' current points in member order, as a dark line over them, and a dot per member (a
-// stopped member's dot on a red halo, as a stopped run's ball).
+// stopped member's dot on a red halo, as a stopped run's ball). Behind the sphere: dashed lines and rings.
 void drawFamily(const RunFrame& run, const PanelContext& context, const SphereCamera& camera,
-                const Placement& placement, bool throughAntipode, ShapeBatch& batch) {
+                const Placement& placement, bool throughAntipode, ShapeBatch& back, ShapeBatch& front) {
   const std::size_t count = run.members.size();
   for (std::size_t m = 0; m < count; ++m) {
-    drawPath(run.members[m].path, run.members[m].pathTimes, memberColor(run.color, m, count, 0.85f),
-             0.3 * kTubeRadius, 0.6f * context.unit, context, camera, placement, throughAntipode, batch, true);
+    const PathLook look{memberColor(run.color, m, count, 0.85f), 0.3 * kTubeRadius, 0.6f * context.unit, true, 0, false};
+    drawPath(run.members[m].path, run.members[m].pathTimes, look, context, camera, placement, throughAntipode, back,
+             front);
   }
-  std::vector<PolylinePoint> front;
+  std::vector<PolylinePoint> wavefront, hiddenWavefront;
   auto flush = [&] {
-    batch.polyline(front, true, 0.2f);
-    front.clear();
+    front.polyline(wavefront, true, 0.2f);
+    wavefront.clear();
+    back.dashedPolyline(hiddenWavefront, kGhostDash * markUnit(context.unit), kGhostGap * markUnit(context.unit));
+    hiddenWavefront.clear();
   };
+  const Rgba waveInk = palette::withAlpha(palette::ink, 0.9f);
   for (std::size_t m = 0; m < count; ++m) {
     const Vec3& at = run.members[m].current;
     const V3 p = placement.place(at);
     const bool jump = throughAntipode && m > 0 && distance(run.members[m - 1].current, at) > kMaxPathChord;
     if (!drawable(at) || !camera.inFront(p) || jump) flush();
     if (!drawable(at) || !camera.inFront(p)) continue;
+    if (placement.onSphere && behindSphere(camera, p))
+      hiddenWavefront.push_back({camera.project(p), 0.7f * markUnit(context.unit), ghost(waveInk), {}});
     const float halfWidth = std::max(context.unit, float(0.45 * kTubeRadius * camera.pixelsPerUnitAt(p)));
-    front.push_back({camera.project(p), halfWidth, palette::withAlpha(palette::ink, 0.9f), placement.world(p)});
+    wavefront.push_back({camera.project(p), halfWidth, waveInk, placement.world(p)});
   }
   flush();
   for (std::size_t m = 0; m < count; ++m) {
@@ -109,41 +258,141 @@ void drawFamily(const RunFrame& run, const PanelContext& context, const SphereCa
     if (!drawable(member.current) || !camera.inFront(p)) continue;
     const float pixelsPerUnit = float(camera.pixelsPerUnitAt(p));
     const float radius = std::max(1.5f * context.unit, 0.35f * float(kBallRadius) * pixelsPerUnit);
-    if (member.stopped) batch.disc(camera.project(p), radius + 1.5f * context.unit, palette::stopRed, false, 0, placement.world(p));
-    batch.disc(camera.project(p), radius, memberColor(run.color, m, count), true, 0.3f, placement.world(p),
+    if (placement.onSphere && behindSphere(camera, p)) {
+      back.ring(camera.project(p), radius, 0.5f * context.unit, ghost(memberColor(run.color, m, count)));
+      continue;
+    }
+    if (member.stopped) front.disc(camera.project(p), radius + 1.5f * context.unit, palette::stopRed, false, 0, placement.world(p));
+    front.disc(camera.project(p), radius, memberColor(run.color, m, count), true, 0.3f, placement.world(p),
                radius / pixelsPerUnit);
   }
 }
 
-// The current state of a run, `style` its runStyleWidth: a later run's ball is smaller, so a run exactly under
-// another still shows as a ring around it, as its path does.
-void drawBall(const RunFrame& run, float style, float unit, const SphereCamera& camera, const Placement& placement,
-              ShapeBatch& batch) {
+// Where a run's state is drawn: its ball's centre and radius on the screen, the direction of its last section
+// (the velocity's, seen from the eye), and whether the sphere hides it.
+struct BallPlace {
+  bool shown = false;
+  P2 at;
+  float radius = 0;
+  P2 heading{1, 0};
+  bool headingKnown = false;
+  bool behind = false;
+  V3 centre;
+};
+
+BallPlace placeBall(const RunFrame& run, float unit, const SphereCamera& camera, const Placement& placement) {
+  BallPlace ball;
+  if (!drawable(run.current)) return ball;
   Placement ballPlacement = placement;
   ballPlacement.lift = kBallRadius;
-  const V3 centre = ballPlacement.place(run.current);
-  if (!drawable(run.current)) return;
-  const float pixelsPerUnit = float(camera.pixelsPerUnitAt(centre));
-  const float radius = std::max(3.5f * markUnit(unit), float(kBallRadius) * pixelsPerUnit) * (0.45f + 0.55f * style);
-  const P2 at = camera.project(centre);
-  // First a ghost that nothing hides: where the sphere is in front of the ball (behind it, or past its outline)
-  // the state is still seen through it; where the ball shows, the ball covers its ghost.
-  batch.disc(at, radius, palette::withAlpha(palette::ink, 0.45f));  // a dark rim: readable over any colour map
-  batch.disc(at, std::max(unit, radius - std::max(unit, 0.15f * radius)), toRgba(run.color, 0.6f));
-  if (run.stopped) batch.disc(at, 0.45f * radius, palette::withAlpha(palette::stopRed, 0.5f));
-  if (!camera.inFront(centre)) return;
-  const Occludable world = ballPlacement.world(centre);
+  ball.centre = ballPlacement.place(run.current);
+  if (!camera.inFront(ball.centre)) return ball;
+  ball.shown = true;
+  ball.at = camera.project(ball.centre);
+  ball.radius = std::max(3.5f * markUnit(unit), float(kBallRadius * camera.pixelsPerUnitAt(ball.centre)));
+  ball.behind = placement.onSphere && behindSphere(camera, ball.centre);
+  // The heading: from the last path point at least a few units back on the screen to the state.
+  for (std::size_t i = run.path.size(); i-- > 0;) {
+    if (!drawable(run.path[i])) break;
+    const V3 p = placement.place(run.path[i]);
+    if (!camera.inFront(p)) break;
+    const P2 q = camera.project(p);
+    if (std::hypot(ball.at.x - q.x, ball.at.y - q.y) >= 3 * unit) {
+      ball.heading = unitDirection(q, ball.at);
+      ball.headingKnown = true;
+      break;
+    }
+  }
+  return ball;
+}
+
+// Balls whose places coincide on the screen (runs in the same state) are spread across their heading, side by side
+// in run order, as their paths are: each stays visible and none looks larger or ranked.
+void spreadCoincidingBalls(std::vector<BallPlace>& balls) {
+  std::vector<bool> done(balls.size(), false);
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    if (!balls[i].shown || done[i]) continue;
+    std::vector<std::size_t> group{i};
+    for (std::size_t j = i + 1; j < balls.size(); ++j)
+      if (balls[j].shown && !done[j] &&
+          std::hypot(balls[j].at.x - balls[i].at.x, balls[j].at.y - balls[i].at.y) < 0.5f * balls[i].radius)
+        group.push_back(j);
+    if (group.size() < 2) continue;
+    const P2 across{-balls[i].heading.y, balls[i].heading.x};
+    const float step = 0.9f * balls[i].radius;
+    for (std::size_t g = 0; g < group.size(); ++g) {
+      done[group[g]] = true;
+      balls[group[g]].at = plus(balls[i].at, across, step * (float(g) - 0.5f * float(group.size() - 1)));
+    }
+  }
+}
+
+// The current state of a run. In front: a shaded ball on a thin dark rim (a stopped run's on a red halo), hidden
+// per pixel where the sphere's outline passes in front of it. Behind the sphere: a hollow ring in its colour (a red
+// one around it when stopped), nothing inside, so it never reads as a spot on the front. An arrowhead just past the
+// ball points along the last section of the path (a moving run only).
+void drawBall(const RunFrame& run, const BallPlace& ball, float unit, const SphereCamera& camera,
+              const Placement& placement, ShapeBatch& back, ShapeBatch& front) {
+  if (!ball.shown) return;
+  const float radius = ball.radius;
+  const P2 at = ball.at;
+  const float mark = markUnit(unit);
+  if (!run.stopped && ball.headingKnown) {
+    const P2 d = ball.heading, n{-d.y, d.x};
+    const P2 tip = plus(at, d, radius + 7 * mark), base = plus(at, d, radius + 2.5f * mark);
+    const Rgba arrow = ball.behind ? ghost(palette::ink) : palette::ink;
+    ShapeBatch& layer = ball.behind ? back : front;
+    layer.capsule(plus(base, n, 3.5f * mark), tip, 0.8f * mark, arrow);
+    layer.capsule(plus(base, n, -3.5f * mark), tip, 0.8f * mark, arrow);
+  }
+  if (ball.behind) {
+    back.ring(at, 0.8f * radius, 0.9f * mark, ghost(toRgba(run.color)));
+    if (run.stopped) back.ring(at, 0.8f * radius + 2.5f * mark, 0.8f * mark, ghost(palette::stopRed));
+    return;
+  }
+  Placement ballPlacement = placement;
+  ballPlacement.lift = kBallRadius;
+  const Occludable world = ballPlacement.world(ball.centre);
+  const float pixelsPerUnit = float(camera.pixelsPerUnitAt(ball.centre));
   // A stopped run's ball sits on a red halo (a larger ball behind it, hidden with it by the sphere).
-  if (run.stopped) batch.disc(at, radius + 2.5f * unit, palette::stopRed, true, 0.2f, world, (radius + 2.5f * unit) / pixelsPerUnit);
+  if (run.stopped) front.disc(at, radius + 2.5f * unit, palette::stopRed, true, 0.2f, world, (radius + 2.5f * unit) / pixelsPerUnit);
   // A thin dark rim sets the ball off from its own path, which has its colour (small frames lost it in the tube).
-  else batch.disc(at, radius + unit, palette::withAlpha(palette::ink, 0.75f), false, 0, world, (radius + unit) / pixelsPerUnit);
-  batch.disc(at, radius, toRgba(run.color), true, 0.55f, world, radius / pixelsPerUnit);
+  else front.disc(at, radius + unit, palette::withAlpha(palette::ink, 0.75f), false, 0, world, (radius + unit) / pixelsPerUnit);
+  front.disc(at, radius, toRgba(run.color), true, 0.55f, world, radius / pixelsPerUnit);
+}
+
+// The start of a run's path: a short dark bar across its first section (faint where the sphere hides it).
+void drawStart(const RunFrame& run, float offset, float unit, const SphereCamera& camera, const Placement& placement,
+               ShapeBatch& back, ShapeBatch& front) {
+  if (run.path.size() < 2 || !drawable(run.path[0])) return;
+  const V3 p = placement.place(run.path[0]);
+  if (!camera.inFront(p)) return;
+  const P2 at = camera.project(p);
+  P2 along{1, 0};
+  for (std::size_t i = 1; i < run.path.size() && drawable(run.path[i]); ++i) {
+    const P2 q = camera.project(placement.place(run.path[i]));
+    if (std::hypot(q.x - at.x, q.y - at.y) >= 2 * unit) {
+      along = unitDirection(at, q);
+      break;
+    }
+  }
+  const float mark = markUnit(unit);
+  const P2 across{-along.y, along.x};
+  const float tube = std::max(1.8f * unit, float(kTubeRadius * camera.pixelsPerUnitAt(p)));
+  const P2 middle = plus(at, across, offset * tube);
+  const float half = 2.2f * tube + 2 * mark;
+  if (placement.onSphere && behindSphere(camera, p)) {
+    back.capsule(plus(middle, across, -half), plus(middle, across, half), 0.7f * mark, ghost(palette::ink));
+    return;
+  }
+  front.capsule(plus(middle, across, -half), plus(middle, across, half), 1.1f * mark, palette::ink, false, 0,
+                placement.world(p));
 }
 
 // Conjugate points on the path (runs with Jacobi fields): an ink ring around a dot of the run's colour, where
-// the geodesics leaving the start together meet again.
+// the geodesics leaving the start together meet again; behind the sphere the faint ring alone.
 void drawConjugatePoints(const RunFrame& run, float unit, const SphereCamera& camera, const Placement& placement,
-                         ShapeBatch& batch) {
+                         ShapeBatch& back, ShapeBatch& front) {
   Placement markPlacement = placement;
   markPlacement.lift = 1.5 * kTubeRadius;
   for (const Vec3& point : run.conjugatePoints) {
@@ -151,9 +400,13 @@ void drawConjugatePoints(const RunFrame& run, float unit, const SphereCamera& ca
     if (!drawable(point) || !camera.inFront(p)) continue;
     const float pixelsPerUnit = float(camera.pixelsPerUnitAt(p));
     const float radius = std::max(3.0f * markUnit(unit), 0.7f * float(kBallRadius) * pixelsPerUnit);
+    if (placement.onSphere && behindSphere(camera, p)) {
+      back.ring(camera.project(p), 0.85f * radius, 0.8f * markUnit(unit), ghost(palette::ink));
+      continue;
+    }
     const Occludable world = markPlacement.world(p);
-    batch.disc(camera.project(p), radius, palette::ink, false, 0, world, radius / pixelsPerUnit);
-    batch.disc(camera.project(p), 0.6f * radius, toRgba(run.color), true, 0.3f, world, 0.6f * radius / pixelsPerUnit);
+    front.disc(camera.project(p), radius, palette::ink, false, 0, world, radius / pixelsPerUnit);
+    front.disc(camera.project(p), 0.6f * radius, toRgba(run.color), true, 0.3f, world, 0.6f * radius / pixelsPerUnit);
   }
 }
 
@@ -238,8 +491,8 @@ void drawEquator(const SphereCamera& camera, float unit, ShapeBatch& batch) {
   batch.polyline(points);
 }
 
-// Stiffness ellipses as light rings riding on the sphere (over the dark end of a colour map as over its light end:
-// a white stroke on a dark halo), hidden where the sphere is in front of them.
+// Stiffness ellipses as light filled glyphs riding on the sphere (over the dark end of a colour map as over its
+// light end: a half-white fill, a white stroke on a faint dark halo), hidden where the sphere is in front of them.
 void drawEllipses(const std::vector<SphereEllipse>& ellipses, const SphereCamera& camera, const Placement& placement,
                   const PixelRect& rect, float unit, ShapeBatch& batch) {
   constexpr int kSegments = 40;
@@ -252,7 +505,7 @@ void drawEllipses(const std::vector<SphereEllipse>& ellipses, const SphereCamera
     const float alpha = float(0.85 * std::clamp((facing - 0.2) / 0.25, 0.0, 1.0));
     if (alpha <= 0) continue;
     const Rgba color{1, 1, 1, alpha};
-    const Rgba halo = palette::withAlpha(palette::ink, 0.35f * alpha);
+    const Rgba halo = palette::withAlpha(palette::ink, 0.25f * alpha);
     std::vector<PolylinePoint> points;
     bool visible = true;
     for (int k = 0; k <= kSegments && visible; ++k) {
@@ -275,7 +528,7 @@ void drawEllipses(const std::vector<SphereEllipse>& ellipses, const SphereCamera
       const V3 placed = placement.place(p);
       const P2 edge = camera.project(placement.place(side));
       const float half = std::hypot(edge.x - middle.x, edge.y - middle.y);
-      fill.push_back({camera.project(placed), half, Rgba{1, 1, 1, 0.3f * alpha}, placement.world(placed)});
+      fill.push_back({camera.project(placed), half, Rgba{1, 1, 1, 0.5f * alpha}, placement.world(placed)});
     }
     batch.polyline(fill);
     std::vector<PolylinePoint> under = points;
@@ -288,25 +541,76 @@ void drawEllipses(const std::vector<SphereEllipse>& ellipses, const SphereCamera
   }
 }
 
-// 4 rods: the chart's poles (phi = +-pi/2, where t is undefined and the published single-chart methods fail) are
-// marked by the sphere shader; a small label names whichever pole faces the eye.
-void labelChartPoles(const PanelContext& context, const SphereCamera& camera, ShapeBatch& batch) {
-  const float ascent = context.font.ascent(TextSize::Small);
-  for (const double z : {1.0, -1.0}) {
-    const V3 pole{0, 0, z};
-    const V3 eye = camera.eye();
-    if (!(eye.x * pole.x + eye.y * pole.y + eye.z * pole.z > 1.0)) continue;  // behind the sphere
-    const P2 at = camera.project(pole);
-    const std::string text = "chart pole";
-    const float width = context.font.width(text, TextSize::Small);
-    if (width > context.rect.width || ascent > context.rect.height) return;  // no room for the label
-    const float x = std::clamp(at.x + 0.9f * ascent, context.rect.x, context.rect.x + context.rect.width - width);
-    const float y = std::clamp(at.y - 0.6f * ascent, context.rect.y + ascent, context.rect.y + context.rect.height);
-    const ColorRGB& b = context.settings.background;
-    batch.rect(x - 0.2f * ascent, y - 1.1f * ascent, x + width + 0.2f * ascent, y + 0.35f * ascent,
-               {b.r, b.g, b.b, 0.6f});
-    context.font.draw(batch, text, TextSize::Small, x, y, palette::softInk);
+// A label at `anchor` placed by `placer` where it covers nothing else: on a pad of the background, joined to its
+// anchor by a thin leader line when it had to move away. Faint (the far side's look) when `hidden`.
+void drawLabel(const std::string& text, P2 anchor, bool hidden, const PanelContext& context, LabelPlacer& placer,
+               std::vector<PixelRect>& placed, ShapeBatch& batch) {
+  const float ascent = context.font.ascent(TextSize::Small), pad = 0.25f * ascent;
+  const float width = context.font.width(text, TextSize::Small) + 2 * pad, height = 1.45f * ascent + 2 * pad;
+  const auto spot = placer.place(anchor, width, height, 0.9f * ascent);
+  if (!spot) return;  // no room in the panel
+  const Box& box = spot->first;
+  const Rgba ink = hidden ? ghost(palette::softInk) : palette::softInk;
+  if (spot->second) {  // the leader: from the anchor to the nearest point of the box
+    const P2 to{std::clamp(anchor.x, box.x0, box.x1), std::clamp(anchor.y, box.y0, box.y1)};
+    batch.capsule(anchor, to, 0.5f * markUnit(context.unit), ink);
   }
+  const ColorRGB& b = context.settings.background;
+  batch.rect(box.x0, box.y0, box.x1, box.y1, {b.r, b.g, b.b, 0.7f});
+  context.font.draw(batch, text, TextSize::Small, box.x0 + pad, box.y0 + pad + 1.1f * ascent, ink);
+  placed.push_back({box.x0, box.y0, box.x1 - box.x0, box.y1 - box.y0});
+}
+
+// 4 rods: the chart's poles (phi = +-pi/2, where t is undefined and the published single-chart methods fail) are
+// marked by the sphere shader on the front; both are named, a pole behind the sphere as a faint ring and label.
+void labelChartPoles(const PanelContext& context, const SphereCamera& camera, LabelPlacer& placer,
+                     std::vector<PixelRect>& placed, ShapeBatch& back, ShapeBatch& batch) {
+  for (const double z : {1.0, -1.0}) {
+    const V3 pole{0, 0, z * 1.001};
+    if (!camera.inFront(pole)) continue;
+    const P2 at = camera.project(pole);
+    const bool hidden = behindSphere(camera, pole);
+    if (hidden) back.ring(at, 4 * markUnit(context.unit), 0.6f * markUnit(context.unit), ghost(palette::poleMark));
+    drawLabel(z > 0 ? "chart pole \u03c6 = 90\u00b0" : "chart pole \u03c6 = \u221290\u00b0", at, hidden, context,
+              placer, placed, batch);
+  }
+}
+
+// The seams t = +-pi/2 (view.sphere.seam), where the published metric divides by zero: two meridians drawn as dashed
+// red lines on the sphere (fainter behind it), one named where it faces the eye.
+void drawSeams(const PanelContext& context, const SphereCamera& camera, LabelPlacer& placer,
+               std::vector<PixelRect>& placed, ShapeBatch& back, ShapeBatch& front) {
+  const double pi = std::acos(-1.0);
+  const Rgba red = palette::withAlpha(palette::stopRed, 0.85f);
+  std::optional<P2> named;
+  double namedFacing = 0.2;  // only a seam facing the eye this much is named
+  for (const double t : {pi / 2, -pi / 2}) {
+    std::vector<PolylinePoint> front_, back_;
+    auto flush = [&] {
+      front.dashedPolyline(front_, 7 * context.unit, 3 * context.unit);
+      back.dashedPolyline(back_, kGhostDash * markUnit(context.unit), kGhostGap * markUnit(context.unit));
+      front_.clear();
+      back_.clear();
+    };
+    for (int k = 0; k <= 128; ++k) {
+      const double phi = -pi / 2 + pi * k / 128;
+      const V3 p{1.003 * std::cos(phi) * std::cos(t), 1.003 * std::cos(phi) * std::sin(t), 1.003 * std::sin(phi)};
+      if (!camera.inFront(p)) continue;
+      const bool hidden = behindSphere(camera, p);
+      auto& side = hidden ? back_ : front_;
+      auto& other = hidden ? front_ : back_;
+      if (!other.empty()) flush();
+      side.push_back({camera.project(p), (hidden ? 0.6f : 1.0f) * context.unit, hidden ? ghost(red) : red, {}});
+      const V3 eye = camera.eye();
+      const double facing = (p.x * eye.x + p.y * eye.y + p.z * eye.z) / std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
+      if (!hidden && std::abs(phi) < 1.2 && facing > namedFacing) {
+        namedFacing = facing;
+        named = camera.project(p);
+      }
+    }
+    flush();
+  }
+  if (named) drawLabel("seam t = \u00b1\u03c0/2", *named, false, context, placer, placed, front);
 }
 
 // A family on the sphere explained where no text panel does it: the run, its members and their wavefront, in the
@@ -340,6 +644,10 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   if (colored) sphereRect.width -= colorBarStrip(context.rect);
   SphereCamera camera(context.settings.camera, context.frame.time, sphereRect);
   const Placement placement{space == ViewSpace::Sphere, kTubeRadius};
+  // Labels stay in the sphere's part of the panel, clear of the colour bar and the captions at its foot.
+  const float captionRoom = 2.4f * context.font.lineHeight(TextSize::Small);
+  LabelPlacer placer({sphereRect.x, sphereRect.y, sphereRect.width, sphereRect.height - captionRoom});
+  std::vector<PixelRect> labels;
   if (space == ViewSpace::Circle) drawEquator(camera, context.unit, batch);
   if (space == ViewSpace::Ball) drawBallGuide(context, camera, batch);
   if (decoration) {
@@ -361,24 +669,55 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
                    context.font, batch);
     }
   }
+  // What the sphere hides goes into `back`, drawn before everything in front of it.
+  ShapeBatch back, front;
   const bool throughAntipode = space == ViewSpace::Ball;
   const auto& runs = context.frame.runs;
-  for (const RunFrame& run : runs) drawFamily(run, context, camera, placement, throughAntipode, batch);
-  // Each later run's tube is narrower (runStyleWidth), so a run exactly under another still shows around it.
-  for (std::size_t k = 0; k < runs.size(); ++k)
-    drawPath(runs[k].path, runs[k].pathTimes, toRgba(runs[k].color), kTubeRadius * runStyleWidth(k, runs.size()),
-             1.8f * context.unit * runStyleWidth(k, runs.size()), context, camera, placement, throughAntipode, batch);
-  for (const RunFrame& run : context.frame.runs) drawConjugatePoints(run, context.unit, camera, placement, batch);
-  if (space == ViewSpace::Ball) drawBallStart(context, camera, batch);
-  for (std::size_t k = 0; k < runs.size(); ++k) drawBall(runs[k], runStyleWidth(k, runs.size()), context.unit, camera, placement, batch);
-  if (space == ViewSpace::Sphere) labelChartPoles(context, camera, batch);  // over the paths: never struck through
+  for (const RunFrame& run : runs) drawFamily(run, context, camera, placement, throughAntipode, back, front);
+  // Several runs: side by side where they coincide (each shifted by its half width times 2k - (n - 1), narrower by
+  // 1/sqrt(n), so n coinciding paths make one band of equal stripes), older sections thinner and fainter
+  // (unless the scene fades paths out itself).
+  const bool several = runs.size() > 1;
+  const auto offsetOf = [&](std::size_t k) { return several ? 2.0f * (float(k) - 0.5f * float(runs.size() - 1)) : 0.0f; };
+  std::vector<P2> pathPoints;
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const float narrower = std::max(0.45f, 1.0f / std::sqrt(float(runs.size())));
+    const PathLook look{toRgba(runs[k].color), narrower * kTubeRadius, narrower * 1.8f * context.unit, false,
+                        offsetOf(k), several && context.settings.pathFadeSeconds <= 0};
+    drawPath(runs[k].path, runs[k].pathTimes, look, context, camera, placement, throughAntipode, back, front,
+             &pathPoints);
+  }
+  if (space != ViewSpace::Ball)  // the ball view's start is its centre, marked by drawBallStart
+    for (std::size_t k = 0; k < runs.size(); ++k)
+      drawStart(runs[k], offsetOf(k), context.unit, camera, placement, back, front);
+  for (const RunFrame& run : runs) drawConjugatePoints(run, context.unit, camera, placement, back, front);
+  if (space == ViewSpace::Ball) drawBallStart(context, camera, front);
+  std::vector<BallPlace> balls;
+  for (const RunFrame& run : runs) balls.push_back(placeBall(run, context.unit, camera, placement));
+  spreadCoincidingBalls(balls);
+  std::vector<PixelRect> ballBoxes;
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    drawBall(runs[k], balls[k], context.unit, camera, placement, back, front);
+    if (!balls[k].shown) continue;
+    const float r = balls[k].radius + 2.5f * context.unit;
+    placer.avoid({balls[k].at.x - r, balls[k].at.y - r, balls[k].at.x + r, balls[k].at.y + r});
+    ballBoxes.push_back({balls[k].at.x - r, balls[k].at.y - r, 2 * r, 2 * r});
+  }
+  for (const P2& p : pathPoints) placer.avoidPoint(p);
+  // Labels over the paths (never struck through), placed clear of the balls, the paths and each other.
+  ShapeBatch labelLayer;
+  if (space == ViewSpace::Sphere) labelChartPoles(context, camera, placer, labels, back, labelLayer);
+  if (decoration && decoration->seam) drawSeams(context, camera, placer, labels, back, labelLayer);
+  batch.append(back);
+  batch.append(front);
+  batch.append(labelLayer);
   const bool captioned = space == ViewSpace::Ball || (decoration && !decoration->ellipseCaption.empty());
   const std::vector<PanelSpec> panels = effectivePanels(context.settings);
   const bool textPanel =
       std::any_of(panels.begin(), panels.end(), [](const PanelSpec& p) { return p.kind == PanelKind::Text; });
   if (!captioned && !textPanel) captionFamilies(context, sphereRect.width, batch);
   const SphereLook look = colored ? SphereLook::Colored : space == ViewSpace::Sphere ? SphereLook::Opaque : SphereLook::Glass;
-  return {camera, look};
+  return {camera, look, labels, ballBoxes};
 }
 
 }  // namespace sl

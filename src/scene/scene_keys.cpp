@@ -579,6 +579,14 @@ std::vector<SceneKey> describeKeys() {
        .meaning = "stiffness ellipses on the sphere (4 rods): half-axes proportional to the square roots of the "
                   "largest and smallest directional stiffness, the long axis along the stiffest direction",
        .allowed = "true/false"},
+      {.path = "view.sphere.seam",
+       .type = KeyType::Boolean,
+       .fallback = view.sphereSurface.seam,
+       .summary = "draw and name the seams t = ±π/2 (4 rods)",
+       .target = "SphereSurfaceSpec::seam",
+       .meaning = "draw the seams t = ±π/2 on the sphere (4 rods), where the published closed-form metric divides by "
+                  "zero, as dashed red meridians, the one facing the eye named",
+       .allowed = "true/false"},
       {.path = "view.camera",
        .type = KeyType::Object,
        .summary = "the sphere panel's camera",

@@ -199,8 +199,9 @@ void readSphereSurface(const JsonObject& view, Scene& scene, bool rodsKnown, std
       surface.colorBy = *kind;
   }
   surface.stiffness = object.boolean("stiffness").value_or(surface.stiffness);
+  surface.seam = object.boolean("seam").value_or(surface.seam);
   if (rodsKnown && scene.chain.isSlack() && surface.decorated()) {
-    object.report(surface.colorBy != SphereColoring::None ? "color_by" : "stiffness",
+    object.report(surface.colorBy != SphereColoring::None ? "color_by" : surface.stiffness ? "stiffness" : "seam",
                   "a slack chain (L <= n-2) has no configuration sphere to colour or decorate");
     surface = {};
   }
@@ -210,6 +211,7 @@ void readSphereSurface(const JsonObject& view, Scene& scene, bool rodsKnown, std
                             "space is then a surface, S^2)";
     if (surface.colorBy != SphereColoring::None) object.report("color_by", why);
     if (surface.stiffness) object.report("stiffness", why);
+    if (surface.seam) object.report("seam", why);
     surface = {};
   }
 }

@@ -7,6 +7,7 @@
 
 #include "fixtures/synthetic_frame.hpp"
 #include "reference_frames.hpp"
+#include "render/color_map.hpp"
 #include "render/frame_composer.hpp"
 #include "render/panel_layout.hpp"
 #include "render/panels.hpp"
@@ -87,19 +88,18 @@ TEST_F(PixelProbe, PathColourAtAProjectedPathPoint) {
   EXPECT_TRUE(isRunRed(c)) << c.r << " " << c.g << " " << c.b;
 }
 
-TEST_F(PixelProbe, PathBehindTheSphereIsHidden) {
+TEST_F(PixelProbe, PathBehindTheSphereIsNotDrawnAsInFront) {
   const Vec3 p = onSphere(7.5 * kDeg, 150 * kDeg);  // 142.5 deg from the view direction: far side
   const P2 at = camera.project({p.x * 1.014, p.y * 1.014, p.z * 1.014});
   const Rgb8 c = pixel(image, int(at.x), int(at.y));
   EXPECT_FALSE(isRunRed(c)) << c.r << " " << c.g << " " << c.b;
-  EXPECT_TRUE(isCream(c)) << c.r << " " << c.g << " " << c.b;
 }
 
 bool isRunBlue(Rgb8 c) { return c.b > c.r + 40 && c.b > c.g + 10; }
 
-// Two runs on exactly the same path both show: across the path, the first run's colour at the tube's
-// edge and the second's in its middle (each later run is drawn narrower).
-TEST_F(PixelProbe, CoincidingRunsBothShowAcrossThePath) {
+// Two runs on exactly the same path both show, side by side: across the path, a band of each colour of about the
+// same width (neither nested inside the other, which would read as a ranking).
+TEST_F(PixelProbe, CoincidingRunsLieSideBySide) {
   FrameState two = frame;
   two.runs.push_back(two.runs[0]);
   two.runs[1].name = "same path";
@@ -107,27 +107,68 @@ TEST_F(PixelProbe, CoincidingRunsBothShowAcrossThePath) {
   const Image picture = renderer.render(two);
   const Vec3 p = onSphere(7.5 * kDeg, 30 * kDeg);
   const P2 at = camera.project({p.x * 1.014, p.y * 1.014, p.z * 1.014});
-  bool red = false, blue = false;
+  int red = 0, blue = 0;
   for (int dy = -8; dy <= 8; ++dy) {  // the path runs roughly across the panel here: step across it
     const Rgb8 c = pixel(picture, int(at.x), int(at.y) + dy);
-    red = red || isRunRed(c);
-    blue = blue || isRunBlue(c);
+    red += isRunRed(c);
+    blue += isRunBlue(c);
   }
-  EXPECT_TRUE(red) << "the first run is hidden under the second";
-  EXPECT_TRUE(blue);
-  EXPECT_TRUE(isRunBlue(pixel(picture, int(at.x), int(at.y))));
+  EXPECT_GE(red, 1) << "the first run is hidden under the second";
+  EXPECT_GE(blue, 1);
+  EXPECT_LE(std::abs(red - blue), 1) << red << " red and " << blue << " blue pixels across: nested, not side by side";
 }
 
-// The current state behind the sphere is ghosted through it instead of vanishing.
-TEST_F(PixelProbe, CurrentStateBehindTheSphereIsGhostedThroughIt) {
-  const Vec3 behind = onSphere(7.5 * kDeg, 187.5 * kDeg);  // the path's end, on the far side
-  const P2 at = camera.project({behind.x * 1.055, behind.y * 1.055, behind.z * 1.055});
-  const Rgb8 c = pixel(image, int(at.x), int(at.y));
-  FrameState without = frame;
+// The far side's convention: the current state behind the sphere is a hollow ring drawn over the sphere. Its
+// centre shows the sphere (no filled disc that would read as a spot on the front); its rim shows the run.
+TEST_F(PixelProbe, CurrentStateBehindTheSphereIsAHollowRing) {
+  FrameState behind = frame;
+  behind.runs[0].path.clear();  // the state alone: no path or heading drawn through it
+  behind.runs[0].pathTimes.clear();
+  const Vec3 state = behind.runs[0].current;  // on the far side
+  const V3 centre{state.x * 1.055, state.y * 1.055, state.z * 1.055};
+  const P2 at = camera.project(centre);
+  const Image picture = renderer.render(behind);
+  FrameState without = behind;
   without.runs[0].current = {NAN, NAN, NAN};  // no state drawn at all
-  const Rgb8 bare = pixel(renderer.render(without), int(at.x), int(at.y));
-  EXPECT_TRUE(isCream(bare)) << bare.r << " " << bare.g << " " << bare.b;
-  EXPECT_GT(int(bare.g) - int(c.g), 20) << "no ghost: " << c.r << " " << c.g << " " << c.b;  // burgundy tint
+  const Image bare = renderer.render(without);
+  const Rgb8 middle = pixel(picture, int(std::lround(at.x)), int(std::lround(at.y)));
+  const Rgb8 sphere = pixel(bare, int(std::lround(at.x)), int(std::lround(at.y)));
+  EXPECT_TRUE(isCream(sphere)) << sphere.r << " " << sphere.g << " " << sphere.b;
+  EXPECT_LE(std::abs(middle.r - sphere.r) + std::abs(middle.g - sphere.g) + std::abs(middle.b - sphere.b), 6)
+      << "the hidden ball is filled: " << middle.r << " " << middle.g << " " << middle.b;
+  // On the rim (0.8 of the ball's radius): the run's colour, faint.
+  const float radius = std::max(3.5f, float(0.055 * camera.pixelsPerUnitAt(centre)));
+  int tinted = 0;
+  for (int k = 0; k < 16; ++k) {
+    const double a = 2 * std::acos(-1.0) * k / 16;
+    const int x = int(std::lround(at.x + 0.8f * radius * float(std::cos(a))));
+    const int y = int(std::lround(at.y + 0.8f * radius * float(std::sin(a))));
+    const Rgb8 c = pixel(picture, x, y), b = pixel(bare, x, y);
+    tinted += int(b.g) - int(c.g) > 15;  // burgundy over cream: green drops
+  }
+  EXPECT_GE(tinted, 8) << "no ring around the hidden state";
+}
+
+// A path's section behind the sphere is drawn faint and dashed over it: along it some pixels are tinted (dashes)
+// and some are the bare sphere (gaps), and no pixel is the run's full colour.
+TEST_F(PixelProbe, PathBehindTheSphereIsDashedAndFaint) {
+  FrameState without = frame;
+  without.runs.clear();
+  const Image bare = renderer.render(without);
+  int dashes = 0, gaps = 0, full = 0;
+  for (int k = 0; k <= 40; ++k) {
+    const Vec3 p = onSphere(7.5 * kDeg, (130 + 0.5 * k) * kDeg);  // far side, away from the state
+    const P2 at = camera.project({p.x * 1.014, p.y * 1.014, p.z * 1.014});
+    const Rgb8 c = pixel(image, int(std::lround(at.x)), int(std::lround(at.y)));
+    const Rgb8 b = pixel(bare, int(std::lround(at.x)), int(std::lround(at.y)));
+    const int drop = int(b.g) - int(c.g);
+    dashes += drop > 12;
+    gaps += drop <= 3;
+    full += drop > 150;  // the run's full colour over cream: green drops by about 200 levels; faint: about 100
+  }
+  EXPECT_GT(dashes, 0) << "the hidden section is not drawn";
+  EXPECT_GT(gaps, 0) << "the hidden section is not dashed";
+  EXPECT_EQ(full, 0) << "the hidden section is drawn as if in front";
 }
 
 TEST_F(PixelProbe, PinsAreCharcoal) {
@@ -215,8 +256,9 @@ TEST_F(PixelProbe, ColouredSphereShowsTheFieldWhereItIs) {
   // The sphere is framed left of the colour bar: find its centre through the same camera the panel uses.
   rect.width -= std::min(0.24f * rect.width, 0.45f * rect.height);
   const SphereCamera sideCamera(side.camera, colored.time, rect);
-  const P2 north = sideCamera.project({std::cos(40 * kDeg), 0, std::sin(40 * kDeg)});
-  const P2 south = sideCamera.project({std::cos(40 * kDeg), 0, -std::sin(40 * kDeg)});
+  // At 25 degrees from the equator: clear of the poles' labels (both poles lie on the outline here).
+  const P2 north = sideCamera.project({std::cos(25 * kDeg), 0, std::sin(25 * kDeg)});
+  const P2 south = sideCamera.project({std::cos(25 * kDeg), 0, -std::sin(25 * kDeg)});
   const Rgb8 up = pixel(picture, int(north.x) + 2, int(north.y) + 2);
   const Rgb8 down = pixel(picture, int(south.x) + 2, int(south.y) - 2);
   EXPECT_GT(up.r, up.b + 60) << up.r << " " << up.g << " " << up.b;
@@ -225,6 +267,56 @@ TEST_F(PixelProbe, ColouredSphereShowsTheFieldWhereItIs) {
   colored.sphereDecoration = nullptr;
   const Rgb8 plain = pixel(sideRenderer.render(colored), int(north.x) + 2, int(north.y) + 2);
   EXPECT_TRUE(isCream(plain)) << plain.r << " " << plain.g << " " << plain.b;
+}
+
+// Faithful colour: the coloured sphere's pixels carry colours of its colour bar (the light darkens them only a
+// little and adds no highlight). A field rising smoothly from south to north over the whole map; of the sphere's
+// pixels well inside its outline and off the grid lines, at least 95% lie within 24 levels (RGB distance) of some colour of the bar.
+TEST_F(PixelProbe, ColouredSphereKeepsTheColoursOfItsBar) {
+  auto decoration = std::make_shared<SphereDecoration>();
+  SphereField field{"K", true, 32, 64, {}, -1.0, 2.0};
+  for (int i = 0; i < field.phiCount; ++i)
+    for (int j = 0; j < field.tCount; ++j) field.values.push_back(float(-1.0 + 3.0 * (i + 0.5) / field.phiCount));
+  decoration->field = field;
+  FrameState colored = probeFrame();
+  colored.runs.clear();
+  colored.sphereDecoration = decoration;
+  ViewSettings side = settings;
+  side.camera.viewDirection = {0.6, 0.3, 0.4};
+  Renderer sideRenderer(side, {640, 360});
+  const Image picture = sideRenderer.render(colored);
+  const auto rects = layoutPanels(side.panels, 640, 360);
+  PixelRect rect{};
+  for (std::size_t i = 0; i < side.panels.size(); ++i)
+    if (side.panels[i].kind == PanelKind::Sphere) rect = rects[i];
+  rect.width -= std::min(0.24f * rect.width, 0.45f * rect.height);
+  const SphereCamera sideCamera(side.camera, colored.time, rect);
+  const ColorScale scale{field.min, field.max, true};
+  std::vector<Rgba> bar;
+  for (int k = 0; k <= 512; ++k) bar.push_back(scale.colorAt(k / 512.0));
+  int probed = 0, faithful = 0;
+  const V3 eye = sideCamera.eye();
+  for (int k = 0; k < 1600; ++k) {  // points spread over the sphere; those facing the eye well inside the outline
+    const double z = 1 - (k + 0.5) * 2 / 1600, r = std::sqrt(1 - z * z), a = k * 2.399963;
+    const V3 p{r * std::cos(a), r * std::sin(a), z};
+    const double facing = (p.x * eye.x + p.y * eye.y + p.z * eye.z) / std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
+    if (facing < 0.5 || std::abs(z) > 0.95) continue;
+    // Off the chart grid's lines (every 15 degrees in phi and t), which are drawn over the colours on purpose.
+    const auto offGrid = [](double angle) {
+      const double step = 15 * kDeg;
+      return std::abs(angle / step - std::round(angle / step)) * 15 > 2;
+    };
+    if (!offGrid(std::asin(z)) || !offGrid(std::atan2(p.y, p.x))) continue;
+    const P2 at = sideCamera.project(p);
+    const Rgb8 c = pixel(picture, int(at.x), int(at.y));
+    double nearest = 1e9;
+    for (const Rgba& b : bar)
+      nearest = std::min(nearest, std::hypot(c.r - 255.0 * b.r, c.g - 255.0 * b.g, c.b - 255.0 * b.b));
+    ++probed;
+    faithful += nearest <= 24;
+  }
+  ASSERT_GT(probed, 100);
+  EXPECT_GE(faithful, 0.95 * probed) << faithful << " of " << probed << " pixels on the bar's colours";
 }
 
 }  // namespace

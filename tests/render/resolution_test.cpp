@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 
 #include "fixtures/synthetic_frame.hpp"
 #include "reference_frames.hpp"
@@ -95,7 +96,18 @@ std::vector<Case> cases() {
   ViewSettings automatic;  // the default layout: sphere, linkage, text band
   ViewSettings overlay = testing::smallSettings();
   overlay.linkageLayout = LinkageLayout::Overlay;
+  // Three runs seen from below: hidden sections (dashes), hidden states (rings), start bars, arrowheads, both poles'
+  // labels and the seams with their label.
+  SyntheticOptions three;
+  three.runs = 3;
+  FrameState farSide = syntheticFrame(5.0, 300, three);
+  auto seams = std::make_shared<SphereDecoration>();
+  seams->seam = true;
+  farSide.sphereDecoration = seams;
+  ViewSettings below = testing::smallSettings();
+  below.camera.viewDirection = {-0.5, 0.5, -0.7};
   return {{"panels_sphere", syntheticFrame(2.0, 120), testing::smallSettings()},
+          {"far_side_marks_labels", farSide, below},
           {"default_layout_stopped", syntheticFrame(7.0, 420, stopping), automatic},
           {"ball_overlay", syntheticFrame(4.0, 240, ball), overlay},
           rope()};
