@@ -601,6 +601,7 @@ void drawSeams(const PanelContext& context, const SphereCamera& camera, LabelPla
       auto& other = hidden ? front_ : back_;
       if (!other.empty()) flush();
       side.push_back({camera.project(p), (hidden ? 0.6f : 1.0f) * context.unit, hidden ? ghost(red) : red, {}});
+      if (!hidden) placer.avoidPoint(camera.project(p));  // labels keep off the seam as off the paths
       const V3 eye = camera.eye();
       const double facing = (p.x * eye.x + p.y * eye.y + p.z * eye.z) / std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
       if (!hidden && std::abs(phi) < 1.2 && facing > namedFacing) {
@@ -706,8 +707,8 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   for (const P2& p : pathPoints) placer.avoidPoint(p);
   // Labels over the paths (never struck through), placed clear of the balls, the paths and each other.
   ShapeBatch labelLayer;
-  if (space == ViewSpace::Sphere) labelChartPoles(context, camera, placer, labels, back, labelLayer);
   if (decoration && decoration->seam) drawSeams(context, camera, placer, labels, back, labelLayer);
+  if (space == ViewSpace::Sphere) labelChartPoles(context, camera, placer, labels, back, labelLayer);
   batch.append(back);
   batch.append(front);
   batch.append(labelLayer);
