@@ -344,7 +344,7 @@ PlotLayout layoutPlot(const PanelContext& c, const PlotFrame& plot) {
   layout.areaY0 = layout.legendBottom + 0.6f * line;
   layout.valueLabelShown = !compact && !plot.valueLabel.empty() && plot.roundoffNote.empty();
   layout.valueLabelBaseline = layout.areaY0 + ascent;
-  if (layout.valueLabelShown) layout.areaY0 += 1.1f * line;
+  if (layout.valueLabelShown) layout.areaY0 += 1.1f * line + 0.6f * ascent;  // clear of the top tick's label
   layout.areaY1 = c.rect.y + c.rect.height - bottomRoom;
   layout.yTicks = std::max(2, int((layout.areaY1 - layout.areaY0) / (1.25f * line)) + 1);
   const Axis y = valueAxis(plot, layout.yTicks);
