@@ -94,6 +94,17 @@ struct RunFrame {
   std::string stopWhy;     // what that means, in a sentence (the reason's meaning in contracts/registry.hpp)
   std::string stopMeasured;  // a watchdog's reading against its limit, e.g. "energy drift 2.11 > limit 1" (or empty)
   double baseLength = 3;   // L of this run's own linkage (runs may differ in L and masses, never in n)
+  // The linkage panel's physics: M_1..M_(n-1) at the hinges and m_1..m_n along the rods of this run's chain
+  // (empty: the spec's unit hinge masses and massless rods).
+  std::vector<double> hingeMasses, rodMasses;
+  // A push or drag start, marked in the first frames: the start velocity of each hinge it sets moving (rod lengths
+  // per second), and how strongly this frame shows them (1 at the start, fading to 0 in limits::kPushShownSeconds).
+  struct HingeArrow {
+    int hinge = 1;  // 1..n-1
+    Vec2 velocity;
+  };
+  std::vector<HingeArrow> push;
+  float pushShown = 0;
 
   // Linkage panel: the n-1 interior hinges at the last valid time (frozen once stopped).
   std::vector<Vec2> hinges;
@@ -132,6 +143,10 @@ struct PlotFrame {
   // empty when no value of the whole animation can be drawn.
   std::optional<std::array<double, 2>> valueRange;
   std::string emptyNote;  // why the plot stays empty for the whole animation, if it does
+  std::string valueLabel;  // what the y axis shows and in what unit, e.g. "max hinge distance, rod lengths"
+  // Not empty when every value of the whole animation lies within roundoff: the panel says this one line (e.g.
+  // "energy conserved to 3×10⁻¹⁵ over the run") instead of an axis.
+  std::string roundoffNote;
   std::vector<PlotSeries> series;
 };
 
@@ -169,6 +184,9 @@ struct FrameState {
   std::vector<RunFrame> runs;
   std::vector<PlotFrame> plots;  // one per plot panel, in layout order
   std::shared_ptr<const SphereDecoration> sphereDecoration;  // null: the plain sphere
+  // The part of the plane the linkage panel shows, in rod lengths {x0, x1, y0, y1}: both pins and every hinge of
+  // every run at every frame time of the whole animation; empty: every configuration the chains can take.
+  std::optional<std::array<double, 4>> linkageBox;
 };
 
 }  // namespace sl

@@ -30,6 +30,13 @@ inline constexpr double kMaxTrailFadeSeconds = 60;
 // kRecentPathPoints at full resolution: its memory is bounded whatever the duration and sampling.
 inline constexpr std::size_t kMaxPathPoints = 20000;
 inline constexpr std::size_t kRecentPathPoints = 2000;
+// What the frames show: a plot whose every value stays at or below kRoundoffLevel (a relative energy error, a
+// hinge distance in rod lengths: about 450 unit roundoffs), or an energy error of adaptive runs that stays within
+// kToleranceEnergyFactor times their tolerance, says so in one line instead of drawing an axis; a push or drag
+// start is marked by arrows over the first kPushShownSeconds of the motion.
+inline constexpr double kRoundoffLevel = 1e-13;
+inline constexpr double kToleranceEnergyFactor = 100;
+inline constexpr double kPushShownSeconds = 1.5;
 // A run's family: members beside the run, their spread and a cloud's perturbation size.
 inline constexpr int kMaxFamilyMembers = 256;
 inline constexpr double kMaxFamilySpread = 3.141592653589793;  // a fan's whole angle, a parallel family's width

@@ -6,6 +6,8 @@
 #include <stdexcept>
 
 #include "contracts/limits.hpp"
+#include "linkage/chain.hpp"
+#include "simulation/initial_state.hpp"
 #include "contracts/parallel_for.hpp"
 #include "frames/sphere_decoration.hpp"
 
@@ -67,6 +69,23 @@ Vec3 pointAtTime(const Path& path, double t) {
   return {a.x + u * (b.x - a.x), a.y + u * (b.y - a.y), a.z + u * (b.z - a.z)};
 }
 
+// A push or drag start: the hinges it sets moving and their start velocities (none for other starts). A drag moves
+// every hinge: the fastest ones (at least half the top speed) are marked.
+std::vector<RunFrame::HingeArrow> pushArrows(const InitialSpec& initial, const InitialState& start, const Chain& chain) {
+  const bool pushed = initial.kind == InitialSpec::Kind::Drag ||
+                      (initial.kind == InitialSpec::Kind::Hinges && initial.hingeVelocities.size() == 0);
+  if (!pushed) return {};
+  Eigen::Matrix2Xd velocities = start.hingeVelocities;
+  if (velocities.size() == 0 && start.spherePoint.size() > 0) velocities = hingeVelocitiesOnSphere(chain, start.spherePoint, start.sphereVelocity);
+  std::vector<RunFrame::HingeArrow> arrows;
+  const double top = velocities.size() > 0 ? velocities.colwise().norm().maxCoeff() : 0;
+  if (!(top > 0) || !std::isfinite(top)) return {};
+  for (Eigen::Index k = 0; k < velocities.cols(); ++k)
+    if (velocities.col(k).norm() >= 0.5 * top)
+      arrows.push_back({int(k) + 1, {velocities(0, k), velocities(1, k)}});
+  return arrows;
+}
+
 }  // namespace
 
 ColorRGB runColor(const Scene& scene, size_t run) {
@@ -99,13 +118,17 @@ FrameBuilder::FrameBuilder(const Scene& scene, const std::vector<InitialState>& 
       history_(runs_.size()),
       divergence_(runs_.empty() ? 0 : runs_.size() - 1),
       sphereDecoration_(makeSphereDecoration(scene.chain, scene.view.sphereSurface)),
-      plotOverviews_(overviewPlots(scene, starts, cancelled)) {
+      overview_(overviewMotion(scene, starts, cancelled)) {
   for (size_t i = 0; i < runs_.size(); ++i) {
     RunFrame& frame = history_[i].frame;
     frame.name = scene.runs[i].name;
     frame.method = nameOf(scene.runs[i].config.method);
     frame.color = runColor(scene, i);
     frame.baseLength = scene.runs[i].chain.baseLength;
+    const Chain& chain = scene.runs[i].chain;
+    frame.hingeMasses.assign(chain.hingeMasses.data(), chain.hingeMasses.data() + chain.hingeMasses.size());
+    frame.rodMasses.assign(chain.rodMasses.data(), chain.rodMasses.data() + chain.rodMasses.size());
+    frame.push = pushArrows(scene.runs[i].initial, starts.at(i), chain);
     if (i < families_.size()) frame.members.resize(families_[i].size());
     history_[i].memberPaths.resize(frame.members.size());
     history_[i].trails.resize(scene.view.trailHinges.size());
@@ -255,9 +278,12 @@ FrameState FrameBuilder::snapshot(int k) const {
   state.rods = scene_.chain.rods;
   state.viewSpace = view_.space();
   state.sphereDecoration = sphereDecoration_;
+  state.linkageBox = overview_.linkageBox;
   // Paths, trails and plots refer to the history, never copy it.
   for (const RunHistory& history : history_) {
     RunFrame run = history.frame;
+    run.pushShown = run.push.empty() ? 0.0f : float(std::max(0.0, 1.0 - state.time / limits::kPushShownSeconds));
+    if (run.pushShown == 0) run.push.clear();
     run.path = history.path.points.view();
     run.pathTimes = history.path.times.view();
     for (const SharedTrack<Vec2>& trail : history.trails) run.trails.push_back(trail.view());
@@ -273,11 +299,13 @@ FrameState FrameBuilder::snapshot(int k) const {
     PlotFrame plot;
     plot.logY = spec.logY;
     plot.timeMax = scene_.duration;
-    plot.valueRange = plotOverviews_[p].valueRange;
-    plot.emptyNote = plotOverviews_[p].emptyNote;
+    plot.valueRange = overview_.plots[p].valueRange;
+    plot.emptyNote = overview_.plots[p].emptyNote;
+    plot.roundoffNote = overview_.plots[p].roundoffNote;
     switch (spec.kind) {  // every kind, no default: the compiler names a kind left out
       case PlotKind::Divergence:
         plot.title = "divergence from " + scene_.runs[0].name + " (max hinge distance)";
+        plot.valueLabel = "hinge distance (rod lengths)";
         for (size_t run = 1; run < runs_.size(); ++run) {
           plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, divergence_[run - 1].view(), {},
                                  std::min(stopTimeSoFar(history_[0].frame), stopTimeSoFar(history_[run].frame))});
@@ -285,6 +313,7 @@ FrameState FrameBuilder::snapshot(int k) const {
         break;
       case PlotKind::Spread:
         plot.title = "spread of the family (largest hinge distance from the run)";
+        plot.valueLabel = "hinge distance (rod lengths)";
         for (size_t run = 0; run < runs_.size(); ++run) {
           if (!scene_.runs[run].family) continue;
           plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, history_[run].spreads.view(), {},
@@ -293,6 +322,7 @@ FrameState FrameBuilder::snapshot(int k) const {
         break;
       case PlotKind::Jacobi:
         plot.title = "Jacobi field across the motion |J_perp| (zeros: conjugate points)";
+        plot.valueLabel = "|J⊥| (metric units)";
         for (size_t run = 0; run < runs_.size(); ++run) {
           if (!scene_.runs[run].config.jacobi) continue;
           plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, history_[run].jacobiSizes.view(),
@@ -301,6 +331,7 @@ FrameState FrameBuilder::snapshot(int k) const {
         break;
       case PlotKind::EnergyError:
         plot.title = "relative energy error |E - E0| / E0";
+        plot.valueLabel = "|E − E0| / E0 (no unit)";
         for (size_t run = 0; run < runs_.size(); ++run) {
           plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, history_[run].energyErrors.view(),
                                  {}, stopTimeSoFar(history_[run].frame)});

@@ -72,7 +72,7 @@ class FrameBuilder {
   SharedTrack<double> plotTimes_;
   std::vector<SharedTrack<double>> divergence_;  // [run - 1][frame]: run 0 against run
   std::shared_ptr<const SphereDecoration> sphereDecoration_;  // computed once, shared by every frame
-  std::vector<PlotOverview> plotOverviews_;                   // per plot: the whole animation's range, empty note
+  MotionOverview overview_;  // per plot: the whole animation's range, empty note; the linkage panel's box
 };
 
 // The default colour of run i (a colour-blind-safe palette), unless the scene gives one.

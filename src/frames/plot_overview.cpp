@@ -5,7 +5,9 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "contracts/limits.hpp"
 #include "contracts/parallel_for.hpp"
+#include "contracts/registry.hpp"
 #include "linkage/chain.hpp"
 #include "simulation/family.hpp"
 #include "simulation/trajectory.hpp"
@@ -21,13 +23,58 @@ std::string stopText(const std::string& name, const std::optional<StopInfo>& sto
   return "\"" + name + "\" stopped at t = " + time + " (" + (stop ? nameOf(stop->reason) : std::string("?")) + ")";
 }
 
+bool showsLinkage(const Scene& scene) {
+  return scene.view.panels.empty() || std::any_of(scene.view.panels.begin(), scene.view.panels.end(),
+                                                  [](const PanelSpec& panel) { return panel.kind == PanelKind::Linkage; });
+}
+
+// The box {x0, x1, y0, y1} grown to hold p.
+void holdPoint(std::array<double, 4>& box, double x, double y) {
+  if (!std::isfinite(x) || !std::isfinite(y)) return;
+  box[0] = std::min(box[0], x), box[1] = std::max(box[1], x);
+  box[2] = std::min(box[2], y), box[3] = std::max(box[3], y);
+}
+
+// What a plot whose every value lies within roundoff (or, for an energy error, within what its integrator's
+// tolerance allows) says instead of an axis; empty when its values do not. `allowed`: that level.
+std::string roundoffNote(PlotKind kind, double largest, double allowed, std::size_t runs) {
+  if (!(largest >= 0 && largest <= allowed)) return {};  // -inf: no value at all
+  const std::string level = largest > 0 ? "to " + typesetPowerOfTen(largest) : "exactly";
+  switch (kind) {
+    case PlotKind::EnergyError:
+      return "energy conserved " + level + (runs > 1 ? " by every run" : " over the run") +
+             (largest > limits::kRoundoffLevel ? ", as its integrator's tolerance allows" : "");
+    case PlotKind::Divergence: return "the runs agree " + level + " (largest hinge distance)";
+    case PlotKind::Jacobi:  // zeros of a Jacobi field are its events, never roundoff
+    case PlotKind::Spread:  // a family that stays together is what the plot is there to show
+      return {};
+  }
+  return {};
+}
+
 }  // namespace
 
-std::vector<PlotOverview> overviewPlots(const Scene& scene, const std::vector<InitialState>& starts,
-                                        const std::function<bool()>& cancelled) {
+std::string typesetPowerOfTen(double value) {
+  if (!(value > 0) || !std::isfinite(value)) return "0";
+  int exponent = int(std::floor(std::log10(value)));
+  long digit = std::lround(value / std::pow(10.0, exponent));
+  if (digit >= 10) digit = 1, ++exponent;
+  static const char* digits[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+  std::string power = exponent < 0 ? "⁻" : "";
+  for (char c : std::to_string(std::abs(exponent))) power += digits[c - '0'];
+  return (digit == 1 ? std::string() : std::to_string(digit) + "×") + "10" + power;
+}
+
+MotionOverview overviewMotion(const Scene& scene, const std::vector<InitialState>& starts,
+                              const std::function<bool()>& cancelled) {
   const std::vector<PlotSpec>& plots = scene.view.plots;
-  if (plots.empty()) return {};
+  const bool anyFamily =
+      std::any_of(scene.runs.begin(), scene.runs.end(), [](const RunSpec& run) { return bool(run.family); });
+  const bool wantBox = showsLinkage(scene) && !anyFamily && !scene.runs.empty();
+  if (plots.empty() && !wantBox) return {};
   const std::size_t runCount = scene.runs.size();
+  std::array<double, 4> box{0, 0, 0, 0};
+  for (const RunSpec& run : scene.runs) holdPoint(box, run.chain.baseLength, 0);
   std::vector<Trajectory> runs;
   for (std::size_t r = 0; r < runCount; ++r) {
     runs.emplace_back(scene.runs[r].chain, starts.at(r), scene.runs[r].config);
@@ -57,6 +104,9 @@ std::vector<PlotOverview> overviewPlots(const Scene& scene, const std::vector<In
     for (std::size_t r = 0; r < runCount; ++r) {
       if (!stopped[r]) samples[r] = runs[r].sampleAt(t);
       stopped[r] = stopped[r] || !samples[r];
+      if (samples[r])
+        for (Eigen::Index j = 0; j < samples[r]->hinges.cols(); ++j)
+          holdPoint(box, samples[r]->hinges(0, j), samples[r]->hinges(1, j));
       energy[r].push_back(samples[r] ? std::abs(samples[r]->relativeEnergyDrift) : nan);
       jacobi[r].push_back(samples[r] ? samples[r]->jacobi.value_or(nan) : nan);
       divergence[r].push_back(r > 0 && samples[0] && samples[r] ? hingeDistance(samples[0]->hinges, samples[r]->hinges)
@@ -75,7 +125,8 @@ std::vector<PlotOverview> overviewPlots(const Scene& scene, const std::vector<In
     }
   }
 
-  std::vector<PlotOverview> overviews;
+  MotionOverview overview;
+  if (wantBox) overview.linkageBox = box;
   for (const PlotSpec& spec : plots) {
     const bool isDivergence = spec.kind == PlotKind::Divergence;
     const auto& values = [&]() -> const std::vector<std::vector<double>>& {
@@ -85,31 +136,44 @@ std::vector<PlotOverview> overviewPlots(const Scene& scene, const std::vector<In
         case PlotKind::Spread: return spread;
         case PlotKind::EnergyError: return energy;
       }
-      throw std::logic_error("overviewPlots: a plot kind without values");
+      throw std::logic_error("overviewMotion: a plot kind without values");
     }();
-    double lo = INFINITY, hi = -INFINITY;
-    for (std::size_t r = isDivergence ? 1 : 0; r < runCount; ++r)
-      for (double v : values[r])
+    double lo = INFINITY, hi = -INFINITY, largest = -INFINITY;
+    // A level every run's values stay under: roundoff, or for an energy error of adaptive runs alone their
+    // tolerance's (limits::kToleranceEnergyFactor), the least of the runs'.
+    double allowed = INFINITY;
+    std::size_t shown = 0;  // runs with a value past the start (at the start alone, runs agree exactly)
+    for (std::size_t r = isDivergence ? 1 : 0; r < runCount; ++r) {
+      std::size_t finite = 0;
+      for (double v : values[r]) {
         if (drawable(v, spec.logY)) lo = std::min(lo, v), hi = std::max(hi, v);
-    PlotOverview overview;
-    if (spec.yRange) {
-      overview.valueRange = spec.yRange;
-    } else if (lo <= hi) {
-      overview.valueRange = std::array<double, 2>{lo, hi};
+        if (std::isfinite(v)) largest = std::max(largest, std::abs(v)), ++finite;
+      }
+      shown += finite > 1 ? 1 : 0;
+      const RunConfig& config = scene.runs[r].config;
+      const bool byTolerance = spec.kind == PlotKind::EnergyError && traits(config.integrator).adaptive;
+      allowed = std::min(allowed, std::max(limits::kRoundoffLevel,
+                                           byTolerance ? limits::kToleranceEnergyFactor * config.tolerance : 0.0));
     }
-    if (!(lo <= hi)) {
+    PlotOverview& plot = overview.plots.emplace_back();
+    if (spec.yRange) {
+      plot.valueRange = spec.yRange;
+    } else if (lo <= hi) {
+      plot.valueRange = std::array<double, 2>{lo, hi};
+    }
+    if (shown > 0) plot.roundoffNote = roundoffNote(spec.kind, largest, allowed, shown);
+    if (!(lo <= hi) && plot.roundoffNote.empty()) {
       // Say why: a run that stopped at once, or values a log axis cannot show (exactly zero).
       std::string why;
       for (std::size_t r = 0; r < runCount; ++r)
         if (runs[r].stop() && runs[r].stop()->time <= scene.frameTime(std::min(frames - 1, 1)))
           why += (why.empty() ? "" : "; ") + stopText(scene.runs[r].name, runs[r].stop());
-      overview.emptyNote = !why.empty() ? "nothing to plot: " + why
+      plot.emptyNote = !why.empty() ? "nothing to plot: " + why
                            : spec.logY  ? "nothing to plot: every value is 0 (a log axis cannot show it)"
                                         : "nothing to plot";
     }
-    overviews.push_back(std::move(overview));
   }
-  return overviews;
+  return overview;
 }
 
 }  // namespace sl

@@ -1,8 +1,9 @@
 #pragma once
 // What each plot panel shows over the whole animation, known before the first frame: the y range (so the axes
-// never jump) and, for a plot that stays empty, why. Computed from fresh trajectories of the scene's runs sampled
-// at every frame time; integration never depends on which times are asked for, so the values are exactly those the
-// frames plot. Every shard computes the same overview.
+// never jump), for a plot that stays empty why, for one within roundoff a line saying so; and the part of the
+// plane the chains sweep (so the linkage panel fills its panel and never jumps). Computed from fresh trajectories
+// of the scene's runs sampled at every frame time; integration never depends on which times are asked for, so the
+// values are exactly those the frames plot. Every shard computes the same overview.
 
 #include <array>
 #include <functional>
@@ -18,12 +19,24 @@ namespace sl {
 struct PlotOverview {
   std::optional<std::array<double, 2>> valueRange;
   std::string emptyNote;
+  std::string roundoffNote;  // PlotFrame::roundoffNote: every value within limits::kRoundoffLevel, said in a line
 };
 
-// One per scene.view.plots entry; empty when the scene has no plots (nothing is integrated then).
+// What the whole animation shows, known before its first frame.
+struct MotionOverview {
+  std::vector<PlotOverview> plots;  // one per scene.view.plots entry
+  // FrameState::linkageBox: both pins and every run's hinges at every frame time (empty when the scene has no
+  // linkage panel, or a family whose members the box would not hold).
+  std::optional<std::array<double, 4>> linkageBox;
+};
+
+// Integrates fresh trajectories of the runs only when the scene has plots or a linkage panel to fit.
 // `cancelled` is given to the trajectories (Trajectory::setCancellation): RunCancelled comes through.
-std::vector<PlotOverview> overviewPlots(const Scene& scene, const std::vector<InitialState>& starts,
-                                        const std::function<bool()>& cancelled = {});
+MotionOverview overviewMotion(const Scene& scene, const std::vector<InitialState>& starts,
+                              const std::function<bool()>& cancelled = {});
+
+// "3×10⁻¹⁵": a positive value to one significant digit, as the frames' text typesets it.
+std::string typesetPowerOfTen(double value);
 
 
 }  // namespace sl

@@ -1,6 +1,8 @@
 // The linkage panel: the chain in its plane, drawn as lit 2D shapes (silver rods as cylinders, joints
 // as balls), the two pins as charcoal bolts on a floor line, and fading trails of chosen hinges.
-// The view is fixed per scene (from n and the runs' L alone), so the picture never jumps as the chain moves.
+// The physics shows: a hinge's ball grows with its mass (a massless hinge has none), a rod thickens with its mass,
+// a stopped chain is grey and crossed out, a push or drag start is an arrow at each pushed hinge in the first frames.
+// The view is fixed per scene (plane_view.hpp), so the picture never jumps as the chain moves.
 
 #include <algorithm>
 #include <cmath>
@@ -37,34 +39,92 @@ void drawTrails(const RunFrame& run, const PlaneView& view, float rod, float uni
     for (std::size_t i = 0; i < trail.size(); ++i) {
       if (!std::isfinite(trail[i].x) || !std::isfinite(trail[i].y)) continue;
       const float age = trail.size() > 1 ? float(i) / float(trail.size() - 1) : 1.0f;  // oldest first
-      points.push_back({view(trail[i]), std::max(0.8f * unit, 0.22f * rod), toRgba(run.color, 0.75f * age), {}});
+      const Rgba color = run.stopped ? palette::stoppedGrey : toRgba(run.color);
+      points.push_back({view(trail[i]), std::max(0.8f * unit, 0.22f * rod), palette::withAlpha(color, 0.75f * age), {}});
     }
     batch.polyline(points);
   }
 }
 
+// A hinge's ball radius relative to a unit mass's: as the cube root of the mass (a ball of that mass), within
+// [0.45, 2.2]; 0 for a massless hinge (no ball). Masses not given are the spec's unit masses.
+float hingeBallScale(const RunFrame& run, std::size_t hinge) {
+  const double mass = hinge < run.hingeMasses.size() ? run.hingeMasses[hinge] : 1.0;
+  return mass > 0 ? std::clamp(float(std::cbrt(mass)), 0.45f, 2.2f) : 0.0f;
+}
+
+// A rod's half width relative to a massless rod's: as the square root of 1 + its mass (a cross-section growing
+// with the mass), at most 3.
+float rodWidthScale(const RunFrame& run, std::size_t rod) {
+  const double mass = rod < run.rodMasses.size() ? run.rodMasses[rod] : 0.0;
+  return mass > 0 ? std::min(3.0f, float(std::sqrt(1 + mass))) : 1.0f;
+}
+
+// Rods k of the drawn joints: the rod between drawn joints k and k+1 is the chain's rod k while no hinge is left out
+// (a broken state's are); else every rod is drawn as massless.
+bool allJointsDrawn(const RunFrame& run, const std::vector<P2>& joints) { return joints.size() == run.hinges.size() + 2; }
+
+void drawCross(P2 at, float arm, float width, Rgba color, ShapeBatch& batch) {
+  batch.capsule({at.x - arm, at.y - arm}, {at.x + arm, at.y + arm}, width, color);
+  batch.capsule({at.x - arm, at.y + arm}, {at.x + arm, at.y - arm}, width, color);
+}
+
 void drawChain(const RunFrame& run, const PlaneView& view, double base, float rod, float outline, float unit,
                ShapeBatch& batch) {
   const std::vector<P2> joints = chainJoints(run.hinges, view, base);
+  const bool massesKnown = allJointsDrawn(run, joints);
   // Joints as balls while a rod is long enough on screen to show them apart (8 px at 720p); a long chain's hinges
-  // would only blot it, and its rods, hairlines then, are drawn in the run's colour to stand out.
+  // would only blot it, and its rods, hairlines then, are drawn in the run's colour to stand out. A stopped chain is
+  // grey throughout.
   const bool jointsApart = view.scale >= 8 * unit;
-  const Rgba rodColor = jointsApart ? palette::silver : toRgba(run.color);
+  const Rgba runColor = run.stopped ? palette::stoppedGrey : toRgba(run.color);
+  const Rgba rodColor = jointsApart ? (run.stopped ? palette::stoppedGrey : palette::silver) : runColor;
+  auto rodWidth = [&](std::size_t k) { return massesKnown ? rod * rodWidthScale(run, k) : rod; };
   // In overlay, each run's rods sit on an outline of its colour, narrower for each later run: runs that coincide
   // show as nested rings of their colours around the silver.
   if (outline > 0)
     for (std::size_t k = 0; k + 1 < joints.size(); ++k)
-      batch.capsule(joints[k], joints[k + 1], rod + outline, toRgba(run.color));
+      batch.capsule(joints[k], joints[k + 1], rodWidth(k) + outline, runColor);
   for (std::size_t k = 0; k + 1 < joints.size(); ++k)
-    batch.capsule(joints[k], joints[k + 1], rod, rodColor, jointsApart, 0.6f);
+    batch.capsule(joints[k], joints[k + 1], rodWidth(k), rodColor, jointsApart, 0.6f);
   for (std::size_t k = 1; jointsApart && k + 1 < joints.size(); ++k) {
-    batch.disc(joints[k], 1.75f * rod, palette::jointSilver, true, 0.5f);
-    batch.disc(joints[k], 0.85f * rod, toRgba(run.color), true, 0.4f);
+    const float ball = massesKnown ? hingeBallScale(run, k - 1) : 1.0f;
+    if (ball == 0) continue;  // a massless hinge: a bare joint
+    batch.disc(joints[k], 1.75f * ball * rod, run.stopped ? palette::stoppedGrey : palette::jointSilver, true, 0.5f);
+    batch.disc(joints[k], 0.85f * ball * rod, runColor, true, 0.4f);
   }
   const float pinRadius = std::max(2.2f * rod, 3.3f * markUnit(unit));  // the pins stay visible however long the chain
   for (const P2& pin : {joints.front(), joints.back()}) {
     batch.disc(pin, pinRadius, palette::pinCharcoal, true, 0.3f);
     batch.disc(pin, pinRadius * (0.7f / 2.2f), palette::silver);
+  }
+  if (run.stopped) {  // crossed out over the middle of the chain
+    const P2 middle = joints[joints.size() / 2];
+    drawCross(middle, 9 * markUnit(unit), 1.6f * markUnit(unit), palette::stopRed, batch);
+  }
+}
+
+// A push or drag start: an arrow from each pushed hinge along its start velocity, the fastest 55 units long, fading
+// out over the first frames.
+void drawPush(const RunFrame& run, const PlaneView& view, float unit, ShapeBatch& batch) {
+  double top = 0;
+  for (const RunFrame::HingeArrow& arrow : run.push) top = std::max(top, std::hypot(arrow.velocity.x, arrow.velocity.y));
+  if (!(top > 0) || run.pushShown <= 0) return;
+  const Rgba color = palette::withAlpha(palette::ink, 0.85f * run.pushShown);
+  const float width = 1.3f * markUnit(unit), head = 9 * markUnit(unit);
+  for (const RunFrame::HingeArrow& arrow : run.push) {
+    const std::size_t k = std::size_t(arrow.hinge - 1);
+    if (k >= run.hinges.size() || !std::isfinite(run.hinges[k].x) || !std::isfinite(run.hinges[k].y)) continue;
+    const P2 from = view(run.hinges[k]);
+    const double length = 55 * unit * std::hypot(arrow.velocity.x, arrow.velocity.y) / top;
+    const double dx = arrow.velocity.x / top * 55 * unit, dy = -arrow.velocity.y / top * 55 * unit;  // y down
+    if (length < 2 * head) continue;
+    const P2 tip{float(from.x + dx), float(from.y + dy)};
+    const float ux = float(dx / length), uy = float(dy / length);
+    batch.capsule(from, tip, width, color);
+    for (const float side : {1.0f, -1.0f})
+      batch.capsule(tip, {tip.x - head * (0.87f * ux - side * 0.5f * uy), tip.y - head * (0.87f * uy + side * 0.5f * ux)},
+                    width, color);
   }
 }
 
@@ -96,6 +156,7 @@ void drawRun(const PanelContext& context, const RunFrame* run, const PixelRect& 
   drawTrails(*run, view, rod, u, batch);
   drawFeather(*run, view, base, rod, u, batch);
   drawChain(*run, view, base, rod, outline * rod, u, batch);
+  drawPush(*run, view, u, batch);
   if (label) {
     const std::string name = context.font.fitted(run->name, TextSize::Small, area.width);
     const float width = context.font.width(name, TextSize::Small);

@@ -17,6 +17,8 @@ inline constexpr Rgba ink{0.16f, 0.16f, 0.18f, 1};
 inline constexpr Rgba softInk{0.42f, 0.41f, 0.40f, 1};
 inline constexpr Rgba gridLight{0.86f, 0.85f, 0.82f, 1};
 inline constexpr Rgba stopRed{0.70f, 0.12f, 0.10f, 1};
+inline constexpr Rgba nowCursor{0.30f, 0.29f, 0.31f, 0.55f};  // the plots' "now" line at the frame's time
+inline constexpr Rgba stoppedGrey{0.60f, 0.60f, 0.60f, 1};     // a stopped chain in the linkage panel
 
 inline Rgba withAlpha(Rgba c, float a) { return {c.r, c.g, c.b, a}; }
 

@@ -39,6 +39,8 @@ struct PlotLayout {
   int legendRows;  // at most this many rows (1 beside the title, 2 below it)
   float areaX0, areaY0, areaX1, areaY1;
   int yTicks;      // at most this many labelled y ticks: what the area's height has room for
+  bool valueLabelShown;       // the y axis's name and unit, above its top tick label (not in a compact panel)
+  float valueLabelBaseline;
   bool areaShown;  // false when the panel has room for the title only
 };
 PlotLayout layoutPlot(const PanelContext& context, const PlotFrame& plot);

@@ -1,6 +1,7 @@
 #include "render/plane_view.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace sl {
@@ -55,10 +56,22 @@ PlaneView fitChainView(int rods, double base, const PixelRect& area) {
   return fitBox(box, area);
 }
 
+// The part of the plane the motion sweeps (FrameState::linkageBox), with room round it for the drawn joints, the
+// pins and the floor's hatching: a fraction of its larger side, and at least a third of a rod.
+Box sweptBox(const std::array<double, 4>& swept) {
+  const auto [x0, x1, y0, y1] = swept;
+  const double pad = std::max(1.0 / 3.0, 0.06 * std::max(x1 - x0, y1 - y0));
+  return {x0 - pad, x1 + pad, y0 - pad, y1 + pad};
+}
+
 PlaneView fitFrameView(const FrameState& frame, const PixelRect& area, float captionHeight) {
   Box box;
-  for (const RunFrame& run : frame.runs) holdChain(frame.rods, run.baseLength, box);
-  if (frame.runs.empty()) holdChain(frame.rods, frame.rods - 1, box);
+  if (frame.linkageBox) {
+    box = sweptBox(*frame.linkageBox);
+  } else {
+    for (const RunFrame& run : frame.runs) holdChain(frame.rods, run.baseLength, box);
+    if (frame.runs.empty()) holdChain(frame.rods, frame.rods - 1, box);
+  }
   PixelRect chains = area;
   chains.height = std::max(1.0f, area.height - captionHeight);
   return fitBox(box, chains);

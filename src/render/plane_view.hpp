@@ -1,6 +1,6 @@
 #pragma once
-// The linkage panel's view: plane coordinates (rod lengths, y up) to pixels, fixed per scene (from n
-// and L alone) so the picture never jumps as the chain moves.
+// The linkage panel's view: plane coordinates (rod lengths, y up) to pixels, fixed per scene (from the part of
+// the plane the whole motion sweeps, or from n and L alone) so the picture never jumps as the chain moves.
 
 #include "contracts/frame_state.hpp"
 #include "render/shape_batch.hpp"
@@ -19,8 +19,9 @@ struct PlaneView {
 // within n-k of the right one) into `area`, with a margin.
 PlaneView fitChainView(int rods, double baseLength, const PixelRect& area);
 
-// The view of a frame's linkage panel: one box holding every configuration of every run's chain (runs may
-// differ in L), so that all runs are drawn at one scale and the picture never jumps.
+// The view of a frame's linkage panel: one box holding the part of the plane the whole motion sweeps
+// (FrameState::linkageBox) or, without it, every configuration of every run's chain (runs may differ in L), so that
+// all runs are drawn at one scale, the chains fill the panel and the picture never jumps.
 // `captionHeight` pixels at the area's foot are kept for a caption (side-by-side runs are named underneath).
 PlaneView fitFrameView(const FrameState& frame, const PixelRect& area, float captionHeight = 0);
 

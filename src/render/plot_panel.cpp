@@ -2,7 +2,9 @@
 // non-finite or not positive are skipped (the line breaks there); on a linear axis non-finite ones.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
 #include <cstdio>
 #include <limits>
 
@@ -156,29 +158,69 @@ void drawAxes(const PanelContext& c, const PlotArea& area, const Axis& x, const 
 // curves keep their weight beside the labels at every frame size.
 float seriesHalfWidth(const FontAtlas& font) { return std::max(1.1f, 0.075f * font.lineHeight(TextSize::Small)); }
 
-// Where the run behind a line stopped: a red cross on the line's last drawable value up to the stop time, or on the
-// time axis when it has none (a log axis and exact zeros, say).
-void drawStop(const PlotSeries& series, const DrawnSamples& drawn, const Axis& x, const Axis& y, const PlotArea& area,
-              float halfWidth, ShapeBatch& batch) {
+// Labels put in the plot area (event times), kept apart: a label that would overlap one already placed is
+// left out.
+class PlacedLabels {
+ public:
+  bool free(float x0, float y0, float x1, float y1) const {
+    for (const auto& b : boxes_)
+      if (x0 < b[2] && b[0] < x1 && y0 < b[3] && b[1] < y1) return false;
+    return true;
+  }
+  void add(float x0, float y0, float x1, float y1) { boxes_.push_back({x0, y0, x1, y1}); }
+
+ private:
+  std::vector<std::array<float, 4>> boxes_;
+};
+
+std::string timeText(double t) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", t);
+  return text;
+}
+
+// `text` in small type beside the point (right of it, or left when the area's edge is near), above its
+// baseline `y`, unless it would overlap a label already placed.
+void labelEvent(const PanelContext& c, const PlotArea& area, const std::string& text, P2 at, float gap, Rgba color,
+                PlacedLabels& placed, ShapeBatch& batch) {
+  const float width = c.font.width(text, TextSize::Small), ascent = c.font.ascent(TextSize::Small);
+  float x = at.x + gap;
+  if (x + width > area.x1) x = at.x - gap - width;
+  if (x < area.x0) return;
+  const float y = std::clamp(at.y + 0.4f * ascent, area.y0 + ascent, area.y1 - 0.2f * ascent);
+  if (!placed.free(x, y - ascent, x + width, y + 0.2f * ascent)) return;
+  placed.add(x, y - ascent, x + width, y + 0.2f * ascent);
+  c.font.draw(batch, text, TextSize::Small, x, y, color);
+}
+
+// Where the run behind a line stopped: a red cross on the line's last drawable value up to the stop time, labelled
+// with that time; none when the line has no such value (a log axis and exact zeros, say): a cross anywhere else
+// would mark a value the run never had.
+void drawStop(const PanelContext& c, const PlotSeries& series, const DrawnSamples& drawn, const Axis& x,
+              const Axis& y, const PlotArea& area, float halfWidth, PlacedLabels& placed, ShapeBatch& batch) {
   if (!std::isfinite(series.stopTime) || series.stopTime < x.lo || series.stopTime > x.hi) return;
-  P2 at = area.at(unit(x, series.stopTime), 0);
+  std::optional<P2> last;
   for (std::size_t j = drawn.size(); j-- > 0;) {
     const std::size_t i = drawn[j];
     if (series.times[i] > series.stopTime || !drawable(series.values[i], y.log)) continue;
-    at = area.at(unit(x, series.times[i]), unit(y, series.values[i]));
+    last = area.at(unit(x, series.times[i]), unit(y, series.values[i]));
     break;
   }
+  if (!last) return;
+  P2 at = *last;
   const float arm = std::max(3.5f, 3.2f * halfWidth), width = std::max(0.9f, 0.8f * halfWidth);
   // Inside the plot area, clear of the tick labels round it (a stop at t = 0 sits in the corner).
   at.x = std::clamp(at.x, area.x0 + arm + 1, std::max(area.x0 + arm + 1, area.x1 - arm - 1));
   at.y = std::clamp(at.y, area.y0 + arm + 1, std::max(area.y0 + arm + 1, area.y1 - arm - 1));
   batch.capsule({at.x - arm, at.y - arm}, {at.x + arm, at.y + arm}, width, palette::stopRed);
   batch.capsule({at.x - arm, at.y + arm}, {at.x + arm, at.y - arm}, width, palette::stopRed);
+  labelEvent(c, area, "stop " + timeText(series.stopTime), at, arm + 0.5f * c.font.ascent(TextSize::Small),
+             palette::stopRed, placed, batch);
 }
 
 // `halfWidth`: this line's (nested, runStyleWidth); `stopHalfWidth`: the stop cross's, the same for every line.
-void drawSeries(const PlotSeries& series, const Axis& x, const Axis& y, const PlotArea& area, float halfWidth,
-                float stopHalfWidth, ShapeBatch& batch) {
+void drawSeries(const PanelContext& c, const PlotSeries& series, const Axis& x, const Axis& y, const PlotArea& area,
+                float halfWidth, float stopHalfWidth, PlacedLabels& placed, ShapeBatch& batch) {
   std::vector<PolylinePoint> points;
   const DrawnSamples drawn(series, area);
   for (std::size_t j = 0; j < drawn.size(); ++j) {
@@ -193,8 +235,9 @@ void drawSeries(const PlotSeries& series, const Axis& x, const Axis& y, const Pl
   }
   if (points.size() == 1) batch.disc(points[0].at, std::max(1.6f, 1.45f * halfWidth), points[0].color);
   batch.polyline(points);
-  drawStop(series, drawn, x, y, area, stopHalfWidth, batch);
-  // Marked times (a Jacobi field's zeros): a ring on the time axis and a faint line up through the plot.
+  drawStop(c, series, drawn, x, y, area, stopHalfWidth, placed, batch);
+  // Marked times (a Jacobi field's zeros): a ring on the time axis and a faint line up through the plot, its time
+  // written at the line's top.
   for (const double t : series.markTimes) {
     if (!std::isfinite(t) || t < x.lo || t > x.hi) continue;
     const P2 foot = area.at(unit(x, t), 0), top = area.at(unit(x, t), 1);
@@ -202,6 +245,9 @@ void drawSeries(const PlotSeries& series, const Axis& x, const Axis& y, const Pl
     batch.capsule(foot, top, 0.45f * stopHalfWidth, toRgba(series.color, 0.45f));
     batch.disc(foot, 2.4f * stopHalfWidth, toRgba(series.color));
     batch.disc(foot, 1.2f * stopHalfWidth, palette::withAlpha(palette::gridLight, 1.0f));
+    const float ascent = c.font.ascent(TextSize::Small);
+    labelEvent(c, area, timeText(t), {top.x, top.y + 0.6f * ascent}, 0.4f * ascent, toRgba(series.color), placed,
+               batch);
   }
 }
 
@@ -243,6 +289,23 @@ float timeLabelWidth(const PanelContext& c, const PlotFrame& plot) {
   return c.font.width(tickLabel(Axis{plot.timeMin, plot.timeMax, false, {}}, plot.timeMax), TextSize::Small);
 }
 
+// The line of a plot whose values all lie within roundoff, centred where the plot area would be, with the legend.
+void drawRoundoffNote(const PanelContext& c, const PlotFrame& plot, const PlotLayout& layout, ShapeBatch& batch) {
+  const float line = c.font.lineHeight(TextSize::Small), ascent = c.font.ascent(TextSize::Small);
+  const float left = c.rect.x + 0.5f * ascent, right = c.rect.x + c.rect.width - 0.5f * ascent;
+  const float top = layout.legendBottom + 0.3f * line, bottom = c.rect.y + c.rect.height;
+  const std::vector<std::string> note = c.font.wrapped(plot.roundoffNote, TextSize::Small, right - left,
+                                                       std::size_t(std::clamp((bottom - top) / line, 1.0f, 2.0f)));
+  float y = 0.5f * (top + bottom) - 0.5f * line * (float(note.size()) - 1) + 0.4f * ascent;
+  for (const std::string& text : note) {
+    c.font.draw(batch, text, TextSize::Small, 0.5f * (left + right - c.font.width(text, TextSize::Small)), y,
+                palette::ink);
+    y += line;
+  }
+  if (layout.legendShown)
+    layLegend(c, plot, layout.legendX, layout.legendRight, layout.legendBaseline, line, layout.legendRows, &batch);
+}
+
 }  // namespace
 
 // Layout, top to bottom: the title, the legend (outside the plot area, so it never covers data), the plot area
@@ -279,6 +342,9 @@ PlotLayout layoutPlot(const PanelContext& c, const PlotFrame& plot) {
   // The plot area; room on the left for the y labels, on the right for the last x label's half and the axis name.
   const float bottomRoom = (compact ? 1.35f : 2.2f) * line;
   layout.areaY0 = layout.legendBottom + 0.6f * line;
+  layout.valueLabelShown = !compact && !plot.valueLabel.empty() && plot.roundoffNote.empty();
+  layout.valueLabelBaseline = layout.areaY0 + ascent;
+  if (layout.valueLabelShown) layout.areaY0 += 1.1f * line + 0.6f * ascent;  // clear of the top tick's label
   layout.areaY1 = c.rect.y + c.rect.height - bottomRoom;
   layout.yTicks = std::max(2, int((layout.areaY1 - layout.areaY0) / (1.25f * line)) + 1);
   const Axis y = valueAxis(plot, layout.yTicks);
@@ -299,6 +365,10 @@ void drawPlotPanel(const PanelContext& c, int plotIndex, ShapeBatch& batch) {
   const float line = c.font.lineHeight(TextSize::Small), ascent = c.font.ascent(TextSize::Small);
   const PlotLayout layout = layoutPlot(c, plot);
   c.font.draw(batch, layout.title, layout.titleSize, c.rect.x + 0.5f * ascent, layout.titleBaseline, palette::ink);
+  if (!plot.roundoffNote.empty()) {  // nothing but roundoff to show: one line says so, in place of the axes
+    drawRoundoffNote(c, plot, layout, batch);
+    return;
+  }
   if (!layout.areaShown) return;  // no room for a plot: the title only
   const PlotArea area{layout.areaX0, layout.areaY0, layout.areaX1, layout.areaY1};
   const Axis y = valueAxis(plot, layout.yTicks);
@@ -309,10 +379,20 @@ void drawPlotPanel(const PanelContext& c, int plotIndex, ShapeBatch& batch) {
   // The axis name beyond its end, level with the axis: clear of every tick label below it.
   c.font.draw(batch, "t", TextSize::Small, area.x1 + 0.4f * ascent, area.y1 + 0.35f * ascent, palette::softInk);
   drawAxes(c, area, x, y, batch);
+  if (layout.valueLabelShown)
+    c.font.draw(batch, c.font.fitted(plot.valueLabel, TextSize::Small, c.rect.x + c.rect.width - area.x0),
+                TextSize::Small, c.rect.x + 0.5f * ascent, layout.valueLabelBaseline, palette::softInk);
+  // Now: a line across the plot at the frame's time, which relates the plot to the other panels.
+  if (c.frame.time >= x.lo && c.frame.time <= x.hi) {
+    const float at = area.at(unit(x, c.frame.time), 0).x;
+    batch.capsule({at, area.y0}, {at, area.y1}, 0.5f * seriesHalfWidth(c.font), palette::nowCursor);
+  }
   bool anyDrawn = false;
+  PlacedLabels placed;
   for (std::size_t k = 0; k < plot.series.size(); ++k) {
     const PlotSeries& series = plot.series[k];
-    drawSeries(series, x, y, area, seriesWidth(c.font, k, plot.series.size()), seriesHalfWidth(c.font), batch);
+    drawSeries(c, series, x, y, area, seriesWidth(c.font, k, plot.series.size()), seriesHalfWidth(c.font), placed,
+               batch);
     const DrawnSamples drawn(series, area);
     for (std::size_t j = 0; j < drawn.size() && !anyDrawn; ++j) anyDrawn = drawable(series.values[drawn[j]], plot.logY);
   }

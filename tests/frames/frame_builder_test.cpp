@@ -1,4 +1,5 @@
 // The frame builder against fresh trajectories sampled directly, and shards against a full walk.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -370,6 +371,85 @@ TEST(FrameBuilder, APlotThatStaysEmptySaysWhy) {
   EXPECT_FALSE(frame.plots[0].valueRange);
   EXPECT_NE(frame.plots[0].emptyNote.find("\"published\" stopped at t = 0 (field-blow-up)"), std::string::npos)
       << frame.plots[0].emptyNote;
+}
+
+// The linkage panel's box is the part of the plane the whole motion sweeps, known from the first frame: the box
+// of both pins and of every hinge the frames themselves show, at every frame.
+TEST(FrameBuilder, TheLinkageBoxIsWhatTheFramesSweep) {
+  const Scene scene = twoRunScene();
+  FrameBuilder builder = builderFor(scene);
+  const FrameState first = builder.frame(0);
+  ASSERT_TRUE(first.linkageBox);
+  std::array<double, 4> swept{0, scene.chain.baseLength, 0, 0};
+  for (int k = 0; k < builder.frameCount(); ++k) {
+    const FrameState frame = builder.frame(k);
+    EXPECT_EQ(frame.linkageBox, first.linkageBox) << k;
+    for (const RunFrame& run : frame.runs)
+      for (const Vec2& h : run.hinges) {
+        swept[0] = std::min(swept[0], h.x), swept[1] = std::max(swept[1], h.x);
+        swept[2] = std::min(swept[2], h.y), swept[3] = std::max(swept[3], h.y);
+      }
+  }
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_NEAR((*first.linkageBox)[i], swept[i], 1e-12) << i;
+  // Narrower than every configuration the chain can take (hinge 2 may reach 2 rods above the floor).
+  EXPECT_LT((*first.linkageBox)[3] - (*first.linkageBox)[2], 3.0);
+  // No linkage panel, no box.
+  Scene plotsOnly = twoRunScene();
+  std::erase_if(plotsOnly.view.panels, [](const PanelSpec& p) { return p.kind == PanelKind::Linkage; });
+  EXPECT_FALSE(builderFor(plotsOnly).frame(0).linkageBox);
+}
+
+// An energy plot whose every value stays within what the run's tolerance allows says so in one line (its largest
+// value, typeset); one with a value above that (a fixed-step run) draws its axis. Checked against the values the
+// frames plot.
+TEST(FrameBuilder, ARoundoffOnlyPlotSaysSo) {
+  const Scene scene = parseScene(R"({"name": "r", "linkage": {"rods": 4, "L": 3, "rod_masses": [1, 1, 1, 1]},
+    "initial": {"drag": {"point": [0.936, 0.190, 0.296], "direction": [-0.35, 0.55, 0.75]}, "unit_speed": true},
+    "duration": 1.0,
+    "runs": [{"name": "exact", "method": "ambient", "integrator": "dopri5", "tolerance": 1e-10}],
+    "output": {"fps": 10}, "view": {"panels": [{"panel": "plot", "plot": "energy"}]}})",
+                                 "r.json");
+  FrameBuilder builder = builderFor(scene);
+  const FrameState last = builder.frame(builder.frameCount() - 1);
+  double largest = 0;
+  for (const double v : last.plots[0].series[0].values)
+    if (std::isfinite(v)) largest = std::max(largest, v);
+  ASSERT_LE(largest, limits::kToleranceEnergyFactor * 1e-10) << "energy drifts beyond the tolerance";
+  ASSERT_GT(largest, limits::kRoundoffLevel);
+  EXPECT_EQ(last.plots[0].roundoffNote, "energy conserved to " + typesetPowerOfTen(largest) +
+                                            " over the run, as its integrator's tolerance allows");
+  EXPECT_TRUE(last.plots[0].emptyNote.empty());
+  // The published method's drift is far above roundoff: an axis.
+  const FrameState published = builderFor(twoRunScene()).frame(0);
+  EXPECT_TRUE(published.plots[1].roundoffNote.empty());
+  EXPECT_EQ(published.plots[1].valueLabel, "|E − E0| / E0 (no unit)");
+  EXPECT_EQ(typesetPowerOfTen(3.2e-15), "3×10⁻¹⁵");
+  EXPECT_EQ(typesetPowerOfTen(1e-14), "10⁻¹⁴");
+  EXPECT_EQ(typesetPowerOfTen(9.7e-15), "10⁻¹⁴");
+}
+
+// The linkage panel's physics: each run's masses, and a push start's arrow (the pushed hinge's start velocity)
+// in the first frames only.
+TEST(FrameBuilder, MassesAndAPushReachTheFrames) {
+  const Scene scene = parseScene(R"({"name": "p", "linkage": {"rods": 6, "L": 3, "hinge_masses": [0, 1, 2, 3, 4],
+                                             "rod_masses": [1, 1, 1, 1, 1, 1]},
+    "initial": {"hinges": "arc", "push": {"hinge": 2, "velocity": [0.5, 1.5]}}, "duration": 3.0,
+    "runs": [{"name": "pushed", "method": "ambient", "integrator": "dopri5", "tolerance": 1e-8}],
+    "output": {"fps": 10}, "view": {"panels": ["linkage"]}})",
+                                 "p.json");
+  FrameBuilder builder = builderFor(scene);
+  const FrameState first = builder.frame(0);
+  EXPECT_EQ(first.runs[0].hingeMasses, (std::vector<double>{0, 1, 2, 3, 4}));
+  EXPECT_EQ(first.runs[0].rodMasses, std::vector<double>(6, 1.0));
+  // The pushed hinge is marked, along the push (its velocity projected onto the rods' constraints).
+  const auto& push = first.runs[0].push;
+  const auto pushed = std::find_if(push.begin(), push.end(), [](const RunFrame::HingeArrow& a) { return a.hinge == 2; });
+  ASSERT_NE(pushed, push.end());
+  EXPECT_GT(0.5 * pushed->velocity.x + 1.5 * pushed->velocity.y, 0) << "the arrow points against the push";
+  EXPECT_EQ(first.runs[0].pushShown, 1.0f);
+  const FrameState later = builder.frame(int(limits::kPushShownSeconds * 10) + 1);
+  EXPECT_TRUE(later.runs[0].push.empty());
+  EXPECT_TRUE(builderFor(twoRunScene()).frame(0).runs[0].push.empty()) << "coordinates and rates are no push";
 }
 
 // Memory per run is bounded: a long, densely sampled path is thinned in its older part, never in its newest.
