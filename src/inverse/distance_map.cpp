@@ -278,13 +278,17 @@ DistanceMap distanceMap(const ConstrainedModel& model, const SphereProjection& p
     return list;
   };
   double bound = options.lengthCap;
-  for (auto& [angle, trace] : fan) resample(trace, project, ds, bound);
+  auto resampleAll = [&](const std::vector<double>& which) {
+    parallelFor(which.size(), static_cast<std::size_t>(options.threads),
+                [&](std::size_t k) { resample(fan.at(which[k]), project, ds, bound); });
+  };
+  resampleAll(angles);
   rasteriseFan(raster, collect(), options.threads);
   double farthest = 0;
   for (double d : raster.distance)
     if (std::isfinite(d)) farthest = std::max(farthest, d);
   bound = 1.2 * farthest + 4 * ds;
-  for (auto& [angle, trace] : fan) resample(trace, project, ds, bound);
+  resampleAll(angles);
 
   // Bisect between neighbours that separate by more than a grid spacing within the bound.
   const double cap = std::min(options.lengthCap, 2 * bound);
@@ -302,10 +306,8 @@ DistanceMap distanceMap(const ConstrainedModel& model, const SphereProjection& p
     }
     if (added.empty()) break;
     expected = traced + static_cast<int>(added.size());
-    const std::size_t before = fan.size();
     traceAll(added, cap);
-    (void)before;
-    for (double a : added) resample(fan.at(a), project, ds, bound);
+    resampleAll(added);
   }
   map.geodesics = static_cast<int>(fan.size());
 
