@@ -433,10 +433,16 @@ double shortestGeodesicLoop(const ConstrainedModel& model, const Eigen::VectorXd
 
 CutGraphShape cutGraphShape(const DistanceMap& map) {
   const int rows = static_cast<int>(map.phis.size()), cols = static_cast<int>(map.ts.size());
-  std::vector<int> parent(static_cast<std::size_t>((rows - 1) * cols), -1);
+  const int faces = (rows - 1) * cols;
+  // Faces first, then one vertex per conjugate cut point (the closure's end points).
+  std::vector<int> parent(static_cast<std::size_t>(faces) + map.conjugateLocus.size(), -1);
   auto find = [&](int f) {
-    while (parent[static_cast<std::size_t>(f)] != f) f = parent[static_cast<std::size_t>(f)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(f)])];
+    while (parent[static_cast<std::size_t>(f)] != f) f = parent[static_cast<std::size_t>(f)];
     return f;
+  };
+  auto join = [&](int f, int g) {
+    const int rf = find(f), rg = find(g);
+    if (rf != rg) parent[static_cast<std::size_t>(rf)] = rg;
   };
   CutGraphShape shape;
   auto touch = [&](int f) {
@@ -458,11 +464,39 @@ CutGraphShape cutGraphShape(const DistanceMap& map) {
     touch(f);
     touch(g);
     ++shape.edges;
-    const int rf = find(f), rg = find(g);
-    if (rf != rg) parent[static_cast<std::size_t>(rf)] = rg;
+    join(f, g);
   }
-  for (std::size_t f = 0; f < parent.size(); ++f)
-    if (parent[f] >= 0 && find(static_cast<int>(f)) == static_cast<int>(f)) ++shape.components;
+  auto count = [&](int upTo) {
+    int c = 0;
+    for (int f = 0; f < upTo; ++f)
+      if (parent[static_cast<std::size_t>(f)] >= 0 && find(f) == f) ++c;
+    return c;
+  };
+  shape.edgeComponents = count(faces);
+  // The closure: a conjugate cut point joins the cut faces within three faces of its own, and the next
+  // conjugate cut point within three grid spacings.
+  const double cell = kPi / (rows - 1);
+  const auto& locus = map.conjugateLocus;
+  for (std::size_t k = 0; k < locus.size(); ++k) {
+    if (!locus[k].cut) continue;
+    const int self = faces + static_cast<int>(k);
+    parent[static_cast<std::size_t>(self)] = self;
+    const double phi = std::asin(std::clamp(locus[k].x.z(), -1.0, 1.0)), t = std::atan2(locus[k].x.y(), locus[k].x.x());
+    const int fi = std::clamp(static_cast<int>((phi + kPi / 2) / cell), 0, rows - 2);
+    const int fj = static_cast<int>(std::floor((t + kPi) / (2 * kPi) * cols));
+    for (int di = -3; di <= 3; ++di)
+      for (int dj = -3; dj <= 3; ++dj) {
+        const int i = fi + di, j = ((fj + dj) % cols + cols) % cols;
+        if (i < 0 || i > rows - 2) continue;
+        const int f = i * cols + j;
+        if (parent[static_cast<std::size_t>(f)] >= 0) join(self, f);
+      }
+    const std::size_t previous = (k + locus.size() - 1) % locus.size();
+    if (previous != k && locus[previous].cut && (locus[previous].x - locus[k].x).norm() < 3 * cell &&
+        parent[static_cast<std::size_t>(faces) + previous] >= 0)
+      join(self, faces + static_cast<int>(previous));
+  }
+  shape.components = count(static_cast<int>(parent.size()));
   return shape;
 }
 

@@ -73,10 +73,13 @@ DistanceMap distanceMap(const ConstrainedModel& model, const SphereProjection& p
 double shortestGeodesicLoop(const ConstrainedModel& model, const Eigen::VectorXd& point, double bound,
                             double tolerance = 1e-10);
 
-// The cut locus as a graph on the grid's faces (each cut edge joins the two faces beside it).
+// The cut locus as a graph on the grid's faces (each cut edge joins the two faces beside it): its cycles, and
+// the components of its closure (the conjugate cut points, its ends, joined to the cut faces within three faces
+// and to each other: near an end, where neighbouring geodesics barely separate, the jump of direction is too
+// small to mark every edge). A tree: one component, no cycle.
 struct CutGraphShape {
-  int vertices = 0, edges = 0, components = 0;
-  int cycles() const { return edges - vertices + components; }
+  int vertices = 0, edges = 0, edgeComponents = 0, components = 0;
+  int cycles() const { return edges - vertices + edgeComponents; }
 };
 CutGraphShape cutGraphShape(const DistanceMap& map);
 

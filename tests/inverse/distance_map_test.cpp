@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
@@ -164,6 +165,26 @@ TEST_F(LinkageDistanceMap, CutLocusIsATree) {
   EXPECT_GT(shape.edges, 20);
   EXPECT_EQ(shape.components, 1);
   EXPECT_EQ(shape.cycles(), 0);
+}
+
+// From other points and at other L (128 x 128): a tree each time, and the nearest cut point at Klingenberg's
+// minimum.
+TEST(DistanceMap, CutLocusIsATreeFromOtherPoints) {
+  for (const auto& [length, phi, t] : {std::tuple{3.0, -0.2, 1.7}, {3.0, 1.2, -2.5}, {3.0, 0.0, 0.0}, {3.5, 0.0, 0.0}}) {
+    const Chain chain = Chain::uniform(4, length);
+    DistanceMapOptions options;
+    options.grid = 128;
+    const DistanceMap map = distanceMap(
+        ConstrainedModel::fromChain(chain),
+        [chain](const Eigen::VectorXd& q) -> Eigen::Vector3d {
+          return spherePointFromHinges(chain, ConstrainedModel::unstack(q));
+        },
+        pointOf(chain, phi, t), options);
+    const CutGraphShape shape = cutGraphShape(map);
+    EXPECT_EQ(shape.components, 1) << "L = " << length << " from (" << phi << ", " << t << ")";
+    EXPECT_EQ(shape.cycles(), 0) << "L = " << length << " from (" << phi << ", " << t << ")";
+    EXPECT_NEAR(map.injectivityRadius, map.klingenberg(), 0.05 * map.klingenberg());
+  }
 }
 
 // The first conjugate points against the Jacobi fields of the ambient method (an independent integrator).
