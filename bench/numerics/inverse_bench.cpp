@@ -5,6 +5,7 @@
 #include <benchmark/benchmark.h>
 
 #include "inverse/connect.hpp"
+#include "inverse/distance_map.hpp"
 #include "inverse/periodic.hpp"
 #include "linkage/chart.hpp"
 
@@ -54,3 +55,20 @@ void BM_PeriodicChain(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(BM_PeriodicChain)->Unit(benchmark::kMillisecond);
+
+namespace {
+
+// BM_DistanceMap256: the distance map from (phi, t) = (0.5, 0.3) on a 256 x 256 grid with its loci and the
+// shortest loop (what `linkage geometry --distance-from` computes; target: under 5 s on 2 cores).
+void BM_DistanceMap256(benchmark::State& state) {
+  const sl::SphereProjection project = [](const Eigen::VectorXd& q) -> Eigen::Vector3d {
+    return sl::spherePointFromHinges(chain, sl::ConstrainedModel::unstack(q));
+  };
+  sl::DistanceMapOptions options;
+  options.grid = 256;
+  for (auto _ : state) benchmark::DoNotOptimize(sl::distanceMap(model, project, from, options));
+}
+
+}  // namespace
+
+BENCHMARK(BM_DistanceMap256)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);

@@ -15,6 +15,7 @@
 #include "cli/summary.hpp"
 #include "contracts/csv_format.hpp"
 #include "cli/configuration_json.hpp"
+#include "cli/configuration_point.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/scene_input.hpp"
 #include "contracts/limits.hpp"
@@ -35,60 +36,6 @@ struct ConnectArguments {
   bool quiet = false;
 };
 
-// TARGET: JSON text, or a file holding it: {"coords": [...]} (chart 0) or {"hinges": [[x, y], ...]}.
-Eigen::VectorXd readTarget(const Chain& chain, const ConstrainedModel& model, const std::string& target) {
-  std::string text = target;
-  std::string where = "--to";
-  if (!text.empty() && text.front() != '{') {
-    std::ifstream in(target);
-    if (!in) throw CommandExit(kExitBadInput, "--to " + target + ": neither a JSON object nor a readable file");
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    text = buffer.str();
-    where = target;
-  }
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text);
-  } catch (const std::exception& e) {
-    throw CommandExit(kExitBadInput, where + ": not JSON (" + e.what() + ")");
-  }
-  if (!j.is_object()) throw CommandExit(kExitBadInput, where + ": expected an object with \"coords\" or \"hinges\"");
-  if (j.contains("coords")) {
-    const auto& c = j["coords"];
-    if (chain.isSlack()) throw CommandExit(kExitBadInput, where + ": coords: a slack chain has no chart; give hinges");
-    if (!c.is_array() || static_cast<int>(c.size()) != chain.sphereDimension())
-      throw CommandExit(kExitBadInput, where + ": coords: expected an array of " +
-                                           std::to_string(chain.sphereDimension()) + " numbers");
-    Eigen::VectorXd coords(chain.sphereDimension());
-    for (int i = 0; i < coords.size(); ++i) {
-      if (!c[static_cast<std::size_t>(i)].is_number())
-        throw CommandExit(kExitBadInput, where + ": coords[" + std::to_string(i) + "]: expected a number");
-      coords(i) = c[static_cast<std::size_t>(i)].get<double>();
-    }
-    return ConstrainedModel::stack(hingePositions(chain, coords));
-  }
-  if (j.contains("hinges")) {
-    const auto& h = j["hinges"];
-    if (!h.is_array() || static_cast<int>(h.size()) != chain.hingeCount())
-      throw CommandExit(kExitBadInput,
-                        where + ": hinges: expected " + std::to_string(chain.hingeCount()) + " points [x, y]");
-    Eigen::Matrix2Xd hinges(2, chain.hingeCount());
-    for (int k = 0; k < chain.hingeCount(); ++k) {
-      const auto& p = h[static_cast<std::size_t>(k)];
-      if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
-        throw CommandExit(kExitBadInput, where + ": hinges[" + std::to_string(k) + "]: expected [x, y]");
-      hinges(0, k) = p[0].get<double>();
-      hinges(1, k) = p[1].get<double>();
-    }
-    Eigen::VectorXd q = ConstrainedModel::stack(hinges);
-    if (!model.projectPosition(q) || (q - ConstrainedModel::stack(hinges)).cwiseAbs().maxCoeff() > 1e-2)
-      throw CommandExit(kExitBadInput, where + ": hinges: not within 0.01 of a configuration with unit rods");
-    return q;
-  }
-  throw CommandExit(kExitBadInput, where + ": expected an object with \"coords\" or \"hinges\"");
-}
-
 std::string foundWords(const std::vector<Connection>& found) {
   return std::to_string(found.size()) + (found.size() == 1 ? " geodesic" : " geodesics") +
          " to the target, distance " + shortest(found[0].length);
@@ -106,7 +53,7 @@ std::string runConnect(const ConnectArguments& args) {
   const InitialState start = runStarts(scene).at(0);
   const Eigen::VectorXd from =
       ConstrainedModel::stack(start.byHinges() ? start.hinges : hingePositionsAt(chain, start.spherePoint));
-  const Eigen::VectorXd to = readTarget(chain, model, args.target);
+  const Eigen::VectorXd to = readConfigurationPoint(chain, model, args.target, "--to");
   ConnectOptions options;
   options.maxLength = args.maxLength;
   const std::vector<Connection> found = findConnections(model, &chain, from, to, options);

@@ -19,6 +19,7 @@
 #include "analysis/gnuplot.hpp"
 #include "cli/chart_formats.hpp"
 #include "cli/commands.hpp"
+#include "cli/distance_map_output.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/geometry_json.hpp"
 #include "cli/progress.hpp"
@@ -36,6 +37,8 @@ namespace {
 constexpr int kMaxGrid = 4096;  // 16.7 million samples, about 20 s on 2 cores
 constexpr int kMaxSweepCount = 1000;
 constexpr int kDefaultMapGrid = 181;  // one degree of phi per row
+constexpr int kDefaultDistanceGrid = 256;
+constexpr int kMaxDistanceGrid = 1024;  // the fan and the raster grow with N: about a minute at 1024
 
 struct GeometryArguments {
   std::vector<std::string> overrides;  // --set KEY=VALUE
@@ -49,6 +52,8 @@ struct GeometryArguments {
   std::string maps;   // folder for PNG maps of K, bending, stiffness
   bool quiet = false;
   std::string chartFormats;
+  std::string distanceFrom;  // a configuration, or "start"
+  bool json = false;         // with --distance-from
 };
 
 const char* kSampleColumns = "phi,t,K,bending,stiffness_max,stiffness_min,stiffness_angle";
@@ -248,16 +253,20 @@ void renderMap(const ChartGrid& grid, const std::vector<CurvatureSample>& sample
 
 void runGeometry(const GeometryArguments& args) {
   const CommandSummary summary("geometry", args.quiet);
-  const int modes = (args.grid > 0 || !args.maps.empty()) + !args.points.empty() + args.summary + !args.sweep.empty();
+  const bool distance = !args.distanceFrom.empty();
+  const int modes = (!distance && (args.grid > 0 || !args.maps.empty())) + !args.points.empty() + args.summary +
+                    !args.sweep.empty() + distance;
   if (modes != 1)
     throw CommandExit(kExitBadInput,
                       "linkage geometry: expected exactly one of --grid N (with --csv and/or --maps DIR), "
-                      "--points FILE, --summary, --sweep-L A:B:N");
+                      "--points FILE, --summary, --sweep-L A:B:N, --distance-from POINT (with --grid, --csv, --maps)");
+  if (args.json && !distance) throw CommandExit(kExitBadInput, "--json: goes with --distance-from POINT");
   if (!args.chart.empty() && args.sweep.empty())
     throw CommandExit(kExitBadInput, "--chart: draws the L sweep; expected --sweep-L A:B:N with it");
   const std::vector<std::string> formats = chartFormats(args.chartFormats);
   std::vector<NamedFile> outputs = {{"--csv", args.csv}, {"--chart", args.chart}};
-  if (!args.maps.empty())
+  if (!args.maps.empty() && distance) outputs.push_back({"--maps", args.maps + "/distance.png"});
+  if (!args.maps.empty() && !distance)
     for (const char* map : {"/curvature.png", "/bending.png", "/stiffness.png"})
       outputs.push_back({"--maps", args.maps + map});
   try {
@@ -273,6 +282,16 @@ void runGeometry(const GeometryArguments& args) {
     throw CommandExit(kExitBadInput, args.scene + ": linkage.rods: found " + std::to_string(scene.chain.rods) +
                                          "; the curvature of the configuration space is computed for 4 rods "
                                          "(a surface, S^2) only");
+  if (distance && args.grid > 0 && (args.grid < 8 || args.grid > kMaxDistanceGrid))
+    throw CommandExit(kExitBadInput, "--grid: found " + std::to_string(args.grid) +
+                                         "; with --distance-from expected 8 to " + std::to_string(kMaxDistanceGrid));
+  if (distance) {
+    DistanceMapRequest request{args.distanceFrom, args.grid > 0 ? args.grid : kDefaultDistanceGrid, args.csv,
+                               args.maps, args.json, args.quiet, formats};
+    summary.print(runDistanceMap(scene, request) + " of \"" + scene.name + "\" (L = " +
+                  shortest(scene.chain.baseLength) + ")" + (args.csv.empty() ? "" : " -> " + args.csv));
+    return;
+  }
   const ConfigurationSurface surface(scene.chain);
   std::string done;
   if (args.grid > 0 || !args.maps.empty()) {
@@ -332,6 +351,10 @@ void addGeometryCommand(CLI::App& app) {
   command->add_option("--csv", args->csv, "write here instead of standard output (written whole or not at all)");
   command->add_option("--chart", args->chart, "with --sweep-L: a PNG chart of min K, max K and area against L");
   command->add_option("--maps", args->maps, "folder for PNG maps of K, bending and stiffness over (phi, t)");
+  command->add_option("--distance-from", args->distanceFrom,
+                      "POINT: the distance map from a configuration ({\"coords\": [...]}, {\"hinges\": ...}, a file, "
+                      "or start), with its conjugate and cut loci and the injectivity radius (--grid, default 256)");
+  command->add_flag("--json", args->json, "with --distance-from: the radii and the loci as JSON on standard output");
   command->add_flag("--quiet", args->quiet, "no summary line");
   addChartFormatsOption(*command, args->chartFormats);
   command->footer(
@@ -339,7 +362,9 @@ void addGeometryCommand(CLI::App& app) {
       "Charts (--chart, --maps) get their gnuplot script beside them (.gp); --chart-formats svg,pdf adds .svg, .pdf.\n"
       "Examples:\n  linkage geometry scenes/default.json --summary\n"
       "  linkage geometry scenes/default.json --grid 256 --csv renders/curvature.csv\n"
-      "  linkage geometry scenes/default.json --sweep-L 2.1:3.9:37 --csv renders/sweep.csv --chart renders/sweep.png");
+      "  linkage geometry scenes/default.json --sweep-L 2.1:3.9:37 --csv renders/sweep.csv --chart renders/sweep.png\n"
+      "  linkage geometry scenes/default.json --distance-from start --csv renders/distance.csv --maps renders/distance\n"
+      "Columns of --distance-from: phi,t,distance,direction (angle of the shortest geodesic at the point).");
   command->callback([args] { runGeometry(*args); });
 }
 

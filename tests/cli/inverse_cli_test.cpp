@@ -1,5 +1,6 @@
 // `linkage connect` and `linkage periodic` from the command line: what a user sees (the JSON keys, the
 // shortest first, both routes agreeing) and the refusals. The numbers are pinned by tests/inverse.
+#include <algorithm>
 #include <filesystem>
 #include <string>
 
@@ -82,6 +83,38 @@ TEST(PeriodicCli, RefusesLongChains) {
   const ProcessResult result = runLinkage({"periodic", shippedScene("five-rods.json")}, folder.path());
   EXPECT_EQ(result.code, 2);
   EXPECT_NE(result.err.find("periodic needs 3 or 4 rods"), std::string::npos) << result.err;
+}
+
+// `geometry --distance-from`: the grid's CSV and the JSON summary; a bad point is refused naming the option,
+// and nothing is written.
+TEST(DistanceMapCli, CsvJsonAndRefusals) {
+  TempFolder folder;
+  const std::string scene = shippedScene("default.json");
+  const std::filesystem::path csv = folder.path() / "distance.csv";
+  const ProcessResult result = runLinkage(
+      {"geometry", scene, "--distance-from", "start", "--grid", "48", "--csv", csv.string(), "--json", "--quiet"},
+      folder.path());
+  ASSERT_EQ(result.code, 0) << result.err;
+  const std::string text = readFile(csv);
+  EXPECT_EQ(text.rfind("phi,t,distance,direction\n", 0), 0u);
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 48 * 48 + 1);
+  const nlohmann::json j = nlohmann::json::parse(result.out);
+  EXPECT_GT(j["injectivity_radius"].get<double>(), 0.5);
+  EXPECT_LE(j["injectivity_radius"].get<double>(), j["farthest"].get<double>());
+  EXPECT_FALSE(j["conjugate_locus"].empty());
+  EXPECT_FALSE(j["cut_locus"].empty());
+
+  const std::filesystem::path bad = folder.path() / "bad.csv";
+  const ProcessResult refused = runLinkage(
+      {"geometry", scene, "--distance-from", R"({"coords": [1]})", "--grid", "48", "--csv", bad.string()},
+      folder.path());
+  EXPECT_EQ(refused.code, 2);
+  EXPECT_NE(refused.err.find("--distance-from: coords: expected an array of 2 numbers"), std::string::npos)
+      << refused.err;
+  EXPECT_FALSE(std::filesystem::exists(bad));
+  const ProcessResult jsonAlone = runLinkage({"geometry", scene, "--summary", "--json"}, folder.path());
+  EXPECT_EQ(jsonAlone.code, 2);
+  EXPECT_NE(jsonAlone.err.find("--json: goes with --distance-from"), std::string::npos) << jsonAlone.err;
 }
 
 }  // namespace

@@ -1,0 +1,18 @@
+#pragma once
+// A configuration given on the command line (connect --to, geometry --distance-from): JSON text, or a file
+// holding it, in either form a scene's `initial` accepts for a point: {"coords": [...]} (chart 0) or
+// {"hinges": [[x, y], ...]} (projected onto the rod constraints, refused if further than 0.01). Errors name the
+// option (or the file) and what was expected.
+#include <string>
+
+#include <Eigen/Dense>
+
+#include "inverse/constrained_model.hpp"
+#include "linkage/chain.hpp"
+
+namespace sl {
+
+Eigen::VectorXd readConfigurationPoint(const Chain& chain, const ConstrainedModel& model, const std::string& text,
+                                       const std::string& option);
+
+}  // namespace sl
