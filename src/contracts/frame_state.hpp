@@ -168,6 +168,9 @@ struct FrameState {
   std::vector<RunFrame> runs;
   std::vector<PlotFrame> plots;  // one per plot panel, in layout order
   std::shared_ptr<const SphereDecoration> sphereDecoration;  // null: the plain sphere
+  // The sphere panel's camera in this frame, from the sphere's centre towards the eye (unit length), when the frames
+  // stage directs it (CameraMode::Directed); empty: the scene's fixed or orbiting camera.
+  std::optional<Vec3> cameraDirection;
 };
 
 }  // namespace sl

@@ -7,6 +7,7 @@
 
 #include "contracts/limits.hpp"
 #include "contracts/parallel_for.hpp"
+#include "frames/directed_camera.hpp"
 #include "frames/sphere_decoration.hpp"
 
 namespace sl {
@@ -87,7 +88,8 @@ FrameBuilder::FrameBuilder(const Scene& scene, const std::vector<InitialState>& 
       history_(runs_.size()),
       divergence_(runs_.empty() ? 0 : runs_.size() - 1),
       sphereDecoration_(makeSphereDecoration(scene.chain, scene.view.sphereSurface)),
-      plotOverviews_(overviewPlots(scene, starts, cancelled)) {
+      plotOverviews_(overviewPlots(scene, starts, cancelled)),
+      cameraDirections_(planDirectedCamera(scene, starts, view_, cancelled)) {
   for (size_t i = 0; i < runs_.size(); ++i) {
     RunFrame& frame = history_[i].frame;
     frame.name = scene.runs[i].name;
@@ -243,6 +245,7 @@ FrameState FrameBuilder::snapshot(int k) const {
   state.rods = scene_.chain.rods;
   state.viewSpace = view_.space();
   state.sphereDecoration = sphereDecoration_;
+  if (static_cast<std::size_t>(k) < cameraDirections_.size()) state.cameraDirection = cameraDirections_[std::size_t(k)];
   // Paths, trails and plots refer to the history, never copy it.
   for (const RunHistory& history : history_) {
     RunFrame run = history.frame;

@@ -338,7 +338,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   const bool colored = decoration && decoration->field;
   PixelRect sphereRect = context.rect;
   if (colored) sphereRect.width -= colorBarStrip(context.rect);
-  SphereCamera camera(context.settings.camera, context.frame.time, sphereRect);
+  SphereCamera camera(cameraOfFrame(context.settings.camera, context.frame), context.frame.time, sphereRect);
   const Placement placement{space == ViewSpace::Sphere, kTubeRadius};
   if (space == ViewSpace::Circle) drawEquator(camera, context.unit, batch);
   if (space == ViewSpace::Ball) drawBallGuide(context, camera, batch);
