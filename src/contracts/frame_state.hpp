@@ -187,6 +187,9 @@ struct FrameState {
   // The part of the plane the linkage panel shows, in rod lengths {x0, x1, y0, y1}: both pins and every hinge of
   // every run at every frame time of the whole animation; empty: every configuration the chains can take.
   std::optional<std::array<double, 4>> linkageBox;
+  // The sphere panel's camera in this frame, from the sphere's centre towards the eye (unit length), when the frames
+  // stage directs it (CameraMode::Directed); empty: the scene's fixed or orbiting camera.
+  std::optional<Vec3> cameraDirection;
 };
 
 }  // namespace sl

@@ -134,6 +134,15 @@ inline constexpr std::array<Named<LinkageLayout>, 3> kLinkageLayouts{{
     {LinkageLayout::Overlay, "overlay"},
 }};
 
+// How the sphere panel's camera moves: facing the action and each event as it happens (frames/directed_camera.hpp
+// plans it from the whole motion), from one fixed direction, or orbiting about the vertical axis at a constant rate.
+enum class CameraMode { Directed, Fixed, Orbit };
+inline constexpr std::array<Named<CameraMode>, 3> kCameraModes{{
+    {CameraMode::Directed, "directed"},
+    {CameraMode::Fixed, "fixed"},
+    {CameraMode::Orbit, "orbit"},
+}};
+
 // What colours the sphere panel's sphere (4 rods; geometry/curvature.hpp computes the values).
 enum class SphereColoring { None, Curvature, Bending };
 inline constexpr std::array<Named<SphereColoring>, 3> kSphereColorings{{

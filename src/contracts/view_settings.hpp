@@ -20,8 +20,10 @@ struct PanelSpec {
 };
 
 struct CameraSpec {
-  Vec3 viewDirection{1.0, 0.6, 0.5};  // from the sphere's centre towards the eye
-  double orbitDegreesPerSecond = 0;   // slow orbit about the vertical axis; 0 = fixed camera
+  // Directed: the frames stage plans a direction per frame (FrameState::cameraDirection); the renderer uses it.
+  CameraMode mode = CameraMode::Directed;
+  Vec3 viewDirection{1.0, 0.6, 0.5};  // from the sphere's centre towards the eye (fixed and orbit; directed: the ball)
+  double orbitDegreesPerSecond = 0;   // slow orbit about the vertical axis (orbit mode); 0 = fixed camera
   double fieldOfViewDegrees = 30;
 };
 

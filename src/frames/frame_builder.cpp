@@ -9,6 +9,7 @@
 #include "linkage/chain.hpp"
 #include "simulation/initial_state.hpp"
 #include "contracts/parallel_for.hpp"
+#include "frames/directed_camera.hpp"
 #include "frames/sphere_decoration.hpp"
 
 namespace sl {
@@ -118,7 +119,9 @@ FrameBuilder::FrameBuilder(const Scene& scene, const std::vector<InitialState>& 
       history_(runs_.size()),
       divergence_(runs_.empty() ? 0 : runs_.size() - 1),
       sphereDecoration_(makeSphereDecoration(scene.chain, scene.view.sphereSurface)),
-      overview_(overviewMotion(scene, starts, cancelled)) {
+      overview_(overviewMotion(scene, starts, cancelled)),
+
+      cameraDirections_(planDirectedCamera(scene, starts, view_, cancelled)) {
   for (size_t i = 0; i < runs_.size(); ++i) {
     RunFrame& frame = history_[i].frame;
     frame.name = scene.runs[i].name;
@@ -279,6 +282,7 @@ FrameState FrameBuilder::snapshot(int k) const {
   state.viewSpace = view_.space();
   state.sphereDecoration = sphereDecoration_;
   state.linkageBox = overview_.linkageBox;
+  if (static_cast<std::size_t>(k) < cameraDirections_.size()) state.cameraDirection = cameraDirections_[std::size_t(k)];
   // Paths, trails and plots refer to the history, never copy it.
   for (const RunHistory& history : history_) {
     RunFrame run = history.frame;

@@ -4,7 +4,9 @@
 //
 // Sharding: frame(k) for any k >= the last one asked gives exactly the FrameState a full run gives for
 // frame k, because every frame before k is still sampled (cheaply, without rendering) to build the path,
-// trail and plot history. Nothing beyond frame k's time is integrated.
+// trail and plot history. Nothing beyond frame k's time is integrated for the history; what must be known before the
+// first frame (the plots' ranges, the directed camera) comes from fresh trajectories of the whole motion, the same in
+// every shard.
 
 #include <vector>
 
@@ -73,6 +75,7 @@ class FrameBuilder {
   std::vector<SharedTrack<double>> divergence_;  // [run - 1][frame]: run 0 against run
   std::shared_ptr<const SphereDecoration> sphereDecoration_;  // computed once, shared by every frame
   MotionOverview overview_;  // per plot: the whole animation's range, empty note; the linkage panel's box
+  std::vector<Vec3> cameraDirections_;  // per frame: the directed camera (frames/directed_camera.hpp); else empty
 };
 
 // The default colour of run i (a colour-blind-safe palette), unless the scene gives one.

@@ -44,7 +44,8 @@ struct DrawList {
   ImageSize size;
   ColorRGB background;
   bool antialias = true;
-  // The sphere looks the same in every frame (fixed camera): a backend may draw it once and reuse it.
+  // The sphere looks the same in every frame with the same camera (none orbits): a backend may draw it once and
+  // reuse it while the camera stays (a directed camera at rest keeps its direction bit for bit).
   bool sphereIsStatic = true;
   ViewSpace viewSpace = ViewSpace::Sphere;  // the sphere's look follows it
   // For SphereLook::Colored: the field whose colours (render/color_map.hpp) cover the sphere; shared with the

@@ -49,7 +49,7 @@ DrawList FrameComposer::compose(const FrameState& frame) const {
   list.size = size_;
   list.background = view_.background;
   list.antialias = view_.antialias;
-  list.sphereIsStatic = view_.camera.orbitDegreesPerSecond == 0;
+  list.sphereIsStatic = frame.cameraDirection || view_.camera.orbitDegreesPerSecond == 0;
   list.viewSpace = frame.viewSpace;
   list.sphereDecoration = frame.sphereDecoration;
   for (std::size_t i = 0; i < panels_.size(); ++i) {

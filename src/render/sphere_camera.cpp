@@ -45,6 +45,14 @@ SphereCamera::SphereCamera(const CameraSpec& spec, double time, const PixelRect&
   centre_ = {panel.x + 0.5f * panel.width, panel.y + 0.5f * panel.height};
 }
 
+CameraSpec cameraOfFrame(const CameraSpec& spec, const FrameState& frame) {
+  if (!frame.cameraDirection) return spec;
+  CameraSpec directed = spec;
+  directed.viewDirection = *frame.cameraDirection;
+  directed.orbitDegreesPerSecond = 0;
+  return directed;
+}
+
 P2 SphereCamera::project(const V3& p) const {
   const V3 v = p - eye_;
   const double depth = std::max(dot(v, forward_), 1e-6);

@@ -3,6 +3,7 @@
 // CameraSpec::viewDirection, orbiting about the vertical (z) axis. Projection happens on the CPU (the
 // shapes are drawn in pixels); the shaders get the same basis to cast per-pixel rays, so both agree.
 
+#include "contracts/frame_state.hpp"
 #include "contracts/view_settings.hpp"
 #include "render/shape_batch.hpp"
 
@@ -38,5 +39,9 @@ class SphereCamera {
   double focal_ = 1;
   P2 centre_;
 };
+
+// The camera of a frame: the direction the frames stage planned for it (FrameState::cameraDirection, a directed
+// camera), not orbiting; else the scene's.
+CameraSpec cameraOfFrame(const CameraSpec& spec, const FrameState& frame);
 
 }  // namespace sl

@@ -643,7 +643,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   const bool colored = decoration && decoration->field;
   PixelRect sphereRect = context.rect;
   if (colored) sphereRect.width -= colorBarStrip(context.rect);
-  SphereCamera camera(context.settings.camera, context.frame.time, sphereRect);
+  SphereCamera camera(cameraOfFrame(context.settings.camera, context.frame), context.frame.time, sphereRect);
   const Placement placement{space == ViewSpace::Sphere, kTubeRadius};
   // Labels stay in the sphere's part of the panel, clear of the colour bar and the captions at its foot.
   const float captionRoom = 2.4f * context.font.lineHeight(TextSize::Small);

@@ -592,6 +592,17 @@ std::vector<SceneKey> describeKeys() {
        .summary = "the sphere panel's camera",
        .target = "ViewSettings::camera",
        .meaning = "-"},
+      {.path = "view.camera.mode",
+       .type = KeyType::Choice,
+       .summary = "how the camera moves",
+       .target = "CameraSpec::mode",
+       .meaning = "`directed`: keeps the action in front, follows the runs' states (a family's centre) and turns to "
+                  "face each stop, pole passage, seam crossing, conjugate point and focus as it happens, planned from "
+                  "the whole motion (4 rods; the glass views of 3 and 5+ rods keep `direction`); `fixed`: from "
+                  "`direction`; `orbit`: from `direction`, turning about the vertical axis",
+       .allowed = "`directed`, `fixed`, `orbit`",
+       .defaultText = "`orbit` with an orbit rate, `fixed` with a direction, else `directed`",
+       .names = namesOf(kCameraModes)},
       {.path = "view.camera.direction",
        .type = KeyType::Numbers,
        .count = 3,

@@ -134,6 +134,19 @@ void readCamera(const JsonObject& view, CameraSpec& camera, std::vector<ScenePro
   if (const auto fov = object.number("field_of_view"); fov && object.checkBounds("field_of_view", *fov)) {
     camera.fieldOfViewDegrees = *fov;
   }
+  // The mode: as asked; else a scene that fixes a direction or an orbit keeps it, and the rest are directed.
+  const bool orbits = camera.orbitDegreesPerSecond != 0;
+  camera.mode = orbits ? CameraMode::Orbit : object.has("direction") ? CameraMode::Fixed : CameraMode::Directed;
+  if (const auto name = object.string("mode")) {
+    if (const auto mode = pickKind(object.pathOf("mode"), *name, kCameraModes, problems)) {
+      camera.mode = *mode;
+      if (*mode == CameraMode::Orbit && !orbits)
+        object.report("mode", "found \"orbit\" without orbit_degrees_per_second; expected a non-zero orbit rate");
+      if (*mode != CameraMode::Orbit && orbits)
+        object.report("orbit_degrees_per_second", "found an orbit rate with mode \"" + *name +
+                                                      "\"; expected mode \"orbit\" (or no rate)");
+    }
+  }
 }
 
 void readLinkageChoice(const JsonObject& view, Scene& scene, std::vector<SceneProblem>& problems) {

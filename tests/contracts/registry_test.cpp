@@ -37,6 +37,7 @@ TEST(Registry, TablesAreComplete) {
   expectComplete(kPlotKinds, static_cast<int>(PlotKind::Spread) + 1);
   expectComplete(kFamilyKinds, static_cast<int>(FamilyKind::Cloud) + 1);
   expectComplete(kLinkageLayouts, static_cast<int>(LinkageLayout::Overlay) + 1);
+  expectComplete(kCameraModes, static_cast<int>(CameraMode::Orbit) + 1);
 }
 
 // The properties the rest of the program relies on (docs/methods.md).

@@ -1,5 +1,5 @@
 // The same FrameState gives the same bytes, whatever was rendered before, with a fixed camera (cached
-// sphere layer) and an orbiting one (sphere redrawn every frame).
+// sphere layer), an orbiting one (sphere redrawn every frame) and a directed one (redrawn when it turns).
 
 #include <gtest/gtest.h>
 
@@ -44,6 +44,31 @@ TEST(Determinism, OrbitingCameraMovesTheSphere) {
   const Image still = Renderer(fixed, testing::kSmallSize).render(frame);
   EXPECT_EQ(Renderer(fixed, testing::kSmallSize).render(frame).rgb, still.rgb);  // the comparison can hold
   EXPECT_NE(Renderer(orbiting, testing::kSmallSize).render(frame).rgb, still.rgb);
+}
+
+// A directed camera (FrameState::cameraDirection): the renderer keeps its cached sphere layer only while the
+// direction stays, so a frame gives the same bytes whichever directions came before it, and the direction does move
+// the sphere (the frame's direction wins over the scene's, orbit included).
+TEST(Determinism, DirectedCameraRedrawsTheCachedSphereWhenItTurns) {
+  ViewSettings settings = testing::smallSettings();
+  settings.camera.orbitDegreesPerSecond = 30;  // ignored: the frame carries its camera
+  FrameState target = syntheticFrame(3.0, 180);
+  target.cameraDirection = Vec3{0.2, -0.9, 0.4};
+  Renderer sequence(settings, testing::kSmallSize);
+  for (const Vec3& direction : {Vec3{1, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0.3}}) {
+    FrameState other = target;
+    other.cameraDirection = direction;
+    sequence.render(other);
+  }
+  const Image inSequence = sequence.render(target);
+  EXPECT_EQ(sequence.render(target).rgb, inSequence.rgb);  // from the layer cached just now
+  EXPECT_EQ(Renderer(settings, testing::kSmallSize).render(target).rgb, inSequence.rgb);
+  FrameState turned = target;
+  turned.cameraDirection = Vec3{-0.2, 0.9, 0.4};
+  EXPECT_NE(Renderer(settings, testing::kSmallSize).render(turned).rgb, inSequence.rgb);
+  ViewSettings fixed = settings;
+  fixed.camera.orbitDegreesPerSecond = 0;
+  EXPECT_EQ(Renderer(fixed, testing::kSmallSize).render(target).rgb, inSequence.rgb);
 }
 
 }  // namespace

@@ -100,6 +100,35 @@ TEST(SceneLoader, DefaultsFillWhatIsLeftOut) {
   EXPECT_EQ(scene.view.panels[1].kind, PanelKind::Linkage);
 }
 
+// The camera's mode: as asked; else a scene that fixes a direction or an orbit keeps it, the rest are directed. A mode
+// that contradicts the orbit rate is refused, naming the key.
+TEST(SceneLoader, CameraModeFollowsWhatTheSceneFixes) {
+  const auto modeOf = [](const std::string& camera) {
+    const std::string view = camera.empty() ? "" : R"(, "view": {"camera": )" + camera + "}";
+    return parseScene(R"({"name": "d", "linkage": {"rods": 4, "L": 3}, "initial": {"coords": [0, 0], "velocity": [1, 0]},
+        "duration": 1, "runs": [{"name": "r"}])" + view + "}", "d.json").view.camera.mode;
+  };
+  EXPECT_EQ(modeOf(""), CameraMode::Directed);
+  EXPECT_EQ(modeOf(R"({"field_of_view": 40})"), CameraMode::Directed);
+  EXPECT_EQ(modeOf(R"({"direction": [0, 1, 0]})"), CameraMode::Fixed);
+  EXPECT_EQ(modeOf(R"({"direction": [0, 1, 0], "orbit_degrees_per_second": 5})"), CameraMode::Orbit);
+  EXPECT_EQ(modeOf(R"({"orbit_degrees_per_second": 5})"), CameraMode::Orbit);
+  EXPECT_EQ(modeOf(R"({"direction": [0, 1, 0], "mode": "directed"})"), CameraMode::Directed);
+  EXPECT_EQ(modeOf(R"({"mode": "fixed"})"), CameraMode::Fixed);
+  for (const auto& [camera, path] : std::vector<std::pair<std::string, std::string>>{
+           {R"({"mode": "orbit"})", "view.camera.mode"},
+           {R"({"mode": "directed", "orbit_degrees_per_second": 5})", "view.camera.orbit_degrees_per_second"},
+           {R"({"mode": "sideways"})", "view.camera.mode"}}) {
+    SCOPED_TRACE(camera);
+    try {
+      modeOf(camera);
+      ADD_FAILURE() << "accepted";
+    } catch (const SceneError& error) {
+      EXPECT_NE(std::string(error.what()).find(path), std::string::npos) << error.what();
+    }
+  }
+}
+
 // Every method and integrator of the registry is accepted under its name, with the accuracy key its
 // integrator takes (the published methods need 4 rods, as here).
 TEST(SceneLoader, AcceptsEveryRegisteredMethodAndIntegrator) {

@@ -37,6 +37,7 @@ struct Renderer::Impl {
   GLuint vertexArray = 0, vertexBuffer = 0, glyphTexture = 0, fieldTexture = 0;
   std::unique_ptr<GlLayer> sphereLayer;
   ViewSpace cachedSpace = ViewSpace::Sphere;
+  V3 cachedEye;  // the camera the cached sphere layer was drawn by
   const SphereDecoration* uploadedDecoration = nullptr;
   const SphereDecoration* cachedDecoration = nullptr;  // the decoration the cached sphere layer shows  // the field in fieldTexture (and in the cached layer)
 
@@ -174,17 +175,20 @@ struct Renderer::Impl {
     glDrawArrays(GL_TRIANGLES, 0, GLsizei(quad.vertices().size()));
   }
 
-  // The sphere of a fixed camera does not change between frames: draw it once into `sphereLayer`
+  // The sphere of a camera at rest does not change between frames: draw it once into `sphereLayer`
   // (on the background colour, as in the frame) and copy that rectangle into every frame.
   void drawSphereCached(const DrawList& list, const SphereImpostor& view, const PixelRect& rect) {
     if (!list.sphereIsStatic) return drawSphere(list, view);
-    if (!sphereLayer || cachedSpace != list.viewSpace || cachedDecoration != list.sphereDecoration.get()) {
+    const V3 eye = view.camera.eye();
+    const bool sameEye = eye.x == cachedEye.x && eye.y == cachedEye.y && eye.z == cachedEye.z;
+    if (!sphereLayer || !sameEye || cachedSpace != list.viewSpace || cachedDecoration != list.sphereDecoration.get()) {
       if (!sphereLayer) sphereLayer = std::make_unique<GlLayer>(size.width, size.height);
       sphereLayer->bind();
       clearToBackground(list);
       drawSphere(list, view);
       cachedSpace = list.viewSpace;
       cachedDecoration = list.sphereDecoration.get();
+      cachedEye = eye;
       context.bindFramebuffer();
     }
     sphereLayer->copyTo(context.framebuffer(), rect);
