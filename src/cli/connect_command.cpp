@@ -123,7 +123,7 @@ void addConnectCommand(CLI::App& app) {
                    "target: {\"coords\": [...]} (chart 0) or {\"hinges\": [[x, y], ...]}, or a file holding it")
       ->required();
   command->add_option("--max-length", args->maxLength, "longest geodesic wanted (default: 2.5 times the shortest)")
-      ->check(CLI::Range(0.0, 1000.0));
+      ->check(CLI::Range(0.0, limits::kMaxConnectLength));
   command->add_flag("--json", args->json, "a JSON list of objects (length, shortest, coords, rates, ...)");
   command->footer(
       "Route 1 shoots (Newton on the end point, Jacobi fields as the derivative, seeded by a fan of directions);\n"

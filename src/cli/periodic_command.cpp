@@ -15,6 +15,7 @@
 #include "cli/configuration_json.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/scene_input.hpp"
+#include "contracts/limits.hpp"
 #include "inverse/periodic.hpp"
 #include "linkage/chart.hpp"
 #include "simulation/ambient_system.hpp"
@@ -114,7 +115,7 @@ void addPeriodicCommand(CLI::App& app) {
   addSceneOverrideOption(*command, args->overrides);
   command
       ->add_option("--max-length", args->maxLength, "longest closed geodesic wanted (default: about 2.5x the shortest)")
-      ->check(CLI::Range(0.0, 200.0));
+      ->check(CLI::Range(0.0, limits::kMaxPeriodicLength));
   command->add_flag("--json", args->json,
                     "a JSON list of objects (length, simple, symmetry, stability, eigenvalues, start, ...)");
   command->footer(

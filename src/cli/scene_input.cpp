@@ -8,6 +8,7 @@
 
 #include "cli/exit_codes.hpp"
 #include "cli/interrupt.hpp"
+#include "cli/motion_starts.hpp"
 #include "contracts/limits.hpp"
 #include "scene/json_fields.hpp"
 #include "scene/scene_overrides.hpp"
@@ -37,12 +38,15 @@ Scene loadSceneFromStandardInput(const std::vector<std::string>& overrides) {
 }  // namespace
 
 Scene loadSceneForCommand(const std::string& file, const std::vector<std::string>& overrides) {
+  Scene scene;
   try {
-    if (file == "-") return loadSceneFromStandardInput(overrides);
-    return loadScene(file, overrides);
+    scene = file == "-" ? loadSceneFromStandardInput(overrides) : loadScene(file, overrides);
   } catch (const SceneError& error) {
     throw CommandExit(kExitBadInput, error.what());
   }
+  // Found motions are found here, once, before anything runs (every command sees the same starts).
+  failOnProblems(scene.file, resolveMotionStarts(scene));
+  return scene;
 }
 
 void addSceneOverrideOption(CLI::App& command, std::vector<std::string>& overrides) {

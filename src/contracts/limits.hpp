@@ -65,5 +65,10 @@ inline constexpr double kMaxLockWaitSeconds = 60;
 inline constexpr double kMaxEncoderStallSeconds = 60;
 // `connect` (src/inverse) solves the constrained geodesic flow with a dense KKT system, n^3 per evaluation.
 inline constexpr int kMaxConnectRods = 40;
+// A scene's start may name a found motion (initial.connect, initial.periodic): its index in the list, and the
+// longest motion the search looks for (the commands' --max-length bounds).
+inline constexpr int kMaxMotionIndex = 99;
+inline constexpr double kMaxConnectLength = 1000;
+inline constexpr double kMaxPeriodicLength = 200;
 
 }  // namespace sl::limits

@@ -1,6 +1,8 @@
 #pragma once
 // How a run is configured and where a motion starts: what the scene says and the simulation takes.
 
+#include <optional>
+#include <string>
 #include <utility>
 
 #include <Eigen/Dense>
@@ -41,11 +43,38 @@ struct FamilySpec {
   unsigned long seed = 1;  // cloud
 };
 
+// A configuration of the chain as a scene names it: chart 0 coordinates (n-2) or the n-1 hinge positions.
+struct ConfigurationSpec {
+  Eigen::VectorXd coords;   // given, or ...
+  Eigen::Matrix2Xd hinges;  // ... these (projected onto the rod constraints when resolved)
+};
+
+// Which found motion a start names. Connect: the geodesics from `from` to `to` up to `maxLength`, shortest
+// first (the list of `linkage connect`); Periodic: the closed geodesics up to `maxLength` (the list of
+// `linkage periodic`). `index` counts from 0 in that list.
+struct FoundMotionSpec {
+  ConfigurationSpec from, to;  // Connect
+  int index = 0;
+  double maxLength = 0;             // <= 0: the finder's own bound
+  std::optional<double> arrival;    // Connect: the time the target is reached (default: the length, unit speed)
+};
+
+// A found motion as a run starts it: sphere point and velocity, and what the frames may say of it.
+struct FoundMotion {
+  Eigen::VectorXd spherePoint, sphereVelocity;
+  double length = 0;      // its length (the period of a closed geodesic at unit speed)
+  double time = 0;        // when it reaches the target (connect) or closes (periodic)
+  std::string stability;  // periodic: "elliptic", "hyperbolic", ...; connect: ""
+  int found = 0;          // how many motions the list held
+};
+
 // The start of the motion as a scene states it; simulation/initial_state.hpp turns it into an InitialState.
 struct InitialSpec {
   // Hinges: positions and velocities of the interior hinges (any chain, slack ones included; ambient method),
   // given point by point or as a named shape with a push (long chains).
-  enum class Kind { ChartCoordinates, Drag, Hinges };
+  // Connect, Periodic: a motion the inverse problems find (a geodesic from one configuration to another, a closed
+  // geodesic), named by its place in their lists; the commands resolve it into `motion` before any run starts.
+  enum class Kind { ChartCoordinates, Drag, Hinges, Connect, Periodic };
   enum class Shape { Given, Arc };  // Arc: the hinges on the circular arc through both pins, rods as its chords
   Kind kind = Kind::ChartCoordinates;
   Eigen::VectorXd coords;         // chart 0 coordinates, outermost first ((phi, t) for 4 rods)
@@ -60,6 +89,10 @@ struct InitialSpec {
   Eigen::Vector2d pushVelocity = Eigen::Vector2d::Zero();
   long pushSeed = -1;                // ... or, seed >= 0, every hinge a random velocity of size pushSize
   double pushSize = 1;
+  FoundMotionSpec search;  // Connect, Periodic
+  std::optional<FoundMotion> motion;  // Connect, Periodic: set once resolved
+
+  bool namesAMotion() const { return kind == Kind::Connect || kind == Kind::Periodic; }
 };
 
 // The start of a motion, chart-free: a point x of the unit sphere S^(n-2) in R^(n-1) and a tangent

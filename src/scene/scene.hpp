@@ -38,6 +38,9 @@ struct Scene {
   Chain chain;          // the runs' default linkage; n is every run's
   InitialSpec initial;  // the runs' default start
   double duration = 20;
+  // "duration" was left out (every run starts from a found motion): the commands set it to the longest motion's
+  // time when they resolve the starts (cli/motion_starts.hpp).
+  bool durationFromMotions = false;
   std::vector<RunSpec> runs;
   OutputSettings output;
   ViewSettings view;

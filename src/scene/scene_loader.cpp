@@ -214,6 +214,68 @@ void readHingeStart(const JsonObject& initial, RodCount rods, InitialSpec& spec,
   }
 }
 
+// A configuration named by "coords" (chart 0, n-2 numbers) or "hinges" (n-1 points), e.g. a connect start's
+// "from" and "to". Whether hinges lie on the rod constraints is decided when the motion is resolved.
+ConfigurationSpec readConfiguration(const JsonObject& parent, const std::string& key, RodCount rods,
+                                    std::vector<SceneProblem>& problems) {
+  ConfigurationSpec spec;
+  if (!parent.has(key)) {
+    parent.reportMissing(key, "a configuration: {\"coords\": [...]} (chart 0, n-2 numbers) or {\"hinges\": [[x, y], "
+                              "...]} (n-1 points)");
+    return spec;
+  }
+  const JsonObject object(*parent.member(key), parent.pathOf(key), problems);
+  if (!object.isObject()) return spec;
+  if (object.has("coords") == object.has("hinges")) {
+    object.report(object.has("coords") ? "hinges" : "coords",
+                  "expected exactly one of \"coords\" (chart 0, n-2 numbers) and \"hinges\" (n-1 points)");
+    return spec;
+  }
+  if (object.has("hinges")) {
+    if (const auto points = readPoints(object, "hinges", rods)) spec.hinges = *points;
+    return spec;
+  }
+  const std::optional<long> size = chainSize(rods, -2);
+  const std::string what = "chart coordinates, outermost first, " + (size ? "n-2 = " + std::to_string(*size) : "n-2");
+  if (const auto coords = object.numbers("coords", true); coords && fitsChain(object, "coords", *coords, size, what))
+    spec.coords = *coords;
+  return spec;
+}
+
+// A start that names a found motion: "connect" (a geodesic from one configuration to another) or "periodic" (a
+// closed geodesic), by its index in the list the inverse problems give. Resolved by the commands before any run
+// starts (cli/motion_starts.hpp); here only what can be judged from the file.
+void readMotionStart(const JsonObject& initial, const std::string& key, RodCount rods, InitialSpec& spec,
+                     std::vector<SceneProblem>& problems) {
+  spec.kind = key == "connect" ? InitialSpec::Kind::Connect : InitialSpec::Kind::Periodic;
+  if (initial.has("unit_speed"))
+    initial.report("unit_speed", "is not used by a " + key + " start (it moves at unit speed" +
+                                     (key == "connect" ? std::string(", or arrives at \"arrival\")") : ")") +
+                                     "; expected no unit_speed");
+  const JsonObject motion(*initial.member(key), initial.pathOf(key), problems);
+  if (!motion.isObject()) return;
+  FoundMotionSpec& request = spec.search;
+  if (key == "connect") {
+    request.from = readConfiguration(motion, "from", rods, problems);
+    request.to = readConfiguration(motion, "to", rods, problems);
+    if (const auto arrival = motion.number("arrival");
+        arrival && motion.checkPositive("arrival", *arrival) && motion.checkBounds("arrival", *arrival))
+      request.arrival = *arrival;
+    if (rods && *rods > limits::kMaxConnectRods)
+      initial.report(key, "found " + std::to_string(*rods) + " rods; connecting motions are found for at most " +
+                              std::to_string(limits::kMaxConnectRods) + " rods");
+  } else if (rods && *rods != 3 && *rods != 4) {
+    initial.report(key, "found " + std::to_string(*rods) +
+                            " rods; closed geodesics are found for 3 rods (the circle) or 4 (the configuration "
+                            "sphere)");
+  }
+  if (const auto index = motion.integer("index"); index && motion.checkBounds("index", *index))
+    request.index = static_cast<int>(*index);
+  if (const auto length = motion.number("max_length");
+      length && motion.checkPositive("max_length", *length) && motion.checkBounds("max_length", *length))
+    request.maxLength = *length;
+}
+
 // Reads an "initial" object at `path` (the scene's start, or a run's own) for a chain of `rods` rods. A run's
 // start replaces the scene's whole: it is one start, in any form the scene's may take.
 void readInitial(const json& value, const std::string& path, RodCount rods, InitialSpec& spec,
@@ -225,10 +287,18 @@ void readInitial(const json& value, const std::string& path, RodCount rods, Init
   const bool hasDrag = initial.has("drag");
   const bool hasCoords = initial.has("coords") || initial.has("velocity");
   const bool hasHinges = initial.has("hinges") || initial.has("velocities") || initial.has("push");
-  if (int(hasDrag) + int(hasCoords) + int(hasHinges) > 1) {
-    initial.report(hasDrag ? "drag" : "hinges",
+  const bool hasConnect = initial.has("connect"), hasPeriodic = initial.has("periodic");
+  if (int(hasDrag) + int(hasCoords) + int(hasHinges) + int(hasConnect) + int(hasPeriodic) > 1) {
+    initial.report(hasDrag      ? "drag"
+                   : hasHinges  ? "hinges"
+                   : hasConnect ? "connect"
+                                : "periodic",
                    "given together with another form of start; expected one start: coords and velocity, or drag, "
-                   "or hinges with velocities or a push");
+                   "or hinges with velocities or a push, or connect, or periodic");
+    return;
+  }
+  if (hasConnect || hasPeriodic) {
+    readMotionStart(initial, hasConnect ? "connect" : "periodic", rods, spec, problems);
     return;
   }
   if (hasHinges) {
@@ -355,7 +425,7 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
     }
   }
   if (const auto step = run.number("step"); step && run.checkPositive("step", *step)) {
-    if (*step > scene.duration) {
+    if (!scene.durationFromMotions && *step > scene.duration) {
       std::ostringstream message;
       message << "found " << *step << "; expected a step no longer than the duration " << scene.duration;
       run.report("step", message.str());
@@ -396,8 +466,8 @@ RunSpec readRun(const json& value, const std::string& path, const Scene& scene, 
   if (slack && spec.initial.kind != InitialSpec::Kind::Hinges) {
     const SceneProblem problem{spec.ownInitial ? run.pathOf("initial") : "initial",
                                "a slack chain (L = " + shortest(spec.chain.baseLength) +
-                                   " <= n-2) has no configuration sphere, so no chart or drag start; expected a start "
-                                   "by \"hinges\""};
+                                   " <= n-2) has no configuration sphere, so no chart, drag, connect or periodic "
+                                   "start; expected a start by \"hinges\""};
     if (std::none_of(problems.begin(), problems.end(), [&](const SceneProblem& p) { return p.jsonPath == problem.jsonPath; }))
       problems.push_back(problem);
   }
@@ -578,7 +648,9 @@ Scene parseScene(const std::string& text, const std::string& file, const std::ve
                            "; expected " + expectedWords(sceneKey("name")));
   }
   scene.title = top.string("title").value_or(scene.name);
-  if (const auto duration = top.number("duration", true); duration && top.checkPositive("duration", *duration)) {
+  // Left out, the duration is the longest found motion's (when every run starts from one: checked below).
+  scene.durationFromMotions = !top.has("duration");
+  if (const auto duration = top.number("duration"); duration && top.checkPositive("duration", *duration)) {
     scene.duration = *duration;
   }
   RodCount rods;
@@ -591,14 +663,38 @@ Scene parseScene(const std::string& text, const std::string& file, const std::ve
   else
     top.reportMissing("initial", "an object with coords and velocity, or drag");
   readRuns(top.member("runs"), scene, rods, problems);
+  if (scene.durationFromMotions &&
+      (scene.runs.empty() ||
+       !std::all_of(scene.runs.begin(), scene.runs.end(), [](const RunSpec& run) { return run.initial.namesAMotion(); }))) {
+    top.reportMissing("duration", "the simulated time in seconds (it may be left out only when every run starts from "
+                                  "a connect or periodic motion)");
+    scene.durationFromMotions = false;
+  }
   readOutput(top.has("output") ? *top.member("output") : json::object(), scene, problems);
-  for (SceneProblem& problem : checkFrameCount(scene.duration, scene.output.fps)) problems.push_back(problem);
+  if (!scene.durationFromMotions)
+    for (SceneProblem& problem : checkFrameCount(scene.duration, scene.output.fps)) problems.push_back(problem);
   detail::readView(top.has("view") ? *top.member("view") : json::object(), scene, rods.has_value(), problems);
 
-  if (problems.empty()) problems = checkSceneCost(scene);  // measured on a valid scene only
+  // Measured on a valid scene only, and once its duration is known (checkResolvedDuration otherwise).
+  if (problems.empty() && !scene.durationFromMotions) problems = checkSceneCost(scene);
   if (!problems.empty()) throw SceneError(file, std::move(problems));
   scene.title = fillTitlePlaceholders(scene.title, scene);
   return scene;
+}
+
+std::vector<SceneProblem> checkResolvedDuration(const Scene& scene) {
+  std::vector<SceneProblem> problems = checkFrameCount(scene.duration, scene.output.fps);
+  for (std::size_t i = 0; i < scene.runs.size(); ++i) {
+    const RunConfig& config = scene.runs[i].config;
+    if (!traits(config.integrator).adaptive && config.step > scene.duration) {
+      std::ostringstream message;
+      message << "found " << config.step << "; expected a step no longer than the duration " << scene.duration
+              << " (the longest found motion's time)";
+      problems.push_back({indexPath("runs", i) + ".step", message.str()});
+    }
+  }
+  if (problems.empty()) problems = checkSceneCost(scene);
+  return problems;
 }
 
 Scene loadScene(const std::string& file, const std::vector<std::string>& overrides) {

@@ -20,5 +20,8 @@ Scene parseScene(const std::string& text, const std::string& file, const std::ve
 std::vector<SceneProblem> checkImageSize(ImageSize size, bool evenForVideo, const std::string& path);
 // Refuses frame counts beyond limits::kMaxFrames, naming the numbers.
 std::vector<SceneProblem> checkFrameCount(double duration, int fps);
+// The checks that wait for the duration when the scene leaves it to its found motions (Scene::durationFromMotions):
+// the frame count, fixed steps no longer than the duration, the scene's cost.
+std::vector<SceneProblem> checkResolvedDuration(const Scene& scene);
 
 }  // namespace sl

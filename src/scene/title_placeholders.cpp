@@ -27,6 +27,16 @@ std::string fillTitlePlaceholders(const std::string& title, const Scene& scene) 
     values.push_back({"{method}", std::string(nameOf(scene.runs.front().config.method))});
     values.push_back({"{integrator}", std::string(nameOf(scene.runs.front().config.integrator))});
   }
+  // A found motion's length and stability, once the commands have resolved it.
+  for (std::size_t i = 0; i < scene.runs.size(); ++i) {
+    const std::optional<FoundMotion>& motion = scene.runs[i].initial.motion;
+    if (!motion) continue;
+    const std::string run = "{runs[" + std::to_string(i) + "].";
+    char length[32];
+    std::snprintf(length, sizeof length, "%.4f", motion->length);
+    values.push_back({run + "length}", length});
+    if (!motion->stability.empty()) values.push_back({run + "stability}", motion->stability});
+  }
   std::string text;
   for (std::size_t i = 0; i < title.size();) {
     bool replaced = false;

@@ -218,6 +218,14 @@ InitialState initialStateFromSpec(const Chain& chain, const InitialSpec& spec, S
   if (chain.isSlack())
     throw std::invalid_argument("a slack chain (L <= n-2) has no configuration sphere and no chart; expected a start "
                                 "by \"hinges\"");
+  if (spec.namesAMotion()) {
+    // Found by the inverse problems, which this stage does not know: the commands resolve it first.
+    if (!spec.motion)
+      throw std::invalid_argument("the start names a found motion (connect or periodic) that was not resolved");
+    InitialState start(spec.motion->spherePoint, spec.motion->sphereVelocity);
+    validateInitialState(chain, start);
+    return start;
+  }
   if (spec.kind == InitialSpec::Kind::Drag) {
     return initialStateFromDrag(chain, spec.dragPoint, spec.dragDirection, spec.unitSpeed);
   }

@@ -32,6 +32,14 @@ json sceneWith(const SceneKey& key, const json& value) {
     scene["initial"] = {{"hinges", "arc"},
                         {"push", random ? json{{"seed", 1}} : json{{"hinge", 1}, {"velocity", {0, 1}}}}};
   }
+  // A start on a found motion: connect between two chart points, or a periodic motion (a 4-rod chain).
+  if (path.rfind("initial.connect.", 0) == 0) {
+    json connect = json::object();
+    connect["from"]["coords"] = {0.3, 0.2};
+    connect["to"]["coords"] = {-0.6, 2.2};
+    scene["initial"] = {{"connect", connect}};
+  }
+  if (path.rfind("initial.periodic.", 0) == 0) scene["initial"] = {{"periodic", json::object()}};
   if (path.rfind("view.panels[0].", 0) == 0) scene["view"]["panels"] = {{{"panel", "plot"}}};
   // A massless hinge needs a massive rod beside it (a rule between keys): give the rods mass.
   if (key.path == "linkage.hinge_masses") scene["linkage"]["rod_masses"] = {1, 1, 1, 1};
