@@ -1,11 +1,13 @@
 // The configuration sphere as a ray-traced impostor on a panel-sized quad: exact silhouette coverage,
 // per-pixel normals, and the (phi, t) chart grid drawn analytically (lines of constant width in frame units).
-// Mode 0: the opaque cream sphere with grid and poles. Mode 1: a faint glassy reference sphere. Mode 2: mode 0
-// with the colours of a scalar field (uField: a texture over (t, phi), render/color_map.hpp) under a fainter grid.
+// SPHERE_LOOK (defined by the file before this one, sphere_opaque.glsl, sphere_glass.glsl or sphere_colored.glsl;
+// one program per look, because llvmpipe runs both sides of a branch on a uniform and the unused looks cost as
+// much as the used one): 0, the opaque cream sphere with grid and poles; 1, a faint glassy reference sphere; 2,
+// look 0 with the colours of a scalar field (uField: a texture over (t, phi), render/color_map.hpp) under a
+// fainter grid.
 uniform vec3 uSphereColor;
 uniform vec3 uGridColor;
 uniform vec3 uPoleColor;
-uniform int uMode;
 uniform sampler2D uField;
 out vec4 fragColor;
 
@@ -39,29 +41,28 @@ void main() {
   if (cover <= 0.0) discard;
   vec3 p = normalize(uEye + ray * (closest - sqrt(max(1.0 - miss2, 0.0))));
   vec3 n = screenNormal(p);
-  if (uMode == 1) {
-    float glass = 0.07 + 0.25 * pow(1.0 - clamp(n.z, 0.0, 1.0), 2.5);
-    fragColor = vec4(uGridColor * glass * cover, glass * cover);
-    return;
-  }
-  vec3 base;
-  if (uMode == 2) {
-    vec2 chart = vec2(atan(p.y, p.x), asin(clamp(p.z, -1.0, 1.0)));  // (t, phi)
-    vec3 field = texture(uField, vec2(chart.x / (2.0 * PI) + 0.5, chart.y / PI + 0.5)).rgb;
-    base = mix(field, uGridColor, 0.3 * gridCoverage(p));
-  } else {
-    base = mix(uSphereColor, uGridColor, 0.75 * gridCoverage(p));
-  }
+#if SPHERE_LOOK == 1
+  float glass = 0.07 + 0.25 * pow(1.0 - clamp(n.z, 0.0, 1.0), 2.5);
+  fragColor = vec4(uGridColor * glass * cover, glass * cover);
+#else
+#if SPHERE_LOOK == 2
+  vec2 chart = vec2(atan(p.y, p.x), asin(clamp(p.z, -1.0, 1.0)));  // (t, phi)
+  vec3 field = texture(uField, vec2(chart.x / (2.0 * PI) + 0.5, chart.y / PI + 0.5)).rgb;
+  vec3 base = mix(field, uGridColor, 0.3 * gridCoverage(p));
+#else
+  vec3 base = mix(uSphereColor, uGridColor, 0.75 * gridCoverage(p));
+#endif
   // The chart's poles phi = +-90deg (x1 = x2 = 0), where t is undefined: small dark caps.
   float poleDistance = length(p.xy) / max(length(vec2(length(dFdx(p.xy)), length(dFdy(p.xy)))), 1e-6);
   float poleRadius = 0.035 / max(length(vec2(length(dFdx(p.xy)), length(dFdy(p.xy)))), 1e-6);
   base = mix(base, uPoleColor, edgeCoverage(min(poleRadius, 7.0 * uUnit) - poleDistance));
   // A colour-mapped surface keeps its colours on the colour bar: ambient-heavy light that darkens it by at most 7%
   // away from the key light, no coloured highlight or rim that would bleach or tint it.
-  if (uMode == 2) {
-    const vec3 key = normalize(vec3(-0.45, -0.55, 0.70));
-    fragColor = vec4(base * (0.93 + 0.07 * max(dot(n, key), 0.0)) * cover, cover);
-    return;
-  }
+#if SPHERE_LOOK == 2
+  const vec3 key = normalize(vec3(-0.45, -0.55, 0.70));
+  fragColor = vec4(base * (0.93 + 0.07 * max(dot(n, key), 0.0)) * cover, cover);
+#else
   fragColor = vec4(lit(base, n, 0.18) * cover, cover);
+#endif
+#endif
 }

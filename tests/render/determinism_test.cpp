@@ -33,6 +33,41 @@ TEST(Determinism, FrameAloneEqualsFrameInSequence) {
   }
 }
 
+// Each sphere look has its own program: with a moving camera (the sphere shaded every frame), a frame of each look
+// rendered after the other looks equals the same frame rendered fresh, bit for bit.
+TEST(Determinism, EveryLookAfterTheOthersEqualsAFreshRender) {
+  ViewSettings settings = testing::smallSettings();
+  settings.camera.orbitDegreesPerSecond = 20;
+  SphereField field{"K", true, 16, 32, {}, -1.0, 2.0};
+  for (int i = 0; i < field.phiCount * field.tCount; ++i) field.values.push_back(float(-1.0 + 3.0 * (i % 7) / 6.0));
+  auto decoration = std::make_shared<SphereDecoration>();
+  decoration->field = field;
+  auto frameOf = [&](ViewSpace space, bool colored, double t) {
+    SyntheticOptions options;
+    options.viewSpace = space;
+    FrameState frame = syntheticFrame(t, int(t * 60), options);
+    if (colored) frame.sphereDecoration = decoration;
+    return frame;
+  };
+  const FrameState opaque = frameOf(ViewSpace::Sphere, false, 2.0), glass = frameOf(ViewSpace::Ball, false, 2.0),
+                   colored = frameOf(ViewSpace::Sphere, true, 2.0);
+  Renderer sequence(settings, testing::kSmallSize);
+  for (double t : {0.5, 1.0, 1.5}) {
+    sequence.render(frameOf(ViewSpace::Sphere, true, t));
+    sequence.render(frameOf(ViewSpace::Ball, false, t));
+    sequence.render(frameOf(ViewSpace::Sphere, false, t));
+  }
+  std::vector<Image> inSequence;
+  for (const FrameState* frame : {&colored, &glass, &opaque}) inSequence.push_back(sequence.render(*frame));
+  // A renderer's context is current on its thread only while it is the newest: render fresh ones one at a time.
+  std::vector<Image> fresh;
+  for (const FrameState* frame : {&colored, &glass, &opaque})
+    fresh.push_back(Renderer(settings, testing::kSmallSize).render(*frame));
+  for (std::size_t k = 0; k < fresh.size(); ++k) EXPECT_EQ(fresh[k].rgb, inSequence[k].rgb) << "look " << k;
+  // The comparison can fail: the looks are different pictures.
+  EXPECT_NE(fresh[0].rgb, fresh[2].rgb);
+}
+
 TEST(Determinism, OrbitingCameraMovesTheSphere) {
   // One frame, two cameras that differ only in their orbit: the time (and so every label) is the same, so
   // the pixels can differ only through the camera. The orbit turns the sphere by 30 * 3 = 90 degrees.

@@ -1,5 +1,5 @@
 // The renderer: the CPU part (FrameComposer) turns a FrameState into a DrawList; this GL part draws it with
-// four programs (flat, glyph and lit shapes, and the sphere impostor). All anti-aliasing is analytic, so the
+// flat, glyph and lit shapes and the sphere impostor (a program per look). All anti-aliasing is analytic, so the
 // frame is a plain RGBA8 framebuffer: no MSAA resolve, no depth buffer. With a fixed camera the sphere is
 // drawn once into a cached layer and copied into each frame (the same bytes as drawing it, at the cost of a
 // copy).
@@ -26,6 +26,8 @@ namespace {
 
 // Each program: common.glsl (version line, shared functions) before its own stage files.
 std::vector<std::string> stage(const char* file) { return {"common.glsl", file}; }
+// The sphere: one program per look (the file before sphere.frag defines SPHERE_LOOK).
+std::vector<std::string> sphereStage(const char* look) { return {"common.glsl", look, "sphere.frag"}; }
 
 }  // namespace
 
@@ -33,7 +35,7 @@ struct Renderer::Impl {
   FrameComposer composer;
   ImageSize size;
   GlContext context;
-  ShaderProgram flat, glyph, lit, sphere;
+  ShaderProgram flat, glyph, lit, sphereOpaque, sphereGlass, sphereColored;
   GLuint vertexArray = 0, vertexBuffer = 0, glyphTexture = 0, fieldTexture = 0;
   std::unique_ptr<GlLayer> sphereLayer;
   ViewSpace cachedSpace = ViewSpace::Sphere;
@@ -48,7 +50,9 @@ struct Renderer::Impl {
         flat(stage("shapes.vert"), stage("flat.frag"), shaderFolder),
         glyph(stage("shapes.vert"), stage("glyph.frag"), shaderFolder),
         lit(stage("shapes.vert"), stage("lit.frag"), shaderFolder),
-        sphere(stage("shapes.vert"), stage("sphere.frag"), shaderFolder) {
+        sphereOpaque(stage("shapes.vert"), sphereStage("sphere_opaque.glsl"), shaderFolder),
+        sphereGlass(stage("shapes.vert"), sphereStage("sphere_glass.glsl"), shaderFolder),
+        sphereColored(stage("shapes.vert"), sphereStage("sphere_colored.glsl"), shaderFolder) {
     createVertexArray();
     createGlyphTexture();
   }
@@ -146,12 +150,14 @@ struct Renderer::Impl {
   }
 
   void drawSphere(const DrawList& list, const SphereImpostor& view) {
+    const ShaderProgram& sphere = view.look == SphereLook::Opaque  ? sphereOpaque
+                                  : view.look == SphereLook::Glass ? sphereGlass
+                                                                   : sphereColored;
     setCommonUniforms(sphere, &view.camera, list.antialias);
     const auto color = [&](const char* name, Rgba c) { glUniform3f(sphere.uniform(name), c.r, c.g, c.b); };
     color("uSphereColor", palette::sphereCream);
     color("uGridColor", view.look == SphereLook::Opaque ? palette::sphereGrid : palette::glass);
     color("uPoleColor", palette::poleMark);
-    glUniform1i(sphere.uniform("uMode"), int(view.look));
     if (view.look == SphereLook::Colored && list.sphereDecoration && list.sphereDecoration->field) {
       if (uploadedDecoration != list.sphereDecoration.get()) {
         uploadField(*list.sphereDecoration->field);

@@ -1,0 +1,2 @@
+// Selects the sphere coloured by a field in sphere.frag (one program per look).
+#define SPHERE_LOOK 2
