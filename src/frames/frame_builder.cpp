@@ -91,7 +91,7 @@ FrameBuilder::FrameBuilder(const Scene& scene, const std::vector<InitialState>& 
   for (size_t i = 0; i < runs_.size(); ++i) {
     RunFrame& frame = history_[i].frame;
     frame.name = scene.runs[i].name;
-    frame.method = nameOf(scene.runs[i].config.method);
+    frame.method = scene.runs[i].config.method;
     frame.color = runColor(scene, i);
     frame.baseLength = scene.runs[i].chain.baseLength;
     if (i < families_.size()) frame.members.resize(families_[i].size());
@@ -168,9 +168,9 @@ void FrameBuilder::sampleRunAt(size_t run, double t, bool isFrameTime) {
     const std::optional<StopInfo>& stop = runs_[run].stop();
     frame.stopTime = stop ? stop->time : t;
     if (stop) {
-      frame.stopReason = nameOf(stop->reason);
-      frame.stopWhy = std::string(traits(stop->reason).meaning);
-      frame.stopMeasured = stop->reading();
+      frame.stopReason = stop->reason;
+      frame.stopMeasured = stop->measured;
+      frame.stopLimit = stop->limit;
     }
     history.hingesAtFrame.resize(2, 0);
     return;
@@ -262,17 +262,18 @@ FrameState FrameBuilder::snapshot(int k) const {
     plot.logY = spec.logY;
     plot.timeMax = scene_.duration;
     plot.valueRange = plotOverviews_[p].valueRange;
-    plot.emptyNote = plotOverviews_[p].emptyNote;
+    plot.kind = spec.kind;
+    plot.emptiness = plotOverviews_[p].emptiness;
+    plot.earlyStops = plotOverviews_[p].earlyStops;
     switch (spec.kind) {  // every kind, no default: the compiler names a kind left out
       case PlotKind::Divergence:
-        plot.title = "divergence from " + scene_.runs[0].name + " (max hinge distance)";
+        plot.referenceRun = scene_.runs[0].name;
         for (size_t run = 1; run < runs_.size(); ++run) {
           plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, divergence_[run - 1].view(), {},
                                  std::min(stopTimeSoFar(history_[0].frame), stopTimeSoFar(history_[run].frame))});
         }
         break;
       case PlotKind::Spread:
-        plot.title = "spread of the family (largest hinge distance from the run)";
         for (size_t run = 0; run < runs_.size(); ++run) {
           if (!scene_.runs[run].family) continue;
           plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, history_[run].spreads.view(), {},
@@ -280,7 +281,6 @@ FrameState FrameBuilder::snapshot(int k) const {
         }
         break;
       case PlotKind::Jacobi:
-        plot.title = "Jacobi field across the motion |J_perp| (zeros: conjugate points)";
         for (size_t run = 0; run < runs_.size(); ++run) {
           if (!scene_.runs[run].config.jacobi) continue;
           plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, history_[run].jacobiSizes.view(),
@@ -288,7 +288,6 @@ FrameState FrameBuilder::snapshot(int k) const {
         }
         break;
       case PlotKind::EnergyError:
-        plot.title = "relative energy error |E - E0| / E0";
         for (size_t run = 0; run < runs_.size(); ++run) {
           plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, history_[run].energyErrors.view(),
                                  {}, stopTimeSoFar(history_[run].frame)});

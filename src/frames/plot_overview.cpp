@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 
 #include "contracts/parallel_for.hpp"
@@ -14,12 +13,6 @@ namespace sl {
 namespace {
 
 bool drawable(double v, bool logY) { return std::isfinite(v) && (!logY || v > 0); }
-
-std::string stopText(const std::string& name, const std::optional<StopInfo>& stop) {
-  char time[32];
-  std::snprintf(time, sizeof time, "%.3g", stop ? stop->time : 0.0);
-  return "\"" + name + "\" stopped at t = " + time + " (" + (stop ? nameOf(stop->reason) : std::string("?")) + ")";
-}
 
 }  // namespace
 
@@ -98,14 +91,13 @@ std::vector<PlotOverview> overviewPlots(const Scene& scene, const std::vector<In
       overview.valueRange = std::array<double, 2>{lo, hi};
     }
     if (!(lo <= hi)) {
-      // Say why: a run that stopped at once, or values a log axis cannot show (exactly zero).
-      std::string why;
+      // Say why: runs that stopped at once, or values a log axis cannot show (exactly zero).
       for (std::size_t r = 0; r < runCount; ++r)
         if (runs[r].stop() && runs[r].stop()->time <= scene.frameTime(std::min(frames - 1, 1)))
-          why += (why.empty() ? "" : "; ") + stopText(scene.runs[r].name, runs[r].stop());
-      overview.emptyNote = !why.empty() ? "nothing to plot: " + why
-                           : spec.logY  ? "nothing to plot: every value is 0 (a log axis cannot show it)"
-                                        : "nothing to plot";
+          overview.earlyStops.push_back({scene.runs[r].name, runs[r].stop()->time, runs[r].stop()->reason});
+      overview.emptiness = !overview.earlyStops.empty() ? PlotEmptiness::RunsStopped
+                           : spec.logY                  ? PlotEmptiness::ZeroOnLogAxis
+                                                        : PlotEmptiness::NothingToPlot;
     }
     overviews.push_back(std::move(overview));
   }

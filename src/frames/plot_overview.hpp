@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "contracts/frame_state.hpp"
 #include "contracts/run_config.hpp"
 #include "scene/scene.hpp"
 
@@ -17,7 +18,8 @@ namespace sl {
 
 struct PlotOverview {
   std::optional<std::array<double, 2>> valueRange;
-  std::string emptyNote;
+  PlotEmptiness emptiness = PlotEmptiness::HasValues;
+  std::vector<EarlyStop> earlyStops;
 };
 
 // One per scene.view.plots entry; empty when the scene has no plots (nothing is integrated then).

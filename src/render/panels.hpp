@@ -41,7 +41,8 @@ struct PlotLayout {
   int yTicks;      // at most this many labelled y ticks: what the area's height has room for
   bool areaShown;  // false when the panel has room for the title only
 };
-PlotLayout layoutPlot(const PanelContext& context, const PlotFrame& plot);
+PlotLayout layoutPlot(const PanelContext& context, const PlotFrame& plot);  // titled by render/frame_words.hpp
+PlotLayout layoutPlot(const PanelContext& context, const PlotFrame& plot, const std::string& title);
 void drawTextPanel(const PanelContext& context, ShapeBatch& batch);
 // The title and the time across the top of the frame (context.rect: the whole frame), for layouts without a text
 // panel (ViewSettings::titleLine).

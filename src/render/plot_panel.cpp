@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "render/frame_words.hpp"
 #include "render/palette.hpp"
 #include "render/panels.hpp"
 
@@ -250,14 +251,14 @@ float timeLabelWidth(const PanelContext& c, const PlotFrame& plot) {
 // the text size, so the plot keeps its proportions from 320x180 to 3840x2160. A panel shorter than about eight
 // lines of small text is drawn compact: the title in small text with the legend beside it if it fits (the runs'
 // colours are also in the text panel), fewer ticks.
-PlotLayout layoutPlot(const PanelContext& c, const PlotFrame& plot) {
+PlotLayout layoutPlot(const PanelContext& c, const PlotFrame& plot, const std::string& title) {
   const float line = c.font.lineHeight(TextSize::Small), ascent = c.font.ascent(TextSize::Small);
   const bool compact = c.rect.height < 8 * line;
   PlotLayout layout;
   layout.titleSize = compact ? TextSize::Small : TextSize::Normal;
   const float pad = 0.5f * ascent, right = c.rect.x + c.rect.width - pad;
   layout.titleBaseline = c.rect.y + pad + c.font.ascent(layout.titleSize);
-  layout.title = c.font.fitted(plot.title, layout.titleSize, c.rect.width - 2 * pad);
+  layout.title = c.font.fitted(title, layout.titleSize, c.rect.width - 2 * pad);
 
   // The legend beside the title when both fit in one row, else in rows of its own below it (at most two in a
   // full-size panel, none in a compact one).
@@ -291,13 +292,15 @@ PlotLayout layoutPlot(const PanelContext& c, const PlotFrame& plot) {
   return layout;
 }
 
+PlotLayout layoutPlot(const PanelContext& c, const PlotFrame& plot) { return layoutPlot(c, plot, plotTitle(plot)); }
+
 void drawPlotPanel(const PanelContext& c, int plotIndex, ShapeBatch& batch) {
   const auto& plots = c.frame.plots;
-  PlotFrame empty;
-  empty.title = "(no plot data)";
-  const PlotFrame& plot = plotIndex >= 0 && plotIndex < int(plots.size()) ? plots[plotIndex] : empty;
+  const bool exists = plotIndex >= 0 && plotIndex < int(plots.size());
+  const PlotFrame empty;
+  const PlotFrame& plot = exists ? plots[plotIndex] : empty;
   const float line = c.font.lineHeight(TextSize::Small), ascent = c.font.ascent(TextSize::Small);
-  const PlotLayout layout = layoutPlot(c, plot);
+  const PlotLayout layout = layoutPlot(c, plot, exists ? plotTitle(plot) : "(no plot data)");
   c.font.draw(batch, layout.title, layout.titleSize, c.rect.x + 0.5f * ascent, layout.titleBaseline, palette::ink);
   if (!layout.areaShown) return;  // no room for a plot: the title only
   const PlotArea area{layout.areaX0, layout.areaY0, layout.areaX1, layout.areaY1};
@@ -316,10 +319,11 @@ void drawPlotPanel(const PanelContext& c, int plotIndex, ShapeBatch& batch) {
     const DrawnSamples drawn(series, area);
     for (std::size_t j = 0; j < drawn.size() && !anyDrawn; ++j) anyDrawn = drawable(series.values[drawn[j]], plot.logY);
   }
-  if (!anyDrawn && !plot.emptyNote.empty()) {  // a plot that stays empty says why, in as many lines as fit
+  const std::string emptyNote = emptyPlotNote(plot);
+  if (!anyDrawn && !emptyNote.empty()) {  // a plot that stays empty says why, in as many lines as fit
     const std::size_t room = std::size_t(std::max(1.0f, (area.y1 - area.y0) / line - 0.5f));
     const std::vector<std::string> note =
-        c.font.wrapped(plot.emptyNote, TextSize::Small, area.x1 - area.x0 - ascent, std::min<std::size_t>(room, 3));
+        c.font.wrapped(emptyNote, TextSize::Small, area.x1 - area.x0 - ascent, std::min<std::size_t>(room, 3));
     float y = 0.5f * (area.y0 + area.y1) - 0.5f * line * (float(note.size()) - 1) + 0.4f * ascent;
     for (const std::string& text : note) {
       c.font.draw(batch, text, TextSize::Small, 0.5f * (area.x0 + area.x1 - c.font.width(text, TextSize::Small)), y,

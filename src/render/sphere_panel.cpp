@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "render/color_map.hpp"
+#include "render/frame_words.hpp"
 #include "render/palette.hpp"
 #include "render/panels.hpp"
 #include "render/panel_layout.hpp"
@@ -346,9 +347,9 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
     const float pad = 0.02f * context.rect.height;
     const Placement onSurface{true, 0.004};
     drawEllipses(decoration->ellipses, camera, onSurface, context.rect, context.unit, batch);
-    if (!decoration->ellipseCaption.empty()) {
+    if (!decoration->ellipses.empty()) {
       const float width = context.rect.width - 2 * pad - (colored ? colorBarStrip(context.rect) : 0);
-      context.font.draw(batch, context.font.fitted(decoration->ellipseCaption, TextSize::Small, width), TextSize::Small,
+      context.font.draw(batch, context.font.fitted(ellipseCaption(), TextSize::Small, width), TextSize::Small,
                         context.rect.x + pad, context.rect.y + context.rect.height - pad, palette::softInk);
     }
     if (colored) {
@@ -357,7 +358,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
       const float gap = context.font.lineHeight(TextSize::Small);
       const PixelRect bar{context.rect.x + context.rect.width - colorBarStrip(context.rect), context.rect.y + pad,
                           colorBarStrip(context.rect) - pad - gap, 0.8f * context.rect.height};
-      drawColorBar(scaleOf(field), field.label, field.diverging ? "each sign on its own scale" : "", bar,
+      drawColorBar(scaleOf(field), fieldCaption(field.coloring), field.diverging ? "each sign on its own scale" : "", bar,
                    context.font, batch);
     }
   }
@@ -372,7 +373,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   if (space == ViewSpace::Ball) drawBallStart(context, camera, batch);
   for (std::size_t k = 0; k < runs.size(); ++k) drawBall(runs[k], runStyleWidth(k, runs.size()), context.unit, camera, placement, batch);
   if (space == ViewSpace::Sphere) labelChartPoles(context, camera, batch);  // over the paths: never struck through
-  const bool captioned = space == ViewSpace::Ball || (decoration && !decoration->ellipseCaption.empty());
+  const bool captioned = space == ViewSpace::Ball || (decoration && !decoration->ellipses.empty());
   const std::vector<PanelSpec> panels = effectivePanels(context.settings);
   const bool textPanel =
       std::any_of(panels.begin(), panels.end(), [](const PanelSpec& p) { return p.kind == PanelKind::Text; });

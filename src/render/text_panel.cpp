@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "render/frame_words.hpp"
 #include "render/palette.hpp"
 #include "render/panels.hpp"
 
@@ -17,7 +18,7 @@ std::string format(const char* pattern, double value) {
 }
 
 std::string runLine(const RunFrame& run) {
-  std::string line = run.name + "  (" + run.method + ")";
+  std::string line = run.name + "  (" + methodWords(run.method) + ")";
   if (!run.members.empty()) line += "  + " + std::to_string(run.members.size()) + " members";
   // Conjugate points reached so far (runs with Jacobi fields), the latest few.
   if (!run.conjugateTimes.empty()) {
@@ -45,8 +46,9 @@ enum class StopDetail { Reason, Measured, Explained };
 
 // "stopped at t = 5.2: reason", with the watchdog's reading unless only the reason is asked for.
 std::string stopSentence(const RunFrame& run, StopDetail detail) {
-  std::string stop = "stopped at t = " + format("%.3g", run.stopTime) + ": " + run.stopReason;
-  if (detail != StopDetail::Reason && !run.stopMeasured.empty()) stop += " (" + run.stopMeasured + ")";
+  std::string stop = "stopped at t = " + format("%.3g", run.stopTime) + ": " + stopReasonWords(run.stopReason);
+  const std::string reading = stopReadingWords(run);
+  if (detail != StopDetail::Reason && !reading.empty()) stop += " (" + reading + ")";
   return stop;
 }
 
@@ -61,7 +63,7 @@ float flowRuns(const PanelContext& c, TextSize size, StopDetail detail, float pa
     const RunFrame& run = c.frame.runs[k];
     const std::string text = runLine(run);
     // One stop line per run: on the run's row, or, explained, on a line of its own below the rows.
-    const bool ownLine = detail == StopDetail::Explained && !run.stopWhy.empty();
+    const bool ownLine = detail == StopDetail::Explained && run.stopped;
     std::string stop = run.stopped && !ownLine ? "  " + stopSentence(run, detail) : "";
     const float width = 2.5f * swatch + c.font.width(text + stop, size) + 2 * pad;
     if (width > c.rect.width) return INFINITY;  // one run alone is wider than the panel: this size does not fit
@@ -78,9 +80,9 @@ float flowRuns(const PanelContext& c, TextSize size, StopDetail detail, float pa
   }
   // Below the runs, what each stop means: one line per stopped run, in small text, shortened to the panel.
   for (const RunFrame& run : c.frame.runs) {
-    if (detail != StopDetail::Explained || !run.stopped || run.stopWhy.empty()) continue;
+    if (detail != StopDetail::Explained || !run.stopped) continue;
     y += c.font.lineHeight(TextSize::Small);
-    const std::string why = c.font.fitted(run.name + " " + stopSentence(run, detail) + " \u2014 " + run.stopWhy,
+    const std::string why = c.font.fitted(run.name + " " + stopSentence(run, detail) + " \u2014 " + stopMeaningWords(run.stopReason),
                                           TextSize::Small, c.rect.width - 2 * pad);
     if (batch) c.font.draw(*batch, why, TextSize::Small, c.rect.x + pad, y, palette::stopRed);
   }

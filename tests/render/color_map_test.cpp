@@ -134,7 +134,7 @@ TEST(SpherePanel, DecorationColoursTheSphereAndMakesRoomForTheBar) {
   EXPECT_EQ(plain.panels[0].sphere->look, SphereLook::Opaque);
 
   auto decoration = std::make_shared<SphereDecoration>();
-  decoration->field = SphereField{"K", true, 2, 4, std::vector<float>(8, 1.0f), -1.0, 1.0};
+  decoration->field = SphereField{SphereColoring::Curvature, true, 2, 4, std::vector<float>(8, 1.0f), -1.0, 1.0};
   decoration->ellipses.push_back({{0.6, 0.4, 0.7}, {0.0, 0.05, 0.0}, {0.02, 0.0, 0.0}});
   frame.sphereDecoration = decoration;
   const DrawList colored = composer.compose(frame);

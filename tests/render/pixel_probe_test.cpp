@@ -200,7 +200,7 @@ TEST_F(PixelProbe, BallViewLeavesAGapWhereThePathJumpsThroughTheAntipode) {
 // the northern hemisphere and negative on the southern one, seen from the equator: red above, blue below.
 TEST_F(PixelProbe, ColouredSphereShowsTheFieldWhereItIs) {
   auto decoration = std::make_shared<SphereDecoration>();
-  SphereField field{"K", true, 32, 64, {}, -1.0, 2.0};
+  SphereField field{SphereColoring::Curvature, true, 32, 64, {}, -1.0, 2.0};
   for (int i = 0; i < field.phiCount; ++i)
     for (int j = 0; j < field.tCount; ++j) field.values.push_back(i < field.phiCount / 2 ? -1.0f : 2.0f);
   decoration->field = field;
