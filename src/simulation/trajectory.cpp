@@ -145,7 +145,7 @@ struct Trajectory::Impl {
     }
     const double time = 0.5 * (low + high);
     stepper->stateAt(time, y);
-    if (jacobi->jacobiAt(y).gramDeterminant <= 1e-12 * maxGramDeterminant) conjugateTimes.push_back(time);
+    if (isConjugateMinimum(jacobi->jacobiAt(y).gramDeterminant, maxGramDeterminant)) conjugateTimes.push_back(time);
   }
 
   void halt(const StopInfo& info) { stop = info; }
