@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "contracts/frame_state.hpp"
 #include "contracts/view_settings.hpp"
@@ -42,7 +43,8 @@ struct PlotLayout {
   bool areaShown;  // false when the panel has room for the title only
 };
 PlotLayout layoutPlot(const PanelContext& context, const PlotFrame& plot);  // titled by render/frame_words.hpp
-PlotLayout layoutPlot(const PanelContext& context, const PlotFrame& plot, const std::string& title);
+// With its title's forms, longest first (render/frame_words.hpp's fittedForm picks one).
+PlotLayout layoutPlot(const PanelContext& context, const PlotFrame& plot, const std::vector<std::string>& titles);
 void drawTextPanel(const PanelContext& context, ShapeBatch& batch);
 // The title and the time across the top of the frame (context.rect: the whole frame), for layouts without a text
 // panel (ViewSettings::titleLine).

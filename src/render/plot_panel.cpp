@@ -79,9 +79,7 @@ std::string superscript(int exponent) {
 
 std::string tickLabel(const Axis& axis, double v) {
   if (axis.log) return "10" + superscript(int(std::lround(std::log10(v))));
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", v);
-  return text;
+  return typesetNumber("%g", v);
 }
 
 // The y axis with at most `maxTicks` labelled ticks (what the plot's height has room for).
@@ -251,14 +249,14 @@ float timeLabelWidth(const PanelContext& c, const PlotFrame& plot) {
 // the text size, so the plot keeps its proportions from 320x180 to 3840x2160. A panel shorter than about eight
 // lines of small text is drawn compact: the title in small text with the legend beside it if it fits (the runs'
 // colours are also in the text panel), fewer ticks.
-PlotLayout layoutPlot(const PanelContext& c, const PlotFrame& plot, const std::string& title) {
+PlotLayout layoutPlot(const PanelContext& c, const PlotFrame& plot, const std::vector<std::string>& titles) {
   const float line = c.font.lineHeight(TextSize::Small), ascent = c.font.ascent(TextSize::Small);
   const bool compact = c.rect.height < 8 * line;
   PlotLayout layout;
   layout.titleSize = compact ? TextSize::Small : TextSize::Normal;
   const float pad = 0.5f * ascent, right = c.rect.x + c.rect.width - pad;
   layout.titleBaseline = c.rect.y + pad + c.font.ascent(layout.titleSize);
-  layout.title = c.font.fitted(title, layout.titleSize, c.rect.width - 2 * pad);
+  layout.title = fittedForm(c.font, titles, layout.titleSize, c.rect.width - 2 * pad);  // a shorter form, no cut
 
   // The legend beside the title when both fit in one row, else in rows of its own below it (at most two in a
   // full-size panel, none in a compact one).
@@ -292,7 +290,7 @@ PlotLayout layoutPlot(const PanelContext& c, const PlotFrame& plot, const std::s
   return layout;
 }
 
-PlotLayout layoutPlot(const PanelContext& c, const PlotFrame& plot) { return layoutPlot(c, plot, plotTitle(plot)); }
+PlotLayout layoutPlot(const PanelContext& c, const PlotFrame& plot) { return layoutPlot(c, plot, plotTitles(plot)); }
 
 void drawPlotPanel(const PanelContext& c, int plotIndex, ShapeBatch& batch) {
   const auto& plots = c.frame.plots;
@@ -300,7 +298,8 @@ void drawPlotPanel(const PanelContext& c, int plotIndex, ShapeBatch& batch) {
   const PlotFrame empty;
   const PlotFrame& plot = exists ? plots[plotIndex] : empty;
   const float line = c.font.lineHeight(TextSize::Small), ascent = c.font.ascent(TextSize::Small);
-  const PlotLayout layout = layoutPlot(c, plot, exists ? plotTitle(plot) : "(no plot data)");
+  const PlotLayout layout =
+      layoutPlot(c, plot, exists ? plotTitles(plot) : std::vector<std::string>{"(no plot data)", "(no data)"});
   c.font.draw(batch, layout.title, layout.titleSize, c.rect.x + 0.5f * ascent, layout.titleBaseline, palette::ink);
   if (!layout.areaShown) return;  // no room for a plot: the title only
   const PlotArea area{layout.areaX0, layout.areaY0, layout.areaX1, layout.areaY1};

@@ -349,7 +349,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
     drawEllipses(decoration->ellipses, camera, onSurface, context.rect, context.unit, batch);
     if (!decoration->ellipses.empty()) {
       const float width = context.rect.width - 2 * pad - (colored ? colorBarStrip(context.rect) : 0);
-      context.font.draw(batch, context.font.fitted(ellipseCaption(), TextSize::Small, width), TextSize::Small,
+      context.font.draw(batch, fittedForm(context.font, ellipseCaptions(), TextSize::Small, width), TextSize::Small,
                         context.rect.x + pad, context.rect.y + context.rect.height - pad, palette::softInk);
     }
     if (colored) {
@@ -358,8 +358,8 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
       const float gap = context.font.lineHeight(TextSize::Small);
       const PixelRect bar{context.rect.x + context.rect.width - colorBarStrip(context.rect), context.rect.y + pad,
                           colorBarStrip(context.rect) - pad - gap, 0.8f * context.rect.height};
-      drawColorBar(scaleOf(field), fieldCaption(field.coloring), field.diverging ? "each sign on its own scale" : "", bar,
-                   context.font, batch);
+      const std::string caption = fittedForm(context.font, fieldCaptions(field.coloring), TextSize::Small, bar.width);
+      drawColorBar(scaleOf(field), caption, field.diverging ? "each sign on its own scale" : "", bar, context.font, batch);
     }
   }
   const bool throughAntipode = space == ViewSpace::Ball;

@@ -1,5 +1,5 @@
-// The text panel: title, simulation time, each run's name and method in its colour, and why a run
-// stopped once it has.
+// The text panel: title, simulation time, each run's name in its colour (and its method where the runs differ by
+// method), and why a run stopped once it has, in one line per run.
 
 #include <cmath>
 #include <cstdio>
@@ -17,8 +17,15 @@ std::string format(const char* pattern, double value) {
   return text;
 }
 
-std::string runLine(const RunFrame& run) {
-  std::string line = run.name + "  (" + methodWords(run.method) + ")";
+// Whether the runs differ by method: only then does a run's row name its method (else it is noise).
+bool methodsDiffer(const FrameState& frame) {
+  for (const RunFrame& run : frame.runs)
+    if (run.method != frame.runs.front().method) return true;
+  return false;
+}
+
+std::string runLine(const RunFrame& run, bool withMethod) {
+  std::string line = withMethod ? run.name + "  (" + methodWords(run.method) + ")" : run.name;
   if (!run.members.empty()) line += "  + " + std::to_string(run.members.size()) + " members";
   // Conjugate points reached so far (runs with Jacobi fields), the latest few.
   if (!run.conjugateTimes.empty()) {
@@ -61,7 +68,7 @@ float flowRuns(const PanelContext& c, TextSize size, StopDetail detail, float pa
   float x = c.rect.x + pad, y = top + line;
   for (std::size_t k = 0; k < c.frame.runs.size(); ++k) {
     const RunFrame& run = c.frame.runs[k];
-    const std::string text = runLine(run);
+    const std::string text = runLine(run, methodsDiffer(c.frame));
     // One stop line per run: on the run's row, or, explained, on a line of its own below the rows.
     const bool ownLine = detail == StopDetail::Explained && run.stopped;
     std::string stop = run.stopped && !ownLine ? "  " + stopSentence(run, detail) : "";

@@ -195,7 +195,7 @@ TEST(FontAtlas, BakesTheLabelSymbols) {
   };
   const std::vector<float> replacement = quad("\ufffd");
   ASSERT_FALSE(replacement.empty());
-  for (const char* symbol : {"\u00b3", "\u03c0", "\u03c6", "\u22a5", "\u221a", "\u2212"}) {
+  for (const char* symbol : {"\u00b3", "\u03c0", "\u03c6", "\u22a5", "\u221a", "\u2212", "\u2080", "\u00b1"}) {
     const std::vector<float> drawn = quad(symbol);
     EXPECT_FALSE(drawn.empty()) << symbol;
     EXPECT_NE(drawn, replacement) << symbol;

@@ -254,6 +254,29 @@ TEST(DrawList, AStopIsSaidOnceInTheTextPanel) {
   EXPECT_EQ(red, alone.vertices().size());
 }
 
+// A run's row names its method only where the runs differ by method: with one method for all, the method words
+// are noise and the text panel draws exactly their glyphs fewer.
+TEST(DrawList, MethodsAreNamedOnlyWhereRunsDifferByThem) {
+  FrameState frame = syntheticFrame(2.0, 120);
+  ASSERT_EQ(frame.runs.size(), 2u);
+  const FrameComposer composer(fourPanels(), {1280, 720});
+  const auto glyphs = [&](const FrameState& f) {
+    const DrawList list = composer.compose(f);  // kept: a range-for over a temporary's member would dangle
+    std::size_t count = 0;
+    for (const ShapeVertex& v : list.panels[0].shapes.vertices()) count += v.kind == float(ShapeKind::Glyph);
+    return count;
+  };
+  frame.runs[0].method = Method::Ambient;
+  frame.runs[1].method = Method::Christoffel;
+  const std::size_t differing = glyphs(frame);
+  frame.runs[0].method = Method::Christoffel;
+  const std::size_t same = glyphs(frame);
+  ShapeBatch words;
+  composer.font().draw(words, "  (ambient)  (christoffel)", TextSize::Normal, 0, 20, palette::ink);  // spaces are quads too
+  EXPECT_EQ(differing - same, words.vertices().size()) << "the method words of two runs that differ by method";
+  EXPECT_GT(differing, same);
+}
+
 // The chart pole facing the eye is named in the sphere panel; a pole on the silhouette or behind the
 // sphere is not (the camera level with the equator sees neither).
 TEST(DrawList, TheChartPoleFacingTheEyeIsLabelled) {
