@@ -1,6 +1,8 @@
 #pragma once
 // FrameState: everything the renderer needs to draw one frame, and nothing about how it was computed.
 // Produced by the frames stage (scene + runs sampled at frame times), consumed by render/.
+// Data only: kinds are enums of contracts/registry.hpp and readings are numbers; the words a frame shows are made
+// at the rendering edge (render/frame_words.hpp). Strings here are the user's: scene title and run names.
 // Units: linkage positions in rod lengths (plane coordinates, pins at (0,0) and (L,0));
 // sphere-panel points are 3D points of the view (unit sphere for 4 rods, see ViewSpace).
 
@@ -14,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "contracts/registry.hpp"
 #include "contracts/values.hpp"
 
 namespace sl {
@@ -85,14 +88,15 @@ struct MemberFrame {
 // One run's state at this frame.
 struct RunFrame {
   std::string name;  // run name from the scene
-  // Labels as shown (the frames stage writes the registry's names; the renderer only displays them).
-  std::string method;      // e.g. "christoffel-fd"
+  Method method = Method::Christoffel;
   ColorRGB color;          // the run's colour in every panel
   bool stopped = false;    // the run stopped at or before this frame's time
   double stopTime = 0;     // when it stopped (valid if stopped)
-  std::string stopReason;  // why, e.g. "pole-fold-back" (valid if stopped)
-  std::string stopWhy;     // what that means, in a sentence (the reason's meaning in contracts/registry.hpp)
-  std::string stopMeasured;  // a watchdog's reading against its limit, e.g. "energy drift 2.11 > limit 1" (or empty)
+  StopReason stopReason = StopReason::NonFinite;  // why (valid if stopped)
+  // A watchdog's reading and its limit (energy drift, rod-length error; simulation/trajectory.hpp's StopInfo);
+  // NaN where the stop has none.
+  double stopMeasured = std::numeric_limits<double>::quiet_NaN();
+  double stopLimit = std::numeric_limits<double>::quiet_NaN();
   double baseLength = 3;   // L of this run's own linkage (runs may differ in L and masses, never in n)
   // The linkage panel's physics: M_1..M_(n-1) at the hinges and m_1..m_n along the rods of this run's chain
   // (empty: the spec's unit hinge masses and massless rods).
@@ -126,7 +130,7 @@ struct RunFrame {
 
 // A time series for the plot panel.
 struct PlotSeries {
-  std::string label;
+  std::string label;  // the run's name (user data)
   ColorRGB color;
   SharedSamples times;
   SharedSamples values;  // non-finite or non-positive values on a log axis are skipped, never drawn
@@ -135,18 +139,39 @@ struct PlotSeries {
   double stopTime = std::numeric_limits<double>::infinity();
 };
 
+// A run that stopped at its first frame, which is why a plot may stay empty.
+struct EarlyStop {
+  std::string run;  // its name
+  double time = 0;
+  StopReason reason = StopReason::NonFinite;
+};
+
+// Why a plot stays empty for the whole animation.
+enum class PlotEmptiness {
+  HasValues,       // not empty
+  RunsStopped,     // runs stopped at once (PlotFrame::earlyStops says which)
+  ZeroOnLogAxis,   // every value is 0, which a log axis cannot show
+  NothingToPlot    // no value at all
+};
+
 struct PlotFrame {
-  std::string title;  // e.g. "divergence |p_a - p_b|" or "relative energy error"
+  PlotKind kind = PlotKind::EnergyError;  // what it shows (its title follows from it)
+  std::string referenceRun;               // a divergence plot's: the run the others are measured from
   bool logY = true;
   double timeMin = 0, timeMax = 1;  // the x axis spans the whole animation, so it does not jump
   // The y axis's data range over the whole animation (or the scene's y_range), so it does not jump either;
   // empty when no value of the whole animation can be drawn.
   std::optional<std::array<double, 2>> valueRange;
-  std::string emptyNote;  // why the plot stays empty for the whole animation, if it does
-  std::string valueLabel;  // what the y axis shows and in what unit, e.g. "max hinge distance, rod lengths"
-  // Not empty when every value of the whole animation lies within roundoff: the panel says this one line (e.g.
-  // "energy conserved to 3×10⁻¹⁵ over the run") instead of an axis.
-  std::string roundoffNote;
+  PlotEmptiness emptiness = PlotEmptiness::HasValues;  // why the plot stays empty for the whole animation, if it does
+  std::vector<EarlyStop> earlyStops;                    // with PlotEmptiness::RunsStopped
+  // Set when every value of the whole animation lies within roundoff (or, for an energy error of adaptive runs,
+  // within what their tolerance allows): the panel says so in one line instead of an axis.
+  struct RoundoffOnly {
+    double largest = 0;        // the largest |value| over the runs (0: exactly)
+    bool byTolerance = false;  // above limits::kRoundoffLevel, within the level the tolerance allows
+    std::size_t runs = 1;      // runs shown
+  };
+  std::optional<RoundoffOnly> roundoff;
   std::vector<PlotSeries> series;
 };
 
@@ -154,7 +179,7 @@ struct PlotFrame {
 // value(i, j) at phi = -pi/2 + (i + 1/2) pi / phiCount, t = -pi + (j + 1/2) 2 pi / tCount, the point
 // (cos phi cos t, cos phi sin t, sin phi). The renderer colours the sphere with it and draws its colour bar.
 struct SphereField {
-  std::string label;       // what the colour bar says, e.g. "K, Gaussian curvature"
+  SphereColoring coloring = SphereColoring::Curvature;  // what it is (the colour bar's caption follows from it)
   bool diverging = false;  // signed: a diverging map centred at zero, each sign stretched over its own range
   int phiCount = 0, tCount = 0;
   std::vector<float> values;  // row-major [phi][t]
@@ -169,9 +194,8 @@ struct SphereEllipse {
 // What the sphere panel draws on and over the sphere, the same in every frame (shared, never copied).
 struct SphereDecoration {
   std::optional<SphereField> field;
-  std::vector<SphereEllipse> ellipses;
-  std::string ellipseCaption;  // a line explaining the ellipses
-  bool seam = false;           // the seams t = +-pi/2 drawn and named
+  std::vector<SphereEllipse> ellipses;  // stiffness glyphs (geometry/curvature.hpp), explained below the sphere
+  bool seam = false;                    // the seams t = +-pi/2 drawn and named
 };
 
 struct FrameState {

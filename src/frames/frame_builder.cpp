@@ -125,7 +125,7 @@ FrameBuilder::FrameBuilder(const Scene& scene, const std::vector<InitialState>& 
   for (size_t i = 0; i < runs_.size(); ++i) {
     RunFrame& frame = history_[i].frame;
     frame.name = scene.runs[i].name;
-    frame.method = nameOf(scene.runs[i].config.method);
+    frame.method = scene.runs[i].config.method;
     frame.color = runColor(scene, i);
     frame.baseLength = scene.runs[i].chain.baseLength;
     const Chain& chain = scene.runs[i].chain;
@@ -206,9 +206,9 @@ void FrameBuilder::sampleRunAt(size_t run, double t, bool isFrameTime) {
     const std::optional<StopInfo>& stop = runs_[run].stop();
     frame.stopTime = stop ? stop->time : t;
     if (stop) {
-      frame.stopReason = nameOf(stop->reason);
-      frame.stopWhy = std::string(traits(stop->reason).meaning);
-      frame.stopMeasured = stop->reading();
+      frame.stopReason = stop->reason;
+      frame.stopMeasured = stop->measured;
+      frame.stopLimit = stop->limit;
     }
     history.hingesAtFrame.resize(2, 0);
     return;
@@ -304,20 +304,19 @@ FrameState FrameBuilder::snapshot(int k) const {
     plot.logY = spec.logY;
     plot.timeMax = scene_.duration;
     plot.valueRange = overview_.plots[p].valueRange;
-    plot.emptyNote = overview_.plots[p].emptyNote;
-    plot.roundoffNote = overview_.plots[p].roundoffNote;
+    plot.kind = spec.kind;
+    plot.emptiness = overview_.plots[p].emptiness;
+    plot.earlyStops = overview_.plots[p].earlyStops;
+    plot.roundoff = overview_.plots[p].roundoff;
     switch (spec.kind) {  // every kind, no default: the compiler names a kind left out
       case PlotKind::Divergence:
-        plot.title = "divergence from " + scene_.runs[0].name + " (max hinge distance)";
-        plot.valueLabel = "hinge distance (rod lengths)";
+        plot.referenceRun = scene_.runs[0].name;
         for (size_t run = 1; run < runs_.size(); ++run) {
           plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, divergence_[run - 1].view(), {},
                                  std::min(stopTimeSoFar(history_[0].frame), stopTimeSoFar(history_[run].frame))});
         }
         break;
       case PlotKind::Spread:
-        plot.title = "spread of the family (largest hinge distance from the run)";
-        plot.valueLabel = "hinge distance (rod lengths)";
         for (size_t run = 0; run < runs_.size(); ++run) {
           if (!scene_.runs[run].family) continue;
           plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, history_[run].spreads.view(), {},
@@ -325,8 +324,6 @@ FrameState FrameBuilder::snapshot(int k) const {
         }
         break;
       case PlotKind::Jacobi:
-        plot.title = "Jacobi field across the motion |J_perp| (zeros: conjugate points)";
-        plot.valueLabel = "|J⊥| (metric units)";
         for (size_t run = 0; run < runs_.size(); ++run) {
           if (!scene_.runs[run].config.jacobi) continue;
           plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, history_[run].jacobiSizes.view(),
@@ -334,8 +331,6 @@ FrameState FrameBuilder::snapshot(int k) const {
         }
         break;
       case PlotKind::EnergyError:
-        plot.title = "relative energy error |E - E0| / E0";
-        plot.valueLabel = "|E − E0| / E0 (no unit)";
         for (size_t run = 0; run < runs_.size(); ++run) {
           plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, history_[run].energyErrors.view(),
                                  {}, stopTimeSoFar(history_[run].frame)});

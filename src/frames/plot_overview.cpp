@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 
 #include "contracts/limits.hpp"
@@ -17,12 +16,6 @@ namespace {
 
 bool drawable(double v, bool logY) { return std::isfinite(v) && (!logY || v > 0); }
 
-std::string stopText(const std::string& name, const std::optional<StopInfo>& stop) {
-  char time[32];
-  std::snprintf(time, sizeof time, "%.3g", stop ? stop->time : 0.0);
-  return "\"" + name + "\" stopped at t = " + time + " (" + (stop ? nameOf(stop->reason) : std::string("?")) + ")";
-}
-
 bool showsLinkage(const Scene& scene) {
   return scene.view.panels.empty() || std::any_of(scene.view.panels.begin(), scene.view.panels.end(),
                                                   [](const PanelSpec& panel) { return panel.kind == PanelKind::Linkage; });
@@ -35,35 +28,24 @@ void holdPoint(std::array<double, 4>& box, double x, double y) {
   box[2] = std::min(box[2], y), box[3] = std::max(box[3], y);
 }
 
-// What a plot whose every value lies within roundoff (or, for an energy error, within what its integrator's
-// tolerance allows) says instead of an axis; empty when its values do not. `allowed`: that level.
-std::string roundoffNote(PlotKind kind, double largest, double allowed, std::size_t runs) {
-  if (!(largest >= 0 && largest <= allowed)) return {};  // -inf: no value at all
-  const std::string level = largest > 0 ? "to " + typesetPowerOfTen(largest) : "exactly";
+// Set when every value lies within roundoff (or, for an energy error, within what its integrator's tolerance
+// allows): `allowed` is that level. Only the plots whose steady values would be noise: a Jacobi field's zeros are its
+// events, and a family that stays together is what the spread plot is there to show.
+std::optional<PlotFrame::RoundoffOnly> roundoffOnly(PlotKind kind, double largest, double allowed, std::size_t runs) {
+  if (!(largest >= 0 && largest <= allowed)) return std::nullopt;  // -inf: no value at all
   switch (kind) {
     case PlotKind::EnergyError:
-      return "energy conserved " + level + (runs > 1 ? " by every run" : " over the run") +
-             (largest > limits::kRoundoffLevel ? ", as its integrator's tolerance allows" : "");
-    case PlotKind::Divergence: return "the runs agree " + level + " (largest hinge distance)";
-    case PlotKind::Jacobi:  // zeros of a Jacobi field are its events, never roundoff
-    case PlotKind::Spread:  // a family that stays together is what the plot is there to show
-      return {};
+    case PlotKind::Divergence:
+      return PlotFrame::RoundoffOnly{largest, largest > limits::kRoundoffLevel, runs};
+    case PlotKind::Jacobi:
+    case PlotKind::Spread:
+      return std::nullopt;
   }
-  return {};
+  return std::nullopt;
 }
 
 }  // namespace
 
-std::string typesetPowerOfTen(double value) {
-  if (!(value > 0) || !std::isfinite(value)) return "0";
-  int exponent = int(std::floor(std::log10(value)));
-  long digit = std::lround(value / std::pow(10.0, exponent));
-  if (digit >= 10) digit = 1, ++exponent;
-  static const char* digits[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
-  std::string power = exponent < 0 ? "⁻" : "";
-  for (char c : std::to_string(std::abs(exponent))) power += digits[c - '0'];
-  return (digit == 1 ? std::string() : std::to_string(digit) + "×") + "10" + power;
-}
 
 MotionOverview overviewMotion(const Scene& scene, const std::vector<InitialState>& starts,
                               const std::function<bool()>& cancelled) {
@@ -161,16 +143,15 @@ MotionOverview overviewMotion(const Scene& scene, const std::vector<InitialState
     } else if (lo <= hi) {
       plot.valueRange = std::array<double, 2>{lo, hi};
     }
-    if (shown > 0) plot.roundoffNote = roundoffNote(spec.kind, largest, allowed, shown);
-    if (!(lo <= hi) && plot.roundoffNote.empty()) {
-      // Say why: a run that stopped at once, or values a log axis cannot show (exactly zero).
-      std::string why;
+    if (shown > 0) plot.roundoff = roundoffOnly(spec.kind, largest, allowed, shown);
+    if (!(lo <= hi) && !plot.roundoff) {
+      // Say why: runs that stopped at once, or values a log axis cannot show (exactly zero).
       for (std::size_t r = 0; r < runCount; ++r)
         if (runs[r].stop() && runs[r].stop()->time <= scene.frameTime(std::min(frames - 1, 1)))
-          why += (why.empty() ? "" : "; ") + stopText(scene.runs[r].name, runs[r].stop());
-      plot.emptyNote = !why.empty() ? "nothing to plot: " + why
-                           : spec.logY  ? "nothing to plot: every value is 0 (a log axis cannot show it)"
-                                        : "nothing to plot";
+          plot.earlyStops.push_back({scene.runs[r].name, runs[r].stop()->time, runs[r].stop()->reason});
+      plot.emptiness = !plot.earlyStops.empty() ? PlotEmptiness::RunsStopped
+                           : spec.logY                  ? PlotEmptiness::ZeroOnLogAxis
+                                                        : PlotEmptiness::NothingToPlot;
     }
   }
   return overview;

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "contracts/frame_state.hpp"
 #include "contracts/run_config.hpp"
 #include "scene/scene.hpp"
 
@@ -18,8 +19,9 @@ namespace sl {
 
 struct PlotOverview {
   std::optional<std::array<double, 2>> valueRange;
-  std::string emptyNote;
-  std::string roundoffNote;  // PlotFrame::roundoffNote: every value within limits::kRoundoffLevel, said in a line
+  PlotEmptiness emptiness = PlotEmptiness::HasValues;
+  std::vector<EarlyStop> earlyStops;
+  std::optional<PlotFrame::RoundoffOnly> roundoff;  // PlotFrame::roundoff
 };
 
 // What the whole animation shows, known before its first frame.
@@ -34,9 +36,6 @@ struct MotionOverview {
 // `cancelled` is given to the trajectories (Trajectory::setCancellation): RunCancelled comes through.
 MotionOverview overviewMotion(const Scene& scene, const std::vector<InitialState>& starts,
                               const std::function<bool()>& cancelled = {});
-
-// "3×10⁻¹⁵": a positive value to one significant digit, as the frames' text typesets it.
-std::string typesetPowerOfTen(double value);
 
 
 }  // namespace sl

@@ -21,7 +21,7 @@ SphereField colourField(const ConfigurationSurface& surface, SphereColoring colo
   for (int j = 0; j < field.tCount; ++j) ts[j] = -kPi + (j + 0.5) * 2 * kPi / field.tCount;
   const std::vector<CurvatureSample> samples = curvatureGrid(surface, phis, ts);
   const bool curvature = coloring == SphereColoring::Curvature;
-  field.label = curvature ? "K, Gaussian curvature" : "|II|\u00b2, bending";  // the symbol first: it survives fitting
+  field.coloring = coloring;
   field.diverging = curvature;
   field.values.reserve(samples.size());
   field.min = INFINITY;
@@ -70,10 +70,7 @@ std::shared_ptr<const SphereDecoration> makeSphereDecoration(const Chain& chain,
   auto decoration = std::make_shared<SphereDecoration>();
   if (spec.colorBy != SphereColoring::None) decoration->field = colourField(surface, spec.colorBy);
   decoration->seam = spec.seam;
-  if (spec.stiffness) {
-    decoration->ellipses = stiffnessEllipses(surface);
-    decoration->ellipseCaption = "ellipses: stiffness |II(v,v)|\u00b2 over directions v, half-axes ~ sqrt(max), sqrt(min)";
-  }
+  if (spec.stiffness) decoration->ellipses = stiffnessEllipses(surface);
   return decoration;
 }
 

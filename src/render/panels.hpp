@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "contracts/frame_state.hpp"
 #include "contracts/view_settings.hpp"
@@ -43,7 +44,9 @@ struct PlotLayout {
   float valueLabelBaseline;
   bool areaShown;  // false when the panel has room for the title only
 };
-PlotLayout layoutPlot(const PanelContext& context, const PlotFrame& plot);
+PlotLayout layoutPlot(const PanelContext& context, const PlotFrame& plot);  // titled by render/frame_words.hpp
+// With its title's forms, longest first (render/frame_words.hpp's fittedForm picks one).
+PlotLayout layoutPlot(const PanelContext& context, const PlotFrame& plot, const std::vector<std::string>& titles);
 void drawTextPanel(const PanelContext& context, ShapeBatch& batch);
 // The title and the time across the top of the frame (context.rect: the whole frame), for layouts without a text
 // panel (ViewSettings::titleLine).

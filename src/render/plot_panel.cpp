@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "render/frame_words.hpp"
 #include "render/palette.hpp"
 #include "render/panels.hpp"
 
@@ -71,18 +72,9 @@ double unit(const Axis& axis, double v) {
                   : (v - axis.lo) / (axis.hi - axis.lo);
 }
 
-std::string superscript(int exponent) {
-  static const char* digits[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
-  std::string text = exponent < 0 ? "⁻" : "";
-  for (char c : std::to_string(std::abs(exponent))) text += digits[c - '0'];
-  return text;
-}
-
 std::string tickLabel(const Axis& axis, double v) {
   if (axis.log) return "10" + superscript(int(std::lround(std::log10(v))));
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", v);
-  return text;
+  return typesetNumber("%g", v);
 }
 
 // The y axis with at most `maxTicks` labelled ticks (what the plot's height has room for).
@@ -294,7 +286,7 @@ void drawRoundoffNote(const PanelContext& c, const PlotFrame& plot, const PlotLa
   const float line = c.font.lineHeight(TextSize::Small), ascent = c.font.ascent(TextSize::Small);
   const float left = c.rect.x + 0.5f * ascent, right = c.rect.x + c.rect.width - 0.5f * ascent;
   const float top = layout.legendBottom + 0.3f * line, bottom = c.rect.y + c.rect.height;
-  const std::vector<std::string> note = c.font.wrapped(plot.roundoffNote, TextSize::Small, right - left,
+  const std::vector<std::string> note = c.font.wrapped(roundoffNote(plot), TextSize::Small, right - left,
                                                        std::size_t(std::clamp((bottom - top) / line, 1.0f, 2.0f)));
   float y = 0.5f * (top + bottom) - 0.5f * line * (float(note.size()) - 1) + 0.4f * ascent;
   for (const std::string& text : note) {
@@ -313,14 +305,14 @@ void drawRoundoffNote(const PanelContext& c, const PlotFrame& plot, const PlotLa
 // the text size, so the plot keeps its proportions from 320x180 to 3840x2160. A panel shorter than about eight
 // lines of small text is drawn compact: the title in small text with the legend beside it if it fits (the runs'
 // colours are also in the text panel), fewer ticks.
-PlotLayout layoutPlot(const PanelContext& c, const PlotFrame& plot) {
+PlotLayout layoutPlot(const PanelContext& c, const PlotFrame& plot, const std::vector<std::string>& titles) {
   const float line = c.font.lineHeight(TextSize::Small), ascent = c.font.ascent(TextSize::Small);
   const bool compact = c.rect.height < 8 * line;
   PlotLayout layout;
   layout.titleSize = compact ? TextSize::Small : TextSize::Normal;
   const float pad = 0.5f * ascent, right = c.rect.x + c.rect.width - pad;
   layout.titleBaseline = c.rect.y + pad + c.font.ascent(layout.titleSize);
-  layout.title = c.font.fitted(plot.title, layout.titleSize, c.rect.width - 2 * pad);
+  layout.title = fittedForm(c.font, titles, layout.titleSize, c.rect.width - 2 * pad);  // a shorter form, no cut
 
   // The legend beside the title when both fit in one row, else in rows of its own below it (at most two in a
   // full-size panel, none in a compact one).
@@ -342,7 +334,7 @@ PlotLayout layoutPlot(const PanelContext& c, const PlotFrame& plot) {
   // The plot area; room on the left for the y labels, on the right for the last x label's half and the axis name.
   const float bottomRoom = (compact ? 1.35f : 2.2f) * line;
   layout.areaY0 = layout.legendBottom + 0.6f * line;
-  layout.valueLabelShown = !compact && !plot.valueLabel.empty() && plot.roundoffNote.empty();
+  layout.valueLabelShown = !compact && !plot.roundoff;
   layout.valueLabelBaseline = layout.areaY0 + ascent;
   if (layout.valueLabelShown) layout.areaY0 += 1.1f * line + 0.6f * ascent;  // clear of the top tick's label
   layout.areaY1 = c.rect.y + c.rect.height - bottomRoom;
@@ -357,15 +349,18 @@ PlotLayout layoutPlot(const PanelContext& c, const PlotFrame& plot) {
   return layout;
 }
 
+PlotLayout layoutPlot(const PanelContext& c, const PlotFrame& plot) { return layoutPlot(c, plot, plotTitles(plot)); }
+
 void drawPlotPanel(const PanelContext& c, int plotIndex, ShapeBatch& batch) {
   const auto& plots = c.frame.plots;
-  PlotFrame empty;
-  empty.title = "(no plot data)";
-  const PlotFrame& plot = plotIndex >= 0 && plotIndex < int(plots.size()) ? plots[plotIndex] : empty;
+  const bool exists = plotIndex >= 0 && plotIndex < int(plots.size());
+  const PlotFrame empty;
+  const PlotFrame& plot = exists ? plots[plotIndex] : empty;
   const float line = c.font.lineHeight(TextSize::Small), ascent = c.font.ascent(TextSize::Small);
-  const PlotLayout layout = layoutPlot(c, plot);
+  const PlotLayout layout =
+      layoutPlot(c, plot, exists ? plotTitles(plot) : std::vector<std::string>{"(no plot data)", "(no data)"});
   c.font.draw(batch, layout.title, layout.titleSize, c.rect.x + 0.5f * ascent, layout.titleBaseline, palette::ink);
-  if (!plot.roundoffNote.empty()) {  // nothing but roundoff to show: one line says so, in place of the axes
+  if (plot.roundoff) {  // nothing but roundoff to show: one line says so, in place of the axes
     drawRoundoffNote(c, plot, layout, batch);
     return;
   }
@@ -380,7 +375,7 @@ void drawPlotPanel(const PanelContext& c, int plotIndex, ShapeBatch& batch) {
   c.font.draw(batch, "t", TextSize::Small, area.x1 + 0.4f * ascent, area.y1 + 0.35f * ascent, palette::softInk);
   drawAxes(c, area, x, y, batch);
   if (layout.valueLabelShown)
-    c.font.draw(batch, c.font.fitted(plot.valueLabel, TextSize::Small, c.rect.x + c.rect.width - area.x0),
+    c.font.draw(batch, c.font.fitted(valueAxisWords(plot.kind), TextSize::Small, c.rect.x + c.rect.width - area.x0),
                 TextSize::Small, c.rect.x + 0.5f * ascent, layout.valueLabelBaseline, palette::softInk);
   // Now: a line across the plot at the frame's time, which relates the plot to the other panels.
   if (c.frame.time >= x.lo && c.frame.time <= x.hi) {
@@ -396,10 +391,11 @@ void drawPlotPanel(const PanelContext& c, int plotIndex, ShapeBatch& batch) {
     const DrawnSamples drawn(series, area);
     for (std::size_t j = 0; j < drawn.size() && !anyDrawn; ++j) anyDrawn = drawable(series.values[drawn[j]], plot.logY);
   }
-  if (!anyDrawn && !plot.emptyNote.empty()) {  // a plot that stays empty says why, in as many lines as fit
+  const std::string emptyNote = emptyPlotNote(plot);
+  if (!anyDrawn && !emptyNote.empty()) {  // a plot that stays empty says why, in as many lines as fit
     const std::size_t room = std::size_t(std::max(1.0f, (area.y1 - area.y0) / line - 0.5f));
     const std::vector<std::string> note =
-        c.font.wrapped(plot.emptyNote, TextSize::Small, area.x1 - area.x0 - ascent, std::min<std::size_t>(room, 3));
+        c.font.wrapped(emptyNote, TextSize::Small, area.x1 - area.x0 - ascent, std::min<std::size_t>(room, 3));
     float y = 0.5f * (area.y0 + area.y1) - 0.5f * line * (float(note.size()) - 1) + 0.4f * ascent;
     for (const std::string& text : note) {
       c.font.draw(batch, text, TextSize::Small, 0.5f * (area.x0 + area.x1 - c.font.width(text, TextSize::Small)), y,

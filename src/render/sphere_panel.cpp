@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "render/color_map.hpp"
+#include "render/frame_words.hpp"
 #include "render/palette.hpp"
 #include "render/panels.hpp"
 #include "render/panel_layout.hpp"
@@ -655,9 +656,9 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
     const float pad = 0.02f * context.rect.height;
     const Placement onSurface{true, 0.004};
     drawEllipses(decoration->ellipses, camera, onSurface, context.rect, context.unit, batch);
-    if (!decoration->ellipseCaption.empty()) {
+    if (!decoration->ellipses.empty()) {
       const float width = context.rect.width - 2 * pad - (colored ? colorBarStrip(context.rect) : 0);
-      context.font.draw(batch, context.font.fitted(decoration->ellipseCaption, TextSize::Small, width), TextSize::Small,
+      context.font.draw(batch, fittedForm(context.font, ellipseCaptions(), TextSize::Small, width), TextSize::Small,
                         context.rect.x + pad, context.rect.y + context.rect.height - pad, palette::softInk);
     }
     if (colored) {
@@ -666,8 +667,8 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
       const float gap = context.font.lineHeight(TextSize::Small);
       const PixelRect bar{context.rect.x + context.rect.width - colorBarStrip(context.rect), context.rect.y + pad,
                           colorBarStrip(context.rect) - pad - gap, 0.8f * context.rect.height};
-      drawColorBar(scaleOf(field), field.label, field.diverging ? "each sign on its own scale" : "", bar,
-                   context.font, batch);
+      const std::string caption = fittedForm(context.font, fieldCaptions(field.coloring), TextSize::Small, bar.width);
+      drawColorBar(scaleOf(field), caption, field.diverging ? "each sign on its own scale" : "", bar, context.font, batch);
     }
   }
   // What the sphere hides goes into `back`, drawn before everything in front of it.
@@ -712,7 +713,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   batch.append(back);
   batch.append(front);
   batch.append(labelLayer);
-  const bool captioned = space == ViewSpace::Ball || (decoration && !decoration->ellipseCaption.empty());
+  const bool captioned = space == ViewSpace::Ball || (decoration && !decoration->ellipses.empty());
   const std::vector<PanelSpec> panels = effectivePanels(context.settings);
   const bool textPanel =
       std::any_of(panels.begin(), panels.end(), [](const PanelSpec& p) { return p.kind == PanelKind::Text; });

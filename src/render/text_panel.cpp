@@ -1,9 +1,10 @@
-// The text panel: title, simulation time, each run's name and method in its colour, and why a run
-// stopped once it has.
+// The text panel: title, simulation time, each run's name in its colour (and its method where the runs differ by
+// method), and why a run stopped once it has, in one line per run.
 
 #include <cmath>
 #include <cstdio>
 
+#include "render/frame_words.hpp"
 #include "render/palette.hpp"
 #include "render/panels.hpp"
 
@@ -16,8 +17,15 @@ std::string format(const char* pattern, double value) {
   return text;
 }
 
-std::string runLine(const RunFrame& run) {
-  std::string line = run.name + "  (" + run.method + ")";
+// Whether the runs differ by method: only then does a run's row name its method (else it is noise).
+bool methodsDiffer(const FrameState& frame) {
+  for (const RunFrame& run : frame.runs)
+    if (run.method != frame.runs.front().method) return true;
+  return false;
+}
+
+std::string runLine(const RunFrame& run, bool withMethod) {
+  std::string line = withMethod ? run.name + "  (" + methodWords(run.method) + ")" : run.name;
   if (!run.members.empty()) line += "  + " + std::to_string(run.members.size()) + " members";
   // Conjugate points reached so far (runs with Jacobi fields), the latest few.
   if (!run.conjugateTimes.empty()) {
@@ -45,8 +53,9 @@ enum class StopDetail { Reason, Measured, Explained };
 
 // "stopped at t = 5.2: reason", with the watchdog's reading unless only the reason is asked for.
 std::string stopSentence(const RunFrame& run, StopDetail detail) {
-  std::string stop = "stopped at t = " + format("%.3g", run.stopTime) + ": " + run.stopReason;
-  if (detail != StopDetail::Reason && !run.stopMeasured.empty()) stop += " (" + run.stopMeasured + ")";
+  std::string stop = "stopped at t = " + format("%.3g", run.stopTime) + ": " + stopReasonWords(run.stopReason);
+  const std::string reading = stopReadingWords(run);
+  if (detail != StopDetail::Reason && !reading.empty()) stop += " (" + reading + ")";
   return stop;
 }
 
@@ -59,9 +68,9 @@ float flowRuns(const PanelContext& c, TextSize size, StopDetail detail, float pa
   float x = c.rect.x + pad, y = top + line;
   for (std::size_t k = 0; k < c.frame.runs.size(); ++k) {
     const RunFrame& run = c.frame.runs[k];
-    const std::string text = runLine(run);
+    const std::string text = runLine(run, methodsDiffer(c.frame));
     // One stop line per run: on the run's row, or, explained, on a line of its own below the rows.
-    const bool ownLine = detail == StopDetail::Explained && !run.stopWhy.empty();
+    const bool ownLine = detail == StopDetail::Explained && run.stopped;
     std::string stop = run.stopped && !ownLine ? "  " + stopSentence(run, detail) : "";
     const float width = 2.5f * swatch + c.font.width(text + stop, size) + 2 * pad;
     if (width > c.rect.width) return INFINITY;  // one run alone is wider than the panel: this size does not fit
@@ -78,9 +87,9 @@ float flowRuns(const PanelContext& c, TextSize size, StopDetail detail, float pa
   }
   // Below the runs, what each stop means: one line per stopped run, in small text, shortened to the panel.
   for (const RunFrame& run : c.frame.runs) {
-    if (detail != StopDetail::Explained || !run.stopped || run.stopWhy.empty()) continue;
+    if (detail != StopDetail::Explained || !run.stopped) continue;
     y += c.font.lineHeight(TextSize::Small);
-    const std::string why = c.font.fitted(run.name + " " + stopSentence(run, detail) + " \u2014 " + run.stopWhy,
+    const std::string why = c.font.fitted(run.name + " " + stopSentence(run, detail) + " \u2014 " + stopMeaningWords(run.stopReason),
                                           TextSize::Small, c.rect.width - 2 * pad);
     if (batch) c.font.draw(*batch, why, TextSize::Small, c.rect.x + pad, y, palette::stopRed);
   }

@@ -86,6 +86,10 @@ double determinantRate(const Eigen::MatrixXd& gram, const Eigen::MatrixXd& rate)
 
 }  // namespace
 
+bool isConjugateMinimum(double determinantAtMinimum, double largest) {
+  return determinantAtMinimum <= 1e-12 * largest;
+}
+
 double gramDeterminantRate(const Eigen::MatrixXd& gram, const Eigen::MatrixXd& rate) {
   return determinantRate(gram, rate);
 }

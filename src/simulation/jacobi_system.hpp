@@ -34,6 +34,11 @@ struct JacobiState {
 // G': finite where G is singular. O(m^3) for m fields (exposed for tests).
 double gramDeterminantRate(const Eigen::MatrixXd& gram, const Eigen::MatrixXd& rate);
 
+// Whether a minimum of det G found between two steps is a zero of it (a conjugate point) and not a dip that stays
+// away from zero: its value at the minimum is zero to rounding, at most 1e-12 of `largest`, the largest det G of
+// the motion so far (a true zero located to ~1e-14 in time leaves far less; tests/simulation/jacobi_test.cpp).
+bool isConjugateMinimum(double determinantAtMinimum, double largest);
+
 class JacobiSystem : public GeodesicSystem {
  public:
   // Throws std::invalid_argument for fewer than 4 rods (no direction orthogonal to the motion).

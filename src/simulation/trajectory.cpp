@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "contracts/stop_reading.hpp"
 #include "linkage/sphere_coordinates.hpp"
 #include "simulation/ambient_system.hpp"
 #include "simulation/chart_system.hpp"
@@ -80,13 +81,6 @@ std::string formatTime(double t) {
   return out.str();
 }
 
-// "energy drift 2.13 > limit 1": a watchdog's reading beside its limit, in a few digits.
-std::string against(const char* what, double value, double limit) {
-  std::ostringstream text;
-  text.precision(3);
-  text << what << " " << value << " > limit " << limit;
-  return text.str();
-}
 
 }  // namespace
 
@@ -112,22 +106,7 @@ std::string StopInfo::detail() const {
   return cause;
 }
 
-std::string StopInfo::reading() const {
-  switch (reason) {
-    case StopReason::EnergyBlowUp:
-      return against("energy drift", measured, limit);
-    case StopReason::RodLength:
-      return against("rod-length error", measured, limit);
-    case StopReason::NonFinite:
-    case StopReason::PoleFoldBack:
-    case StopReason::FieldBlowUp:
-    case StopReason::StepSizeCollapse:
-    case StopReason::MaxSteps:
-    case StopReason::ConstraintRankLoss:
-      return "";
-  }
-  return "";
-}
+std::string StopInfo::reading() const { return stopReading(reason, measured, limit); }
 
 struct Trajectory::Impl {
   explicit Impl(const Chain& chain) : bound(chain) {}
@@ -166,7 +145,7 @@ struct Trajectory::Impl {
     }
     const double time = 0.5 * (low + high);
     stepper->stateAt(time, y);
-    if (jacobi->jacobiAt(y).gramDeterminant <= 1e-12 * maxGramDeterminant) conjugateTimes.push_back(time);
+    if (isConjugateMinimum(jacobi->jacobiAt(y).gramDeterminant, maxGramDeterminant)) conjugateTimes.push_back(time);
   }
 
   void halt(const StopInfo& info) { stop = info; }

@@ -104,7 +104,7 @@ TEST(FrameBuilder, FrameTimesAndCount) {
   EXPECT_EQ(last.rods, 4);
   EXPECT_EQ(last.viewSpace, ViewSpace::Sphere);
   EXPECT_EQ(last.runs[1].name, "published");
-  EXPECT_EQ(last.runs[1].method, "christoffel-fd");
+  EXPECT_EQ(last.runs[1].method, Method::ChristoffelFd);
   // 4 path samples per frame interval after frame 0; pathTimes increase and end at the frame time.
   EXPECT_EQ(last.runs[0].path.size(), 1u + 10u * 4u);
   EXPECT_DOUBLE_EQ(last.runs[0].pathTimes.back(), 1.0);
@@ -269,7 +269,10 @@ TEST(FrameBuilder, StoppedRunIsFrozenWithItsReason) {
   const FrameState late = builder.frame(10);
   ASSERT_TRUE(late.runs[1].stopped);
   EXPECT_FALSE(late.runs[0].stopped);
-  EXPECT_EQ(late.runs[1].stopReason, nameOf(StopReason::EnergyBlowUp));
+  EXPECT_EQ(late.runs[1].stopReason, StopReason::EnergyBlowUp);
+  // The watchdog's reading against its limit, as numbers.
+  EXPECT_GT(late.runs[1].stopMeasured, 1e-14);
+  EXPECT_EQ(late.runs[1].stopLimit, 1e-14);
   EXPECT_LT(late.runs[1].stopTime, 0.2);
   EXPECT_EQ(late.runs[1].hinges[0].x, early.runs[1].hinges[0].x);
   EXPECT_TRUE(std::isnan(late.plots[0].series[0].values.back()));  // no divergence once one side stopped
@@ -349,7 +352,7 @@ TEST(FrameBuilder, PlotRangesAreTheWholeAnimationsFromTheFirstFrame) {
         if (std::isfinite(v) && v > 0) lo = std::min(lo, v), hi = std::max(hi, v);
     EXPECT_EQ((*first.plots[p].valueRange)[0], lo) << p;
     EXPECT_EQ((*first.plots[p].valueRange)[1], hi) << p;
-    EXPECT_TRUE(first.plots[p].emptyNote.empty());
+    EXPECT_EQ(first.plots[p].emptiness, PlotEmptiness::HasValues);
   }
   // A range given by hand wins.
   Scene fixed = twoRunScene();
@@ -369,8 +372,13 @@ TEST(FrameBuilder, APlotThatStaysEmptySaysWhy) {
   const FrameState frame = builder.frame(5);
   ASSERT_EQ(frame.plots.size(), 1u);
   EXPECT_FALSE(frame.plots[0].valueRange);
-  EXPECT_NE(frame.plots[0].emptyNote.find("\"published\" stopped at t = 0 (field-blow-up)"), std::string::npos)
-      << frame.plots[0].emptyNote;
+  EXPECT_EQ(frame.plots[0].kind, PlotKind::Divergence);
+  EXPECT_EQ(frame.plots[0].referenceRun, "exact");
+  EXPECT_EQ(frame.plots[0].emptiness, PlotEmptiness::RunsStopped);
+  ASSERT_EQ(frame.plots[0].earlyStops.size(), 1u);
+  EXPECT_EQ(frame.plots[0].earlyStops[0].run, "published");
+  EXPECT_EQ(frame.plots[0].earlyStops[0].time, 0.0);
+  EXPECT_EQ(frame.plots[0].earlyStops[0].reason, StopReason::FieldBlowUp);
 }
 
 // The linkage panel's box is the part of the plane the whole motion sweeps, known from the first frame: the box
@@ -416,16 +424,14 @@ TEST(FrameBuilder, ARoundoffOnlyPlotSaysSo) {
     if (std::isfinite(v)) largest = std::max(largest, v);
   ASSERT_LE(largest, limits::kToleranceEnergyFactor * 1e-10) << "energy drifts beyond the tolerance";
   ASSERT_GT(largest, limits::kRoundoffLevel);
-  EXPECT_EQ(last.plots[0].roundoffNote, "energy conserved to " + typesetPowerOfTen(largest) +
-                                            " over the run, as its integrator's tolerance allows");
-  EXPECT_TRUE(last.plots[0].emptyNote.empty());
+  ASSERT_TRUE(last.plots[0].roundoff);
+  EXPECT_EQ(last.plots[0].roundoff->largest, largest);
+  EXPECT_TRUE(last.plots[0].roundoff->byTolerance);
+  EXPECT_EQ(last.plots[0].roundoff->runs, 1u);
+  EXPECT_EQ(last.plots[0].emptiness, PlotEmptiness::HasValues);
   // The published method's drift is far above roundoff: an axis.
   const FrameState published = builderFor(twoRunScene()).frame(0);
-  EXPECT_TRUE(published.plots[1].roundoffNote.empty());
-  EXPECT_EQ(published.plots[1].valueLabel, "|E − E0| / E0 (no unit)");
-  EXPECT_EQ(typesetPowerOfTen(3.2e-15), "3×10⁻¹⁵");
-  EXPECT_EQ(typesetPowerOfTen(1e-14), "10⁻¹⁴");
-  EXPECT_EQ(typesetPowerOfTen(9.7e-15), "10⁻¹⁴");
+  EXPECT_FALSE(published.plots[1].roundoff);
 }
 
 // The linkage panel's physics: each run's masses, and a push start's arrow (the pushed hinge's start velocity)

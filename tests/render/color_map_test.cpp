@@ -134,7 +134,7 @@ TEST(SpherePanel, DecorationColoursTheSphereAndMakesRoomForTheBar) {
   EXPECT_EQ(plain.panels[0].sphere->look, SphereLook::Opaque);
 
   auto decoration = std::make_shared<SphereDecoration>();
-  decoration->field = SphereField{"K", true, 2, 4, std::vector<float>(8, 1.0f), -1.0, 1.0};
+  decoration->field = SphereField{SphereColoring::Curvature, true, 2, 4, std::vector<float>(8, 1.0f), -1.0, 1.0};
   decoration->ellipses.push_back({{0.6, 0.4, 0.7}, {0.0, 0.05, 0.0}, {0.02, 0.0, 0.0}});
   frame.sphereDecoration = decoration;
   const DrawList colored = composer.compose(frame);
@@ -195,7 +195,7 @@ TEST(FontAtlas, BakesTheLabelSymbols) {
   };
   const std::vector<float> replacement = quad("\ufffd");
   ASSERT_FALSE(replacement.empty());
-  for (const char* symbol : {"\u00b3", "\u03c0", "\u03c6", "\u22a5", "\u221a", "\u2212"}) {
+  for (const char* symbol : {"\u00b3", "\u03c0", "\u03c6", "\u22a5", "\u221a", "\u2212", "\u2080", "\u00b1"}) {
     const std::vector<float> drawn = quad(symbol);
     EXPECT_FALSE(drawn.empty()) << symbol;
     EXPECT_NE(drawn, replacement) << symbol;

@@ -38,7 +38,7 @@ TEST(Determinism, FrameAloneEqualsFrameInSequence) {
 TEST(Determinism, EveryLookAfterTheOthersEqualsAFreshRender) {
   ViewSettings settings = testing::smallSettings();
   settings.camera.orbitDegreesPerSecond = 20;
-  SphereField field{"K", true, 16, 32, {}, -1.0, 2.0};
+  SphereField field{SphereColoring::Curvature, true, 16, 32, {}, -1.0, 2.0};
   for (int i = 0; i < field.phiCount * field.tCount; ++i) field.values.push_back(float(-1.0 + 3.0 * (i % 7) / 6.0));
   auto decoration = std::make_shared<SphereDecoration>();
   decoration->field = field;

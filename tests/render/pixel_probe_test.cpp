@@ -241,7 +241,7 @@ TEST_F(PixelProbe, BallViewLeavesAGapWhereThePathJumpsThroughTheAntipode) {
 // the northern hemisphere and negative on the southern one, seen from the equator: red above, blue below.
 TEST_F(PixelProbe, ColouredSphereShowsTheFieldWhereItIs) {
   auto decoration = std::make_shared<SphereDecoration>();
-  SphereField field{"K", true, 32, 64, {}, -1.0, 2.0};
+  SphereField field{SphereColoring::Curvature, true, 32, 64, {}, -1.0, 2.0};
   for (int i = 0; i < field.phiCount; ++i)
     for (int j = 0; j < field.tCount; ++j) field.values.push_back(i < field.phiCount / 2 ? -1.0f : 2.0f);
   decoration->field = field;
@@ -274,7 +274,7 @@ TEST_F(PixelProbe, ColouredSphereShowsTheFieldWhereItIs) {
 // pixels well inside its outline and off the grid lines, at least 95% lie within 24 levels (RGB distance) of some colour of the bar.
 TEST_F(PixelProbe, ColouredSphereKeepsTheColoursOfItsBar) {
   auto decoration = std::make_shared<SphereDecoration>();
-  SphereField field{"K", true, 32, 64, {}, -1.0, 2.0};
+  SphereField field{SphereColoring::Curvature, true, 32, 64, {}, -1.0, 2.0};
   for (int i = 0; i < field.phiCount; ++i)
     for (int j = 0; j < field.tCount; ++j) field.values.push_back(float(-1.0 + 3.0 * (i + 0.5) / field.phiCount));
   decoration->field = field;

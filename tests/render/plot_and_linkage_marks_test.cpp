@@ -8,6 +8,7 @@
 
 #include "fixtures/synthetic_frame.hpp"
 #include "render/frame_composer.hpp"
+#include "render/frame_words.hpp"
 #include "render/palette.hpp"
 #include "render/panels.hpp"
 #include "render/plane_view.hpp"
@@ -69,7 +70,6 @@ TEST(PlotMarks, TheNowLineIsAtTheFramesTime) {
 // Every y axis is named (what and unit) above its top tick label.
 TEST(PlotMarks, TheValueAxisIsNamed) {
   FrameState frame = syntheticFrame(7.0, 210);
-  frame.plots[1].valueLabel = "|E − E0| / E0 (no unit)";
   const ViewSettings view = onePlot(1);
   const FrameComposer composer(view, {1280, 720});
   const PanelContext context{frame, view, composer.font(), composer.rects()[0], 1};
@@ -77,17 +77,9 @@ TEST(PlotMarks, TheValueAxisIsNamed) {
   ASSERT_TRUE(named.valueLabelShown);
   EXPECT_LT(named.valueLabelBaseline, named.areaY0) << "the name sits above the plot area";
   EXPECT_GT(named.valueLabelBaseline - composer.font().ascent(TextSize::Small), named.legendBottom);
-  frame.plots[1].valueLabel.clear();
-  EXPECT_FALSE(layoutPlot(context, frame.plots[1]).valueLabelShown);
-  // The name is drawn: more glyphs with it than without.
-  auto glyphs = [&](const FrameState& f) {
-    std::size_t count = 0;
-    for (const ShapeVertex& v : composer.compose(f).panels[0].shapes.vertices()) count += v.kind == 3 ? 1 : 0;
-    return count;
-  };
-  FrameState withName = frame;
-  withName.plots[1].valueLabel = "|E − E0| / E0 (no unit)";
-  EXPECT_GT(glyphs(withName), glyphs(frame) + 4 * 10);
+  EXPECT_EQ(valueAxisWords(frame.plots[1].kind), "|E − E₀| / E₀ (no unit)");
+  frame.plots[1].roundoff = PlotFrame::RoundoffOnly{3.2e-15, false, 1};
+  EXPECT_FALSE(layoutPlot(context, frame.plots[1]).valueLabelShown) << "a roundoff-only plot has no axis to name";
 }
 
 // A plot whose every value is roundoff says so in one line, and draws no axis, tick, line or now line.
@@ -96,7 +88,11 @@ TEST(PlotMarks, ARoundoffOnlyPlotSaysSoInOneLineWithoutAnAxis) {
   const ViewSettings view = onePlot(1);
   const FrameComposer composer(view, {1280, 720});
   const ShapeBatch plotted = composer.compose(frame).panels[0].shapes;
-  frame.plots[1].roundoffNote = "energy conserved to 3×10⁻¹⁵ over the run";
+  frame.plots[1].roundoff = PlotFrame::RoundoffOnly{3.2e-15, false, 1};
+  ASSERT_EQ(frame.plots[1].kind, PlotKind::EnergyError);
+  EXPECT_EQ(roundoffNote(frame.plots[1]), "energy conserved to 3×10⁻¹⁵ over the run");
+  EXPECT_EQ(typesetPowerOfTen(1e-14), "10⁻¹⁴");
+  EXPECT_EQ(typesetPowerOfTen(9.7e-15), "10⁻¹⁴");
   const ShapeBatch noted = composer.compose(frame).panels[0].shapes;
   std::size_t axisInk = 0, grid = 0, capsules = 0;
   for (const ShapeVertex& v : noted.vertices()) {

@@ -154,6 +154,33 @@ TEST(JacobiField, FourRodsAgreesWithTheScalarJacobiEquationAndItsZeros) {
   }
 }
 
+// A conjugate point is accepted only where det G is zero to rounding. At the true zeros a run finds (4 rods, where
+// det G = |J_perp|^2), det G is measured far below the acceptance's bound, 1e-12 of its largest value; a dip that
+// stays a millionth of that above zero (|J_perp| down to 3e-5 of its largest, a near miss) is not a zero and must
+// not be taken for one, nor must a dip to 1e-9, which an acceptance loosened a millionfold would take.
+TEST(JacobiField, AcceptsOnlyZerosToRoundingAsConjugatePoints) {
+  const Chain chain = Chain::uniform(4, 3.0);
+  const InitialState start = unitSpeed(chain, genericStart(chain));
+  Trajectory run(chain, start, jacobiConfig());
+  double largest = 0;
+  for (int k = 1; k <= 700; ++k) largest = std::max(largest, std::pow(*run.sampleAt(0.01 * k)->jacobi, 2));
+  std::vector<double> found;
+  for (const double t : run.conjugateTimes())
+    if (t <= 7.0) found.push_back(t);
+  ASSERT_GE(found.size(), 1u);
+  Trajectory again(chain, start, jacobiConfig());
+  for (const double t : found) {
+    const double atZero = std::pow(*again.sampleAt(t)->jacobi, 2);
+    EXPECT_LT(atZero, 1e-18 * largest) << "det G at the conjugate point t = " << t;
+    EXPECT_TRUE(isConjugateMinimum(atZero, largest));
+  }
+  EXPECT_TRUE(isConjugateMinimum(0.0, largest));
+  EXPECT_TRUE(isConjugateMinimum(1e-13 * largest, largest));
+  EXPECT_FALSE(isConjugateMinimum(1e-9 * largest, largest)) << "a near miss taken for a conjugate point";
+  EXPECT_FALSE(isConjugateMinimum(1e-11 * largest, largest)) << "a near miss taken for a conjugate point";
+  EXPECT_FALSE(isConjugateMinimum(1e-3 * largest, largest));
+}
+
 // The motion of a run with Jacobi fields is the run's motion: the same geodesic to the tolerance.
 TEST(JacobiField, DoesNotChangeTheMotion) {
   const Chain chain = Chain::uniform(5, 3.7);

@@ -1,0 +1,155 @@
+#include "render/frame_words.hpp"
+
+#include <cmath>
+
+#include <cctype>
+#include <cstdio>
+
+#include "contracts/stop_reading.hpp"
+
+namespace sl {
+
+std::string methodWords(Method method) { return nameOf(method); }
+
+std::string stopReasonWords(StopReason reason) { return nameOf(reason); }
+
+std::string stopMeaningWords(StopReason reason) {
+  // The registry's sentence is ASCII (help texts, docs); a frame typesets its "+-pi".
+  std::string meaning(traits(reason).meaning);
+  for (std::size_t at; (at = meaning.find("+-pi")) != std::string::npos;) meaning.replace(at, 4, "\u00b1\u03c0");
+  return meaning;
+}
+
+namespace {
+
+// Hyphens used as minus signs (before a digit, after a start, a space, "e" or "(") become U+2212.
+std::string withMinusSigns(const std::string& text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const bool minus = text[i] == '-' && i + 1 < text.size() && std::isdigit(static_cast<unsigned char>(text[i + 1])) &&
+                       (i == 0 || text[i - 1] == ' ' || text[i - 1] == 'e' || text[i - 1] == '(');
+    out += minus ? "\u2212" : std::string(1, text[i]);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string typesetNumber(const char* pattern, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, pattern, value);
+  return withMinusSigns(text);
+}
+
+std::string superscript(int exponent) {
+  static const char* digits[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+  std::string text = exponent < 0 ? "⁻" : "";
+  for (char c : std::to_string(std::abs(exponent))) text += digits[c - '0'];
+  return text;
+}
+
+std::string typesetPowerOfTen(double value) {
+  if (!(value > 0) || !std::isfinite(value)) return "0";
+  int exponent = int(std::floor(std::log10(value)));
+  long digit = std::lround(value / std::pow(10.0, exponent));
+  if (digit >= 10) digit = 1, ++exponent;
+  return (digit == 1 ? std::string() : std::to_string(digit) + "×") + "10" + superscript(exponent);
+}
+
+std::string stopReadingWords(const RunFrame& run) {
+  return withMinusSigns(stopReading(run.stopReason, run.stopMeasured, run.stopLimit));
+}
+
+std::vector<std::string> plotTitles(const PlotFrame& plot) {
+  switch (plot.kind) {  // every kind, no default: the compiler names a kind left out
+    case PlotKind::Divergence:
+      return {"divergence from " + plot.referenceRun + " (max hinge distance)", "divergence from " + plot.referenceRun,
+              "divergence"};
+    case PlotKind::EnergyError:
+      return {"relative energy error |E \u2212 E\u2080| / E\u2080", "energy error |E \u2212 E\u2080| / E\u2080",
+              "energy error"};
+    case PlotKind::Jacobi:
+      return {"Jacobi field across the motion |J\u22a5| (zeros: conjugate points)",
+              "Jacobi field |J\u22a5| (zeros: conjugate points)", "Jacobi field |J\u22a5|", "|J\u22a5|"};
+    case PlotKind::Spread:
+      return {"spread of the family (largest hinge distance from the run)", "spread of the family", "spread"};
+  }
+  return {""};
+}
+
+std::string emptyPlotNote(const PlotFrame& plot) {
+  switch (plot.emptiness) {  // every case, no default
+    case PlotEmptiness::HasValues:
+      return "";
+    case PlotEmptiness::RunsStopped: {
+      std::string why;
+      for (const EarlyStop& stop : plot.earlyStops) {
+        char time[32];
+        std::snprintf(time, sizeof time, "%.3g", stop.time);
+        why += (why.empty() ? "" : "; ") + ("\"" + stop.run + "\" stopped at t = " + time + " (" +
+                                            stopReasonWords(stop.reason) + ")");
+      }
+      return "nothing to plot: " + why;
+    }
+    case PlotEmptiness::ZeroOnLogAxis:
+      return "nothing to plot: every value is 0 (a log axis cannot show it)";
+    case PlotEmptiness::NothingToPlot:
+      return "nothing to plot";
+  }
+  return "";
+}
+
+std::string roundoffNote(const PlotFrame& plot) {
+  if (!plot.roundoff) return "";
+  const PlotFrame::RoundoffOnly& r = *plot.roundoff;
+  const std::string level = r.largest > 0 ? "to " + typesetPowerOfTen(r.largest) : "exactly";
+  switch (plot.kind) {  // every kind, no default
+    case PlotKind::EnergyError:
+      return "energy conserved " + level + (r.runs > 1 ? " by every run" : " over the run") +
+             (r.byTolerance ? ", as its integrator's tolerance allows" : "");
+    case PlotKind::Divergence:
+      return "the runs agree " + level + " (largest hinge distance)";
+    case PlotKind::Jacobi:
+    case PlotKind::Spread:
+      return "";
+  }
+  return "";
+}
+
+std::string valueAxisWords(PlotKind kind) {
+  switch (kind) {  // every kind, no default
+    case PlotKind::Divergence:
+    case PlotKind::Spread:
+      return "hinge distance (rod lengths)";
+    case PlotKind::Jacobi:
+      return "|J⊥| (metric units)";
+    case PlotKind::EnergyError:
+      return "|E − E₀| / E₀ (no unit)";
+  }
+  return "";
+}
+
+std::vector<std::string> fieldCaptions(SphereColoring coloring) {
+  switch (coloring) {  // every colouring, no default
+    case SphereColoring::None:
+      return {""};
+    case SphereColoring::Curvature:
+      return {"K, Gaussian curvature", "K, curvature", "K"};
+    case SphereColoring::Bending:
+      return {"|II|\u00b2, bending", "|II|\u00b2"};
+  }
+  return {""};
+}
+
+std::vector<std::string> ellipseCaptions() {
+  return {"ellipses: stiffness |II(v,v)|\u00b2 over directions v, half-axes ~ \u221amax, \u221amin",
+          "ellipses: stiffness |II(v,v)|\u00b2 over directions v", "ellipses: stiffness"};
+}
+
+std::string fittedForm(const FontAtlas& font, const std::vector<std::string>& forms, TextSize size, float width) {
+  for (const std::string& form : forms)
+    if (font.width(form, size) <= width) return form;
+  return forms.empty() ? "" : font.fitted(forms.back(), size, width);
+}
+
+}  // namespace sl

@@ -1,0 +1,38 @@
+#pragma once
+// The words a frame shows, made from the FrameState's kinds and numbers here at the rendering edge, and nowhere
+// else: a run's method, why it stopped, a plot's title and why it stays empty, the captions of the sphere's
+// colour bar and stiffness ellipses. Symbols are typeset (|J⊥|, E₀, √, ±π, the minus sign U+2212 in numbers).
+// Titles and captions come in forms, longest first: a small frame shows the longest that fits (fittedForm),
+// never a word cut in the middle. Each switches on every kind without a default, so a kind added to
+// contracts/registry.hpp is named by the compiler here.
+
+#include <string>
+#include <vector>
+
+#include "contracts/frame_state.hpp"
+#include "render/font_atlas.hpp"
+
+namespace sl {
+
+std::string methodWords(Method method);              // e.g. "christoffel-fd"
+std::string stopReasonWords(StopReason reason);      // e.g. "pole-fold-back"
+std::string stopMeaningWords(StopReason reason);     // what the reason means, in a sentence
+std::string stopReadingWords(const RunFrame& run);   // e.g. "energy drift 2.13 > limit 1"; empty without a reading
+std::string emptyPlotNote(const PlotFrame& plot);    // why the plot stays empty; empty if it does not
+std::string roundoffNote(const PlotFrame& plot);     // e.g. "energy conserved to 3×10⁻¹⁵ over the run"; or empty
+std::string valueAxisWords(PlotKind kind);           // what the y axis shows, in what unit
+
+// Forms, longest first.
+std::vector<std::string> plotTitles(const PlotFrame& plot);       // e.g. "relative energy error |E − E₀| / E₀"
+std::vector<std::string> fieldCaptions(SphereColoring coloring);  // the colour bar's, e.g. "K, Gaussian curvature"
+std::vector<std::string> ellipseCaptions();                       // the line explaining the stiffness ellipses
+
+// The first of `forms` no wider than `width`; if none is, the last shortened at a word with an ellipsis.
+std::string fittedForm(const FontAtlas& font, const std::vector<std::string>& forms, TextSize size, float width);
+
+// A number as printf's `pattern` writes it, with a true minus sign (U+2212) for the sign and the exponent's.
+std::string typesetNumber(const char* pattern, double value);
+std::string superscript(int exponent);   // "⁻¹⁵"
+std::string typesetPowerOfTen(double value);  // "3×10⁻¹⁵": a positive value to one significant digit
+
+}  // namespace sl

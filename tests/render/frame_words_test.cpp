@@ -1,0 +1,98 @@
+// The words a frame shows (render/frame_words.hpp): made from the FrameState's kinds and numbers, symbols
+// typeset, and a small frame given a shorter form rather than a word cut in the middle.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "fixtures/synthetic_frame.hpp"
+#include "render/frame_composer.hpp"
+#include "render/frame_words.hpp"
+#include "render/panels.hpp"
+
+namespace sl {
+namespace {
+
+const std::string kEllipsis = "\u2026";
+
+std::vector<PlotFrame> everyPlotKind() {
+  std::vector<PlotFrame> plots;
+  for (const auto& [kind, name] : kPlotKinds) {
+    PlotFrame plot;
+    plot.kind = kind;
+    plot.referenceRun = "reference";
+    plots.push_back(plot);
+  }
+  return plots;
+}
+
+// No ASCII stand-ins where the font has the symbol: |J⊥|, E₀, √, π, the minus sign.
+TEST(FrameWords, SymbolsAreTypesetNotSpelledInAscii) {
+  std::vector<std::string> texts = ellipseCaptions();
+  for (const PlotFrame& plot : everyPlotKind())
+    for (const std::string& title : plotTitles(plot)) texts.push_back(title);
+  for (const SphereColoring coloring : {SphereColoring::Curvature, SphereColoring::Bending})
+    for (const std::string& caption : fieldCaptions(coloring)) texts.push_back(caption);
+  for (const auto& reason : kStopReasons) texts.push_back(stopMeaningWords(reason.kind));
+  for (const std::string& text : texts) {
+    for (const char* ascii : {"J_perp", "sqrt", "pi", "phi", "S^", "E0", " - ", "+-"})
+      EXPECT_EQ(text.find(ascii), std::string::npos) << "\"" << ascii << "\" in: " << text;
+  }
+  PlotFrame jacobi;
+  jacobi.kind = PlotKind::Jacobi;
+  EXPECT_NE(plotTitles(jacobi).front().find("|J\u22a5|"), std::string::npos);
+  EXPECT_NE(stopMeaningWords(StopReason::FieldBlowUp).find("t = \u00b1\u03c0/2"), std::string::npos);
+}
+
+// Numbers carry a true minus sign, in the value and in its exponent; hyphens inside words stay.
+TEST(FrameWords, NumbersCarryATrueMinusSign) {
+  EXPECT_EQ(typesetNumber("%g", -0.5), "\u22120.5");
+  EXPECT_EQ(typesetNumber("%g", 2.5e-14), "2.5e\u221214");
+  EXPECT_EQ(typesetNumber("%g", 3.0), "3");
+  RunFrame run;
+  run.stopReason = StopReason::RodLength;
+  run.stopMeasured = 2e-6;
+  run.stopLimit = 1e-6;
+  EXPECT_EQ(stopReadingWords(run), "rod-length error 2e\u221206 > limit 1e\u221206");
+  run.stopReason = StopReason::PoleFoldBack;
+  EXPECT_EQ(stopReadingWords(run), "");
+}
+
+// The first form that fits, else the shortest shortened at a word: never a word cut in the middle.
+TEST(FrameWords, AFormThatFitsIsChosenBeforeAnyCut) {
+  const FrameComposer composer(ViewSettings{}, {320, 180});
+  const FontAtlas& font = composer.font();
+  const std::vector<std::string> forms = fieldCaptions(SphereColoring::Curvature);
+  ASSERT_GE(forms.size(), 2u);
+  EXPECT_EQ(fittedForm(font, forms, TextSize::Small, 1e6f), forms.front());
+  const float shortest = font.width(forms.back(), TextSize::Small);
+  EXPECT_EQ(fittedForm(font, forms, TextSize::Small, shortest), forms.back());
+  EXPECT_EQ(fittedForm(font, forms, TextSize::Small, font.width(forms[1], TextSize::Small)), forms[1]);
+  EXPECT_LE(font.width(fittedForm(font, forms, TextSize::Small, 0.5f * shortest), TextSize::Small), 0.5f * shortest);
+}
+
+// Every plot kind's title is one of its forms, whole, in a plot panel at every frame size (at 320x180 the full
+// titles do not fit: a shorter form is shown, never "relative energy err…").
+TEST(FrameWords, PlotTitlesAreWholeFormsAtEverySize) {
+  ViewSettings view;
+  view.panels = {{PanelKind::Plot, std::array<double, 4>{0.5, 0.55, 0.5, 0.45}, 0}};
+  bool shortened = false;
+  for (const ImageSize size : {ImageSize{320, 180}, ImageSize{1280, 720}, ImageSize{3840, 2160}}) {
+    const FrameComposer composer(view, size);
+    const PixelRect rect{0.5f * size.width, 0.55f * size.height, 0.5f * size.width, 0.45f * size.height};
+    for (const PlotFrame& plot : everyPlotKind()) {
+      FrameState frame;
+      frame.plots = {plot};
+      const PanelContext context{frame, view, composer.font(), rect, frameUnit(size)};
+      const PlotLayout layout = layoutPlot(context, plot);
+      const std::vector<std::string> forms = plotTitles(plot);
+      EXPECT_NE(std::find(forms.begin(), forms.end(), layout.title), forms.end())
+          << layout.title << " at " << size.width << "x" << size.height;
+      EXPECT_EQ(layout.title.find(kEllipsis), std::string::npos) << layout.title;
+      shortened = shortened || layout.title != forms.front();
+    }
+  }
+  EXPECT_TRUE(shortened) << "no title needed a shorter form: the test cannot tell";
+}
+
+}  // namespace
+}  // namespace sl
