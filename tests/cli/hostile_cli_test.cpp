@@ -210,8 +210,12 @@ TEST(HostileCli, RenderAnswersSignalsWithinASecond) {
     EXPECT_LT(answer.milliseconds, 1000) << "SIG" << signal << " answered after " << answer.milliseconds << " ms";
     const std::string err = readFile(folder.path() / "err.txt");
     EXPECT_NE(err.find(std::string("stopped by SIG") + signal), std::string::npos) << err;
-    for (const auto& entry : fs::directory_iterator(folder.path() / "frames"))  // frames so far are whole
-      EXPECT_EQ(entry.path().string().find(".tmp."), std::string::npos) << "left behind: " << entry.path();
+    // Frames so far are whole. The signal may come before the first frame (the motion is planned first): no folder.
+    if (fs::exists(folder.path() / "frames")) {
+      for (const auto& entry : fs::directory_iterator(folder.path() / "frames")) {
+        EXPECT_EQ(entry.path().string().find(".tmp."), std::string::npos) << "left behind: " << entry.path();
+      }
+    }
   }
 }
 

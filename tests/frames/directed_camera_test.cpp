@@ -53,6 +53,10 @@ TEST(DirectedCamera, EveryShippedSceneFacesItsEventsWhenTheyHappen) {
     const bool sphere = std::any_of(scene.view.panels.begin(), scene.view.panels.end(),
                                     [](const PanelSpec& p) { return p.kind == PanelKind::Sphere; });
     if (scene.chain.rods != 4 || !sphere) continue;
+    // Starts on found motions (connect.json, periodic.json) are resolved by the commands (cli/motion_starts.hpp),
+    // a stage these tests do not link; their motions have no event of the kinds the camera turns to.
+    if (std::any_of(scene.runs.begin(), scene.runs.end(), [](const RunSpec& run) { return run.initial.namesAMotion(); }))
+      continue;
     SCOPED_TRACE(entry.path().filename().string());
     const std::vector<InitialState> starts = startsOf(scene);
     const ConfigurationView view(scene.chain.rods, starts.at(0).spherePoint);

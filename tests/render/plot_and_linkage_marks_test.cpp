@@ -22,6 +22,9 @@ bool sameColour(const ShapeVertex& v, const Rgba& c, bool alphaToo = false) {
          (!alphaToo || std::abs(v.a - c.a) < 1e-6f);
 }
 
+// The first panel's vertices, copied: a range-for over a temporary DrawList's member would read freed memory.
+std::vector<ShapeVertex> firstPanelVertices(const DrawList& list) { return list.panels[0].shapes.vertices(); }
+
 // One plot panel filling the frame.
 ViewSettings onePlot(int plotIndex) {
   ViewSettings view;
@@ -57,7 +60,7 @@ TEST(PlotMarks, TheNowLineIsAtTheFramesTime) {
       SCOPED_TRACE(std::to_string(size.width) + " t = " + std::to_string(t));
       const FrameState frame = syntheticFrame(t, int(30 * t));
       std::vector<float> xs;
-      for (const ShapeVertex& v : composer.compose(frame).panels[0].shapes.vertices())
+      for (const ShapeVertex& v : firstPanelVertices(composer.compose(frame)))
         if (sameColour(v, palette::nowCursor, true)) xs.push_back(v.x);
       ASSERT_FALSE(xs.empty()) << "no now line";
       const auto [lo, hi] = std::minmax_element(xs.begin(), xs.end());
@@ -132,7 +135,7 @@ TEST(PlotMarks, TheStopCrossSitsOnTheLastValue) {
   for (std::size_t i = 0; i < series.times.size(); ++i)
     if (series.times[i] <= series.stopTime) last = i;
   std::vector<float> xs, ys;
-  for (const ShapeVertex& v : composer.compose(frame).panels[0].shapes.vertices())
+  for (const ShapeVertex& v : firstPanelVertices(composer.compose(frame)))
     if (sameColour(v, palette::stopRed) && v.kind == 0) xs.push_back(v.x), ys.push_back(v.y);
   ASSERT_FALSE(xs.empty());
   const auto [x0, x1] = std::minmax_element(xs.begin(), xs.end());
@@ -146,7 +149,7 @@ TEST(PlotMarks, TheStopCrossSitsOnTheLastValue) {
   // The same series with no drawable value (zeros on a log axis): no cross.
   PlotSeries& zeros = frame.plots[1].series[1];
   for (std::size_t i = 0; i < zeros.values.size(); ++i) zeros.values[i] = 0;
-  for (const ShapeVertex& v : composer.compose(frame).panels[0].shapes.vertices())
+  for (const ShapeVertex& v : firstPanelVertices(composer.compose(frame)))
     EXPECT_FALSE(sameColour(v, palette::stopRed) && v.kind == 0) << "a cross at a value the run never had";
 }
 
@@ -157,7 +160,7 @@ TEST(PlotMarks, MarkedTimesAreWritten) {
   const FrameComposer composer(view, {1280, 720});
   auto glyphsIn = [&](const FrameState& f, float xLo, float xHi) {
     std::size_t count = 0;
-    for (const ShapeVertex& v : composer.compose(f).panels[0].shapes.vertices())
+    for (const ShapeVertex& v : firstPanelVertices(composer.compose(f)))
       count += v.kind == 3 && v.x >= xLo && v.x <= xHi ? 1 : 0;
     return count;
   };
@@ -205,7 +208,7 @@ TEST(LinkageMarks, HeavierRodsAreThicker) {
   frame.runs.resize(1);
   auto widest = [&](const FrameState& f) {
     float width = 0;
-    for (const ShapeVertex& v : FrameComposer(oneLinkage(), {1280, 720}).compose(f).panels[0].shapes.vertices())
+    for (const ShapeVertex& v : firstPanelVertices(FrameComposer(oneLinkage(), {1280, 720}).compose(f)))
       if (v.kind == 0 && sameColour(v, palette::silver)) width = std::max(width, v.size);
     return width;
   };
@@ -222,7 +225,7 @@ TEST(LinkageMarks, AStoppedChainIsGreyAndCrossed) {
   ViewSettings view = oneLinkage();
   auto count = [&](const FrameState& f, const Rgba& c) {
     std::size_t n = 0;
-    for (const ShapeVertex& v : FrameComposer(view, {1280, 720}).compose(f).panels[0].shapes.vertices())
+    for (const ShapeVertex& v : firstPanelVertices(FrameComposer(view, {1280, 720}).compose(f)))
       n += sameColour(v, c) ? 1 : 0;
     return n;
   };
@@ -248,7 +251,7 @@ TEST(LinkageMarks, APushIsAnArrowAlongIt) {
   const P2 hinge = plane(frame.runs[0].hinges[1]);
   float top = 1e9f;
   std::size_t arrow = 0;
-  for (const ShapeVertex& v : composer.compose(frame).panels[0].shapes.vertices()) {
+  for (const ShapeVertex& v : firstPanelVertices(composer.compose(frame))) {
     if (!sameColour(v, palette::ink) || v.kind != 0) continue;
     ++arrow;
     top = std::min(top, v.y);
@@ -257,7 +260,7 @@ TEST(LinkageMarks, APushIsAnArrowAlongIt) {
   ASSERT_GT(arrow, 0u) << "no arrow";
   EXPECT_LT(top, hinge.y - 40) << "the arrow does not point up";
   frame.runs[0].pushShown = 0;
-  for (const ShapeVertex& v : composer.compose(frame).panels[0].shapes.vertices())
+  for (const ShapeVertex& v : firstPanelVertices(composer.compose(frame)))
     EXPECT_FALSE(sameColour(v, palette::ink) && v.kind == 0) << "an arrow after the push has faded";
 }
 
