@@ -97,14 +97,7 @@ Found connections(const Chain& chain, const FoundMotionSpec& request, const std:
 
 // The closed geodesics, in the order `linkage periodic` lists them, each from its unit-speed start.
 Found closedGeodesics(const Chain& chain, const FoundMotionSpec& request) {
-  std::vector<ClosedGeodesic> geodesics;
-  if (chain.rods == 3) {
-    geodesics.push_back(circleClosedGeodesic(chain));
-  } else {
-    PeriodicOptions options;
-    options.maxLength = request.maxLength;
-    geodesics = chainClosedGeodesics(chain, options);
-  }
+  const std::vector<ClosedGeodesic> geodesics = closedGeodesicsOf(chain, request.maxLength);
   Found found;
   for (const ClosedGeodesic& g : geodesics) {
     FoundMotion motion;

@@ -76,14 +76,7 @@ std::string runPeriodic(const PeriodicArguments& args) {
     throw CommandExit(kExitBadInput, args.scene + ": linkage: periodic needs 3 or 4 rods with n - 2 < L < n (got " +
                                          std::to_string(chain.rods) + " rods, L = " + std::to_string(chain.baseLength) +
                                          ")");
-  std::vector<ClosedGeodesic> found;
-  if (chain.rods == 3) {
-    found.push_back(circleClosedGeodesic(chain));
-  } else {
-    PeriodicOptions options;
-    options.maxLength = args.maxLength;
-    found = chainClosedGeodesics(chain, options);
-  }
+  const std::vector<ClosedGeodesic> found = closedGeodesicsOf(chain, args.maxLength);
   if (args.json) {
     nlohmann::json list = nlohmann::json::array();
     for (const ClosedGeodesic& g : found) list.push_back(geodesicJson(chain, g));

@@ -499,4 +499,11 @@ ClosedGeodesic circleClosedGeodesic(const Chain& chain) {
   return out;
 }
 
+std::vector<ClosedGeodesic> closedGeodesicsOf(const Chain& chain, double maxLength) {
+  if (chain.rods == 3) return {circleClosedGeodesic(chain)};
+  PeriodicOptions options;
+  options.maxLength = maxLength;
+  return chainClosedGeodesics(chain, options);
+}
+
 }  // namespace sl

@@ -69,6 +69,8 @@ std::vector<ClosedGeodesic> findClosedGeodesics(
 std::vector<ClosedGeodesic> chainClosedGeodesics(const Chain& chain, const PeriodicOptions& options);
 // The 3-rod chain's configuration space is a circle: itself a closed geodesic.
 ClosedGeodesic circleClosedGeodesic(const Chain& chain);
+// The closed geodesics of a 3- or 4-rod chain, in the order `linkage periodic` lists them (the circle for 3 rods).
+std::vector<ClosedGeodesic> closedGeodesicsOf(const Chain& chain, double maxLength);
 
 // Route 2 pieces, exposed for the tests.
 // The length of a closed curve from its polygons on 2^k points, Richardson-extrapolated (periodic, smooth).
