@@ -39,6 +39,7 @@ bool solveDiscrete(const ConstrainedModel& model, std::vector<Eigen::VectorXd>& 
   }
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
   bool analysed = false;
+  double previousStep = INFINITY;
   for (int iteration = 0; iteration < 40; ++iteration) {
     std::vector<Eigen::Triplet<double>> entries;
     Eigen::VectorXd residual(unknowns * block);
@@ -81,16 +82,21 @@ bool solveDiscrete(const ConstrainedModel& model, std::vector<Eigen::VectorXd>& 
     if (lu.info() != Eigen::Success) return false;
     const Eigen::VectorXd step = lu.solve(-residual);
     if (!step.allFinite()) return false;
-    double largest = 0;
+    double largest = 0, size = 0;
     for (int i = first; i <= last; ++i) {
       const int row = (i - first) * block;
       Eigen::VectorXd& q = nodes[static_cast<std::size_t>(i)];
       q += step.segment(row, n);
       mu[static_cast<std::size_t>(i)] += step.segment(row + n, m);
       largest = std::max(largest, maxAbs(step.segment(row, n)));
+      size = std::max(size, maxAbs(q));
     }
     if (largest > 10.0) return false;  // diverging
-    if (largest < 1e-14) return true;
+    // Converged when the step is down to rounding of the hinge coordinates (as large as the base L): below
+    // 1e-14 of their size, or near it and no longer shrinking (Newton's steps at rounding level jitter).
+    const double rounding = 1e-14 * (1.0 + size);
+    if (largest < rounding || (largest < 100 * rounding && largest >= 0.5 * previousStep)) return true;
+    previousStep = largest;
   }
   return false;
 }

@@ -105,12 +105,17 @@ Eigen::VectorXd ConstrainedModel::correctionFor(const Eigen::VectorXd& q, const 
 }
 
 bool ConstrainedModel::projectPosition(Eigen::VectorXd& q) const {
+  // A constraint's value is a sum of quadratic terms as large as |q|^2 (hinges far from the origin), which
+  // cancel; rounding leaves about 1e-16 of that size, so the residual is judged relative to it.
+  const auto relativeResidual = [this](const Eigen::VectorXd& at) {
+    const double size = at.size() ? at.cwiseAbs().maxCoeff() : 0.0;
+    return values(at).cwiseAbs().maxCoeff() / (1.0 + size * size);
+  };
   for (int iteration = 0; iteration < 50; ++iteration) {
-    const Eigen::VectorXd c = values(q);
-    if (c.cwiseAbs().maxCoeff() <= 1e-15) return true;
-    q += correctionFor(q, c);
+    if (relativeResidual(q) <= 1e-15) return true;
+    q += correctionFor(q, values(q));
   }
-  return values(q).cwiseAbs().maxCoeff() <= 1e-13;
+  return relativeResidual(q) <= 1e-13;
 }
 
 Eigen::VectorXd ConstrainedModel::projectVelocity(const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {

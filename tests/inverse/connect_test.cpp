@@ -51,6 +51,35 @@ TEST(Connect, HeavyRodsAndFiveRods) {
   expectRoutesAgree(findConnections(model, &chain, from, to, options));
 }
 
+// Long chains: hinge coordinates as large as the base L, whose rounding (about 1e-16 of L^2 in a constraint,
+// 1e-14 of L in a Newton step) stopped both the projection and route 2 short of their absolute bounds.
+TEST(Connect, LongChainsBothRoutesAgree) {
+  const Chain chain = Chain::uniform(12, 11.2);
+  const ConstrainedModel model = ConstrainedModel::fromChain(chain);
+  Eigen::VectorXd a = Eigen::VectorXd::Zero(11), b = Eigen::VectorXd::Zero(11);
+  a(0) = 0.8, a(3) = -0.4, a(7) = 0.3, a(10) = 0.2;
+  b(0) = 0.7, b(3) = 0.2, b(6) = -0.5, b(9) = 0.3;
+  const Eigen::VectorXd from = ConstrainedModel::stack(hingePositionsAt(chain, a.normalized()));
+  const Eigen::VectorXd to = ConstrainedModel::stack(hingePositionsAt(chain, b.normalized()));
+  ConnectOptions options;
+  options.directions = 8;
+  expectRoutesAgree(findConnections(model, &chain, from, to, options));
+}
+
+TEST(ConstrainedModel, ProjectsFortyRodsOntoTheirConstraints) {
+  const Chain chain = Chain::uniform(40, 39.0);
+  const ConstrainedModel model = ConstrainedModel::fromChain(chain);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(39);
+  x(0) = 0.6, x(12) = 0.5, x(30) = -0.6;
+  const Eigen::VectorXd exact = ConstrainedModel::stack(hingePositionsAt(chain, x.normalized()));
+  Eigen::VectorXd q = exact;
+  EXPECT_TRUE(model.projectPosition(q));  // already on them, to rounding
+  EXPECT_LT((q - exact).cwiseAbs().maxCoeff(), 1e-12);
+  for (Eigen::Index i = 0; i < q.size(); ++i) q(i) += 1e-4 * std::sin(3.0 * static_cast<double>(i));
+  EXPECT_TRUE(model.projectPosition(q));
+  EXPECT_LT(model.values(q).cwiseAbs().maxCoeff(), 1e-13 * 39 * 39);
+}
+
 // Route 2 alone on a path that is not a geodesic converges to the same one (the end points are fixed).
 TEST(Connect, DiscreteRouteEndsOnTheTarget) {
   const Chain chain = Chain::uniform(4, 2.5);
