@@ -20,8 +20,10 @@
 #include "cli/scene_input.hpp"
 #include "contracts/limits.hpp"
 #include "inverse/connect.hpp"
+#include "inverse/method_shooting.hpp"
 #include "linkage/chart.hpp"
 #include "simulation/ambient_system.hpp"
+#include "simulation/chart_system.hpp"
 
 namespace sl {
 
@@ -32,6 +34,7 @@ struct ConnectArguments {
   std::string scene;
   std::string target;
   double maxLength = 0;
+  std::vector<std::string> methods;  // route 3: each found motion shot again with these
   bool json = false;
   bool quiet = false;
 };
@@ -54,11 +57,24 @@ std::string runConnect(const ConnectArguments& args) {
   const Eigen::VectorXd from =
       ConstrainedModel::stack(start.byHinges() ? start.hinges : hingePositionsAt(chain, start.spherePoint));
   const Eigen::VectorXd to = readConfigurationPoint(chain, model, args.target, "--to");
+  // Route 3's methods, refused before any work when they cannot move this chain.
+  std::vector<Method> methods;
+  for (const std::string& name : args.methods) {
+    methods.push_back(*parseKind(kMethods, name));
+    try {
+      requireMethodMoves({methods.back(), &chain, false, false});
+    } catch (const std::invalid_argument& refusal) {
+      throw CommandExit(kExitBadInput, "--method " + name + ": " + refusal.what());
+    }
+  }
   ConnectOptions options;
   options.maxLength = args.maxLength;
   const std::vector<Connection> found = findConnections(model, &chain, from, to, options);
   if (found.empty()) throw CommandExit(kExitFailure, args.scene + ": no geodesic to the target was found");
-
+  // Route 3: every motion found, shot again with each method asked for (empty where Newton did not converge).
+  std::vector<std::vector<std::optional<MethodConnection>>> shots(found.size());
+  for (std::size_t i = 0; i < found.size(); ++i)
+    for (const Method method : methods) shots[i].push_back(shootWithMethod(chain, method, from, to, found[i].velocity));
   if (args.json) {
     nlohmann::json list = nlohmann::json::array();
     for (std::size_t i = 0; i < found.size(); ++i) {
@@ -84,6 +100,19 @@ std::string runConnect(const ConnectArguments& args) {
       } else {
         o["discrete_length"] = nullptr;
       }
+      if (!methods.empty()) {
+        nlohmann::json byMethod = nlohmann::json::array();
+        for (std::size_t k = 0; k < methods.size(); ++k) {
+          const auto& shot = shots[i][k];
+          nlohmann::json m;
+          m["method"] = nameOf(methods[k]);
+          m["length"] = shot ? nlohmann::json(shot->length) : nlohmann::json(nullptr);
+          m["length_difference"] = shot ? nlohmann::json(std::abs(shot->length - c.length)) : nlohmann::json(nullptr);
+          m["end_error"] = shot ? nlohmann::json(shot->endError) : nlohmann::json(nullptr);
+          byMethod.push_back(m);
+        }
+        o["methods"] = byMethod;
+      }
       list.push_back(o);
     }
     std::cout << list.dump(2) << "\n";
@@ -107,6 +136,20 @@ std::string runConnect(const ConnectArguments& args) {
       std::printf("%3zu %16.12f %16s %6d %10.1e %10s %10s  %s\n", i, c.length, "-", c.morseIndex, c.endError, "-", "-",
                   velocities.c_str());
   }
+  if (!methods.empty()) {
+    std::printf("\nroute 3, the same motions shot again by other methods (Newton on the end point, time 1):\n");
+    std::printf("%3s %-14s %16s %10s %10s\n", "#", "method", "length", "len diff", "end err");
+    for (std::size_t i = 0; i < found.size(); ++i)
+      for (std::size_t k = 0; k < methods.size(); ++k) {
+        const auto& shot = shots[i][k];
+        if (shot)
+          std::printf("%3zu %-14s %16.12f %10.1e %10.1e\n", i, nameOf(methods[k]).c_str(), shot->length,
+                      std::abs(shot->length - found[i].length), shot->endError);
+        else
+          std::printf("%3zu %-14s %16s %10s %10s  (did not reach the target to 1e-12)\n", i,
+                      nameOf(methods[k]).c_str(), "-", "-", "-");
+      }
+  }
   return foundWords(found);
 }
 
@@ -124,11 +167,18 @@ void addConnectCommand(CLI::App& app) {
       ->required();
   command->add_option("--max-length", args->maxLength, "longest geodesic wanted (default: 2.5 times the shortest)")
       ->check(CLI::Range(0.0, limits::kMaxConnectLength));
+  command
+      ->add_option("--method", args->methods,
+                   "also shoot every motion found with this method (repeatable), e.g. christoffel or embedded: a "
+                   "third route through a chart's own equations of motion")
+      ->check(CLI::IsMember(namesOf(kMethods)));
   command->add_flag("--json", args->json, "a JSON list of objects (length, shortest, coords, rates, ...)");
   command->footer(
       "Route 1 shoots (Newton on the end point, Jacobi fields as the derivative, seeded by a fan of directions);\n"
       "route 2 makes a discrete action stationary under the rod constraints. 'discrete' is route 2's length\n"
-      "where it found the same geodesic; 'morse' the conjugate points passed.\n"
+      "where it found the same geodesic; 'morse' the conjugate points passed. With --method, route 3 shoots\n"
+      "each motion again with that method's equations (the published -fd methods' step control collapses at\n"
+      "the tolerance this needs, so they report '-').\n"
       "Example:\n  linkage connect scenes/default.json --to '{\"coords\": [-0.6, 2.2]}' --max-length 8");
   command->add_flag("--quiet", args->quiet, "errors only: no summary line");
   command->callback([args] {

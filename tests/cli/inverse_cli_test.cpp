@@ -54,6 +54,36 @@ TEST(ConnectCli, TargetByHingesAndRefusals) {
   EXPECT_NE(offRods.err.find("not within 0.01"), std::string::npos) << offRods.err;
 }
 
+// Route 3: --method shoots every motion again with a chart method; the lengths agree with route 1 in the JSON,
+// and a method the chain refuses names the option and why.
+TEST(ConnectCli, ChartMethodsAsAThirdRoute) {
+  TempFolder folder;
+  const ProcessResult result =
+      runLinkage({"connect", shippedScene("default.json"), "--to", R"({"coords": [-0.6, 2.2]})", "--max-length", "5",
+                  "--method", "christoffel", "--method", "embedded", "--json"},
+                 folder.path());
+  ASSERT_EQ(result.code, 0) << result.err;
+  const nlohmann::json list = nlohmann::json::parse(result.out);
+  ASSERT_GE(list.size(), 2u);
+  for (const auto& c : list) {
+    ASSERT_EQ(c["methods"].size(), 2u);
+    EXPECT_EQ(c["methods"][0]["method"], "christoffel");
+    EXPECT_EQ(c["methods"][1]["method"], "embedded");
+    for (const auto& m : c["methods"]) {
+      ASSERT_TRUE(m["length"].is_number()) << m.dump();
+      EXPECT_NEAR(m["length"].get<double>(), c["length"].get<double>(), 1e-8);
+      EXPECT_LE(m["end_error"].get<double>(), 1e-12);
+    }
+  }
+  const ProcessResult refused = runLinkage(
+      {"connect", shippedScene("five-rods.json"), "--to", R"({"coords": [0.1, 0.2, 0.3]})", "--method",
+       "christoffel-fd"},
+      folder.path());
+  EXPECT_EQ(refused.code, 2);
+  EXPECT_NE(refused.err.find("--method christoffel-fd: "), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("4-rod"), std::string::npos) << refused.err;
+}
+
 TEST(PeriodicCli, ThreeSimpleClosedGeodesicsAsJson) {
   TempFolder folder;
   const ProcessResult result = runLinkage({"periodic", shippedScene("default.json"), "--json"}, folder.path());

@@ -5,6 +5,7 @@
 #include "support.hpp"
 
 #include "inverse/connect.hpp"
+#include "inverse/method_shooting.hpp"
 #include "linkage/chart.hpp"
 
 namespace sl {
@@ -78,6 +79,36 @@ TEST(ConstrainedModel, ProjectsFortyRodsOntoTheirConstraints) {
   for (Eigen::Index i = 0; i < q.size(); ++i) q(i) += 1e-4 * std::sin(3.0 * static_cast<double>(i));
   EXPECT_TRUE(model.projectPosition(q));
   EXPECT_LT(model.values(q).cwiseAbs().maxCoeff(), 1e-13 * 39 * 39);
+}
+
+// Route 3: the chart methods' own equations of motion (exact Christoffel symbols; the normal acceleration of the
+// embedding) reach the same target at the same length as route 1, for the shortest motion and the next. (The
+// published finite-difference forms are too rough for the tight tolerance: their step control collapses.)
+TEST(Connect, ChartMethodsFindTheSameMotions) {
+  const Chain chain = Chain::uniform(4, 3.0);
+  const ConstrainedModel model = ConstrainedModel::fromChain(chain);
+  const Eigen::VectorXd from = pointOf(chain, 0.5, 0.3), to = pointOf(chain, -0.6, 2.2);
+  ConnectOptions options;
+  options.maxLength = 6.0;
+  options.discreteRoute = false;
+  const auto found = findConnections(model, &chain, from, to, options);
+  ASSERT_GE(found.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    for (const Method method : {Method::Christoffel, Method::Embedded}) {
+      SCOPED_TRACE(nameOf(method) + " #" + std::to_string(i));
+      const auto shot = shootWithMethod(chain, method, from, to, found[i].velocity);
+      ASSERT_TRUE(shot.has_value());
+      EXPECT_LE(shot->endError, 1e-12);
+      EXPECT_NEAR(shot->length, found[i].length, 1e-8);
+    }
+  }
+  // A method that cannot move the chain says why.
+  const Chain five = Chain::uniform(5, 3.5);
+  EXPECT_THROW(shootWithMethod(five, Method::ChristoffelFd, ConstrainedModel::stack(hingePositionsAt(
+                                                                five, Eigen::Vector3d(1, 0, 0))),
+                               ConstrainedModel::stack(hingePositionsAt(five, Eigen::Vector3d(0, 1, 0))),
+                               Eigen::VectorXd::Zero(8)),
+               std::invalid_argument);
 }
 
 // Route 2 alone on a path that is not a geodesic converges to the same one (the end points are fixed).
