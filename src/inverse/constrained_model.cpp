@@ -12,8 +12,6 @@ ConstrainedModel ConstrainedModel::fromChain(const Chain& chain) {
   ConstrainedModel model;
   const int hinges = chain.hingeCount();
   model.dimension_ = 2 * hinges;
-  model.mass_ = stackedMassMatrix(chain);
-  model.inverseMass_ = model.mass_.inverse();
   const double length = chain.baseLength;
   for (int rod = 1; rod <= chain.rods; ++rod) {
     QuadraticConstraint c;
@@ -34,6 +32,7 @@ ConstrainedModel ConstrainedModel::fromChain(const Chain& chain) {
     }
     model.constraints_.push_back(c);
   }
+  model.setMass(stackedMassMatrix(chain));
   return model;
 }
 
@@ -42,13 +41,81 @@ ConstrainedModel ConstrainedModel::ellipsoid(double a, double b, double c) {
     throw std::invalid_argument("ellipsoid: the semi-axes must be positive and finite");
   ConstrainedModel model;
   model.dimension_ = 3;
-  model.mass_ = Eigen::MatrixXd::Identity(3, 3);
-  model.inverseMass_ = model.mass_;
   QuadraticConstraint constraint;  // (x^2/a^2 + y^2/b^2 + z^2/c^2 - 1)/2
   constraint.hessian = {{0, 0, 1.0 / (a * a)}, {1, 1, 1.0 / (b * b)}, {2, 2, 1.0 / (c * c)}};
   constraint.constant = -0.5;
   model.constraints_.push_back(constraint);
+  model.setMass(Eigen::MatrixXd::Identity(3, 3));
   return model;
+}
+
+void ConstrainedModel::setMass(Eigen::MatrixXd mass) {
+  mass_ = std::move(mass);
+  sparseMass_ = mass_.sparseView();
+  if (!sparse()) inverseMass_ = mass_.inverse();  // O(N^3): the dense path only
+}
+
+Eigen::SparseMatrix<double> ConstrainedModel::sparseJacobian(const Eigen::VectorXd& q) const {
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int i = 0; i < constraintCount(); ++i) {
+    const QuadraticConstraint& c = constraints_[static_cast<std::size_t>(i)];
+    for (const auto& e : c.hessian) entries.emplace_back(i, e.row, e.value * q(e.col));
+    for (const auto& [index, coefficient] : c.linear) entries.emplace_back(i, index, coefficient);
+  }
+  Eigen::SparseMatrix<double> g(constraintCount(), dimension_);
+  g.setFromTriplets(entries.begin(), entries.end());  // duplicates summed, as jacobian() adds them
+  return g;
+}
+
+KktFactor::KktFactor(const ConstrainedModel& model, const Eigen::VectorXd& q) : model_(model), sparse_(model.sparse()) {
+  const int n = model.dimension(), m = model.constraintCount();
+  if (!sparse_) {
+    g_ = model.jacobian(q);  // the KKT matrix is factored when a solve first needs it
+    return;
+  }
+  sparseG_ = model.sparseJacobian(q);
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int k = 0; k < model.sparseMass_.outerSize(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(model.sparseMass_, k); it; ++it)
+      entries.emplace_back(it.row(), it.col(), it.value());
+  for (int k = 0; k < sparseG_.outerSize(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(sparseG_, k); it; ++it) {
+      entries.emplace_back(n + it.row(), it.col(), it.value());
+      entries.emplace_back(it.col(), n + it.row(), it.value());
+    }
+  Eigen::SparseMatrix<double> kkt(n + m, n + m);
+  kkt.setFromTriplets(entries.begin(), entries.end());
+  sparseLu_ = std::make_shared<Eigen::SparseLU<Eigen::SparseMatrix<double>>>();
+  sparseLu_->compute(kkt);
+  if (sparseLu_->info() != Eigen::Success) throw std::runtime_error("the constraints lost rank at this point");
+}
+
+Eigen::VectorXd KktFactor::solve(const Eigen::VectorXd& top, const Eigen::VectorXd& bottom, Eigen::VectorXd* mu) const {
+  const int n = model_.dimension(), m = model_.constraintCount();
+  Eigen::VectorXd rhs(n + m);
+  rhs << top, bottom;
+  if (!sparse_ && !denseLu_) {
+    Eigen::MatrixXd kkt = Eigen::MatrixXd::Zero(n + m, n + m);
+    kkt.topLeftCorner(n, n) = model_.mass();
+    kkt.topRightCorner(n, m) = g_.transpose();
+    kkt.bottomLeftCorner(m, n) = g_;
+    denseLu_.emplace(kkt);
+  }
+  const Eigen::VectorXd solution = sparse_ ? Eigen::VectorXd(sparseLu_->solve(rhs)) : Eigen::VectorXd(denseLu_->solve(rhs));
+  if (mu != nullptr) *mu = solution.tail(m);
+  return solution.head(n);
+}
+
+Eigen::VectorXd KktFactor::correction(const Eigen::VectorXd& residual) const {
+  if (sparse_) return solve(Eigen::VectorXd::Zero(model_.dimension()), -residual);
+  // -M^-1 G^T (G M^-1 G^T)^-1 r: the same x by the Schur complement, as the small models always had it.
+  const Eigen::MatrixXd mg = model_.inverseMass_ * g_.transpose();
+  const Eigen::MatrixXd schur = g_ * mg;
+  return -mg * schur.ldlt().solve(residual);
+}
+
+Eigen::VectorXd KktFactor::jacobianTimes(const Eigen::VectorXd& u) const {
+  return sparse_ ? Eigen::VectorXd(sparseG_ * u) : Eigen::VectorXd(g_ * u);
 }
 
 Eigen::VectorXd ConstrainedModel::values(const Eigen::VectorXd& q) const {
@@ -98,19 +165,17 @@ Eigen::MatrixXd ConstrainedModel::hessianMatrix(const Eigen::VectorXd& mu) const
 }
 
 Eigen::VectorXd ConstrainedModel::correctionFor(const Eigen::VectorXd& q, const Eigen::VectorXd& residual) const {
-  const Eigen::MatrixXd g = jacobian(q);
-  const Eigen::MatrixXd mg = inverseMass_ * g.transpose();
-  const Eigen::MatrixXd schur = g * mg;
-  return -mg * schur.ldlt().solve(residual);
+  return KktFactor(*this, q).correction(residual);
+}
+
+double ConstrainedModel::relativeResidual(const Eigen::VectorXd& q) const {
+  // A constraint's value is a sum of quadratic terms as large as |q|^2 (hinges far from the origin), which
+  // cancel; rounding leaves about 1e-16 of that size, so the residual is judged relative to it.
+  const double size = q.size() ? q.cwiseAbs().maxCoeff() : 0.0;
+  return values(q).cwiseAbs().maxCoeff() / (1.0 + size * size);
 }
 
 bool ConstrainedModel::projectPosition(Eigen::VectorXd& q) const {
-  // A constraint's value is a sum of quadratic terms as large as |q|^2 (hinges far from the origin), which
-  // cancel; rounding leaves about 1e-16 of that size, so the residual is judged relative to it.
-  const auto relativeResidual = [this](const Eigen::VectorXd& at) {
-    const double size = at.size() ? at.cwiseAbs().maxCoeff() : 0.0;
-    return values(at).cwiseAbs().maxCoeff() / (1.0 + size * size);
-  };
   for (int iteration = 0; iteration < 50; ++iteration) {
     if (relativeResidual(q) <= 1e-15) return true;
     q += correctionFor(q, values(q));
@@ -119,23 +184,36 @@ bool ConstrainedModel::projectPosition(Eigen::VectorXd& q) const {
 }
 
 Eigen::VectorXd ConstrainedModel::projectVelocity(const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
-  return v + correctionFor(q, jacobian(q) * v);
+  const KktFactor kkt(*this, q);
+  return v + kkt.correction(kkt.jacobianTimes(v));
 }
 
 void ConstrainedModel::projectVariation(const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& dq,
                                         Eigen::VectorXd& dv) const {
-  const Eigen::MatrixXd g = jacobian(q);
-  dq += correctionFor(q, g * dq);
-  dv += correctionFor(q, g * dv + secondDerivatives(dq, v));
+  Eigen::MatrixXd columnQ = dq, columnV = dv;
+  projectVariations(q, v, columnQ, columnV);
+  dq = columnQ.col(0);
+  dv = columnV.col(0);
+}
+
+void ConstrainedModel::projectVariations(const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::MatrixXd& dq,
+                                         Eigen::MatrixXd& dv) const {
+  const KktFactor kkt(*this, q);
+  for (Eigen::Index j = 0; j < dq.cols(); ++j) {
+    dq.col(j) += kkt.correction(kkt.jacobianTimes(dq.col(j)));
+    dv.col(j) += kkt.correction(kkt.jacobianTimes(dv.col(j)) + secondDerivatives(dq.col(j), v));
+  }
 }
 
 Eigen::MatrixXd ConstrainedModel::tangentBasis(const Eigen::VectorXd& q) const {
   // Project the coordinate axes onto the tangent space and orthonormalise (Gram-Schmidt in M, twice),
   // keeping the first `freedom` independent ones: deterministic for a given q.
   Eigen::MatrixXd basis(dimension_, freedom());
+  const KktFactor kkt(*this, q);
   int found = 0;
   for (int axis = 0; axis < dimension_ && found < freedom(); ++axis) {
-    Eigen::VectorXd u = projectVelocity(q, Eigen::VectorXd::Unit(dimension_, axis));
+    const Eigen::VectorXd e = Eigen::VectorXd::Unit(dimension_, axis);
+    Eigen::VectorXd u = e + kkt.correction(kkt.jacobianTimes(e));
     for (int pass = 0; pass < 2; ++pass)
       for (int j = 0; j < found; ++j) u -= inner(basis.col(j), u) * basis.col(j);
     const double size = norm(u);

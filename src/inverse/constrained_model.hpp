@@ -7,9 +7,13 @@
 //     geodesics are known in closed form (its principal ellipses), run through the same code.
 // Constraint i is c_i(q) = q^T A_i q / 2 + b_i . q + e_i, so its gradient is A_i q + b_i and its second
 // derivative the constant A_i: geodesics, their linearisation and the discrete action all need only these.
+#include <memory>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <Eigen/SparseLU>
 
 #include "linkage/chain.hpp"
 
@@ -23,6 +27,30 @@ struct QuadraticConstraint {
   std::vector<Entry> hessian;                  // the entries of A (both (i, j) and (j, i) of a symmetric pair)
   std::vector<std::pair<int, double>> linear;  // b
   double constant = 0;
+};
+
+class ConstrainedModel;
+
+// The KKT matrix [M G^T; G 0] of a model at q, factored once for several solves. Small systems (4 rods, the
+// ellipsoid) by dense formulas; beyond kDenseKktSize unknowns by sparse LU, which for a chain (M and G banded)
+// costs O(n) per factorisation and per solve instead of O(n^3) and O(n^2): what lets `connect` reach long chains.
+class KktFactor {
+ public:
+  static constexpr int kDenseKktSize = 30;  // N + m: a chain of 11 rods is the first one solved sparsely
+  KktFactor(const ConstrainedModel& model, const Eigen::VectorXd& q);
+  // The x of M x + G^T mu = top, G x = bottom, and (when asked) its multipliers mu.
+  Eigen::VectorXd solve(const Eigen::VectorXd& top, const Eigen::VectorXd& bottom, Eigen::VectorXd* mu = nullptr) const;
+  // The M-orthogonal smallest x with G x = -residual: the correction of every projection.
+  Eigen::VectorXd correction(const Eigen::VectorXd& residual) const;
+  Eigen::VectorXd jacobianTimes(const Eigen::VectorXd& u) const;  // G u
+
+ private:
+  const ConstrainedModel& model_;
+  bool sparse_ = false;
+  Eigen::MatrixXd g_;                             // dense path: G
+  mutable std::optional<Eigen::PartialPivLU<Eigen::MatrixXd>> denseLu_;  // dense path: the KKT matrix, when solved
+  Eigen::SparseMatrix<double> sparseG_;
+  std::shared_ptr<Eigen::SparseLU<Eigen::SparseMatrix<double>>> sparseLu_;
 };
 
 class ConstrainedModel {
@@ -46,10 +74,18 @@ class ConstrainedModel {
   // sum_i mu_i A_i as a dense matrix.
   Eigen::MatrixXd hessianMatrix(const Eigen::VectorXd& mu) const;
 
-  double norm(const Eigen::VectorXd& u) const { return std::sqrt(u.dot(mass_ * u)); }
-  double inner(const Eigen::VectorXd& u, const Eigen::VectorXd& w) const { return u.dot(mass_ * w); }
+  double norm(const Eigen::VectorXd& u) const { return std::sqrt(inner(u, u)); }
+  double inner(const Eigen::VectorXd& u, const Eigen::VectorXd& w) const {
+    return sparse() ? u.dot(sparseMass_ * w) : u.dot(mass_ * w);
+  }
+  // G as a sparse matrix (m x N, O(n) entries for a chain).
+  Eigen::SparseMatrix<double> sparseJacobian(const Eigen::VectorXd& q) const;
+  // Whether KKT systems of this model are solved sparsely (KktFactor).
+  bool sparse() const { return dimension_ + constraintCount() > KktFactor::kDenseKktSize; }
 
-  // Newton's method M-orthogonally onto c = 0; true when max |c| <= 1e-15 (scaled) was reached.
+  // max |c(q)| / (1 + max |q|^2): the constraints' residual against the rounding their terms leave.
+  double relativeResidual(const Eigen::VectorXd& q) const;
+  // Newton's method M-orthogonally onto c = 0; true when relativeResidual <= 1e-15 was reached.
   bool projectPosition(Eigen::VectorXd& q) const;
   // The M-orthogonal projection onto the tangent space ker G(q).
   Eigen::VectorXd projectVelocity(const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;
@@ -57,6 +93,9 @@ class ConstrainedModel {
   // constraints G dq = 0, G dv + (dq^T A_i v)_i = 0.
   void projectVariation(const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& dq,
                         Eigen::VectorXd& dv) const;
+  // The same for every column of dq and dv, with one factorisation.
+  void projectVariations(const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::MatrixXd& dq,
+                         Eigen::MatrixXd& dv) const;
   // An M-orthonormal basis of the tangent space at q (N x freedom), deterministic.
   Eigen::MatrixXd tangentBasis(const Eigen::VectorXd& q) const;
 
@@ -65,9 +104,12 @@ class ConstrainedModel {
   static Eigen::Matrix2Xd unstack(const Eigen::VectorXd& q);
 
  private:
+  friend class KktFactor;
   Eigen::VectorXd correctionFor(const Eigen::VectorXd& q, const Eigen::VectorXd& residual) const;
+  void setMass(Eigen::MatrixXd mass);
   int dimension_ = 0;
-  Eigen::MatrixXd mass_, inverseMass_;
+  Eigen::MatrixXd mass_, inverseMass_;  // the inverse only for the dense path
+  Eigen::SparseMatrix<double> sparseMass_;
   std::vector<QuadraticConstraint> constraints_;
 };
 

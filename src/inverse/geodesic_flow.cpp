@@ -36,28 +36,21 @@ GeodesicFlow::GeodesicFlow(const ConstrainedModel& model, double tolerance) : mo
 
 void GeodesicFlow::derivative(const Packed& y, Packed& dydt, int columns) const {
   ++evaluations_;
-  const int n = model_.dimension(), m = model_.constraintCount();
+  const int n = model_.dimension();
   const Eigen::Map<const Eigen::VectorXd> q(y.data(), n), v(y.data() + n, n);
-  const Eigen::MatrixXd g = model_.jacobian(q);
-  Eigen::MatrixXd kkt = Eigen::MatrixXd::Zero(n + m, n + m);
-  kkt.topLeftCorner(n, n) = model_.mass();
-  kkt.topRightCorner(n, m) = g.transpose();
-  kkt.bottomLeftCorner(m, n) = g;
-  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(kkt);
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n + m);
-  rhs.tail(m) = -model_.secondDerivatives(v, v);
-  const Eigen::VectorXd solution = lu.solve(rhs);
-  const Eigen::VectorXd a = solution.head(n), mu = solution.tail(m);
+  const KktFactor kkt(model_, q);
+  Eigen::VectorXd mu;
+  const Eigen::VectorXd a = kkt.solve(Eigen::VectorXd::Zero(n), -model_.secondDerivatives(v, v), &mu);
   dydt.resize(y.size());
   Eigen::Map<Eigen::VectorXd>(dydt.data(), n) = v;
   Eigen::Map<Eigen::VectorXd>(dydt.data() + n, n) = a;
   for (int j = 0; j < columns; ++j) {
     const Eigen::Map<const Eigen::VectorXd> dq(y.data() + 2 * n + n * j, n),
         dv(y.data() + 2 * n + n * columns + n * j, n);
-    rhs.head(n) = -model_.hessianCombination(mu, dq);
-    rhs.tail(m) = -2.0 * model_.secondDerivatives(v, dv) - model_.secondDerivatives(dq, a);
     Eigen::Map<Eigen::VectorXd>(dydt.data() + 2 * n + n * j, n) = dv;
-    Eigen::Map<Eigen::VectorXd>(dydt.data() + 2 * n + n * columns + n * j, n) = lu.solve(rhs).head(n);
+    Eigen::Map<Eigen::VectorXd>(dydt.data() + 2 * n + n * columns + n * j, n) =
+        kkt.solve(-model_.hessianCombination(mu, dq),
+                  -2.0 * model_.secondDerivatives(v, dv) - model_.secondDerivatives(dq, a));
   }
 }
 
@@ -94,15 +87,10 @@ bool GeodesicFlow::advance(FlowState& state, double duration,
     failures = 0;
     if (last && t - before >= (duration - before) * (1 - 1e-15)) t = duration;
     unpack(y, state);
-    if (model_.values(state.q).cwiseAbs().maxCoeff() > 1e-14) {
+    if (model_.relativeResidual(state.q) > 1e-15) {
       model_.projectPosition(state.q);
       state.v = model_.projectVelocity(state.q, state.v);
-      for (Eigen::Index j = 0; j < state.dq.cols(); ++j) {
-        Eigen::VectorXd dq = state.dq.col(j), dv = state.dv.col(j);
-        model_.projectVariation(state.q, state.v, dq, dv);
-        state.dq.col(j) = dq;
-        state.dv.col(j) = dv;
-      }
+      model_.projectVariations(state.q, state.v, state.dq, state.dv);
       pack(state, y);
     }
     if (observer && !observer(t, state)) return t >= duration;

@@ -67,6 +67,35 @@ TEST(Connect, LongChainsBothRoutesAgree) {
   expectRoutesAgree(findConnections(model, &chain, from, to, options));
 }
 
+// The sparse KKT solve (long chains) against the dense one written out: the same x and multipliers.
+TEST(ConstrainedModel, SparseKktSolveAgreesWithTheDenseOne) {
+  Chain chain = Chain::uniform(20, 18.5);
+  chain.rodMasses = Eigen::VectorXd::LinSpaced(20, 0.5, 2.0);  // M block-tridiagonal
+  const ConstrainedModel model = ConstrainedModel::fromChain(chain);
+  ASSERT_TRUE(model.sparse());
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(19);
+  x(0) = 0.6, x(5) = 0.5, x(11) = -0.6;
+  const Eigen::VectorXd q = ConstrainedModel::stack(hingePositionsAt(chain, x.normalized()));
+  const int n = model.dimension(), m = model.constraintCount();
+  const Eigen::MatrixXd g = model.jacobian(q);
+  Eigen::MatrixXd kkt = Eigen::MatrixXd::Zero(n + m, n + m);
+  kkt << model.mass(), g.transpose(), g, Eigen::MatrixXd::Zero(m, m);
+  const Eigen::VectorXd top = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0), bottom = Eigen::VectorXd::LinSpaced(m, 0.3, -0.7);
+  Eigen::VectorXd rhs(n + m);
+  rhs << top, bottom;
+  const Eigen::VectorXd dense = kkt.fullPivLu().solve(rhs);
+  Eigen::VectorXd mu;
+  const KktFactor factor(model, q);
+  const Eigen::VectorXd sparse = factor.solve(top, bottom, &mu);
+  EXPECT_LT((sparse - dense.head(n)).cwiseAbs().maxCoeff(), 1e-10);
+  EXPECT_LT((mu - dense.tail(m)).cwiseAbs().maxCoeff(), 1e-10);
+  EXPECT_LT((factor.jacobianTimes(top) - g * top).cwiseAbs().maxCoeff(), 1e-12);
+  // The correction is the M-smallest x with G x = -r.
+  const Eigen::VectorXd correction = factor.correction(bottom);
+  EXPECT_LT((g * correction + bottom).cwiseAbs().maxCoeff(), 1e-11);
+  EXPECT_NEAR(model.norm(correction), std::sqrt(bottom.dot((g * model.mass().inverse() * g.transpose()).ldlt().solve(bottom))), 1e-10);
+}
+
 TEST(ConstrainedModel, ProjectsFortyRodsOntoTheirConstraints) {
   const Chain chain = Chain::uniform(40, 39.0);
   const ConstrainedModel model = ConstrainedModel::fromChain(chain);
