@@ -650,6 +650,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   const float captionRoom = 2.4f * context.font.lineHeight(TextSize::Small);
   LabelPlacer placer({sphereRect.x, sphereRect.y, sphereRect.width, sphereRect.height - captionRoom});
   std::vector<PixelRect> labels;
+  PixelRect colorBarBox{};
   if (space == ViewSpace::Circle) drawEquator(camera, context.unit, batch);
   if (space == ViewSpace::Ball) drawBallGuide(context, camera, batch);
   if (decoration) {
@@ -669,6 +670,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
                           colorBarStrip(context.rect) - pad - gap, 0.8f * context.rect.height};
       const std::string caption = fittedForm(context.font, fieldCaptions(field.coloring), TextSize::Small, bar.width);
       drawColorBar(scaleOf(field), caption, field.diverging ? "each sign on its own scale" : "", bar, context.font, batch);
+      colorBarBox = bar;
     }
   }
   // What the sphere hides goes into `back`, drawn before everything in front of it.
@@ -719,7 +721,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
       std::any_of(panels.begin(), panels.end(), [](const PanelSpec& p) { return p.kind == PanelKind::Text; });
   if (!captioned && !textPanel) captionFamilies(context, sphereRect.width, batch);
   const SphereLook look = colored ? SphereLook::Colored : space == ViewSpace::Sphere ? SphereLook::Opaque : SphereLook::Glass;
-  return {camera, look, labels, ballBoxes};
+  return {camera, look, labels, ballBoxes, colorBarBox};
 }
 
 }  // namespace sl
