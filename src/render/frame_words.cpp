@@ -153,6 +153,8 @@ std::vector<std::string> chartPoleLabels(bool north) {
 
 std::vector<std::string> seamLabels() { return {"seam t = \u00b1\u03c0/2", "seam"}; }
 
+std::vector<std::string> scaleBreakWords() { return {"scale changes at", "scale break at"}; }
+
 std::string fittedForm(const FontAtlas& font, const std::vector<std::string>& forms, TextSize size, float width) {
   for (const std::string& form : forms)
     if (font.width(form, size) <= width) return form;
