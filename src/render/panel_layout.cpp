@@ -16,10 +16,11 @@ std::vector<PanelSpec> effectivePanels(const ViewSettings& settings) {
 
 std::vector<PixelRect> layoutPanels(const std::vector<PanelSpec>& panels, int width, int height, float reservedTop) {
   const float w = static_cast<float>(width), h = static_cast<float>(height);
-  // Whole pixels of the frame at 720p's scale (3 pixels at 3840x2160, 1 at 1280x720 and below): panel edges then lie
-  // on whole pixels and at the same place of the picture at every size whose ratio to 720p is whole, so a 4K frame
-  // box-downscaled to 720p has its panels' contents where the 720p frame has them, not a fraction of a pixel off.
-  const float grain = std::max(1.0f, std::min(w, h) / 720.0f);
+  // Whole pixels of the frame at 720p's scale (3 pixels at 3840x2160, 2 at 2560x1440, 1 at 1920x1080 and below):
+  // panel edges then lie on whole pixels and at the same place of the picture at every size whose ratio to 720p is
+  // whole, so a 4K frame box-downscaled to 720p has its panels' contents where the 720p frame has them, not a
+  // fraction of a pixel off. (The font's baselines use the same grain: frame_composer.cpp.)
+  const float grain = std::floor(std::max(1.0f, std::min(w, h) / 720.0f));
   const auto snap = [grain](float v) { return std::round(std::round(v / grain) * grain); };
   std::vector<PixelRect> rects(panels.size());
   std::vector<std::size_t> bands, others;
