@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "render/frame_words.hpp"
 #include "render/palette.hpp"
 
 namespace sl {
@@ -123,8 +124,19 @@ void drawColorBar(const ColorScale& scale, const std::string& label, const std::
   const float x1 = area.x + area.width;
   const float x0 = x1 - barWidth;
   const float top = area.y + 2.2f * line;
+  const float tick = 0.6f * barWidth;
+  // A two-slope scale says where its slope changes: the zero tick, drawn longer, is labelled "scale changes at 0"
+  // where the strip has room for it (the note under the bar is then left out); else "0", and the note stays.
+  const bool broken = scale.diverging && scale.min < 0 && scale.max > 0;
+  const float zeroLabelRoom = x0 - 1.6f * tick - 0.3f * line - area.x;
+  std::string breakWords;
+  for (const std::string& form : scaleBreakWords())
+    if (breakWords.empty() && font.width(form + " " + tickLabel(0, 1), TextSize::Small) <= zeroLabelRoom)
+      breakWords = form + " ";
+  const bool breakNoted = broken && !breakWords.empty();
   // The note, word-wrapped onto at most two lines under the bar.
-  const std::vector<std::string> noteLines = font.wrapped(note, TextSize::Small, area.width, 2);
+  const std::vector<std::string> noteLines =
+      breakNoted ? std::vector<std::string>{} : font.wrapped(note, TextSize::Small, area.width, 2);
   const float bottom = area.y + area.height - (noteLines.empty() ? 0.6f : 0.8f + float(noteLines.size())) * line;
   if (bottom - top < 4 * line) return;  // too small to read: leave it out rather than draw it illegibly
   // The bar covers the positions the data reaches, highest at the top.
@@ -166,15 +178,17 @@ void drawColorBar(const ColorScale& scale, const std::string& label, const std::
   std::vector<double> negative, positive;
   for (double v : values) (v < 0 ? negative : positive).push_back(v);
   const double negativeStep = tickStep(negative), positiveStep = tickStep(positive);
-  const float tick = 0.6f * barWidth;
   const float ascent = font.ascent(TextSize::Small);
   for (double v : values) {
     const float y = yOf(scale.position(v));
     const float length = scale.diverging && v == 0 ? 1.6f * tick : tick;
     batch.rect(x0 - length, y - 0.5f * edge, x0, y + 0.5f * edge, ink);
     const std::string text = tickLabel(v, v < 0 ? negativeStep : positiveStep);
-    font.draw(batch, text, TextSize::Small, x0 - length - 0.3f * line - font.width(text, TextSize::Small),
-              y + 0.4f * ascent, ink);
+    const float textX = x0 - length - 0.3f * line - font.width(text, TextSize::Small);
+    font.draw(batch, text, TextSize::Small, textX, y + 0.4f * ascent, ink);
+    if (breakNoted && v == 0)  // the note's words before the zero, as the note under the bar is written
+      font.draw(batch, breakWords, TextSize::Small, textX - font.width(breakWords, TextSize::Small), y + 0.4f * ascent,
+                palette::softInk);
   }
   // Label and note right-aligned to the bar, shortened with an ellipsis where the strip is narrower than they are.
   const std::string title = font.fitted(label, TextSize::Small, area.width);

@@ -41,7 +41,9 @@ std::vector<double> niceTicks(double lo, double hi, int maxTicks);
 std::string tickLabel(double value, double step);
 
 // A vertical colour bar in `area` (its full height; the bar itself is a narrow strip at the area's right),
-// with ticks and their values on its left, `label` above and `note` (if any) below.
+// with ticks and their values on its left, `label` above and `note` (if any) below. A two-slope (diverging) scale
+// marks zero across the bar with a longer tick labelled "scale changes at 0" where the area is wide enough (and
+// leaves `note` out then), else "0" with the note.
 void drawColorBar(const ColorScale& scale, const std::string& label, const std::string& note, const PixelRect& area,
                   const FontAtlas& font, ShapeBatch& batch);
 

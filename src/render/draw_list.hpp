@@ -25,6 +25,7 @@ struct SphereImpostor {
   SphereLook look;
   std::vector<PixelRect> labels;  // the boxes of the labels placed on the sphere (poles, seams)
   std::vector<PixelRect> balls;   // the boxes kept free around the runs' balls
+  PixelRect colorBar{};           // the colour bar's strip (ticks, caption and note included); empty without one
 };
 
 struct PanelDrawing {

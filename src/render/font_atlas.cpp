@@ -97,7 +97,8 @@ std::vector<std::uint32_t> decodeUtf8(const std::string& text) {
   return out;
 }
 
-FontAtlas::FontAtlas(const std::string& ttfPath, const std::array<float, 3>& pixelHeights) : packed_(new Packed) {
+FontAtlas::FontAtlas(const std::string& ttfPath, const std::array<float, 3>& pixelHeights, int baselineGrain)
+    : baselineGrain_(float(std::max(1, baselineGrain))), packed_(new Packed) {
   std::ifstream in(ttfPath, std::ios::binary);
   if (!in) {
     delete packed_;
@@ -167,7 +168,8 @@ float FontAtlas::ascent(TextSize size) const { return packed_->ascent[int(size)]
 float FontAtlas::lineHeight(TextSize size) const { return packed_->lineHeight[int(size)]; }
 
 float FontAtlas::draw(ShapeBatch& batch, const std::string& utf8, TextSize size, float x, float y, Rgba color) const {
-  y = std::round(y);  // baselines on pixel rows keep horizontal stems crisp
+  // Baselines on pixel rows keep horizontal stems crisp; on rows of the grain, at the same place at every size.
+  y = std::round(y / baselineGrain_) * baselineGrain_;
   for (std::uint32_t cp : decodeUtf8(utf8)) {
     stbtt_aligned_quad q;
     stbtt_GetPackedQuad(packed_->chars[int(size)].data(), atlasSize_, atlasSize_, glyphIndex(cp), &x, &y, &q, 0);

@@ -16,8 +16,10 @@ enum class TextSize { Small = 0, Normal = 1, Title = 2 };
 
 class FontAtlas {
  public:
-  // Pixel heights for Small, Normal, Title. Throws naming the file if the font cannot be read.
-  FontAtlas(const std::string& ttfPath, const std::array<float, 3>& pixelHeights);
+  // Pixel heights for Small, Normal, Title. Baselines are put on whole multiples of `baselineGrain` pixels (a whole
+  // number: the frame's pixels per 720p pixel, so that text sits at the same place of the picture at 720p and at
+  // 4K). Throws naming the file if the font cannot be read.
+  FontAtlas(const std::string& ttfPath, const std::array<float, 3>& pixelHeights, int baselineGrain = 1);
   ~FontAtlas();
   FontAtlas(const FontAtlas&) = delete;
   FontAtlas& operator=(const FontAtlas&) = delete;
@@ -43,6 +45,7 @@ class FontAtlas {
   int glyphIndex(std::uint32_t codepoint) const;
   bool pack(const std::array<float, 3>& pixelHeights);  // into an atlas of atlasSize_; false if it does not fit
   int atlasSize_ = 1024;
+  float baselineGrain_ = 1;
   std::vector<std::uint8_t> bitmap_;
   std::vector<std::uint8_t> fontData_;
   Packed* packed_;

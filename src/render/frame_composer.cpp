@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -36,7 +37,7 @@ FrameComposer::FrameComposer(const ViewSettings& view, ImageSize size)
     : view_(view),
       size_(checkedSize(size)),
       panels_(effectivePanels(view)),
-      font_(kFontPath, textHeights(size_)),
+      font_(kFontPath, textHeights(size_), int(std::floor(markUnit(frameUnit(size_))))),
       rects_(layoutPanels(panels_, size_.width, size_.height, titleLineShown() ? titleLineHeight(font_) : 0)) {}
 
 bool FrameComposer::titleLineShown() const {

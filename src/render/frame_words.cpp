@@ -146,6 +146,15 @@ std::vector<std::string> ellipseCaptions() {
           "ellipses: stiffness |II(v,v)|\u00b2 over directions v", "ellipses: stiffness"};
 }
 
+std::vector<std::string> chartPoleLabels(bool north) {
+  if (north) return {"chart pole \u03c6 = 90\u00b0", "\u03c6 = 90\u00b0", "N"};
+  return {"chart pole \u03c6 = \u221290\u00b0", "\u03c6 = \u221290\u00b0", "S"};
+}
+
+std::vector<std::string> seamLabels() { return {"seam t = \u00b1\u03c0/2", "seam"}; }
+
+std::vector<std::string> scaleBreakWords() { return {"scale changes at", "scale break at"}; }
+
 std::string fittedForm(const FontAtlas& font, const std::vector<std::string>& forms, TextSize size, float width) {
   for (const std::string& form : forms)
     if (font.width(form, size) <= width) return form;

@@ -26,6 +26,9 @@ std::string valueAxisWords(PlotKind kind);           // what the y axis shows, i
 std::vector<std::string> plotTitles(const PlotFrame& plot);       // e.g. "relative energy error |E − E₀| / E₀"
 std::vector<std::string> fieldCaptions(SphereColoring coloring);  // the colour bar's, e.g. "K, Gaussian curvature"
 std::vector<std::string> ellipseCaptions();                       // the line explaining the stiffness ellipses
+std::vector<std::string> chartPoleLabels(bool north);  // "chart pole φ = 90°", "φ = 90°", "N" (south: −90°, "S")
+std::vector<std::string> seamLabels();                 // "seam t = ±π/2", "seam"
+std::vector<std::string> scaleBreakWords();  // "scale changes at", "scale break at": before a two-slope bar's zero
 
 // The first of `forms` no wider than `width`; if none is, the last shortened at a word with an ellipsis.
 std::string fittedForm(const FontAtlas& font, const std::vector<std::string>& forms, TextSize size, float width);

@@ -562,6 +562,11 @@ void drawLabel(const std::string& text, P2 anchor, bool hidden, const PanelConte
   placed.push_back({box.x0, box.y0, box.x1 - box.x0, box.y1 - box.y0});
 }
 
+// The widest a label on the sphere may be: a share of the sphere's radius on the screen, so that a label is as large
+// a part of the picture at every frame size. Text has a legibility floor (10 px), so a small frame takes a label's
+// shorter form (render/frame_words.hpp: "φ = 90°", then "N"), never a label that crowds the sphere.
+float labelBudget(const SphereCamera& camera) { return 0.5f * float(camera.pixelsPerUnitAt(V3{0, 0, 0})); }
+
 // 4 rods: the chart's poles (phi = +-pi/2, where t is undefined and the published single-chart methods fail) are
 // marked by the sphere shader on the front; both are named, a pole behind the sphere as a faint ring and label.
 void labelChartPoles(const PanelContext& context, const SphereCamera& camera, LabelPlacer& placer,
@@ -572,7 +577,7 @@ void labelChartPoles(const PanelContext& context, const SphereCamera& camera, La
     const P2 at = camera.project(pole);
     const bool hidden = behindSphere(camera, pole);
     if (hidden) back.ring(at, 4 * markUnit(context.unit), 0.6f * markUnit(context.unit), ghost(palette::poleMark));
-    drawLabel(z > 0 ? "chart pole \u03c6 = 90\u00b0" : "chart pole \u03c6 = \u221290\u00b0", at, hidden, context,
+    drawLabel(fittedForm(context.font, chartPoleLabels(z > 0), TextSize::Small, labelBudget(camera)), at, hidden, context,
               placer, placed, batch);
   }
 }
@@ -612,7 +617,9 @@ void drawSeams(const PanelContext& context, const SphereCamera& camera, LabelPla
     }
     flush();
   }
-  if (named) drawLabel("seam t = \u00b1\u03c0/2", *named, false, context, placer, placed, front);
+  if (named)
+    drawLabel(fittedForm(context.font, seamLabels(), TextSize::Small, labelBudget(camera)), *named, false, context, placer,
+              placed, front);
 }
 
 // A family on the sphere explained where no text panel does it: the run, its members and their wavefront, in the
@@ -646,10 +653,20 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   if (colored) sphereRect.width -= colorBarStrip(context.rect);
   SphereCamera camera(cameraOfFrame(context.settings.camera, context.frame), context.frame.time, sphereRect);
   const Placement placement{space == ViewSpace::Sphere, kTubeRadius};
-  // Labels stay in the sphere's part of the panel, clear of the colour bar and the captions at its foot.
-  const float captionRoom = 2.4f * context.font.lineHeight(TextSize::Small);
+  // Captions at the panel's foot: the ball view's, the stiffness ellipses', or (no text panel) a family's.
+  const bool captioned = space == ViewSpace::Ball || (decoration && !decoration->ellipses.empty());
+  const std::vector<PanelSpec> panels = effectivePanels(context.settings);
+  const bool textPanel =
+      std::any_of(panels.begin(), panels.end(), [](const PanelSpec& p) { return p.kind == PanelKind::Text; });
+  const bool families = std::any_of(context.frame.runs.begin(), context.frame.runs.end(),
+                                    [](const RunFrame& run) { return !run.members.empty(); });
+  // Labels stay in the sphere's part of the panel, clear of the colour bar and of the captions at its foot (room for
+  // them only where there are some: a pole near the panel's foot keeps its label beside it).
+  const float captionRoom =
+      captioned || (families && !textPanel) ? 2.4f * context.font.lineHeight(TextSize::Small) : 0.0f;
   LabelPlacer placer({sphereRect.x, sphereRect.y, sphereRect.width, sphereRect.height - captionRoom});
   std::vector<PixelRect> labels;
+  PixelRect colorBarBox{};
   if (space == ViewSpace::Circle) drawEquator(camera, context.unit, batch);
   if (space == ViewSpace::Ball) drawBallGuide(context, camera, batch);
   if (decoration) {
@@ -669,6 +686,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
                           colorBarStrip(context.rect) - pad - gap, 0.8f * context.rect.height};
       const std::string caption = fittedForm(context.font, fieldCaptions(field.coloring), TextSize::Small, bar.width);
       drawColorBar(scaleOf(field), caption, field.diverging ? "each sign on its own scale" : "", bar, context.font, batch);
+      colorBarBox = bar;
     }
   }
   // What the sphere hides goes into `back`, drawn before everything in front of it.
@@ -713,13 +731,9 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   batch.append(back);
   batch.append(front);
   batch.append(labelLayer);
-  const bool captioned = space == ViewSpace::Ball || (decoration && !decoration->ellipses.empty());
-  const std::vector<PanelSpec> panels = effectivePanels(context.settings);
-  const bool textPanel =
-      std::any_of(panels.begin(), panels.end(), [](const PanelSpec& p) { return p.kind == PanelKind::Text; });
   if (!captioned && !textPanel) captionFamilies(context, sphereRect.width, batch);
   const SphereLook look = colored ? SphereLook::Colored : space == ViewSpace::Sphere ? SphereLook::Opaque : SphereLook::Glass;
-  return {camera, look, labels, ballBoxes};
+  return {camera, look, labels, ballBoxes, colorBarBox};
 }
 
 }  // namespace sl

@@ -6,6 +6,8 @@
 #include "fixtures/synthetic_frame.hpp"
 #include "render/color_map.hpp"
 #include "render/frame_composer.hpp"
+#include "render/frame_words.hpp"
+#include "render/palette.hpp"
 
 namespace sl {
 namespace {
@@ -121,6 +123,38 @@ TEST(ColorBar, StaysInsideItsArea) {
   ShapeBatch tiny;
   drawColorBar({-1, 1, true}, "K", "", {0, 0, 40, 30}, composer.font(), tiny);
   EXPECT_TRUE(tiny.vertices().empty());
+}
+
+// A two-slope scale says where its slope changes, at the break: the zero tick's label reads "scale changes at 0"
+// (soft ink before the number) where the strip has room, and the note under the bar is left out then; a narrow strip
+// keeps "0" and the note. A one-slope scale has neither.
+TEST(ColorBar, ATwoSlopeScaleIsNotedAtItsBreak) {
+  const FrameComposer composer(ViewSettings{}, {1280, 720});
+  const FontAtlas& font = composer.font();
+  const auto softGlyphs = [](const ShapeBatch& batch) {
+    std::size_t count = 0;
+    for (const ShapeVertex& v : batch.vertices())
+      count += v.kind == float(ShapeKind::Glyph) && v.r == palette::softInk.r && v.g == palette::softInk.g;
+    return count;
+  };
+  const auto glyphsOf = [&](const std::string& text) {
+    ShapeBatch alone;
+    font.draw(alone, text, TextSize::Small, 0, 20, palette::softInk);
+    return alone.vertices().size();
+  };
+  const std::string note = "each sign on its own scale";
+  ShapeBatch wide;
+  drawColorBar({-0.27, 4.15, true}, "K", note, {900, 40, 200, 560}, font, wide);
+  EXPECT_EQ(softGlyphs(wide), glyphsOf(scaleBreakWords().front() + " "));
+  ShapeBatch narrow;
+  drawColorBar({-0.27, 4.15, true}, "K", note, {900, 40, 60, 560}, font, narrow);
+  EXPECT_GT(softGlyphs(narrow), 0u) << "the note under the bar";
+  ShapeBatch narrowWithoutNote;
+  drawColorBar({-0.27, 4.15, true}, "K", "", {900, 40, 60, 560}, font, narrowWithoutNote);
+  EXPECT_EQ(softGlyphs(narrowWithoutNote), 0u) << "break words squeezed into a narrow strip";
+  ShapeBatch oneSlope;
+  drawColorBar({0, 4.15, false}, "K", "", {900, 40, 200, 560}, font, oneSlope);
+  EXPECT_EQ(softGlyphs(oneSlope), 0u);
 }
 
 // A decorated frame: the sphere is coloured, framed left of the colour bar, and ellipses are drawn.

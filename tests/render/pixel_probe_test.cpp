@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "fixtures/synthetic_frame.hpp"
 #include "reference_frames.hpp"
@@ -12,6 +14,7 @@
 #include "render/panel_layout.hpp"
 #include "render/panels.hpp"
 #include "render/plane_view.hpp"
+#include "render/renderer.hpp"
 #include "render/sphere_camera.hpp"
 
 namespace sl {
@@ -317,6 +320,65 @@ TEST_F(PixelProbe, ColouredSphereKeepsTheColoursOfItsBar) {
   }
   ASSERT_GT(probed, 100);
   EXPECT_GE(faithful, 0.95 * probed) << faithful << " of " << probed << " pixels on the bar's colours";
+}
+
+// Colour bars as matplotlib draws them. At 3840x2160 the bar is a smooth ramp in 8-bit output: adjacent rows of its
+// inside differ by at most one level in each channel (a bar of 96 bands stepped by 3 to 6 levels every 15 rows), but
+// for the mark across it at zero, and a row is one colour across the bar. Beside the bar a gap of at least a text
+// line, where nothing is drawn, keeps it off the neighbouring plot's axis.
+TEST(ColorBarPixels, SmoothAt4KWithAGapFromTheNeighbouringPanel) {
+  auto decoration = std::make_shared<SphereDecoration>();
+  SphereField field{SphereColoring::Curvature, true, 32, 64, {}, -0.27, 4.15};
+  for (int i = 0; i < field.phiCount; ++i)
+    for (int j = 0; j < field.tCount; ++j) field.values.push_back(float(-0.27 + 4.42 * (i + 0.5) / field.phiCount));
+  decoration->field = field;
+  FrameState frame = syntheticFrame(2.0, 120);
+  frame.sphereDecoration = decoration;
+  ViewSettings view;
+  view.panels = {{PanelKind::Sphere, std::array<double, 4>{0, 0, 0.5, 1}, 0},
+                 {PanelKind::Plot, std::array<double, 4>{0.5, 0, 0.5, 1}, 1}};
+  const ImageSize size{3840, 2160};
+  const FrameComposer composer(view, size);
+  const DrawList list = composer.compose(frame);
+  ASSERT_TRUE(list.panels[0].sphere);
+  const PixelRect area = list.panels[0].sphere->colorBar;
+  ASSERT_GT(area.height, 1000);
+  Renderer renderer(view, size);
+  const Image picture = renderer.render(frame);
+  const float barWidth = std::max(6.0f, 0.018f * area.height), right = area.x + area.width;
+  const int inner = int(right - 0.5f * barWidth), innerLeft = int(right - 0.8f * barWidth), innerRight = int(right - 0.2f * barWidth);
+  const auto dark = [](const Rgb8& c) { return c.r + c.g + c.b < 300; };  // the zero mark's ink
+  int rows = 0, worst = 0, distinct = 0;
+  for (int y = int(area.y + 0.2f * area.height); y < int(area.y + 0.75f * area.height); ++y) {
+    const Rgb8 a = pixel(picture, inner, y), b = pixel(picture, inner, y + 1);
+    bool nearMark = false;
+    for (int d = -4; d <= 5; ++d) nearMark = nearMark || dark(pixel(picture, inner, y + d));
+    if (nearMark) continue;
+    ++rows;
+    const int step = std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)});
+    worst = std::max(worst, step);
+    distinct += step > 0;
+    for (const int x : {innerLeft, innerRight}) {
+      const Rgb8 c = pixel(picture, x, y);
+      EXPECT_LE(std::max({std::abs(a.r - c.r), std::abs(a.g - c.g), std::abs(a.b - c.b)}), 1) << "row " << y;
+    }
+  }
+  ASSERT_GT(rows, 800);
+  EXPECT_LE(worst, 1) << "a step of " << worst << " levels between adjacent rows of the bar";
+  EXPECT_GT(distinct, 100) << "the bar is not a ramp";
+  // The gap: from just right of the bar's frame to the panel's edge, nothing but the background.
+  const PixelRect panel = list.panels[0].rect;
+  const float line = composer.font().lineHeight(TextSize::Small);
+  EXPECT_GE(panel.x + panel.width - right, line);
+  const ColorRGB& bg = view.background;
+  for (int y = int(area.y); y < int(area.y + area.height); y += 7)
+    for (int x = int(right + 0.01f * area.height); x < int(panel.x + panel.width); ++x) {
+      const Rgb8 c = pixel(picture, x, y);
+      ASSERT_LE(std::abs(c.r - std::lround(255 * bg.r)) + std::abs(c.g - std::lround(255 * bg.g)) +
+                    std::abs(c.b - std::lround(255 * bg.b)),
+                6)
+          << "something drawn in the bar's gap at " << x << ", " << y;
+    }
 }
 
 }  // namespace

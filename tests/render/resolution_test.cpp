@@ -1,11 +1,13 @@
 // The same picture at every size: a 3840x2160 frame box-downscaled (3x3 pixels to one) to 1280x720 matches the
 // 1280x720 frame. Line widths, markers, glyphs and gaps are defined per 720 px of the frame's shorter side
-// (frameUnit), so only anti-aliasing and glyph rasterisation may differ.
+// (frameUnit), and panel edges and text baselines lie on whole pixels of 720p's scale (3 pixels at 4K), so only
+// anti-aliasing and glyph rasterisation may differ.
 //
 // Measure: among the pixels drawn in either frame (not the background colour), the fraction whose largest channel
-// difference exceeds 48 levels. Thresholds: 1% for the synthetic 4-rod frames (sphere, ball, linkage, plots, text),
-// 10% for a 200-rod rope whose hairline chain is almost all edge. Measured when the test was written: 0.6-0.7% and
-// 7.1%; before sizes were in frame units: 0.85-1.35% and 70.6% (the rope a chain of beads at 4K).
+// difference exceeds 48 levels. Thresholds: 0.2% for the synthetic 4-rod frames (sphere, ball, linkage, plots, text),
+// 1% for a 200-rod rope whose hairline chain is almost all edge. Measured: 0.00% and 0.43%; with panel edges and
+// baselines on the 4K frame's own pixels: 0.6-0.8% and 7.1%; before sizes were in frame units: 0.85-1.35% and 70.6%
+// (the rope a chain of beads at 4K). Every shipped scene: tests/cli/shipped_frames_test.cpp.
 
 #include <gtest/gtest.h>
 
@@ -15,6 +17,7 @@
 #include <cstdlib>
 #include <memory>
 
+#include "fixtures/image_compare.hpp"
 #include "fixtures/synthetic_frame.hpp"
 #include "reference_frames.hpp"
 #include "render/renderer.hpp"
@@ -23,44 +26,7 @@ namespace sl {
 namespace {
 
 constexpr int kLevels = 48;
-constexpr double kMaxDifferingFraction = 0.01, kMaxDifferingFractionHairline = 0.10;
-
-// Each 3x3 block of `big` averaged into one pixel.
-Image boxDownscale3(const Image& big) {
-  Image small;
-  small.width = big.width / 3;
-  small.height = big.height / 3;
-  small.rgb.assign(std::size_t(small.width) * small.height * 3, 0);
-  for (int y = 0; y < small.height; ++y)
-    for (int x = 0; x < small.width; ++x)
-      for (int c = 0; c < 3; ++c) {
-        int sum = 0;
-        for (int dy = 0; dy < 3; ++dy)
-          for (int dx = 0; dx < 3; ++dx) sum += big.rgb[(std::size_t(3 * y + dy) * big.width + 3 * x + dx) * 3 + c];
-        small.rgb[(std::size_t(y) * small.width + x) * 3 + c] = std::uint8_t((sum + 4) / 9);
-      }
-  return small;
-}
-
-// The fraction of drawn pixels (either frame differs from `background` by more than 2 levels) whose colours differ
-// by more than kLevels in some channel.
-double differingFraction(const Image& a, const Image& b, const ColorRGB& background) {
-  const int bg[3] = {int(std::lround(background.r * 255)), int(std::lround(background.g * 255)),
-                     int(std::lround(background.b * 255))};
-  std::size_t drawn = 0, differing = 0;
-  for (std::size_t i = 0; i + 2 < a.rgb.size(); i += 3) {
-    int offA = 0, offB = 0, diff = 0;
-    for (int c = 0; c < 3; ++c) {
-      offA = std::max(offA, std::abs(a.rgb[i + c] - bg[c]));
-      offB = std::max(offB, std::abs(b.rgb[i + c] - bg[c]));
-      diff = std::max(diff, std::abs(a.rgb[i + c] - b.rgb[i + c]));
-    }
-    if (offA <= 2 && offB <= 2) continue;
-    ++drawn;
-    if (diff > kLevels) ++differing;
-  }
-  return drawn ? double(differing) / double(drawn) : 0.0;
-}
+constexpr double kMaxDifferingFraction = 0.002, kMaxDifferingFractionHairline = 0.01;
 
 struct Case {
   const char* name;
@@ -122,7 +88,7 @@ TEST(ResolutionIndependence, FourKDownscaledMatches720p) {
       Renderer large(c.settings, {3840, 2160});
       big = large.render(c.frame);
     }
-    const double fraction = differingFraction(boxDownscale3(big), reference, c.settings.background);
+    const double fraction = testing::differingFraction(testing::boxDownscale3(big), reference, c.settings.background, kLevels);
     std::printf("%s: %.2f%% of drawn pixels differ by more than %d levels\n", c.name, 100 * fraction, kLevels);
     EXPECT_LT(fraction, c.maxDiffering) << c.name;
   }
