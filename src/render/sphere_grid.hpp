@@ -11,6 +11,8 @@
 // ball in a crowded layout gets a sparser grid, never a net). Lines thinner than a pixel (at small sizes) are
 // fainter, not wider (bandCoverage), so a box-downscaled large frame and a small frame cover as much of the ball.
 
+#include <vector>
+
 #include "render/shape_batch.hpp"
 #include "render/sphere_camera.hpp"
 
@@ -24,6 +26,29 @@ double sphereGridStep(double radiusPixels, float unit);
 
 // The ball's outline radius in pixels as `camera` sees the unit sphere.
 double sphereOutlinePixels(const SphereCamera& camera);
+
+// Radians along a grid line between polyline points, for a ball of `radiusPixels`: chords within 0.05 px.
+double sphereGridPiece(double radiusPixels);
+
+// The grid's lines on the unit sphere (world points, widths in frame units, shares of the line colour), computed
+// once for a step and a chord length; drawn for each camera by projecting the visible points.
+class SphereGridLines {
+ public:
+  SphereGridLines(double step, double piece);
+  // Ribbons along the visible parts of the lines, then squares about the visible poles (drawSphereGrid).
+  void draw(ShapeBatch& batch, const SphereCamera& camera, float unit) const;
+  double step() const { return step_; }
+  double piece() const { return piece_; }
+
+ private:
+  struct Line {
+    std::vector<V3> points;
+    std::vector<float> alpha;
+    float halfWidth;
+  };
+  double step_, piece_;
+  std::vector<Line> lines_;
+};
 
 // Ribbons along the visible grid lines (vKind 0, colour palette::sphereGrid, alpha the share of the line colour:
 // 0.75, faded near the poles for meridians) followed by discs at the visible poles (kind 1, palette::poleMark).

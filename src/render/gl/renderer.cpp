@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <stdexcept>
 
 #include "render/color_map.hpp"
@@ -52,6 +53,7 @@ struct Renderer::Impl {
     std::unique_ptr<GlLayer> layer;
   };
   std::vector<BallLayer> ballLayers;
+  std::optional<SphereGridLines> gridLines;  // the opaque sphere's grid on the unit sphere, for the last step
   ViewSpace cachedSpace = ViewSpace::Sphere;
   V3 cachedEye;  // the camera the cached sphere layer was drawn by
   const SphereDecoration* uploadedDecoration = nullptr;
@@ -249,8 +251,10 @@ struct Renderer::Impl {
     ballLayer(list, view, x0, y0, x1, y1).copyTo(GLuint(target), PixelRect{float(x0), float(y0), float(x1 - x0),
                                                                           float(y1 - y0)});
     if (view.look != SphereLook::Opaque) return;
+    const double step = gridStep(camera), piece = sphereGridPiece(outline);
+    if (!gridLines || gridLines->step() != step || gridLines->piece() != piece) gridLines.emplace(step, piece);
     ShapeBatch grid;
-    drawSphereGrid(grid, camera, frameUnit(size), gridStep(camera));
+    gridLines->draw(grid, camera, frameUnit(size));
     if (grid.vertices().empty()) return;
     setSphereUniforms(sphereGrid, list, view);
     upload(grid);
