@@ -26,6 +26,17 @@ float edgeCoverage(float inside) {
   return uAntialias > 0.5 ? clamp(inside + 0.5, 0.0, 1.0) : step(0.0, inside);
 }
 
+// The unit sphere under a pixel: returns the pixel's coverage by its silhouette and sets `hit` to the surface point
+// the ray meets (past the limb, where it misses, the ray's point closest to the centre, pushed onto the sphere).
+float sphereHit(vec2 pixel, out vec3 hit) {
+  vec3 ray = pixelRay(pixel);
+  float closest = -dot(ray, uEye);
+  float miss2 = dot(uEye, uEye) - closest * closest;
+  float pixelSize = closest / length(uForward);
+  hit = normalize(uEye + ray * (closest - sqrt(max(1.0 - miss2, 0.0))));
+  return edgeCoverage((1.0 - sqrt(max(miss2, 0.0))) / pixelSize);
+}
+
 // Coverage of a pixel whose centre is `offAxis` pixels from the axis of a band `halfWidth` pixels wide on each side:
 // the overlap of the pixel's span with the band, so a line thinner than a pixel is fainter instead of wider, and a
 // frame downscaled from a larger one shows the same line. Equal to edgeCoverage(halfWidth - offAxis) for bands
@@ -47,7 +58,15 @@ vec3 lit(vec3 base, vec3 n, float specular) {
   const vec3 fill = normalize(vec3(0.75, 0.10, 0.65));
   const vec3 view = vec3(0.0, 0.0, 1.0);
   float diffuse = 0.30 + 0.62 * max(dot(n, key), 0.0) + 0.22 * max(dot(n, fill), 0.0);
-  float rim = 0.18 * pow(1.0 - clamp(n.z, 0.0, 1.0), 3.0);
-  float highlight = specular * pow(max(dot(n, normalize(key + view)), 0.0), 48.0);
+  // Powers by products (llvmpipe's pow is a log and an exp per lane): x^3, and x^48 = (x^3)^16.
+  float edge = 1.0 - clamp(n.z, 0.0, 1.0);
+  float rim = 0.18 * edge * edge * edge;
+  float h = max(dot(n, normalize(key + view)), 0.0);
+  h = h * h * h;
+  h *= h;
+  h *= h;
+  h *= h;
+  h *= h;
+  float highlight = specular * h;
   return min(base * diffuse * vec3(1.02, 1.0, 0.97) + vec3(rim + highlight), vec3(1.0));
 }

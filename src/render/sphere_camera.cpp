@@ -37,6 +37,7 @@ SphereCamera::SphereCamera(const CameraSpec& spec, double time, const PixelRect&
   // choose D so the sphere fills 88% of the short side.
   const double silhouette = 0.44 * shortSide;
   const double distance = fitRadius * std::sqrt(1.0 + (focal_ / silhouette) * (focal_ / silhouette));
+  distance_ = distance;
   eye_ = distance * direction;
   forward_ = -1.0 * direction;
   const V3 vertical = std::abs(direction.z) > 0.999 ? V3{0, 1, 0} : V3{0, 0, 1};

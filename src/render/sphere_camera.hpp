@@ -26,6 +26,9 @@ class SphereCamera {
   double pixelsPerUnitAt(const V3& p) const;  // scale of a small object at p
   bool inFront(const V3& p) const;            // in front of the eye plane
   V3 eye() const { return eye_; }
+  // The eye's distance from the centre as the camera chose it (from the panel and the field of view alone, exactly
+  // the same for every direction; |eye()| may differ from it in the last bits).
+  double distance() const { return distance_; }
 
   // Shader uniforms: eye, forward * focal, right, up (world), panel centre (pixels).
   const V3& forward() const { return forward_; }
@@ -36,7 +39,7 @@ class SphereCamera {
 
  private:
   V3 eye_, forward_, right_, up_;
-  double focal_ = 1;
+  double focal_ = 1, distance_ = 1;
   P2 centre_;
 };
 

@@ -20,6 +20,9 @@
 #include "fixtures/image_compare.hpp"
 #include "fixtures/synthetic_frame.hpp"
 #include "reference_frames.hpp"
+#include "render/draw_list.hpp"
+#include "render/frame_composer.hpp"
+#include "render/sphere_grid.hpp"
 #include "render/renderer.hpp"
 
 namespace sl {
@@ -92,6 +95,62 @@ TEST(ResolutionIndependence, FourKDownscaledMatches720p) {
     std::printf("%s: %.2f%% of drawn pixels differ by more than %d levels\n", c.name, 100 * fraction, kLevels);
     EXPECT_LT(fraction, c.maxDiffering) << c.name;
   }
+}
+
+// The sphere's chart grid at every size: the same share of the ball, neither a net at 320x180 nor vanishing at 4K.
+// Measure: the mean colour (sum of channels) of the ball's central disc (half its radius; the pole labels and the
+// limb lie outside it), seen along the equator with no runs drawn, so the disc shows the lit ball and its grid only.
+// A box downscale keeps a region's mean, so this is the downscaled frames' measure too. Measured when the test was
+// written: 562.0, 562.4 and 562.4 at 320x180, 1280x720 and 3840x2160; without the grid 567.6 at every size (the grid
+// darkens the disc by 5.3 levels in the sum); with lines one pixel wide at every size (as before line widths were in
+// frame units) 548.2, 562.9 and 566.0, so a net at 320x180 and a fading grid at 4K each fail. Threshold: 1.5 levels
+// in the sum of the three channels.
+double centralDiscMean(const Image& image, double centreX, double centreY, double radius) {
+  double sum = 0;
+  std::size_t count = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const double dx = x + 0.5 - centreX, dy = y + 0.5 - centreY;
+      if (dx * dx + dy * dy > radius * radius) continue;
+      const std::size_t i = (std::size_t(y) * image.width + x) * 3;
+      sum += image.rgb[i] + image.rgb[i + 1] + image.rgb[i + 2];
+      ++count;
+    }
+  return count ? sum / double(count) : 0;
+}
+
+TEST(ResolutionIndependence, SphereGridCoversTheSameShareOfTheBallAtEverySize) {
+  SyntheticOptions none;
+  none.runs = 0;
+  const FrameState frame = syntheticFrame(2.0, 120, none);
+  ViewSettings settings;
+  settings.panels = {{PanelKind::Sphere, std::nullopt, 0}};
+  settings.camera.viewDirection = {1, 0.3, 0};  // along the equator: the poles at the top and bottom limbs
+  double means[3] = {0, 0, 0};
+  double darkest[3] = {0, 0, 0};  // the disc's largest drop below its neighbour 2 frame units away, levels
+  const ImageSize sizes[3] = {{320, 180}, {1280, 720}, {3840, 2160}};
+  for (int k = 0; k < 3; ++k) {
+    Renderer renderer(settings, sizes[k]);
+    const Image image = renderer.render(frame);
+    // Where the ball is: its camera's centre and outline (the title band takes more of a small frame).
+    const DrawList list = FrameComposer(settings, sizes[k]).compose(frame);
+    ASSERT_TRUE(list.panels.at(0).sphere.has_value());
+    const SphereCamera& camera = list.panels[0].sphere->camera;
+    const double cx = camera.centre().x, cy = camera.centre().y, radius = sphereOutlinePixels(camera);
+    means[k] = centralDiscMean(image, cx, cy, 0.5 * radius);
+    const int step = std::max(1, int(std::lround(2 * frameUnit(sizes[k]))));
+    for (int y = int(cy - 0.5 * radius); y < int(cy + 0.5 * radius); ++y)
+      for (int x = int(cx - 0.5 * radius); x + step < int(cx + 0.5 * radius); ++x) {
+        const std::size_t i = (std::size_t(y) * image.width + x) * 3, j = i + std::size_t(step) * 3;
+        darkest[k] = std::max(darkest[k], double(image.rgb[j + 1]) - double(image.rgb[i + 1]));
+      }
+    std::printf("%dx%d: central disc mean %.2f (sum of channels), deepest grid line %.0f levels\n", sizes[k].width,
+                sizes[k].height, means[k], darkest[k]);
+  }
+  EXPECT_NEAR(means[0], means[1], 1.5) << "320x180 against 1280x720";
+  EXPECT_NEAR(means[2], means[1], 1.5) << "3840x2160 against 1280x720";
+  // The lines are there at every size: sub-pixel and faint at 320x180, but visible.
+  for (int k = 0; k < 3; ++k) EXPECT_GT(darkest[k], 8.0) << sizes[k].width << "x" << sizes[k].height;
 }
 
 }  // namespace

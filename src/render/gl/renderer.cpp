@@ -2,7 +2,9 @@
 // flat, glyph and lit shapes and the sphere impostor (a program per look). All anti-aliasing is analytic, so the
 // frame is a plain RGBA8 framebuffer: no MSAA resolve, no depth buffer. With a fixed camera the sphere is
 // drawn once into a cached layer and copied into each frame (the same bytes as drawing it, at the cost of a
-// copy).
+// copy). With a turning one, what does not depend on the camera's direction is cached as well: the plain opaque
+// ball (the lights turn with the camera) and the glass ball are drawn once per panel and copied, and per frame only
+// the opaque sphere's grid and poles are drawn over it, as lines (render/sphere_grid.hpp, shaders/sphere_grid.frag).
 
 #include "render/renderer.hpp"
 
@@ -10,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <stdexcept>
 
 #include "render/color_map.hpp"
@@ -19,6 +22,7 @@
 #include "render/gl/gl_context.hpp"
 #include "render/gl/shader_program.hpp"
 #include "render/palette.hpp"
+#include "render/sphere_grid.hpp"
 
 namespace sl {
 namespace {
@@ -35,9 +39,21 @@ struct Renderer::Impl {
   FrameComposer composer;
   ImageSize size;
   GlContext context;
-  ShaderProgram flat, glyph, lit, sphereOpaque, sphereGlass, sphereColored;
+  ShaderProgram flat, glyph, lit, sphereOpaque, sphereGlass, sphereColored, sphereGrid;
   GLuint vertexArray = 0, vertexBuffer = 0, glyphTexture = 0, fieldTexture = 0;
   std::unique_ptr<GlLayer> sphereLayer;
+  // The plain balls (opaque without grid, glass) of the panels, each drawn once: the same for every direction.
+  struct BallLayer {
+    SphereLook look;
+    int x0, y0, x1, y1;  // the quad drawn, pixels
+    double distance, focal;
+    P2 centre;
+    bool antialias;
+    ColorRGB background;
+    std::unique_ptr<GlLayer> layer;
+  };
+  std::vector<BallLayer> ballLayers;
+  std::optional<SphereGridLines> gridLines;  // the opaque sphere's grid on the unit sphere, for the last step
   ViewSpace cachedSpace = ViewSpace::Sphere;
   V3 cachedEye;  // the camera the cached sphere layer was drawn by
   const SphereDecoration* uploadedDecoration = nullptr;
@@ -52,7 +68,8 @@ struct Renderer::Impl {
         lit(stage("shapes.vert"), stage("lit.frag"), shaderFolder),
         sphereOpaque(stage("shapes.vert"), sphereStage("sphere_opaque.glsl"), shaderFolder),
         sphereGlass(stage("shapes.vert"), sphereStage("sphere_glass.glsl"), shaderFolder),
-        sphereColored(stage("shapes.vert"), sphereStage("sphere_colored.glsl"), shaderFolder) {
+        sphereColored(stage("shapes.vert"), sphereStage("sphere_colored.glsl"), shaderFolder),
+        sphereGrid(stage("shapes.vert"), stage("sphere_grid.frag"), shaderFolder) {
     createVertexArray();
     createGlyphTexture();
   }
@@ -149,36 +166,103 @@ struct Renderer::Impl {
     }
   }
 
-  void drawSphere(const DrawList& list, const SphereImpostor& view) {
-    const ShaderProgram& sphere = view.look == SphereLook::Opaque  ? sphereOpaque
-                                  : view.look == SphereLook::Glass ? sphereGlass
-                                                                   : sphereColored;
-    setCommonUniforms(sphere, &view.camera, list.antialias);
-    const auto color = [&](const char* name, Rgba c) { glUniform3f(sphere.uniform(name), c.r, c.g, c.b); };
+  // The sphere programs cast rays in the camera's own frame (sphere.frag): the camera's distance, focal length and
+  // centre with a fixed basis, and its world basis to turn hit points into the world.
+  void setSphereUniforms(const ShaderProgram& program, const DrawList& list, const SphereImpostor& view) const {
+    setCommonUniforms(program, nullptr, list.antialias);
+    const SphereCamera& camera = view.camera;
+    const auto set3 = [&](const char* name, const V3& v, double scale) {
+      glUniform3f(program.uniform(name), float(v.x * scale), float(v.y * scale), float(v.z * scale));
+    };
+    set3("uEye", {0, 0, camera.distance()}, 1);
+    set3("uForward", {0, 0, -1}, camera.focal());
+    set3("uRight", {1, 0, 0}, 1);
+    set3("uUp", {0, 1, 0}, 1);
+    glUniform2f(program.uniform("uCentre"), camera.centre().x, camera.centre().y);
+    set3("uWorldRight", camera.right(), 1);
+    set3("uWorldUp", camera.up(), 1);
+    set3("uWorldBack", camera.forward(), -1);
+    glUniform1f(program.uniform("uGridStep"), float(gridStep(camera)));
+    const auto color = [&](const char* name, Rgba c) { glUniform3f(program.uniform(name), c.r, c.g, c.b); };
     color("uSphereColor", palette::sphereCream);
     color("uGridColor", view.look == SphereLook::Opaque ? palette::sphereGrid : palette::glass);
     color("uPoleColor", palette::poleMark);
-    if (view.look == SphereLook::Colored && list.sphereDecoration && list.sphereDecoration->field) {
-      if (uploadedDecoration != list.sphereDecoration.get()) {
-        uploadField(*list.sphereDecoration->field);
-        uploadedDecoration = list.sphereDecoration.get();
-      }
-      glActiveTexture(GL_TEXTURE1);
-      glBindTexture(GL_TEXTURE_2D, fieldTexture);
-      glUniform1i(sphere.uniform("uField"), 1);
-      glActiveTexture(GL_TEXTURE0);
-    }
-    // The camera looks at the sphere's centre, so its outline is a circle of radius f / sqrt(D^2 - 1)
-    // about the panel centre: a quad just around it saves the shader a quarter of the panel's pixels.
-    const V3 eye = view.camera.eye();
-    const double outline =
-        view.camera.focal() / std::sqrt(std::max(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z - 1, 1e-6));
-    const float half = float(outline) + 2.0f;
-    const P2 centre = view.camera.centre();
+  }
+
+  void drawQuad(int x0, int y0, int x1, int y1) {
     ShapeBatch quad;
-    quad.rect(centre.x - half, centre.y - half, centre.x + half, centre.y + half, {});
+    quad.rect(float(x0), float(y0), float(x1), float(y1), {});
     upload(quad);
     glDrawArrays(GL_TRIANGLES, 0, GLsizei(quad.vertices().size()));
+  }
+
+  // The plain ball of a look (opaque without grid, or glass) for this panel and camera distance: drawn once on the
+  // background into a layer of its own, then copied.
+  const GlLayer& ballLayer(const DrawList& list, const SphereImpostor& view, int x0, int y0, int x1, int y1) {
+    const SphereCamera& camera = view.camera;
+    const P2 centre = camera.centre();
+    const ColorRGB& bg = list.background;
+    for (const BallLayer& cached : ballLayers)
+      if (cached.look == view.look && cached.x0 == x0 && cached.y0 == y0 && cached.x1 == x1 && cached.y1 == y1 &&
+          cached.distance == camera.distance() && cached.focal == camera.focal() && cached.centre.x == centre.x &&
+          cached.centre.y == centre.y && cached.antialias == list.antialias && cached.background.r == bg.r &&
+          cached.background.g == bg.g && cached.background.b == bg.b)
+        return *cached.layer;
+    if (ballLayers.size() >= 4) ballLayers.clear();  // more sphere panels than any layout has: start over
+    GLint previous = 0;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous);
+    auto layer = std::make_unique<GlLayer>(size.width, size.height);
+    layer->bind();
+    clearToBackground(list);
+    const ShaderProgram& program = view.look == SphereLook::Glass ? sphereGlass : sphereOpaque;
+    setSphereUniforms(program, list, view);
+    drawQuad(x0, y0, x1, y1);
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
+    ballLayers.push_back({view.look, x0, y0, x1, y1, camera.distance(), camera.focal(), centre, list.antialias, bg,
+                          std::move(layer)});
+    return *ballLayers.back().layer;
+  }
+
+  void drawSphere(const DrawList& list, const SphereImpostor& view) {
+    // The camera looks at the sphere's centre, so its outline is a circle of radius f / sqrt(D^2 - 1)
+    // about the panel centre: a quad just around it saves the shader a quarter of the panel's pixels.
+    const SphereCamera& camera = view.camera;
+    const double outline = sphereOutlinePixels(camera);
+    const float half = float(outline) + 2.0f;
+    const P2 centre = camera.centre();
+    const int x0 = int(std::floor(centre.x - half)), y0 = int(std::floor(centre.y - half));
+    const int x1 = int(std::ceil(centre.x + half)), y1 = int(std::ceil(centre.y + half));
+    if (view.look == SphereLook::Colored) {
+      setSphereUniforms(sphereColored, list, view);
+      if (list.sphereDecoration && list.sphereDecoration->field) {
+        if (uploadedDecoration != list.sphereDecoration.get()) {
+          uploadField(*list.sphereDecoration->field);
+          uploadedDecoration = list.sphereDecoration.get();
+        }
+        glActiveTexture(GL_TEXTURE1);
+        glBindTexture(GL_TEXTURE_2D, fieldTexture);
+        glUniform1i(sphereColored.uniform("uField"), 1);
+        glActiveTexture(GL_TEXTURE0);
+      }
+      return drawQuad(x0, y0, x1, y1);
+    }
+    GLint target = 0;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &target);
+    ballLayer(list, view, x0, y0, x1, y1).copyTo(GLuint(target), PixelRect{float(x0), float(y0), float(x1 - x0),
+                                                                          float(y1 - y0)});
+    if (view.look != SphereLook::Opaque) return;
+    const double step = gridStep(camera), piece = sphereGridPiece(outline);
+    if (!gridLines || gridLines->step() != step || gridLines->piece() != piece) gridLines.emplace(step, piece);
+    ShapeBatch grid;
+    gridLines->draw(grid, camera, frameUnit(size));
+    if (grid.vertices().empty()) return;
+    setSphereUniforms(sphereGrid, list, view);
+    upload(grid);
+    glDrawArrays(GL_TRIANGLES, 0, GLsizei(grid.vertices().size()));
+  }
+
+  double gridStep(const SphereCamera& camera) const {
+    return sphereGridStep(sphereOutlinePixels(camera), frameUnit(size));
   }
 
   // The sphere of a camera at rest does not change between frames: draw it once into `sphereLayer`

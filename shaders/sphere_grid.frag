@@ -1,0 +1,32 @@
+// The opaque sphere's chart grid and pole caps as lines and discs over its cached ball (render/gl/renderer.cpp,
+// render/sphere_grid.hpp): ribbons along the projected parallels and meridians (kind 0, vParams.x their half width)
+// and squares about the poles (kind 1) holding the pole caps, each lit by the sphere's light at its pixel and cut by
+// the sphere's anti-aliased outline. vColor: the line's colour, and in alpha how much of it covers the ball (0.75 for
+// the grid, faded where the meridians crowd at the poles; 1 for the caps). Camera uniforms as sphere.frag's (the
+// camera's own frame, uWorld* its basis in the world).
+in vec2 vLocal;
+flat in int vKind;
+in vec3 vParams;
+in vec4 vColor;
+
+uniform vec3 uWorldRight;
+uniform vec3 uWorldUp;
+uniform vec3 uWorldBack;
+out vec4 fragColor;
+
+// A chart pole's cap (phi = +-90deg, x1 = x2 = 0, where t is undefined): a dark cap measured on the surface, so that
+// it is foreshortened towards the limb.
+float poleCap(vec3 hit) {
+  vec3 p = hit.x * uWorldRight + hit.y * uWorldUp + hit.z * uWorldBack;
+  float across = max(length(vec2(length(dFdx(p.xy)), length(dFdy(p.xy)))), 1e-6);
+  return edgeCoverage(min(0.035 / across, 7.0 * uUnit) - length(p.xy) / across);
+}
+
+void main() {
+  vec3 hit;
+  float cover = sphereHit(gl_FragCoord.xy, hit);
+  float line = vKind == 0 ? bandCoverage(vParams.x, abs(vLocal.y)) : poleCap(hit);
+  float alpha = vColor.a * line * cover;
+  if (alpha <= 0.0) discard;
+  fragColor = vec4(lit(vColor.rgb, vec3(hit.x, -hit.y, hit.z), 0.18) * alpha, alpha);
+}
