@@ -18,6 +18,7 @@ scenes=$(cat <<'EOF'
 comparison	15	The two published methods drift apart: the divergence plot climbs over decades while both chains, nested in the linkage panel, still look alike.
 connect	5	Three force-free motions between the same two shapes, found by shooting and arriving together at t = 6: the shortest is the kinetic distance between the shapes.
 curvature	10	The path crosses the colour map of the Gaussian curvature K; the colour bar gives the values.
+cut-locus	3.6	A half fan of 48 geodesics from one shape over the distance from it: the two sides of the wavefront meet on the cut locus (white), and the wavefront folds where it touches the conjugate locus (magenta).
 default	10	The drag-release geodesic on the configuration sphere beside its four-rod chain, hinge 2 trailing its recent positions.
 fan	7	Where K > 0 the fan of 32 geodesics from one start focuses again: the wavefront shrinks to a point.
 five-rods	10	Five rods move on S³, drawn in a ball: the distance from the centre is the angle from the start over π.

@@ -24,8 +24,11 @@ std::string valueAxisWords(PlotKind kind);           // what the y axis shows, i
 
 // Forms, longest first.
 std::vector<std::string> plotTitles(const PlotFrame& plot);       // e.g. "relative energy error |E − E₀| / E₀"
-std::vector<std::string> fieldCaptions(SphereColoring coloring);  // the colour bar's, e.g. "K, Gaussian curvature"
-std::vector<std::string> ellipseCaptions();                       // the line explaining the stiffness ellipses
+// The colour bar's, e.g. "K, Gaussian curvature"; the distance's from the start or from a point the scene names.
+std::vector<std::string> fieldCaptions(SphereColoring coloring, bool fromStart = true);
+std::vector<std::string> ellipseCaptions();  // the line explaining the stiffness ellipses
+std::string curveName(SphereCurveKind kind);  // a curve's label on the sphere, e.g. "cut locus"
+std::string injectivityNote(double radius);   // below the distance's colour bar, e.g. "injectivity radius 2.09
 
 // The first of `forms` no wider than `width`; if none is, the last shortened at a word with an ellipsis.
 std::string fittedForm(const FontAtlas& font, const std::vector<std::string>& forms, TextSize size, float width);
