@@ -194,7 +194,8 @@ struct SphereEllipse {
 // A curve drawn on the sphere (unit-sphere points in order), named by what it is.
 enum class SphereCurveKind {
   ConjugateLocus,  // where the geodesics from the distance colouring's point first focus (a caustic)
-  CutLocus         // where they stop being shortest: the ridge of the distance, a tree
+  CutLocus,        // where they stop being shortest: the ridge of the distance, a tree
+  ClosedGeodesic   // a simple closed geodesic (view.sphere.closed_geodesics)
 };
 struct SphereCurve {
   SphereCurveKind kind = SphereCurveKind::ConjugateLocus;

@@ -11,6 +11,8 @@
 #include "geometry/curvature.hpp"
 #include "geometry/curvature_grid.hpp"
 #include "inverse/distance_map.hpp"
+#include "inverse/geodesic_flow.hpp"
+#include "inverse/periodic.hpp"
 #include "linkage/chart.hpp"
 
 namespace sl {
@@ -178,6 +180,27 @@ void addDistance(const Chain& chain, const Eigen::VectorXd& spherePoint, bool fr
   for (SphereCurve& curve : cutCurves(map)) decoration.curves.push_back(std::move(curve));
 }
 
+// The simple closed geodesics of `linkage periodic`'s list, each followed once round from its start: a closed curve
+// of the unit sphere.
+std::vector<SphereCurve> closedGeodesicCurves(const Chain& chain) {
+  constexpr int kPoints = 512;
+  const ConstrainedModel model = ConstrainedModel::fromChain(chain);
+  const GeodesicFlow flow(model, 1e-10);
+  std::vector<SphereCurve> curves;
+  for (const ClosedGeodesic& g : closedGeodesicsOf(chain, 0)) {
+    if (!g.simple) continue;
+    SphereCurve curve{SphereCurveKind::ClosedGeodesic, {}};
+    FlowState state{g.point, g.velocity, Eigen::MatrixXd(g.point.size(), 0), Eigen::MatrixXd(g.point.size(), 0)};
+    curve.points.push_back(vec(spherePointFromHinges(chain, ConstrainedModel::unstack(state.q)).normalized()));
+    for (int k = 1; k <= kPoints; ++k) {
+      if (!flow.advance(state, g.length / kPoints)) break;
+      curve.points.push_back(vec(spherePointFromHinges(chain, ConstrainedModel::unstack(state.q)).normalized()));
+    }
+    curves.push_back(std::move(curve));
+  }
+  return curves;
+}
+
 }  // namespace
 
 std::shared_ptr<const SphereDecoration> makeSphereDecoration(const Chain& chain, const SphereSurfaceSpec& spec,
@@ -193,6 +216,8 @@ std::shared_ptr<const SphereDecoration> makeSphereDecoration(const Chain& chain,
     decoration->field = colourField(surface, spec.colorBy);
   }
   decoration->seam = spec.seam;
+  if (spec.closedGeodesics)
+    for (SphereCurve& curve : closedGeodesicCurves(chain)) decoration->curves.push_back(std::move(curve));
   if (spec.stiffness) decoration->ellipses = stiffnessEllipses(surface);
   return decoration;
 }

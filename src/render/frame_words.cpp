@@ -150,6 +150,8 @@ std::string curveName(SphereCurveKind kind) {
       return "conjugate locus";
     case SphereCurveKind::CutLocus:
       return "cut locus";
+    case SphereCurveKind::ClosedGeodesic:
+      return "closed geodesic";
   }
   return "";
 }

@@ -616,9 +616,9 @@ void drawSeams(const PanelContext& context, const SphereCamera& camera, LabelPla
   if (named) drawLabel("seam t = \u00b1\u03c0/2", *named, false, context, placer, placed, front);
 }
 
-// The distance colouring's loci (frame_state.hpp SphereCurve) riding on the sphere: each a line of its colour on a
-// thin dark halo, what the sphere hides dashed and faint (the far-side convention), each kind named once where it
-// faces the eye most. A point the scene names (not the start, which the path's bar marks) gets an ink ring.
+// The distance colouring's loci and the closed geodesics (frame_state.hpp SphereCurve) riding on the sphere: a locus
+// a line of its colour on a thin dark halo, a closed geodesic a faint thin ink line; what the sphere hides dashed and
+// faint (the far-side convention), each kind named once where it faces the eye most. A point the scene names (not the start, which the path's bar marks) gets an ink ring.
 void drawLoci(const SphereDecoration& decoration, const PanelContext& context, const SphereCamera& camera,
               LabelPlacer& placer, std::vector<PixelRect>& placed, ShapeBatch& surface, ShapeBatch& back,
               ShapeBatch& labels) {
@@ -633,8 +633,11 @@ void drawLoci(const SphereDecoration& decoration, const PanelContext& context, c
   };
   std::map<SphereCurveKind, Named> names;
   for (const SphereCurve& curve : decoration.curves) {
-    const Rgba color = curve.kind == SphereCurveKind::CutLocus ? palette::cutLocus : palette::conjugateLocus;
-    const Rgba halo = palette::withAlpha(palette::ink, 0.55f);
+    const bool faint = curve.kind == SphereCurveKind::ClosedGeodesic;  // a guide under the runs, no halo
+    const Rgba color = curve.kind == SphereCurveKind::CutLocus         ? palette::cutLocus
+                       : curve.kind == SphereCurveKind::ConjugateLocus ? palette::conjugateLocus
+                                                                       : palette::withAlpha(palette::ink, 0.6f);
+    const Rgba halo = palette::withAlpha(palette::ink, faint ? 0.0f : 0.55f);
     std::vector<PolylinePoint> line, under, hidden;
     auto flush = [&] {
       surface.polyline(under);
@@ -663,8 +666,8 @@ void drawLoci(const SphereDecoration& decoration, const PanelContext& context, c
         hidden.push_back({at, ghostHalfWidth, ghost(color), {}});
         continue;
       }
-      line.push_back({at, halfWidth, color, onSurface.world(p)});
-      under.push_back({at, halfWidth + 0.7f * markUnit(context.unit), halo, onSurface.world(p)});
+      line.push_back({at, faint ? 0.85f * halfWidth : halfWidth, color, onSurface.world(p)});
+      if (!faint) under.push_back({at, halfWidth + 0.7f * markUnit(context.unit), halo, onSurface.world(p)});
       placer.avoidPoint(at);
       const double facing = (p.x * eye.x + p.y * eye.y + p.z * eye.z) / eyeDistance;
       Named& name = names[curve.kind];

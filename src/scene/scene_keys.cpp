@@ -723,6 +723,14 @@ std::vector<SceneKey> describeKeys() {
        .meaning = "draw the seams t = ±π/2 on the sphere (4 rods), where the published closed-form metric divides by "
                   "zero, as dashed red meridians, the one facing the eye named",
        .allowed = "true/false"},
+      {.path = "view.sphere.closed_geodesics",
+       .type = KeyType::Boolean,
+       .fallback = view.sphereSurface.closedGeodesics,
+       .summary = "draw the simple closed geodesics faintly (4 rods)",
+       .target = "SphereSurfaceSpec::closedGeodesics",
+       .meaning = "draw the simple closed geodesics of the scene's linkage (those `linkage periodic` lists as simple) "
+                  "as faint curves on the sphere (4 rods), found once per render",
+       .allowed = "true/false"},
       {.path = "view.camera",
        .type = KeyType::Object,
        .summary = "the sphere panel's camera",

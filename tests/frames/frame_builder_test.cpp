@@ -610,3 +610,34 @@ TEST(SphereDecoration, DistanceFieldIsTheShortestMotionsLengthAndTheCutLocusWher
 
 }  // namespace
 }  // namespace sl
+
+namespace sl {
+namespace {
+
+// view.sphere.closed_geodesics: the three simple closed geodesics of the 4-rod chain at L = 3, each a closed curve
+// on the unit sphere; the 5-rod refusal is the loader's (tests/data/scenes/bad/closed_geodesics_five_rods.json).
+TEST(SphereDecoration, ClosedGeodesicsAreTheThreeSimpleOnesEachClosed) {
+  const Chain chain = Chain::uniform(4, 3.0);
+  SphereSurfaceSpec spec;
+  spec.closedGeodesics = true;
+  const auto decoration = makeSphereDecoration(chain, spec);
+  ASSERT_NE(decoration, nullptr);
+  EXPECT_FALSE(decoration->field);
+  ASSERT_EQ(decoration->curves.size(), 3u);
+  for (const SphereCurve& curve : decoration->curves) {
+    EXPECT_EQ(curve.kind, SphereCurveKind::ClosedGeodesic);
+    ASSERT_GT(curve.points.size(), 500u);
+    const Vec3 &a = curve.points.front(), &b = curve.points.back();
+    EXPECT_LT(std::hypot(a.x - b.x, a.y - b.y, a.z - b.z), 1e-6) << "closes after one period";
+    double longest = 0;  // sampled densely: no chord longer than a few degrees
+    for (std::size_t k = 1; k < curve.points.size(); ++k) {
+      const Vec3 &p = curve.points[k - 1], &q = curve.points[k];
+      longest = std::max(longest, std::hypot(p.x - q.x, p.y - q.y, p.z - q.z));
+      EXPECT_NEAR(std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z), 1.0, 1e-12);
+    }
+    EXPECT_LT(longest, 0.06);
+  }
+}
+
+}  // namespace
+}  // namespace sl
