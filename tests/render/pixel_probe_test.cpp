@@ -269,6 +269,16 @@ TEST_F(PixelProbe, ColouredSphereShowsTheFieldWhereItIs) {
   EXPECT_TRUE(isCream(plain)) << plain.r << " " << plain.g << " " << plain.b;
 }
 
+// The camera of a 640 x 360 frame's sphere panel when the sphere is coloured (framed left of the colour bar).
+SphereCamera colouredSphereCamera(const ViewSettings& side, double time) {
+  const auto rects = layoutPanels(side.panels, 640, 360);
+  PixelRect rect{};
+  for (std::size_t i = 0; i < side.panels.size(); ++i)
+    if (side.panels[i].kind == PanelKind::Sphere) rect = rects[i];
+  rect.width -= std::min(0.24f * rect.width, 0.45f * rect.height);
+  return SphereCamera(side.camera, time, rect);
+}
+
 // Faithful colour: the coloured sphere's pixels carry colours of its colour bar (the light darkens them only a
 // little and adds no highlight). A field rising smoothly from south to north over the whole map; of the sphere's
 // pixels well inside its outline and off the grid lines, at least 95% lie within 24 levels (RGB distance) of some colour of the bar.
@@ -292,12 +302,7 @@ TEST_P(FaithfulColour, ColouredSphereKeepsTheColoursOfItsBar) {
   side.camera.viewDirection = {1.0, 0.3, 0.0};
   Renderer sideRenderer(side, {640, 360});
   const Image picture = sideRenderer.render(colored);
-  const auto rects = layoutPanels(side.panels, 640, 360);
-  PixelRect rect{};
-  for (std::size_t i = 0; i < side.panels.size(); ++i)
-    if (side.panels[i].kind == PanelKind::Sphere) rect = rects[i];
-  rect.width -= std::min(0.24f * rect.width, 0.45f * rect.height);
-  const SphereCamera sideCamera(side.camera, colored.time, rect);
+  const SphereCamera sideCamera = colouredSphereCamera(side, colored.time);
   const ColorScale scale{field.min, field.max, diverging};
   std::vector<Rgba> bar;
   for (int k = 0; k <= 512; ++k) bar.push_back(scale.colorAt(k / 512.0));
@@ -353,12 +358,7 @@ TEST_F(PixelProbe, LociAreDrawnWhereTheDistanceMapPutsThem) {
   side.camera.viewDirection = {1, 0, 0};
   Renderer sideRenderer(side, {640, 360});
   const Image picture = sideRenderer.render(colored);
-  const auto rects = layoutPanels(side.panels, 640, 360);
-  PixelRect rect{};
-  for (std::size_t i = 0; i < side.panels.size(); ++i)
-    if (side.panels[i].kind == PanelKind::Sphere) rect = rects[i];
-  rect.width -= std::min(0.24f * rect.width, 0.45f * rect.height);
-  const SphereCamera sideCamera(side.camera, colored.time, rect);
+  const SphereCamera sideCamera = colouredSphereCamera(side, colored.time);
   auto at = [&](const Vec3& p) {  // the pixel holding the point (the loci ride just above the surface)
     const P2 q = sideCamera.project({1.006 * p.x, 1.006 * p.y, 1.006 * p.z});
     return pixel(picture, int(q.x), int(q.y));
