@@ -618,7 +618,8 @@ void drawSeams(const PanelContext& context, const SphereCamera& camera, LabelPla
 
 // The distance colouring's loci and the closed geodesics (frame_state.hpp SphereCurve) riding on the sphere: a locus
 // a line of its colour on a thin dark halo, a closed geodesic a faint thin ink line; what the sphere hides dashed and
-// faint (the far-side convention), each kind named once where it faces the eye most. A point the scene names (not the start, which the path's bar marks) gets an ink ring.
+// faint (the far-side convention), each kind named once where it faces the eye most. A point the scene names (not
+// the start, which the path's bar marks) gets an ink ring over the paths (faint behind the sphere) and a label.
 void drawLoci(const SphereDecoration& decoration, const PanelContext& context, const SphereCamera& camera,
               LabelPlacer& placer, std::vector<PixelRect>& placed, ShapeBatch& surface, ShapeBatch& back,
               ShapeBatch& labels) {
@@ -684,8 +685,8 @@ void drawLoci(const SphereDecoration& decoration, const PanelContext& context, c
     if (camera.inFront(p)) {
       const bool behind = behindSphere(camera, p);
       const float radius = 4 * markUnit(context.unit);
-      (behind ? back : surface).ring(camera.project(p), radius, (behind ? 0.6f : 1.2f) * markUnit(context.unit),
-                                     behind ? ghost(palette::ink) : palette::ink);
+      (behind ? back : labels).ring(camera.project(p), radius, (behind ? 0.6f : 1.2f) * markUnit(context.unit),
+                                    behind ? ghost(palette::ink) : palette::ink);  // over the paths
       drawLabel("distance measured from here", camera.project(p), behind, context, placer, placed, labels);
     }
   }
