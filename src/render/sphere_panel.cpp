@@ -684,7 +684,7 @@ void drawLoci(const SphereDecoration& decoration, const PanelContext& context, c
     const V3 p = onSurface.place(x);
     if (camera.inFront(p)) {
       const bool behind = behindSphere(camera, p);
-      const float radius = 4 * markUnit(context.unit);
+      const float radius = std::max(5 * markUnit(context.unit), 0.012f * context.rect.height);
       (behind ? back : labels).ring(camera.project(p), radius, (behind ? 0.6f : 1.2f) * markUnit(context.unit),
                                     behind ? ghost(palette::ink) : palette::ink);  // over the paths
       drawLabel("distance measured from here", camera.project(p), behind, context, placer, placed, labels);
