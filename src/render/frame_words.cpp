@@ -156,9 +156,9 @@ std::string curveName(SphereCurveKind kind) {
   return "";
 }
 
-std::string injectivityNote(double radius) {
-  char text[64];
-  std::snprintf(text, sizeof text, "injectivity radius %.3g", radius);
+std::string injectivityNote(double radius, bool fromStart) {
+  char text[96];
+  std::snprintf(text, sizeof text, "from the %s; injectivity radius %.3g", fromStart ? "start" : "marked shape", radius);
   return text;
 }
 

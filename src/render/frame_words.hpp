@@ -28,7 +28,9 @@ std::vector<std::string> plotTitles(const PlotFrame& plot);       // e.g. "relat
 std::vector<std::string> fieldCaptions(SphereColoring coloring, bool fromStart = true);
 std::vector<std::string> ellipseCaptions();  // the line explaining the stiffness ellipses
 std::string curveName(SphereCurveKind kind);  // a curve's label on the sphere, e.g. "cut locus"
-std::string injectivityNote(double radius);   // below the distance's colour bar, e.g. "injectivity radius 2.09
+// Below the distance's colour bar (which may have room for "distance (s)" alone): from where, and the injectivity
+// radius, e.g. "from the start; injectivity radius 2.09".
+std::string injectivityNote(double radius, bool fromStart);
 
 // The first of `forms` no wider than `width`; if none is, the last shortened at a word with an ellipsis.
 std::string fittedForm(const FontAtlas& font, const std::vector<std::string>& forms, TextSize size, float width);

@@ -750,7 +750,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
       const std::string caption =
           fittedForm(context.font, fieldCaptions(field.coloring, fromStart), TextSize::Small, bar.width);
       const std::string note = field.diverging       ? "each sign on its own scale"
-                               : decoration->distance ? injectivityNote(decoration->distance->injectivityRadius)
+                               : decoration->distance ? injectivityNote(decoration->distance->injectivityRadius, fromStart)
                                                       : "";
       drawColorBar(scaleOf(field), caption, note, bar, context.font, batch);
     }
