@@ -18,6 +18,7 @@ scenes=$(cat <<'EOF'
 comparison	15	The two published methods drift apart: the divergence plot climbs over decades while both chains, nested in the linkage panel, still look alike.
 connect	5	Three force-free motions between the same two shapes, found by shooting and arriving together at t = 6: the shortest is the kinetic distance between the shapes.
 curvature	10	The path crosses the colour map of the Gaussian curvature K; the colour bar gives the values.
+cut-locus	3.6	A half fan of 48 geodesics from one shape over the distance from it: the two sides of the wavefront meet on the cut locus (white), and the wavefront folds where it touches the conjugate locus (magenta).
 default	10	The drag-release geodesic on the configuration sphere beside its four-rod chain, hinge 2 trailing its recent positions.
 fan	7	Where K > 0 the fan of 32 geodesics from one start focuses again: the wavefront shrinks to a point.
 five-rods	10	Five rods move on S³, drawn in a ball: the distance from the centre is the angle from the start over π.
@@ -25,7 +26,7 @@ jacobi	8	The Jacobi field's zeros are conjugate points: each is marked on the pa
 masses-curvature	10	All the mass on the rods: the rods are drawn thick, the massless hinges without balls, over the reshaped curvature.
 masses	10	One push, three mass placements, three different paths; ball and rod sizes in the linkage panel show where the mass sits.
 massive-rods	10	Rods with mass (thick rods) under the default start; the energy plot says in one line that energy is conserved to roundoff.
-periodic	12	The three simple closed geodesics of the four-rod chain at L = 3, each repeating, with its length and whether it is stable (elliptic) or not (hyperbolic).
+periodic	12	The three simple closed geodesics of the four-rod chain at L = 3, drawn whole as faint curves, each run repeating one, with its length and whether it is stable (elliptic) or not (hyperbolic).
 pole-passage	10	Through a pole of the chart: the published method stops (grey, crossed out), chart switching and chart-free carry on.
 rope	1	A 200-rod rope whipped by a push near one end: the arrow marks the push in the first frames, the rope fills its panel.
 seam	5	Starting on the seam t = π/2: the published run stops at once, as the divergence plot says, while the exact run carries on.

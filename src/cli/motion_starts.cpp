@@ -115,6 +115,11 @@ Found closedGeodesics(const Chain& chain, const FoundMotionSpec& request) {
 
 std::vector<SceneProblem> resolveMotionStarts(Scene& scene) {
   std::vector<SceneProblem> problems;
+  if (scene.distanceFrom) {  // the distance colouring's point, placed on the rod constraints as a start's
+    const ConstrainedModel model = ConstrainedModel::fromChain(scene.chain);
+    if (const auto q = configurationOf(scene.chain, model, *scene.distanceFrom, "view.sphere.distance_from", problems))
+      scene.distancePoint = spherePointFromHinges(scene.chain, ConstrainedModel::unstack(*q));
+  }
   std::map<std::string, Found> searches;
   bool any = false;
   for (std::size_t i = 0; i < scene.runs.size(); ++i) {

@@ -191,11 +191,31 @@ struct SphereEllipse {
   Vec3 centre, major, minor;
 };
 
+// A curve drawn on the sphere (unit-sphere points in order), named by what it is.
+enum class SphereCurveKind {
+  ConjugateLocus,  // where the geodesics from the distance colouring's point first focus (a caustic)
+  CutLocus,        // where they stop being shortest: the ridge of the distance, a tree
+  ClosedGeodesic   // a simple closed geodesic (view.sphere.closed_geodesics)
+};
+struct SphereCurve {
+  SphereCurveKind kind = SphereCurveKind::ConjugateLocus;
+  std::vector<Vec3> points;
+};
+
+// The distance colouring's point and what the distance map found (inverse/distance_map.hpp).
+struct SphereDistance {
+  Vec3 point;                  // on the unit sphere
+  bool fromStart = true;       // the first run's start (else a configuration the scene names: marked)
+  double injectivityRadius = 0;
+};
+
 // What the sphere panel draws on and over the sphere, the same in every frame (shared, never copied).
 struct SphereDecoration {
   std::optional<SphereField> field;
   std::vector<SphereEllipse> ellipses;  // stiffness glyphs (geometry/curvature.hpp), explained below the sphere
   bool seam = false;                    // the seams t = +-pi/2 drawn and named
+  std::optional<SphereDistance> distance;  // with the distance colouring
+  std::vector<SphereCurve> curves;      // the loci of the distance colouring, each named by a label
 };
 
 struct FrameState {

@@ -143,12 +143,14 @@ inline constexpr std::array<Named<CameraMode>, 3> kCameraModes{{
     {CameraMode::Orbit, "orbit"},
 }};
 
-// What colours the sphere panel's sphere (4 rods; geometry/curvature.hpp computes the values).
-enum class SphereColoring { None, Curvature, Bending };
-inline constexpr std::array<Named<SphereColoring>, 3> kSphereColorings{{
+// What colours the sphere panel's sphere (4 rods; geometry/curvature.hpp computes the curvatures,
+// inverse/distance_map.hpp the distance from a point).
+enum class SphereColoring { None, Curvature, Bending, Distance };
+inline constexpr std::array<Named<SphereColoring>, 4> kSphereColorings{{
     {SphereColoring::None, "none"},
     {SphereColoring::Curvature, "curvature"},
     {SphereColoring::Bending, "bending"},
+    {SphereColoring::Distance, "distance"},
 }};
 
 // === Video formats (chosen by the video file's extension) and qualities

@@ -39,7 +39,8 @@ struct SphereSurfaceSpec {
   SphereColoring colorBy = SphereColoring::None;
   bool stiffness = false;
   bool seam = false;  // the seams t = +-pi/2 drawn and named
-  bool decorated() const { return colorBy != SphereColoring::None || stiffness || seam; }
+  bool closedGeodesics = false;  // the simple closed geodesics drawn faintly (inverse/periodic.hpp)
+  bool decorated() const { return colorBy != SphereColoring::None || stiffness || seam || closedGeodesics; }
 };
 
 struct ViewSettings {

@@ -11,6 +11,8 @@
 #include "contracts/parallel_for.hpp"
 #include "frames/directed_camera.hpp"
 #include "frames/sphere_decoration.hpp"
+#include "linkage/chart.hpp"
+#include "scene/title_placeholders.hpp"
 
 namespace sl {
 
@@ -87,6 +89,19 @@ std::vector<RunFrame::HingeArrow> pushArrows(const InitialSpec& initial, const I
   return arrows;
 }
 
+// The point the sphere's distance colouring is measured from: the one the scene names (resolved by the commands),
+// else the first run's start (none for a slack chain or a sphere not coloured by distance).
+Eigen::VectorXd distancePoint(const Scene& scene, const std::vector<InitialState>& starts) {
+  if (scene.view.sphereSurface.colorBy != SphereColoring::Distance) return {};
+  if (scene.distanceFrom) {
+    if (scene.distancePoint.size() == 0)
+      throw std::logic_error("FrameBuilder: view.sphere.distance_from was not resolved (cli/motion_starts.hpp)");
+    return scene.distancePoint;
+  }
+  const InitialState& start = starts.at(0);
+  return start.spherePoint.size() > 0 ? start.spherePoint : spherePointFromHinges(scene.chain, start.hinges);
+}
+
 }  // namespace
 
 ColorRGB runColor(const Scene& scene, size_t run) {
@@ -94,7 +109,7 @@ ColorRGB runColor(const Scene& scene, size_t run) {
   static const ColorRGB palette[] = {{0.00f, 0.45f, 0.70f}, {0.84f, 0.37f, 0.00f}, {0.00f, 0.62f, 0.45f},
                                      {0.80f, 0.47f, 0.65f}, {0.90f, 0.62f, 0.00f}, {0.34f, 0.71f, 0.91f}};
   // On a coloured sphere the runs take colours away from its map: no blue or red on the curvature map (blue-white-
-  // red, where blue means K < 0), no blue, green or yellow on viridis (the bending map).
+  // red, where blue means K < 0), no blue, green or yellow on viridis (the bending and distance maps).
   static const ColorRGB offCurvature[] = {{0.00f, 0.62f, 0.45f}, {0.10f, 0.10f, 0.12f}, {0.90f, 0.62f, 0.00f},
                                           {0.80f, 0.47f, 0.65f}};
   static const ColorRGB offBending[] = {{0.84f, 0.37f, 0.00f}, {0.80f, 0.47f, 0.65f}, {0.96f, 0.96f, 0.96f},
@@ -103,7 +118,8 @@ ColorRGB runColor(const Scene& scene, size_t run) {
   if (chosen) return *chosen;
   switch (scene.view.sphereSurface.colorBy) {
     case SphereColoring::Curvature: return offCurvature[run % std::size(offCurvature)];
-    case SphereColoring::Bending: return offBending[run % std::size(offBending)];
+    case SphereColoring::Bending:
+    case SphereColoring::Distance: return offBending[run % std::size(offBending)];
     case SphereColoring::None: break;
   }
   return palette[run % std::size(palette)];
@@ -118,7 +134,12 @@ FrameBuilder::FrameBuilder(const Scene& scene, const std::vector<InitialState>& 
       frameCount_(scene.frameCount()),
       history_(runs_.size()),
       divergence_(runs_.empty() ? 0 : runs_.size() - 1),
-      sphereDecoration_(makeSphereDecoration(scene.chain, scene.view.sphereSurface)),
+      sphereDecoration_(makeSphereDecoration(scene.chain, scene.view.sphereSurface, distancePoint(scene, starts),
+                                             !scene.distanceFrom)),
+      title_(fillTitlePlaceholders(scene.title, scene,
+                                   sphereDecoration_ && sphereDecoration_->distance
+                                       ? std::optional<double>(sphereDecoration_->distance->injectivityRadius)
+                                       : std::nullopt)),
       overview_(overviewMotion(scene, starts, cancelled)),
 
       cameraDirections_(planDirectedCamera(scene, starts, view_, cancelled)) {
@@ -277,7 +298,7 @@ FrameState FrameBuilder::snapshot(int k) const {
   state.index = k;
   state.time = scene_.frameTime(k);
   state.duration = scene_.duration;
-  state.title = scene_.title;
+  state.title = title_;
   state.rods = scene_.chain.rods;
   state.viewSpace = view_.space();
   state.sphereDecoration = sphereDecoration_;

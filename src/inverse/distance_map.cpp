@@ -227,14 +227,16 @@ double circularDifference(double a, double b) {
 DistanceMap distanceMap(const ConstrainedModel& model, const SphereProjection& project, const Eigen::VectorXd& point,
                         const DistanceMapOptions& options) {
   if (model.freedom() != 2) throw std::invalid_argument("distanceMap: the configuration space must be a surface");
-  if (options.grid < 8 || options.directions < 8)
+  const int columns = options.columns > 0 ? options.columns : options.grid;
+  if (options.grid < 8 || columns < 8 || options.directions < 8)
     throw std::invalid_argument("distanceMap: at least an 8 x 8 grid and 8 directions");
   const GeodesicFlow flow(model, options.tolerance);
   DistanceMap map;
   map.basis = model.tangentBasis(point);
   map.point = project(point);
   Raster raster;
-  raster.rows = raster.cols = options.grid;
+  raster.rows = options.grid;
+  raster.cols = columns;
   for (int i = 0; i < raster.rows; ++i) {
     map.phis.push_back(-kPi / 2 + kPi * i / (raster.rows - 1));
     for (int j = 0; j < raster.cols; ++j) {

@@ -24,6 +24,7 @@ using SphereProjection = std::function<Eigen::Vector3d(const Eigen::VectorXd& q)
 
 struct DistanceMapOptions {
   int grid = 256;             // grid x grid nodes of uniformChartGrid: phi pole to pole, t periodic
+  int columns = 0;            // nodes in t if not `grid` (the sphere panel: 2 (grid - 1), square cells)
   int directions = 128;       // the first fan, refined by bisection where neighbours separate
   double tolerance = 1e-10;   // the integrator's
   double lengthCap = 40;      // no geodesic is followed further (one that meets no conjugate point)

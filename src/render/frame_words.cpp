@@ -129,7 +129,7 @@ std::string valueAxisWords(PlotKind kind) {
   return "";
 }
 
-std::vector<std::string> fieldCaptions(SphereColoring coloring) {
+std::vector<std::string> fieldCaptions(SphereColoring coloring, bool fromStart) {
   switch (coloring) {  // every colouring, no default
     case SphereColoring::None:
       return {""};
@@ -137,8 +137,29 @@ std::vector<std::string> fieldCaptions(SphereColoring coloring) {
       return {"K, Gaussian curvature", "K, curvature", "K"};
     case SphereColoring::Bending:
       return {"|II|\u00b2, bending", "|II|\u00b2"};
+    case SphereColoring::Distance:  // the kinetic length: seconds of a unit-speed motion
+      if (fromStart) return {"distance from the start (s at unit speed)", "distance from the start (s)", "distance (s)"};
+      return {"distance from the marked shape (s at unit speed)", "distance from the mark (s)", "distance (s)"};
   }
   return {""};
+}
+
+std::string curveName(SphereCurveKind kind) {
+  switch (kind) {  // every kind, no default
+    case SphereCurveKind::ConjugateLocus:
+      return "conjugate locus";
+    case SphereCurveKind::CutLocus:
+      return "cut locus";
+    case SphereCurveKind::ClosedGeodesic:
+      return "closed geodesic";
+  }
+  return "";
+}
+
+std::string injectivityNote(double radius, bool fromStart) {
+  char text[96];
+  std::snprintf(text, sizeof text, "from the %s; injectivity radius %.3g", fromStart ? "start" : "marked shape", radius);
+  return text;
 }
 
 std::vector<std::string> ellipseCaptions() {

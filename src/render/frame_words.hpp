@@ -24,11 +24,16 @@ std::string valueAxisWords(PlotKind kind);           // what the y axis shows, i
 
 // Forms, longest first.
 std::vector<std::string> plotTitles(const PlotFrame& plot);       // e.g. "relative energy error |E − E₀| / E₀"
-std::vector<std::string> fieldCaptions(SphereColoring coloring);  // the colour bar's, e.g. "K, Gaussian curvature"
-std::vector<std::string> ellipseCaptions();                       // the line explaining the stiffness ellipses
+// The colour bar's, e.g. "K, Gaussian curvature"; the distance's from the start or from a point the scene names.
+std::vector<std::string> fieldCaptions(SphereColoring coloring, bool fromStart = true);
+std::vector<std::string> ellipseCaptions();            // the line explaining the stiffness ellipses
 std::vector<std::string> chartPoleLabels(bool north);  // "chart pole φ = 90°", "φ = 90°", "N" (south: −90°, "S")
 std::vector<std::string> seamLabels();                 // "seam t = ±π/2", "seam"
 std::vector<std::string> scaleBreakWords();  // "scale changes at", "scale break at": before a two-slope bar's zero
+std::string curveName(SphereCurveKind kind);  // a curve's label on the sphere, e.g. "cut locus"
+// Below the distance's colour bar (which may have room for "distance (s)" alone): from where, and the injectivity
+// radius, e.g. "from the start; injectivity radius 2.09".
+std::string injectivityNote(double radius, bool fromStart);
 
 // The first of `forms` no wider than `width`; if none is, the last shortened at a word with an ellipsis.
 std::string fittedForm(const FontAtlas& font, const std::vector<std::string>& forms, TextSize size, float width);

@@ -19,6 +19,9 @@ inline constexpr Rgba gridLight{0.86f, 0.85f, 0.82f, 1};
 inline constexpr Rgba stopRed{0.70f, 0.12f, 0.10f, 1};
 inline constexpr Rgba nowCursor{0.30f, 0.29f, 0.31f, 0.55f};  // the plots' "now" line at the frame's time
 inline constexpr Rgba stoppedGrey{0.60f, 0.60f, 0.60f, 1};     // a stopped chain in the linkage panel
+// The distance colouring's loci on viridis: the conjugate locus magenta, the cut locus white (each on a dark halo).
+inline constexpr Rgba conjugateLocus{0.88f, 0.22f, 0.62f, 1};
+inline constexpr Rgba cutLocus{1.00f, 1.00f, 1.00f, 1};
 
 inline Rgba withAlpha(Rgba c, float a) { return {c.r, c.g, c.b, a}; }
 

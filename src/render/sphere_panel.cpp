@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -622,6 +623,84 @@ void drawSeams(const PanelContext& context, const SphereCamera& camera, LabelPla
               placed, front);
 }
 
+// The distance colouring's loci and the closed geodesics (frame_state.hpp SphereCurve) riding on the sphere: a locus
+// a line of its colour on a thin dark halo, a closed geodesic a faint thin ink line; what the sphere hides dashed and
+// faint (the far-side convention), each kind named once where it faces the eye most. A point the scene names (not
+// the start, which the path's bar marks) gets an ink ring over the paths (faint behind the sphere) and a label.
+void drawLoci(const SphereDecoration& decoration, const PanelContext& context, const SphereCamera& camera,
+              LabelPlacer& placer, std::vector<PixelRect>& placed, ShapeBatch& surface, ShapeBatch& back,
+              ShapeBatch& labels) {
+  const Placement onSurface{true, 0.006};
+  const float halfWidth = std::max(1.1f * markUnit(context.unit), 0.0021f * context.rect.height);
+  const float ghostHalfWidth = 0.6f * markUnit(context.unit);
+  const V3 eye = camera.eye();
+  const double eyeDistance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
+  struct Named {
+    double facing = 0.15;  // only a point facing the eye this much is named
+    std::optional<P2> at;
+  };
+  std::map<SphereCurveKind, Named> names;
+  for (const SphereCurve& curve : decoration.curves) {
+    const bool faint = curve.kind == SphereCurveKind::ClosedGeodesic;  // a guide under the runs, no halo
+    const Rgba color = curve.kind == SphereCurveKind::CutLocus         ? palette::cutLocus
+                       : curve.kind == SphereCurveKind::ConjugateLocus ? palette::conjugateLocus
+                                                                       : palette::withAlpha(palette::ink, 0.6f);
+    const Rgba halo = palette::withAlpha(palette::ink, faint ? 0.0f : 0.55f);
+    std::vector<PolylinePoint> line, under, hidden;
+    auto flush = [&] {
+      surface.polyline(under);
+      surface.polyline(line);
+      back.dashedPolyline(hidden, kGhostDash * markUnit(context.unit), kGhostGap * markUnit(context.unit));
+      line.clear();
+      under.clear();
+      hidden.clear();
+    };
+    bool wasHidden = false;
+    for (const Vec3& point : curve.points) {
+      const V3 p = onSurface.place(point);
+      if (!drawable(point) || !camera.inFront(p)) {
+        flush();
+        continue;
+      }
+      const P2 at = camera.project(p);
+      const bool behind = behindSphere(camera, p);
+      if (behind != wasHidden) {  // across the limb: the dashes reach the solid line
+        if (behind && !line.empty()) hidden.push_back({line.back().at, ghostHalfWidth, ghost(color), {}});
+        if (!behind) hidden.push_back({at, ghostHalfWidth, ghost(color), {}});
+        flush();
+      }
+      wasHidden = behind;
+      if (behind) {
+        hidden.push_back({at, ghostHalfWidth, ghost(color), {}});
+        continue;
+      }
+      line.push_back({at, faint ? 0.85f * halfWidth : halfWidth, color, onSurface.world(p)});
+      if (!faint) under.push_back({at, halfWidth + 0.7f * markUnit(context.unit), halo, onSurface.world(p)});
+      placer.avoidPoint(at);
+      const double facing = (p.x * eye.x + p.y * eye.y + p.z * eye.z) / eyeDistance;
+      Named& name = names[curve.kind];
+      if (facing > name.facing) {
+        name.facing = facing;
+        name.at = at;
+      }
+    }
+    flush();
+  }
+  if (decoration.distance && !decoration.distance->fromStart) {
+    const Vec3& x = decoration.distance->point;
+    const V3 p = onSurface.place(x);
+    if (camera.inFront(p)) {
+      const bool behind = behindSphere(camera, p);
+      const float radius = std::max(5 * markUnit(context.unit), 0.012f * context.rect.height);
+      (behind ? back : labels).ring(camera.project(p), radius, (behind ? 0.6f : 1.2f) * markUnit(context.unit),
+                                    behind ? ghost(palette::ink) : palette::ink);  // over the paths
+      drawLabel("distance measured from here", camera.project(p), behind, context, placer, placed, labels);
+    }
+  }
+  for (const auto& [kind, name] : names)
+    if (name.at) drawLabel(curveName(kind), *name.at, false, context, placer, placed, labels);
+}
+
 // A family on the sphere explained where no text panel does it: the run, its members and their wavefront, in the
 // panel's bottom-left corner (wrapped to at most two lines; the ball view's caption takes that corner there).
 void captionFamilies(const PanelContext& context, float width, ShapeBatch& batch) {
@@ -684,8 +763,13 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
       const float gap = context.font.lineHeight(TextSize::Small);
       const PixelRect bar{context.rect.x + context.rect.width - colorBarStrip(context.rect), context.rect.y + pad,
                           colorBarStrip(context.rect) - pad - gap, 0.8f * context.rect.height};
-      const std::string caption = fittedForm(context.font, fieldCaptions(field.coloring), TextSize::Small, bar.width);
-      drawColorBar(scaleOf(field), caption, field.diverging ? "each sign on its own scale" : "", bar, context.font, batch);
+      const bool fromStart = !decoration->distance || decoration->distance->fromStart;
+      const std::string caption =
+          fittedForm(context.font, fieldCaptions(field.coloring, fromStart), TextSize::Small, bar.width);
+      const std::string note = field.diverging       ? "each sign on its own scale"
+                               : decoration->distance ? injectivityNote(decoration->distance->injectivityRadius, fromStart)
+                                                      : "";
+      drawColorBar(scaleOf(field), caption, note, bar, context.font, batch);
       colorBarBox = bar;
     }
   }
@@ -725,9 +809,11 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   }
   for (const P2& p : pathPoints) placer.avoidPoint(p);
   // Labels over the paths (never struck through), placed clear of the balls, the paths and each other.
-  ShapeBatch labelLayer;
+  ShapeBatch labelLayer, loci;  // the loci ride on the sphere, under every path
   if (decoration && decoration->seam) drawSeams(context, camera, placer, labels, back, labelLayer);
+  if (decoration && !decoration->curves.empty()) drawLoci(*decoration, context, camera, placer, labels, loci, back, labelLayer);
   if (space == ViewSpace::Sphere) labelChartPoles(context, camera, placer, labels, back, labelLayer);
+  batch.append(loci);
   batch.append(back);
   batch.append(front);
   batch.append(labelLayer);

@@ -44,6 +44,10 @@ struct Scene {
   std::vector<RunSpec> runs;
   OutputSettings output;
   ViewSettings view;
+  // view.sphere.distance_from: the configuration the distance colouring is measured from as the scene names it
+  // (empty: the first run's start); the commands resolve it into its sphere point (cli/motion_starts.hpp).
+  std::optional<ConfigurationSpec> distanceFrom;
+  Eigen::VectorXd distancePoint;
 
   int frameCount() const { return static_cast<int>(sl::frameCount(duration, output.fps)); }
   double frameTime(int frame) const { return sl::frameTime(frame, output.fps); }

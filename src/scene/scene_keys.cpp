@@ -63,6 +63,11 @@ std::vector<SceneKey> describeKeys() {
   const double rgbMax = 1;
   const json point = {{"type", "array"}, {"items", {{"type", "number"}}}, {"minItems", 2}, {"maxItems", 2}};
   const json points = {{"type", "array"}, {"items", point}};
+  const json configuration = {{"type", "object"},
+                              {"properties",
+                               {{"coords", {{"type", "array"}, {"items", {{"type", "number"}}}}},
+                                {"hinges", described(points, "n-1 hinge positions [x, y]")}}},
+                              {"additionalProperties", false}};
   return {
       {.path = "",
        .type = KeyType::Object,
@@ -87,7 +92,8 @@ std::vector<SceneKey> describeKeys() {
        .meaning = "shown in the frames; `{L}`, `{n}`, `{name}`, `{method}` and `{integrator}` (the first run's) are "
                   "filled in from the scene, so `--set linkage.L=3.2` shows; `{runs[i].length}` and "
                   "`{runs[i].stability}` give a found motion's length and stability (`initial.connect`, "
-                  "`initial.periodic`)",
+                  "`initial.periodic`); `{injectivity_radius}` the injectivity radius of the distance colouring's "
+                  "point (`view.sphere.distance_from`)",
        .allowed = "any string",
        .defaultText = "`name`"},
       {.path = "linkage",
@@ -674,10 +680,33 @@ std::vector<SceneKey> describeKeys() {
        .summary = "colour the sphere (4 rods)",
        .target = "SphereSurfaceSpec::colorBy",
        .meaning = "colour the sphere (4 rods) by `curvature` (Gaussian curvature K, a diverging map centred at 0, "
-                  "each sign on its own scale) or `bending` (\\|II\\|², viridis), with a colour bar; computed once, "
-                  "exactly (docs/geometry.md)",
-       .allowed = "`none`, `curvature`, `bending`",
+                  "each sign on its own scale), `bending` (\\|II\\|², viridis) or `distance` (the kinetic distance "
+                  "from `distance_from`, viridis, with its conjugate locus and cut locus drawn and named), with a "
+                  "colour bar; computed once per render (docs/geometry.md)",
+       .allowed = "`none`, `curvature`, `bending`, `distance`",
        .names = namesOf(kSphereColorings)},
+      {.path = "view.sphere.distance_from",
+       .type = KeyType::Custom,
+       .summary = "the point the distance colouring is measured from: \"start\" or a configuration",
+       .target = "Scene::distanceFrom",
+       .meaning = "with `color_by` `distance`: the configuration the distance is measured from, `\"start\"` (the "
+                  "first run's start, e.g. a fan's centre) or `{\"coords\": [...]}` (chart 0) or `{\"hinges\": [[x, "
+                  "y], ...]}` (marked on the sphere); the loci and `{injectivity_radius}` in the title are this "
+                  "point's (the scene's linkage)",
+       .allowed = "`\"start\"` or a configuration; hinges within 0.01 of the rod constraints",
+       .defaultText = "`\"start\"`",
+       .schema = json{{"oneOf", json::array({json{{"enum", {"start"}}}, configuration})}}},
+      {.path = "view.sphere.distance_from.coords",
+       .type = KeyType::Numbers,
+       .summary = "chart 0 coordinates, n-2 numbers",
+       .target = "ConfigurationSpec::coords",
+       .meaning = "-"},
+      {.path = "view.sphere.distance_from.hinges",
+       .type = KeyType::Custom,
+       .summary = "n-1 hinge positions [x, y]",
+       .target = "ConfigurationSpec::hinges",
+       .meaning = "-",
+       .schema = points},
       {.path = "view.sphere.stiffness",
        .type = KeyType::Boolean,
        .fallback = view.sphereSurface.stiffness,
@@ -693,6 +722,14 @@ std::vector<SceneKey> describeKeys() {
        .target = "SphereSurfaceSpec::seam",
        .meaning = "draw the seams t = ±π/2 on the sphere (4 rods), where the published closed-form metric divides by "
                   "zero, as dashed red meridians, the one facing the eye named",
+       .allowed = "true/false"},
+      {.path = "view.sphere.closed_geodesics",
+       .type = KeyType::Boolean,
+       .fallback = view.sphereSurface.closedGeodesics,
+       .summary = "draw the simple closed geodesics faintly (4 rods)",
+       .target = "SphereSurfaceSpec::closedGeodesics",
+       .meaning = "draw the simple closed geodesics of the scene's linkage (those `linkage periodic` lists as simple) "
+                  "as faint curves on the sphere (4 rods), found once per render",
        .allowed = "true/false"},
       {.path = "view.camera",
        .type = KeyType::Object,

@@ -214,10 +214,10 @@ void readHingeStart(const JsonObject& initial, RodCount rods, InitialSpec& spec,
   }
 }
 
-// A configuration named by "coords" (chart 0, n-2 numbers) or "hinges" (n-1 points), e.g. a connect start's
-// "from" and "to". Whether hinges lie on the rod constraints is decided when the motion is resolved.
-ConfigurationSpec readConfiguration(const JsonObject& parent, const std::string& key, RodCount rods,
-                                    std::vector<SceneProblem>& problems) {
+}  // namespace
+
+ConfigurationSpec detail::readConfiguration(const JsonObject& parent, const std::string& key, RodCount rods,
+                                            std::vector<SceneProblem>& problems) {
   ConfigurationSpec spec;
   if (!parent.has(key)) {
     parent.reportMissing(key, "a configuration: {\"coords\": [...]} (chart 0, n-2 numbers) or {\"hinges\": [[x, y], "
@@ -241,6 +241,10 @@ ConfigurationSpec readConfiguration(const JsonObject& parent, const std::string&
     spec.coords = *coords;
   return spec;
 }
+
+namespace {
+
+using detail::readConfiguration;
 
 // A start that names a found motion: "connect" (a geodesic from one configuration to another) or "periodic" (a
 // closed geodesic), by its index in the list the inverse problems give. Resolved by the commands before any run

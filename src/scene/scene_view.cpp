@@ -213,19 +213,40 @@ void readSphereSurface(const JsonObject& view, Scene& scene, bool rodsKnown, std
   }
   surface.stiffness = object.boolean("stiffness").value_or(surface.stiffness);
   surface.seam = object.boolean("seam").value_or(surface.seam);
+  surface.closedGeodesics = object.boolean("closed_geodesics").value_or(surface.closedGeodesics);
+  scene.distanceFrom.reset();
+  if (object.has("distance_from")) {
+    const nlohmann::json& from = *object.member("distance_from");
+    if (surface.colorBy != SphereColoring::Distance)
+      object.report("distance_from", "is measured only for the distance colouring; expected color_by \"distance\" "
+                                     "with it");
+    else if (from.is_object())
+      scene.distanceFrom = readConfiguration(object, "distance_from", rodsKnown ? std::optional<int>(scene.chain.rods)
+                                                                                : std::nullopt, problems);
+    else if (!from.is_string() || from.get<std::string>() != "start")
+      object.report("distance_from", "found " + from.dump() + "; expected \"start\" or a configuration: "
+                                     "{\"coords\": [...]} (chart 0, n-2 numbers) or {\"hinges\": [[x, y], ...]} "
+                                     "(n-1 points)");
+  }
   if (rodsKnown && scene.chain.isSlack() && surface.decorated()) {
-    object.report(surface.colorBy != SphereColoring::None ? "color_by" : surface.stiffness ? "stiffness" : "seam",
+    object.report(surface.colorBy != SphereColoring::None ? "color_by"
+                  : surface.stiffness                      ? "stiffness"
+                  : surface.seam                           ? "seam"
+                                                           : "closed_geodesics",
                   "a slack chain (L <= n-2) has no configuration sphere to colour or decorate");
     surface = {};
+    scene.distanceFrom.reset();
   }
   if (rodsKnown && scene.chain.rods != 4 && surface.decorated()) {
     const std::string why = "found " + std::to_string(scene.chain.rods) +
-                            " rods; curvature, bending and stiffness are drawn for 4 rods only (the configuration "
-                            "space is then a surface, S^2)";
+                            " rods; curvature, bending, distance, stiffness and closed geodesics are drawn for 4 "
+                            "rods only (the configuration space is then a surface, S^2)";
     if (surface.colorBy != SphereColoring::None) object.report("color_by", why);
     if (surface.stiffness) object.report("stiffness", why);
     if (surface.seam) object.report("seam", why);
+    if (surface.closedGeodesics) object.report("closed_geodesics", why);
     surface = {};
+    scene.distanceFrom.reset();
   }
 }
 

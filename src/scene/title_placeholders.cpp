@@ -17,7 +17,8 @@ std::string shortNumber(double value) {
 
 }  // namespace
 
-std::string fillTitlePlaceholders(const std::string& title, const Scene& scene) {
+std::string fillTitlePlaceholders(const std::string& title, const Scene& scene,
+                                  std::optional<double> injectivityRadius) {
   std::vector<std::pair<std::string, std::string>> values{
       {"{L}", shortNumber(scene.chain.baseLength)},
       {"{n}", std::to_string(scene.chain.rods)},
@@ -36,6 +37,11 @@ std::string fillTitlePlaceholders(const std::string& title, const Scene& scene) 
     std::snprintf(length, sizeof length, "%.4f", motion->length);
     values.push_back({run + "length}", length});
     if (!motion->stability.empty()) values.push_back({run + "stability}", motion->stability});
+  }
+  if (injectivityRadius) {
+    char radius[32];
+    std::snprintf(radius, sizeof radius, "%.4f", *injectivityRadius);
+    values.push_back({"{injectivity_radius}", radius});
   }
   std::string text;
   for (std::size_t i = 0; i < title.size();) {

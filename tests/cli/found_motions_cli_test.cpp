@@ -205,9 +205,9 @@ TEST(FoundMotions, RefusalsNameTheJsonPath) {
 }
 
 // The shipped scenes: each renders, and frames 10-12 rendered alone are those frames of the whole render (the
-// motions are found before the first frame, the same in every shard), as is a still at frame 11's time.
+// motions and cut-locus.json's distance map are found before the first frame, the same in every shard).
 TEST(FoundMotions, ShippedScenesRenderTheSameFramesInShards) {
-  for (const char* name : {"connect.json", "periodic.json"}) {
+  for (const char* name : {"connect.json", "periodic.json", "cut-locus.json"}) {
     SCOPED_TRACE(name);
     TempFolder folder;
     const std::string scene = shippedScene(name);
@@ -222,6 +222,41 @@ TEST(FoundMotions, ShippedScenesRenderTheSameFramesInShards) {
     EXPECT_FALSE(fs::exists(folder.path() / "part" / "frame_00013.png"));
     EXPECT_NE(readFile(folder.path() / "whole" / "frame_00010.png"), readFile(folder.path() / "whole" / "frame_00011.png"));
   }
+}
+
+// view.sphere.distance_from: a configuration by coords or by hinges is placed on the rod constraints when the scene
+// is read (one rule with a connect start's), so both name the same point; a still shows the same sphere for both,
+// and another one when the distance is measured from the start instead.
+TEST(FoundMotions, DistanceFromCoordsAndFromHingesNameTheSamePoint) {
+  json byCoords = sceneOf({{{"coords", {0.3, 0.2}}, {"velocity", {0.4, 0.5}}}});
+  byCoords["duration"] = 1;
+  byCoords["view"] = {{"sphere", {{"color_by", "distance"}, {"distance_from", {{"coords", {-0.4, 1.9}}}}}}};
+  const Scene coords = resolvedScene(byCoords);
+  const Eigen::Matrix2Xd hinges = hingesAt(coords.chain, -0.4, 1.9);
+  const Eigen::VectorXd expected = spherePointFromHinges(coords.chain, hinges);
+  ASSERT_EQ(coords.distancePoint.size(), 3);
+  EXPECT_LT((coords.distancePoint - expected).norm(), 1e-12);
+  json byHinges = byCoords;
+  json points = json::array();
+  for (Eigen::Index k = 0; k < hinges.cols(); ++k) points.push_back({hinges(0, k) + 2e-4, hinges(1, k) - 1e-4});
+  byHinges["view"]["sphere"]["distance_from"] = {{"hinges", points}};
+  EXPECT_LT((resolvedScene(byHinges).distancePoint - expected).norm(), 2e-3);
+
+  TempFolder folder;
+  json exact = byHinges;
+  exact["view"]["sphere"]["distance_from"]["hinges"] = json::array();
+  for (Eigen::Index k = 0; k < hinges.cols(); ++k)
+    exact["view"]["sphere"]["distance_from"]["hinges"].push_back({hinges(0, k), hinges(1, k)});
+  json fromStart = byCoords;
+  fromStart["view"]["sphere"]["distance_from"] = "start";
+  for (const auto& [name, scene] : {std::pair<std::string, json>{"coords", byCoords}, {"hinges", exact}, {"start", fromStart}}) {
+    writeFile(folder.path() / (name + ".json"), scene.dump());
+    const ProcessResult still = runLinkage(
+        {"still", name + ".json", "--time", "0.5", "--size", "320x180", "--out", name + ".png", "--quiet"}, folder.path());
+    ASSERT_EQ(still.code, 0) << still.err;
+  }
+  EXPECT_EQ(readFile(folder.path() / "coords.png"), readFile(folder.path() / "hinges.png"));
+  EXPECT_NE(readFile(folder.path() / "coords.png"), readFile(folder.path() / "start.png"));
 }
 
 }  // namespace

@@ -533,3 +533,111 @@ TEST(SphereDecoration, CurvatureFieldMatchesTheGeometryAndEllipsesAreTangent) {
 
 }  // namespace
 }  // namespace sl
+
+// view.sphere color_by distance: the field is the distance from the point, each curve is a locus of it.
+#include "inverse/connect.hpp"
+#include "linkage/chart.hpp"
+
+namespace sl {
+namespace {
+
+Eigen::VectorXd stackedAt(const Chain& chain, const Eigen::Vector3d& x) {
+  return ConstrainedModel::stack(hingePositionsAt(chain, x));
+}
+
+// The shortest motions from `from` to `to` by shooting (inverse/connect.hpp), independent of the distance map's
+// rasterised fan: their lengths, shortest first.
+std::vector<double> connectionLengths(const Chain& chain, const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
+  ConnectOptions options;
+  options.discreteRoute = false;
+  std::vector<double> lengths;
+  for (const Connection& c :
+       findConnections(ConstrainedModel::fromChain(chain), &chain, stackedAt(chain, from), stackedAt(chain, to), options))
+    lengths.push_back(c.length);
+  return lengths;
+}
+
+TEST(SphereDecoration, DistanceFieldIsTheShortestMotionsLengthAndTheCutLocusWhereTwoAreShortest) {
+  const Chain chain = Chain::uniform(4, 3.0);
+  const Eigen::Vector3d point = Eigen::Vector3d(0.936, 0.190, 0.296).normalized();
+  EXPECT_THROW(makeSphereDecoration(chain, {SphereColoring::Distance}), std::invalid_argument);
+  const auto decoration = makeSphereDecoration(chain, {SphereColoring::Distance}, point, true);
+  ASSERT_NE(decoration, nullptr);
+  ASSERT_TRUE(decoration->field && decoration->distance);
+  const SphereField& field = *decoration->field;
+  EXPECT_EQ(field.coloring, SphereColoring::Distance);
+  EXPECT_FALSE(field.diverging);
+  EXPECT_EQ(field.phiCount, kSphereFieldRows);
+  EXPECT_EQ(field.tCount, 2 * kSphereFieldRows);
+  EXPECT_EQ(field.min, 0.0);
+  EXPECT_NEAR((Eigen::Vector3d(decoration->distance->point.x, decoration->distance->point.y,
+                               decoration->distance->point.z) - point).norm(), 0.0, 1e-9);
+  EXPECT_TRUE(decoration->distance->fromStart);
+  // A cell's value is the length of the shortest motion from the point to the cell's centre.
+  const double pi = std::acos(-1.0);
+  auto centre = [&](int i, int j) {
+    const double phi = -pi / 2 + (i + 0.5) * pi / field.phiCount, t = -pi + (j + 0.5) * 2 * pi / field.tCount;
+    return Eigen::Vector3d(std::cos(phi) * std::cos(t), std::cos(phi) * std::sin(t), std::sin(phi));
+  };
+  for (const auto& [i, j] : {std::pair{70, 140}, {40, 60}, {100, 200}, {64, 10}}) {
+    SCOPED_TRACE(std::to_string(i) + ", " + std::to_string(j));
+    const std::vector<double> lengths = connectionLengths(chain, point, centre(i, j));
+    ASSERT_FALSE(lengths.empty());
+    EXPECT_NEAR(field.values[static_cast<std::size_t>(i * field.tCount + j)], lengths.front(), 2e-2);
+    EXPECT_LE(field.values[static_cast<std::size_t>(i * field.tCount + j)], field.max);
+  }
+  // Both loci are drawn; every point on the unit sphere. In the middle of the longest cut-locus curve two motions of
+  // (nearly) the same length are the shortest; beside the point, one is much shorter than any other.
+  const SphereCurve* cut = nullptr;
+  bool conjugate = false;
+  for (const SphereCurve& curve : decoration->curves) {
+    for (const Vec3& p : curve.points) EXPECT_NEAR(std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z), 1.0, 1e-12);
+    conjugate = conjugate || curve.kind == SphereCurveKind::ConjugateLocus;
+    if (curve.kind == SphereCurveKind::CutLocus && (!cut || curve.points.size() > cut->points.size())) cut = &curve;
+  }
+  EXPECT_TRUE(conjugate);
+  ASSERT_NE(cut, nullptr);
+  const Vec3 middle = cut->points[cut->points.size() / 2];
+  const std::vector<double> atCut = connectionLengths(chain, point, {middle.x, middle.y, middle.z});
+  ASSERT_GE(atCut.size(), 2u);
+  EXPECT_NEAR(atCut[0], atCut[1], 3e-2) << "two shortest motions meet on the cut locus";
+  EXPECT_GE(atCut[0], decoration->distance->injectivityRadius - 1e-6);
+  const std::vector<double> near = connectionLengths(chain, point, centre(70, 140));
+  if (near.size() >= 2) {
+    EXPECT_GT(near[1] - near[0], 0.3);
+  }
+}
+
+}  // namespace
+}  // namespace sl
+
+namespace sl {
+namespace {
+
+// view.sphere.closed_geodesics: the three simple closed geodesics of the 4-rod chain at L = 3, each a closed curve
+// on the unit sphere; the 5-rod refusal is the loader's (tests/data/scenes/bad/closed_geodesics_five_rods.json).
+TEST(SphereDecoration, ClosedGeodesicsAreTheThreeSimpleOnesEachClosed) {
+  const Chain chain = Chain::uniform(4, 3.0);
+  SphereSurfaceSpec spec;
+  spec.closedGeodesics = true;
+  const auto decoration = makeSphereDecoration(chain, spec);
+  ASSERT_NE(decoration, nullptr);
+  EXPECT_FALSE(decoration->field);
+  ASSERT_EQ(decoration->curves.size(), 3u);
+  for (const SphereCurve& curve : decoration->curves) {
+    EXPECT_EQ(curve.kind, SphereCurveKind::ClosedGeodesic);
+    ASSERT_GT(curve.points.size(), 500u);
+    const Vec3 &a = curve.points.front(), &b = curve.points.back();
+    EXPECT_LT(std::hypot(a.x - b.x, a.y - b.y, a.z - b.z), 1e-6) << "closes after one period";
+    double longest = 0;  // sampled densely: no chord longer than a few degrees
+    for (std::size_t k = 1; k < curve.points.size(); ++k) {
+      const Vec3 &p = curve.points[k - 1], &q = curve.points[k];
+      longest = std::max(longest, std::hypot(p.x - q.x, p.y - q.y, p.z - q.z));
+      EXPECT_NEAR(std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z), 1.0, 1e-12);
+    }
+    EXPECT_LT(longest, 0.06);
+  }
+}
+
+}  // namespace
+}  // namespace sl

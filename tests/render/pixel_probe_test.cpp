@@ -272,29 +272,41 @@ TEST_F(PixelProbe, ColouredSphereShowsTheFieldWhereItIs) {
   EXPECT_TRUE(isCream(plain)) << plain.r << " " << plain.g << " " << plain.b;
 }
 
-// Faithful colour: the coloured sphere's pixels carry colours of its colour bar (the light darkens them only a
-// little and adds no highlight). A field rising smoothly from south to north over the whole map; of the sphere's
-// pixels well inside its outline and off the grid lines, at least 95% lie within 24 levels (RGB distance) of some colour of the bar.
-TEST_F(PixelProbe, ColouredSphereKeepsTheColoursOfItsBar) {
-  auto decoration = std::make_shared<SphereDecoration>();
-  SphereField field{SphereColoring::Curvature, true, 32, 64, {}, -1.0, 2.0};
-  for (int i = 0; i < field.phiCount; ++i)
-    for (int j = 0; j < field.tCount; ++j) field.values.push_back(float(-1.0 + 3.0 * (i + 0.5) / field.phiCount));
-  decoration->field = field;
-  FrameState colored = probeFrame();
-  colored.runs.clear();
-  colored.sphereDecoration = decoration;
-  ViewSettings side = settings;
-  side.camera.viewDirection = {0.6, 0.3, 0.4};
-  Renderer sideRenderer(side, {640, 360});
-  const Image picture = sideRenderer.render(colored);
+// The camera of a 640 x 360 frame's sphere panel when the sphere is coloured (framed left of the colour bar).
+SphereCamera colouredSphereCamera(const ViewSettings& side, double time) {
   const auto rects = layoutPanels(side.panels, 640, 360);
   PixelRect rect{};
   for (std::size_t i = 0; i < side.panels.size(); ++i)
     if (side.panels[i].kind == PanelKind::Sphere) rect = rects[i];
   rect.width -= std::min(0.24f * rect.width, 0.45f * rect.height);
-  const SphereCamera sideCamera(side.camera, colored.time, rect);
-  const ColorScale scale{field.min, field.max, true};
+  return SphereCamera(side.camera, time, rect);
+}
+
+// Faithful colour: the coloured sphere's pixels carry colours of its colour bar (the light darkens them only a
+// little and adds no highlight). A field rising smoothly from south to north over the whole map; of the sphere's
+// pixels well inside its outline and off the grid lines, at least 95% lie within 24 levels (RGB distance) of some colour of the bar.
+// The distance colouring (a sequential map) likewise.
+class FaithfulColour : public PixelProbe, public ::testing::WithParamInterface<SphereColoring> {};
+
+TEST_P(FaithfulColour, ColouredSphereKeepsTheColoursOfItsBar) {
+  auto decoration = std::make_shared<SphereDecoration>();
+  const bool diverging = GetParam() == SphereColoring::Curvature;
+  SphereField field{GetParam(), diverging, 32, 64, {}, diverging ? -1.0 : 0.0, 2.0};
+  for (int i = 0; i < field.phiCount; ++i)
+    for (int j = 0; j < field.tCount; ++j)
+      field.values.push_back(float(field.min + (field.max - field.min) * (i + 0.5) / field.phiCount));
+  decoration->field = field;
+  if (!diverging) decoration->distance = SphereDistance{{0, 0, 1}, true, 1.5};
+  FrameState colored = probeFrame();
+  colored.runs.clear();
+  colored.sphereDecoration = decoration;
+  ViewSettings side = settings;
+  // Both poles on the outline: their labels (on pads of the background, over the colours on purpose) stay there.
+  side.camera.viewDirection = {1.0, 0.3, 0.0};
+  Renderer sideRenderer(side, {640, 360});
+  const Image picture = sideRenderer.render(colored);
+  const SphereCamera sideCamera = colouredSphereCamera(side, colored.time);
+  const ColorScale scale{field.min, field.max, diverging};
   std::vector<Rgba> bar;
   for (int k = 0; k <= 512; ++k) bar.push_back(scale.colorAt(k / 512.0));
   int probed = 0, faithful = 0;
@@ -379,6 +391,56 @@ TEST(ColorBarPixels, SmoothAt4KWithAGapFromTheNeighbouringPanel) {
                 6)
           << "something drawn in the bar's gap at " << x << ", " << y;
     }
+}
+
+INSTANTIATE_TEST_SUITE_P(Colourings, FaithfulColour,
+                         ::testing::Values(SphereColoring::Curvature, SphereColoring::Distance));
+
+// The distance colouring's loci are drawn where the decoration puts them: a cut-locus point facing the eye is
+// covered by the cut locus's white (no colour of viridis is light in all three channels), a conjugate-locus point by its magenta; a locus point behind the sphere is not
+// drawn as in front (at most the far side's faint dashes).
+TEST_F(PixelProbe, LociAreDrawnWhereTheDistanceMapPutsThem) {
+  auto decoration = std::make_shared<SphereDecoration>();
+  SphereField field{SphereColoring::Distance, false, 32, 64, {}, 0.0, 3.0};
+  for (int i = 0; i < field.phiCount; ++i)
+    for (int j = 0; j < field.tCount; ++j) field.values.push_back(float(3.0 * (i + 0.5) / field.phiCount));
+  decoration->field = field;
+  decoration->distance = SphereDistance{{0, 0, -1}, true, 1.2};
+  SphereCurve cut{SphereCurveKind::CutLocus, {}}, conjugate{SphereCurveKind::ConjugateLocus, {}};
+  for (int k = -60; k <= 60; ++k) {
+    cut.points.push_back(onSphere(k * kDeg, 0));                 // the meridian facing the eye, and on behind
+    conjugate.points.push_back(onSphere(20 * kDeg, k * kDeg));  // a parallel above the equator
+  }
+  for (int k = 0; k <= 60; ++k) cut.points.push_back(onSphere(0, (120 + k) * kDeg));  // the far side
+  decoration->curves = {cut, conjugate};
+  FrameState colored = probeFrame();
+  colored.runs.clear();
+  colored.sphereDecoration = decoration;
+  ViewSettings side = settings;
+  side.camera.viewDirection = {1, 0, 0};
+  Renderer sideRenderer(side, {640, 360});
+  const Image picture = sideRenderer.render(colored);
+  const SphereCamera sideCamera = colouredSphereCamera(side, colored.time);
+  auto at = [&](const Vec3& p) {  // the pixel holding the point (the loci ride just above the surface)
+    const P2 q = sideCamera.project({1.006 * p.x, 1.006 * p.y, 1.006 * p.z});
+    return pixel(picture, int(q.x), int(q.y));
+  };
+  for (const double phi : {-40.0, -10.0, 35.0}) {
+    const Rgb8 c = at(onSphere(phi * kDeg, 0));
+    EXPECT_TRUE(c.r > 200 && c.g > 200 && c.b > 200) << "cut locus at phi " << phi << ": " << c.r << " " << c.g << " " << c.b;
+  }
+  for (const double t : {-40.0, 30.0}) {
+    const Rgb8 c = at(onSphere(20 * kDeg, t * kDeg));
+    EXPECT_TRUE(c.r > c.g + 80 && c.b > c.g + 40) << "conjugate locus at t " << t << ": " << c.r << " " << c.g << " " << c.b;
+  }
+  const Rgb8 hidden = at(onSphere(0, 150 * kDeg));
+  EXPECT_FALSE(hidden.r > 200 && hidden.g > 200 && hidden.b > 200) << hidden.r << " " << hidden.g << " " << hidden.b;
+  // Without the curves, the same pixels are the map's colours.
+  decoration->curves.clear();
+  const Image bare = sideRenderer.render(colored);
+  const P2 q = sideCamera.project({1.006 * std::cos(10 * kDeg), 0, -1.006 * std::sin(10 * kDeg)});
+  const Rgb8 c = pixel(bare, int(q.x), int(q.y));
+  EXPECT_FALSE(c.r > 200 && c.g > 200 && c.b > 200) << c.r << " " << c.g << " " << c.b;
 }
 
 }  // namespace
