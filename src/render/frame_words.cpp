@@ -3,7 +3,9 @@
 #include <cmath>
 
 #include <cctype>
+#include <algorithm>
 #include <cstdio>
+#include <sstream>
 
 #include "contracts/stop_reading.hpp"
 
@@ -138,8 +140,10 @@ std::vector<std::string> fieldCaptions(SphereColoring coloring, bool fromStart) 
     case SphereColoring::Bending:
       return {"|II|\u00b2, bending", "|II|\u00b2"};
     case SphereColoring::Distance:  // the kinetic length: seconds of a unit-speed motion
-      if (fromStart) return {"distance from the start (s at unit speed)", "distance from the start (s)", "distance (s)"};
-      return {"distance from the marked shape (s at unit speed)", "distance from the mark (s)", "distance (s)"};
+      if (fromStart)
+        return {"distance from the start (s at unit speed)", "distance from the start (s)", "distance (s)", "dist. (s)", "d (s)"};
+      return {"distance from the marked shape (s at unit speed)", "distance from the mark (s)", "distance (s)", "dist. (s)",
+              "d (s)"};
   }
   return {""};
 }
@@ -156,10 +160,11 @@ std::string curveName(SphereCurveKind kind) {
   return "";
 }
 
-std::string injectivityNote(double radius, bool fromStart) {
-  char text[96];
-  std::snprintf(text, sizeof text, "from the %s; injectivity radius %.3g", fromStart ? "start" : "marked shape", radius);
-  return text;
+std::vector<std::string> injectivityNotes(double radius, bool fromStart) {
+  char value[32];
+  std::snprintf(value, sizeof value, "%.3g", radius);
+  return {std::string("from the ") + (fromStart ? "start" : "marked shape") + "; injectivity radius " + value,
+          std::string("injectivity radius ") + value, std::string("inj. radius ") + value, std::string("inj. ") + value};
 }
 
 std::vector<std::string> ellipseCaptions() {
@@ -180,6 +185,28 @@ std::string fittedForm(const FontAtlas& font, const std::vector<std::string>& fo
   for (const std::string& form : forms)
     if (font.width(form, size) <= width) return form;
   return forms.empty() ? "" : font.fitted(forms.back(), size, width);
+}
+
+std::string fittedWrappedForm(const FontAtlas& font, const std::vector<std::string>& forms, TextSize size, float width,
+                              std::size_t lines) {
+  const auto wordsIn = [](const std::string& text) {
+    std::istringstream in(text);
+    std::size_t count = 0;
+    for (std::string word; in >> word;) ++count;
+    return count;
+  };
+  for (const std::string& form : forms) {
+    // Fits when wrapping into one line more than allowed needs no more, and every word is there uncut.
+    const std::vector<std::string> wrapped = font.wrapped(form, size, width, lines + 1);
+    std::size_t kept = 0;
+    bool cut = false;
+    for (const std::string& line : wrapped) {
+      kept += wordsIn(line);
+      cut = cut || line.find("\u2026") != std::string::npos;
+    }
+    if (wrapped.size() <= lines && !cut && kept == wordsIn(form)) return form;
+  }
+  return "";
 }
 
 }  // namespace sl

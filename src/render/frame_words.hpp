@@ -31,12 +31,15 @@ std::vector<std::string> chartPoleLabels(bool north);  // "chart pole φ = 90°"
 std::vector<std::string> seamLabels();                 // "seam t = ±π/2", "seam"
 std::vector<std::string> scaleBreakWords();  // "scale changes at", "scale break at": before a two-slope bar's zero
 std::string curveName(SphereCurveKind kind);  // a curve's label on the sphere, e.g. "cut locus"
-// Below the distance's colour bar (which may have room for "distance (s)" alone): from where, and the injectivity
-// radius, e.g. "from the start; injectivity radius 2.09".
-std::string injectivityNote(double radius, bool fromStart);
+// Below the distance's colour bar: from where, and the injectivity radius, longest first, e.g. "from the start;
+// injectivity radius 2.09", then "injectivity radius 2.09", "inj. radius 2.09", "inj. 2.09".
+std::vector<std::string> injectivityNotes(double radius, bool fromStart);
 
 // The first of `forms` no wider than `width`; if none is, the last shortened at a word with an ellipsis.
 std::string fittedForm(const FontAtlas& font, const std::vector<std::string>& forms, TextSize size, float width);
+// The longest form that word-wraps into at most `lines` lines of that width without cutting a word; "" if none.
+std::string fittedWrappedForm(const FontAtlas& font, const std::vector<std::string>& forms, TextSize size, float width,
+                              std::size_t lines);
 
 // A number as printf's `pattern` writes it, with a true minus sign (U+2212) for the sign and the exponent's.
 std::string typesetNumber(const char* pattern, double value);

@@ -766,9 +766,13 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
       const bool fromStart = !decoration->distance || decoration->distance->fromStart;
       const std::string caption =
           fittedForm(context.font, fieldCaptions(field.coloring, fromStart), TextSize::Small, bar.width);
-      const std::string note = field.diverging       ? "each sign on its own scale"
-                               : decoration->distance ? injectivityNote(decoration->distance->injectivityRadius, fromStart)
-                                                      : "";
+      // The note under the bar wraps onto two lines at most; a narrow strip takes a shorter form, never a cut one.
+      const std::string note =
+          field.diverging       ? "each sign on its own scale"
+          : decoration->distance ? fittedWrappedForm(context.font,
+                                                     injectivityNotes(decoration->distance->injectivityRadius, fromStart),
+                                                     TextSize::Small, bar.width, 2)
+                                 : "";
       drawColorBar(scaleOf(field), caption, note, bar, context.font, batch);
       colorBarBox = bar;
     }

@@ -70,6 +70,24 @@ TEST(FrameWords, AFormThatFitsIsChosenBeforeAnyCut) {
   EXPECT_LE(font.width(fittedForm(font, forms, TextSize::Small, 0.5f * shortest), TextSize::Small), 0.5f * shortest);
 }
 
+// A note under a colour bar wraps onto two lines: the longest form that does so with every word whole, then shorter
+// ones (the distance's note at 320x180 is "inj. 2.09", not "from / the…"); nothing when none fits.
+TEST(FrameWords, AWrappedNoteIsAWholeForm) {
+  const FrameComposer composer(ViewSettings{}, {320, 180});
+  const FontAtlas& font = composer.font();
+  const std::vector<std::string> forms = injectivityNotes(2.0854, true);
+  ASSERT_EQ(forms.front(), "from the start; injectivity radius 2.09");
+  EXPECT_EQ(fittedWrappedForm(font, forms, TextSize::Small, 1e6f, 1), forms.front());
+  const float longest = font.width(forms.front(), TextSize::Small);
+  EXPECT_EQ(fittedWrappedForm(font, forms, TextSize::Small, 0.6f * longest, 2), forms.front());  // on two lines
+  EXPECT_NE(fittedWrappedForm(font, forms, TextSize::Small, 0.6f * longest, 1), forms.front());
+  const float shortest = font.width(forms.back(), TextSize::Small);
+  EXPECT_EQ(fittedWrappedForm(font, forms, TextSize::Small, shortest, 2), forms.back());
+  EXPECT_EQ(fittedWrappedForm(font, forms, TextSize::Small, 0.5f * shortest, 2), "");
+  // "inj." and "2.09" each fit a line, so the shortest form is also found on two narrower lines.
+  EXPECT_EQ(fittedWrappedForm(font, forms, TextSize::Small, 0.8f * shortest, 2), forms.back());
+}
+
 // Every plot kind's title is one of its forms, whole, in a plot panel at every frame size (at 320x180 the full
 // titles do not fit: a shorter form is shown, never "relative energy err…").
 TEST(FrameWords, PlotTitlesAreWholeFormsAtEverySize) {
