@@ -65,4 +65,9 @@ double SphereCamera::pixelsPerUnitAt(const V3& p) const { return focal_ / std::m
 
 bool SphereCamera::inFront(const V3& p) const { return dot(p - eye_, forward_) > 1e-3; }
 
+double SphereCamera::outlineRadius() const {
+  const double d2 = dot(eye_, eye_);
+  return focal_ / std::sqrt(std::max(d2 - 1.0, 1e-12));
+}
+
 }  // namespace sl

@@ -29,6 +29,9 @@ class SphereCamera {
   // The eye's distance from the centre as the camera chose it (from the panel and the field of view alone, exactly
   // the same for every direction; |eye()| may differ from it in the last bits).
   double distance() const { return distance_; }
+  // The sphere's outline on the screen: a circle about centre() of this radius in pixels (the eye looks at the
+  // centre; the sight lines tangent to the unit sphere make the half angle asin(1 / |eye|)).
+  double outlineRadius() const;
 
   // Shader uniforms: eye, forward * focal, right, up (world), panel centre (pixels).
   const V3& forward() const { return forward_; }

@@ -55,6 +55,25 @@ bool behindSphere(const SphereCamera& camera, const V3& p) {
   return c.x * c.x + c.y * c.y + c.z * c.z < 1.0;
 }
 
+// Whether the surface point under a lifted one is on the far side. Lifted points just beyond the limb are still in
+// sight past the sphere, and drawn as in front they would hang outside its outline.
+bool surfaceBehind(const SphereCamera& camera, const V3& lifted) {
+  const double r = std::sqrt(lifted.x * lifted.x + lifted.y * lifted.y + lifted.z * lifted.z);
+  if (!(r > 0)) return false;
+  const double s = (1.0 - 1e-9) / r;  // just inside the surface: a point exactly on the limb counts as hidden
+  return behindSphere(camera, {lifted.x * s, lifted.y * s, lifted.z * s});
+}
+
+// A point drawn on the sphere kept within its outline, `inset` pixels inside it: what is shifted sideways
+// (coinciding runs side by side) or lifted off the surface never hangs past the limb.
+P2 withinOutline(const SphereCamera& camera, P2 at, float inset) {
+  const P2 c = camera.centre();
+  const float limit = std::max(0.0f, float(camera.outlineRadius()) - inset);
+  const float dx = at.x - c.x, dy = at.y - c.y, r = std::hypot(dx, dy);
+  if (r <= limit || r <= 0) return at;
+  return {c.x + dx * limit / r, c.y + dy * limit / r};
+}
+
 // The far side's look: the colour at a fraction of its opacity, drawn flat over the sphere.
 constexpr float kGhostAlpha = 0.55f;
 Rgba ghost(Rgba c) { return palette::withAlpha(c, c.a * kGhostAlpha); }
@@ -176,11 +195,14 @@ void drawPath(const SharedSpan<Vec3>& path, const SharedSamples& times, const Pa
   const double span = context.frame.time - start;
   const float ghostHalfWidth = (look.thin ? 0.4f : 0.7f) * markUnit(context.unit);
   auto flushHidden = [&] {
+    for (PolylinePoint& point : hiddenPoints) point.at = withinOutline(camera, point.at, point.halfWidth);
     back.dashedPolyline(hiddenPoints, kGhostDash * markUnit(context.unit), kGhostGap * markUnit(context.unit));
     hiddenPoints.clear();
   };
   auto flush = [&] {
     shiftAcross(points, look.offset);
+    if (placement.onSphere)
+      for (PolylinePoint& point : points) point.at = withinOutline(camera, point.at, point.halfWidth);
     if (drawn)
       for (const PolylinePoint& point : points) drawn->push_back(point.at);
     front.polyline(points, !look.thin, 0.35f);
@@ -198,7 +220,7 @@ void drawPath(const SharedSpan<Vec3>& path, const SharedSamples& times, const Pa
     const V3 p = placement.place(path[i]);
     const bool hidden = alpha <= 0.0f || !drawable(path[i]) || !camera.inFront(p);
     const bool jump = throughAntipode && i > 0 && distance(path[i - 1], path[i]) > kMaxPathChord;
-    const bool behind = !hidden && placement.onSphere && behindSphere(camera, p);
+    const bool behind = !hidden && placement.onSphere && surfaceBehind(camera, p);
     if (hidden || jump) {  // a gap: draw what came before, start afresh (with this point, unless hidden)
       flush();
       flushHidden();
@@ -248,10 +270,11 @@ void drawFamily(const RunFrame& run, const PanelContext& context, const SphereCa
     const bool jump = throughAntipode && m > 0 && distance(run.members[m - 1].current, at) > kMaxPathChord;
     if (!drawable(at) || !camera.inFront(p) || jump) flush();
     if (!drawable(at) || !camera.inFront(p)) continue;
-    if (placement.onSphere && behindSphere(camera, p))
+    if (placement.onSphere && surfaceBehind(camera, p))
       hiddenWavefront.push_back({camera.project(p), 0.7f * markUnit(context.unit), ghost(waveInk), {}});
     const float halfWidth = std::max(context.unit, float(0.45 * kTubeRadius * camera.pixelsPerUnitAt(p)));
-    wavefront.push_back({camera.project(p), halfWidth, waveInk, placement.world(p)});
+    const P2 on = placement.onSphere ? withinOutline(camera, camera.project(p), halfWidth) : camera.project(p);
+    wavefront.push_back({on, halfWidth, waveInk, placement.world(p)});
   }
   flush();
   for (std::size_t m = 0; m < count; ++m) {
@@ -260,7 +283,7 @@ void drawFamily(const RunFrame& run, const PanelContext& context, const SphereCa
     if (!drawable(member.current) || !camera.inFront(p)) continue;
     const float pixelsPerUnit = float(camera.pixelsPerUnitAt(p));
     const float radius = std::max(1.5f * context.unit, 0.35f * float(kBallRadius) * pixelsPerUnit);
-    if (placement.onSphere && behindSphere(camera, p)) {
+    if (placement.onSphere && surfaceBehind(camera, p)) {
       back.ring(camera.project(p), radius, 0.5f * context.unit, ghost(memberColor(run.color, m, count)));
       continue;
     }
@@ -292,7 +315,9 @@ BallPlace placeBall(const RunFrame& run, float unit, const SphereCamera& camera,
   ball.shown = true;
   ball.at = camera.project(ball.centre);
   ball.radius = std::max(3.5f * markUnit(unit), float(kBallRadius * camera.pixelsPerUnitAt(ball.centre)));
-  ball.behind = placement.onSphere && behindSphere(camera, ball.centre);
+  ball.behind = placement.onSphere && surfaceBehind(camera, ball.centre);
+  // At the limb a ball resting on the surface would stand out past the outline: its centre stays on or inside it.
+  if (placement.onSphere) ball.at = withinOutline(camera, ball.at, 0.0f);
   // The heading: from the last path point at least a few units back on the screen to the state.
   for (std::size_t i = run.path.size(); i-- > 0;) {
     if (!drawable(run.path[i])) break;
@@ -383,7 +408,7 @@ void drawStart(const RunFrame& run, float offset, float unit, const SphereCamera
   const float tube = std::max(1.8f * unit, float(kTubeRadius * camera.pixelsPerUnitAt(p)));
   const P2 middle = plus(at, across, offset * tube);
   const float half = 2.2f * tube + 2 * mark;
-  if (placement.onSphere && behindSphere(camera, p)) {
+  if (placement.onSphere && surfaceBehind(camera, p)) {
     back.capsule(plus(middle, across, -half), plus(middle, across, half), 0.7f * mark, ghost(palette::ink));
     return;
   }
@@ -402,7 +427,7 @@ void drawConjugatePoints(const RunFrame& run, float unit, const SphereCamera& ca
     if (!drawable(point) || !camera.inFront(p)) continue;
     const float pixelsPerUnit = float(camera.pixelsPerUnitAt(p));
     const float radius = std::max(3.0f * markUnit(unit), 0.7f * float(kBallRadius) * pixelsPerUnit);
-    if (placement.onSphere && behindSphere(camera, p)) {
+    if (placement.onSphere && surfaceBehind(camera, p)) {
       back.ring(camera.project(p), 0.85f * radius, 0.8f * markUnit(unit), ghost(palette::ink));
       continue;
     }

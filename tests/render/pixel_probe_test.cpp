@@ -174,6 +174,39 @@ TEST_F(PixelProbe, PathBehindTheSphereIsDashedAndFaint) {
   EXPECT_EQ(full, 0) << "the hidden section is drawn as if in front";
 }
 
+// Nothing drawn on the sphere hangs past its outline: where the probe's path crosses the limb (lifted off the
+// surface, a tube, and shifted sideways as one of two coinciding runs), the band just outside the outline is bare
+// background. Before, a path just beyond the limb was still in sight past the sphere and drawn as in front.
+TEST_F(PixelProbe, NothingOnTheSphereHangsPastItsOutline) {
+  FrameState two = frame;
+  two.runs.push_back(two.runs[0]);  // coinciding: drawn side by side, each shifted a half width
+  two.runs[1].color = {0.0f, 0.45f, 0.70f};
+  const ImageSize size{1280, 720};
+  Renderer large(settings, size);
+  const Image picture = large.render(two);
+  const auto rects = layoutPanels(settings.panels, size.width, size.height);
+  PixelRect panel;
+  for (std::size_t i = 0; i < settings.panels.size(); ++i)
+    if (settings.panels[i].kind == PanelKind::Sphere) panel = rects[i];
+  const SphereCamera view(settings.camera, two.time, panel);
+  const P2 c = view.centre();
+  const double outline = view.outlineRadius();
+  ASSERT_GT(outline, 100);
+  // The direction on the screen where the path meets the limb (t = 97.5 deg at phi = 7.5 deg is 90 deg from the eye).
+  const Vec3 meet = onSphere(7.5 * kDeg, 97.5 * kDeg);
+  const P2 limb = view.project({meet.x, meet.y, meet.z});
+  const double towards = std::atan2(limb.y - c.y, limb.x - c.x);
+  int probed = 0, drawn = 0;
+  for (double a = towards - 0.2; a <= towards + 0.2; a += 0.005)
+    for (double r = outline + 2; r <= outline + 14; r += 1) {
+      const Rgb8 p = pixel(picture, int(std::lround(c.x + r * std::cos(a))), int(std::lround(c.y + r * std::sin(a))));
+      ++probed;
+      drawn += !isBackground(p);
+    }
+  EXPECT_GT(probed, 500);
+  EXPECT_EQ(drawn, 0) << drawn << " of " << probed << " pixels just outside the outline are drawn on";
+}
+
 TEST_F(PixelProbe, PinsAreCharcoal) {
   // Side by side (one run): the run's name has its line at the foot of the panel.
   const FrameComposer composer(settings, testing::kSmallSize);
