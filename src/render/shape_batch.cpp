@@ -45,9 +45,9 @@ ShapeVertex vertex(P2 at, P2 local, ShapeKind kind, float size, float extra, Rgb
 
 void ShapeBatch::quad(const ShapeVertex corners[4]) {
   const ShapeVertex& v = corners[0];
-  const ShapeProgram program = v.kind == float(ShapeKind::Glyph)  ? ShapeProgram::Glyph
-                               : (v.shaded > 0.5f || v.ww > 0.5f) ? ShapeProgram::Lit
-                                                                  : ShapeProgram::Flat;
+  const ShapeProgram program = v.kind == float(ShapeKind::Glyph)                      ? ShapeProgram::Glyph
+                               : (v.shaded > 0.5f || v.ww > 0.5f || v.ww < -0.5f) ? ShapeProgram::Lit
+                                                                                      : ShapeProgram::Flat;
   if (segments_.empty() || segments_.back().program != program) segments_.push_back({program, vertices_.size(), 0});
   segments_.back().count += 6;
   for (int i : {0, 1, 2, 0, 2, 3}) vertices_.push_back(corners[i]);
@@ -125,7 +125,12 @@ void ShapeBatch::strip(const std::vector<PolylinePoint>& all, std::size_t begin,
                   p.color, shaded, specular, miter[i], p.world);
   };
   for (std::size_t i = 0; i + 1 < count; ++i) {
-    const ShapeVertex corners[4] = {make(i, -1), make(i + 1, -1), make(i + 1, 1), make(i, 1)};
+    const SphereCover a = points[i].cover, b = points[i + 1].cover;
+    if (a == SphereCover::Hidden && b == SphereCover::Hidden) continue;
+    ShapeVertex corners[4] = {make(i, -1), make(i + 1, -1), make(i + 1, 1), make(i, 1)};
+    // Still lit (lit.frag lights every occludable shape, shaded or not), but not tested against the sphere.
+    if (a == SphereCover::Clear && b == SphereCover::Clear && corners[0].ww > 0.5f)
+      for (ShapeVertex& corner : corners) corner.ww = -1;
     quad(corners);
   }
 }

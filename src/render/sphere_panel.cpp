@@ -54,6 +54,27 @@ bool behindSphere(const SphereCamera& camera, const V3& p) {
   return c.x * c.x + c.y * c.y + c.z * c.z < 1.0;
 }
 
+// How the opaque unit sphere covers every pixel within `reach` pixels of p's image, by shaders/lit.frag's own test
+// (hiddenBySphere: the sight line's near hit against the fragment's distance, blended over a pixel) evaluated at
+// the nearest and farthest sight lines of that reach, with two pixels to spare: clear where no such pixel can be
+// hidden, hidden where all are, else left to the shader.
+SphereCover sphereCoverNear(const SphereCamera& camera, const V3& p, double reach) {
+  const V3 e = camera.eye();
+  const V3 d{p.x - e.x, p.y - e.y, p.z - e.z};
+  const double toPoint = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+  if (!(toPoint > 0)) return SphereCover::PerPixel;
+  const double closest = -(e.x * d.x + e.y * d.y + e.z * d.z) / toPoint;
+  const double miss = std::sqrt(std::max(e.x * e.x + e.y * e.y + e.z * e.z - closest * closest, 0.0));
+  const double pixel = closest / camera.focal();  // world size of a pixel at the sphere
+  if (!(pixel > 0)) return SphereCover::PerPixel;
+  const double spread = (reach + 2.0) * pixel;
+  if (miss - spread > 1.0) return SphereCover::Clear;  // every sight line misses the sphere
+  auto nearHit = [&](double m) { return closest - std::sqrt(std::max(1.0 - m * m, 0.0)); };
+  if (toPoint <= nearHit(std::max(miss - spread, 0.0)) - 2.0 * pixel) return SphereCover::Clear;
+  if (miss + spread < 1.0 && toPoint >= nearHit(miss + spread) + 2.0 * pixel) return SphereCover::Hidden;
+  return SphereCover::PerPixel;
+}
+
 // The far side's look: the colour at a fraction of its opacity, drawn flat over the sphere.
 constexpr float kGhostAlpha = 0.55f;
 Rgba ghost(Rgba c) { return palette::withAlpha(c, c.a * kGhostAlpha); }
@@ -216,7 +237,10 @@ void drawPath(const SharedSpan<Vec3>& path, const SharedSamples& times, const Pa
         std::abs(at.x - points.back().at.x) + std::abs(at.y - points.back().at.y) < 1.5f * context.unit)
       continue;
     const float halfWidth = widthScale * std::max(look.minHalfWidth, float(look.radius * camera.pixelsPerUnitAt(p)));
-    points.push_back({at, halfWidth, color, placement.world(p)});
+    const SphereCover cover = placement.onSphere
+                                  ? sphereCoverNear(camera, p, (2.0 + std::abs(look.offset)) * halfWidth + 1.0)
+                                  : SphereCover::PerPixel;
+    points.push_back({at, halfWidth, color, placement.world(p), cover});
   }
   flush();
   flushHidden();
