@@ -46,6 +46,12 @@ struct PolylinePoint {
   SphereCover cover = SphereCover::PerPixel;
 };
 
+// Drops the points of `points` that lie within `tolerance` pixels of the straight section joining the points kept on
+// either side, where the colour and width there are what that section interpolates (within half a level and a
+// hundredth of a pixel) and the sphere covers them alike: fewer vertices for the same line (a family's many thin
+// paths). The first and last points stay.
+void mergeStraightRuns(std::vector<PolylinePoint>& points, float tolerance);
+
 // Which fragment shader draws a shape: flat colour (cheap), font atlas, or lit and occludable. On
 // llvmpipe a fragment costs the whole shader, so cheap shapes never run the lighting code.
 enum class ShapeProgram { Flat = 0, Glyph = 1, Lit = 2 };

@@ -176,6 +176,9 @@ float pathAlpha(const ViewSettings& settings, double age) {
 // fraction of the fill. `offset`: shifted sideways by that many half widths (coinciding runs side by side).
 // `aging`: sections thinner and fainter the older they are (down to 60% of the width and 45% of the opacity at the
 // start), so a long path carries its time.
+// How far (pixels per frame unit) a thin path's drawn line may stray from its points to save vertices.
+constexpr float kThinPathTolerance = 0.05f;
+
 struct PathLook {
   Rgba color;
   double radius;
@@ -203,6 +206,7 @@ void drawPath(const SharedSpan<Vec3>& path, const SharedSamples& times, const Pa
     shiftAcross(points, look.offset);
     if (drawn)
       for (const PolylinePoint& point : points) drawn->push_back(point.at);
+    if (look.thin) mergeStraightRuns(points, kThinPathTolerance * context.unit);
     front.polyline(points, !look.thin, 0.35f);
     points.clear();
   };

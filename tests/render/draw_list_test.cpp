@@ -390,6 +390,44 @@ TEST(ShapeBatchTest, SectionsKnownHiddenAreLeftOutAndThoseKnownClearSkipTheSpher
   EXPECT_EQ(mixed.segments()[0].program, ShapeProgram::Lit);  // still lit as every occludable shape
 }
 
+// A thin path's points merged where they lie on a straight section: a straight run keeps its ends, an arc keeps
+// every dropped point within the tolerance of the section drawn in its place, and a change of colour or of the
+// sphere's cover is never merged over.
+TEST(ShapeBatchTest, StraightRunsAreMergedWithinTheTolerance) {
+  const auto point = [](float x, float y) { return PolylinePoint{{x, y}, 0.6f, {0.2f, 0.4f, 0.8f, 1}, {}}; };
+  std::vector<PolylinePoint> line;
+  for (int i = 0; i <= 40; ++i) line.push_back(point(1.5f * float(i), 0.5f * float(i)));
+  mergeStraightRuns(line, 0.05f);
+  ASSERT_EQ(line.size(), 2u);
+  EXPECT_EQ(line.back().at.x, 60.0f);
+
+  std::vector<PolylinePoint> arc;
+  for (int i = 0; i <= 200; ++i) {
+    const float a = 0.01f * float(i);
+    arc.push_back(point(100 * std::cos(a), 100 * std::sin(a)));
+  }
+  const std::vector<PolylinePoint> all = arc;
+  mergeStraightRuns(arc, 0.05f);
+  EXPECT_LT(arc.size(), all.size() / 3);
+  EXPECT_GT(arc.size(), 10u);  // a 100 px arc of 2 rad bends: sections of ~6 px at 0.05 px
+  for (const PolylinePoint& p : all) {  // each original point's distance from the nearest section drawn
+    float nearest = 1e9f;
+    for (std::size_t k = 0; k + 1 < arc.size(); ++k) {
+      const P2 a = arc[k].at, b = arc[k + 1].at;
+      const float dx = b.x - a.x, dy = b.y - a.y;
+      const float u = std::clamp(((p.at.x - a.x) * dx + (p.at.y - a.y) * dy) / (dx * dx + dy * dy), 0.0f, 1.0f);
+      nearest = std::min(nearest, std::hypot(p.at.x - a.x - u * dx, p.at.y - a.y - u * dy));
+    }
+    EXPECT_LE(nearest, 0.0501f);
+  }
+
+  std::vector<PolylinePoint> turning = {point(0, 0), point(1.5f, 0), point(3, 0), point(4.5f, 0), point(6, 0)};
+  turning[2].color.g = 0.6f;
+  turning[3].cover = SphereCover::Clear;
+  mergeStraightRuns(turning, 0.05f);
+  EXPECT_EQ(turning.size(), 5u);
+}
+
 // shaders/lit.frag's hiddenBySphere, in double: how much the unit sphere hides a fragment at `pixel` whose point is
 // `world` (not a ball).
 double hiddenBySphereAt(const SphereCamera& camera, P2 pixel, V3 world, bool antialias) {
