@@ -1,6 +1,7 @@
 // Lit shapes (tubes and balls) with analytic anti-aliasing: each shape knows its pixel distance to its
 // own edge, so coverage is exact without multisampling. Output is premultiplied alpha. Points of the
-// sphere panel (vWorld.w = 1) are hidden per pixel where the unit sphere is in front of them.
+// sphere panel (vWorld.w = 1) are hidden per pixel where the unit sphere is in front of them; those known to be
+// clear of it (vWorld.w = -1, render/shape_batch.cpp) skip the test.
 in vec2 vLocal;
 flat in int vKind;
 in vec3 vParams;  // size (half width or radius), extra (capsule length, < 0 for ribbons; ball world radius), specular

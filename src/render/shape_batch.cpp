@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace sl {
 namespace {
@@ -45,9 +46,9 @@ ShapeVertex vertex(P2 at, P2 local, ShapeKind kind, float size, float extra, Rgb
 
 void ShapeBatch::quad(const ShapeVertex corners[4]) {
   const ShapeVertex& v = corners[0];
-  const ShapeProgram program = v.kind == float(ShapeKind::Glyph)  ? ShapeProgram::Glyph
-                               : (v.shaded > 0.5f || v.ww > 0.5f) ? ShapeProgram::Lit
-                                                                  : ShapeProgram::Flat;
+  const ShapeProgram program = v.kind == float(ShapeKind::Glyph)                      ? ShapeProgram::Glyph
+                               : (v.shaded > 0.5f || v.ww > 0.5f || v.ww < -0.5f) ? ShapeProgram::Lit
+                                                                                      : ShapeProgram::Flat;
   if (segments_.empty() || segments_.back().program != program) segments_.push_back({program, vertices_.size(), 0});
   segments_.back().count += 6;
   for (int i : {0, 1, 2, 0, 2, 3}) vertices_.push_back(corners[i]);
@@ -125,9 +126,49 @@ void ShapeBatch::strip(const std::vector<PolylinePoint>& all, std::size_t begin,
                   p.color, shaded, specular, miter[i], p.world);
   };
   for (std::size_t i = 0; i + 1 < count; ++i) {
-    const ShapeVertex corners[4] = {make(i, -1), make(i + 1, -1), make(i + 1, 1), make(i, 1)};
+    const SphereCover a = points[i].cover, b = points[i + 1].cover;
+    if (a == SphereCover::Hidden && b == SphereCover::Hidden) continue;
+    ShapeVertex corners[4] = {make(i, -1), make(i + 1, -1), make(i + 1, 1), make(i, 1)};
+    // Still lit (lit.frag lights every occludable shape, shaded or not), but not tested against the sphere.
+    if (a == SphereCover::Clear && b == SphereCover::Clear && corners[0].ww > 0.5f)
+      for (ShapeVertex& corner : corners) corner.ww = -1;
     quad(corners);
   }
+}
+
+void mergeStraightRuns(std::vector<PolylinePoint>& points, float tolerance) {
+  constexpr std::size_t kLongestRun = 64;  // points dropped between two kept ones at most (bounds the work)
+  if (points.size() < 3) return;
+  // Whether every point strictly between a and b is drawn as the section a-b would draw it.
+  auto straight = [&](std::size_t a, std::size_t b) {
+    const PolylinePoint &from = points[a], &to = points[b];
+    const P2 d = to.at - from.at;
+    const float len = length(d);
+    if (len < 1e-6f) return false;
+    for (std::size_t i = a + 1; i < b; ++i) {
+      const PolylinePoint& p = points[i];
+      if (p.cover != from.cover || p.cover != to.cover || p.world.w != from.world.w) return false;
+      const P2 r = p.at - from.at;
+      if (std::abs(r.x * d.y - r.y * d.x) > tolerance * len) return false;
+      const float u = std::clamp((r.x * d.x + r.y * d.y) / (len * len), 0.0f, 1.0f);
+      auto off = [u](float x, float y, float z) { return std::abs(x + u * (y - x) - z); };
+      if (off(from.halfWidth, to.halfWidth, p.halfWidth) > 0.01f) return false;
+      const float level = 0.5f / 255;
+      if (off(from.color.r, to.color.r, p.color.r) > level || off(from.color.g, to.color.g, p.color.g) > level ||
+          off(from.color.b, to.color.b, p.color.b) > level || off(from.color.a, to.color.a, p.color.a) > level)
+        return false;
+    }
+    return true;
+  };
+  std::vector<PolylinePoint> kept{points.front()};
+  std::size_t anchor = 0;
+  for (std::size_t j = 2; j < points.size(); ++j) {
+    if (j - anchor <= kLongestRun && straight(anchor, j)) continue;
+    anchor = j - 1;
+    kept.push_back(points[anchor]);
+  }
+  kept.push_back(points.back());
+  points = std::move(kept);
 }
 
 void ShapeBatch::dashedPolyline(const std::vector<PolylinePoint>& points, float dash, float gap) {

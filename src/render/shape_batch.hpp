@@ -15,7 +15,8 @@ struct Rgba {
   float r = 0, g = 0, b = 0, a = 1;
 };
 
-// A 3D point that may be hidden by the unit sphere of the sphere panel (w = 1), or none (w = 0).
+// A 3D point that may be hidden by the unit sphere of the sphere panel (w = 1), or none (w = 0); w = -1 marks one
+// of the sphere panel known to be clear of the sphere (drawn lit, as w = 1, without the per-pixel test).
 struct Occludable {
   float x = 0, y = 0, z = 0, w = 0;
 };
@@ -33,12 +34,23 @@ struct ShapeVertex {
   float shaded;          // 1 = lit as a tube or ball, 0 = flat colour
 };
 
+// How the sphere of the sphere panel covers an occludable polyline point and the pixels about it (decided by the
+// caller, who knows the camera): test per pixel, or known to be clear of it, or known to be wholly hidden by it.
+enum class SphereCover { PerPixel = 0, Clear = 1, Hidden = 2 };
+
 struct PolylinePoint {
   P2 at;
   float halfWidth = 1;
   Rgba color;
   Occludable world;
+  SphereCover cover = SphereCover::PerPixel;
 };
+
+// Drops the points of `points` that lie within `tolerance` pixels of the straight section joining the points kept on
+// either side, where the colour and width there are what that section interpolates (within half a level and a
+// hundredth of a pixel) and the sphere covers them alike: fewer vertices for the same line (a family's many thin
+// paths). The first and last points stay.
+void mergeStraightRuns(std::vector<PolylinePoint>& points, float tolerance);
 
 // Which fragment shader draws a shape: flat colour (cheap), font atlas, or lit and occludable. On
 // llvmpipe a fragment costs the whole shader, so cheap shapes never run the lighting code.
@@ -59,7 +71,8 @@ class ShapeBatch {
   void disc(P2 centre, float radius, Rgba color, bool shaded = false, float specular = 0, Occludable world = {},
             float worldRadius = 0);
   // Joined strip through the points (mitred), width and colour interpolated; no double blending at
-  // joints, so translucent fading paths stay smooth.
+  // joints, so translucent fading paths stay smooth. A section between two points the sphere hides wholly is left
+  // out; one between two points clear of it skips the per-pixel occlusion test.
   void polyline(const std::vector<PolylinePoint>& points, bool shaded = false, float specular = 0);
   // The polyline as dashes of `dash` pixels with `gap` pixels between them (measured along it), flat.
   void dashedPolyline(const std::vector<PolylinePoint>& points, float dash, float gap);

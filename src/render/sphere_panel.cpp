@@ -74,6 +74,27 @@ P2 withinOutline(const SphereCamera& camera, P2 at, float inset) {
   return {c.x + dx * limit / r, c.y + dy * limit / r};
 }
 
+// How the opaque unit sphere covers every pixel within `reach` pixels of p's image, by shaders/lit.frag's own test
+// (hiddenBySphere: the sight line's near hit against the fragment's distance, blended over a pixel) evaluated at
+// the nearest and farthest sight lines of that reach, with two pixels to spare: clear where no such pixel can be
+// hidden, hidden where all are, else left to the shader.
+SphereCover sphereCoverNear(const SphereCamera& camera, const V3& p, double reach) {
+  const V3 e = camera.eye();
+  const V3 d{p.x - e.x, p.y - e.y, p.z - e.z};
+  const double toPoint = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+  if (!(toPoint > 0)) return SphereCover::PerPixel;
+  const double closest = -(e.x * d.x + e.y * d.y + e.z * d.z) / toPoint;
+  const double miss = std::sqrt(std::max(e.x * e.x + e.y * e.y + e.z * e.z - closest * closest, 0.0));
+  const double pixel = closest / camera.focal();  // world size of a pixel at the sphere
+  if (!(pixel > 0)) return SphereCover::PerPixel;
+  const double spread = (reach + 2.0) * pixel;
+  if (miss - spread > 1.0) return SphereCover::Clear;  // every sight line misses the sphere
+  auto nearHit = [&](double m) { return closest - std::sqrt(std::max(1.0 - m * m, 0.0)); };
+  if (toPoint <= nearHit(std::max(miss - spread, 0.0)) - 2.0 * pixel) return SphereCover::Clear;
+  if (miss + spread < 1.0 && toPoint >= nearHit(miss + spread) + 2.0 * pixel) return SphereCover::Hidden;
+  return SphereCover::PerPixel;
+}
+
 // The far side's look: the colour at a fraction of its opacity, drawn flat over the sphere.
 constexpr float kGhostAlpha = 0.55f;
 Rgba ghost(Rgba c) { return palette::withAlpha(c, c.a * kGhostAlpha); }
@@ -175,6 +196,9 @@ float pathAlpha(const ViewSettings& settings, double age) {
 // fraction of the fill. `offset`: shifted sideways by that many half widths (coinciding runs side by side).
 // `aging`: sections thinner and fainter the older they are (down to 60% of the width and 45% of the opacity at the
 // start), so a long path carries its time.
+// How far (pixels per frame unit) a thin path's drawn line may stray from its points to save vertices.
+constexpr float kThinPathTolerance = 0.05f;
+
 struct PathLook {
   Rgba color;
   double radius;
@@ -202,9 +226,15 @@ void drawPath(const SharedSpan<Vec3>& path, const SharedSamples& times, const Pa
   auto flush = [&] {
     shiftAcross(points, look.offset);
     if (placement.onSphere)
-      for (PolylinePoint& point : points) point.at = withinOutline(camera, point.at, point.halfWidth);
+      for (PolylinePoint& point : points) {
+        const P2 kept = withinOutline(camera, point.at, point.halfWidth);
+        // Moved onto the sphere's image, a point's quad no longer clears the sphere: the shader decides per pixel.
+        if (kept.x != point.at.x || kept.y != point.at.y) point.cover = SphereCover::PerPixel;
+        point.at = kept;
+      }
     if (drawn)
       for (const PolylinePoint& point : points) drawn->push_back(point.at);
+    if (look.thin) mergeStraightRuns(points, kThinPathTolerance * context.unit);
     front.polyline(points, !look.thin, 0.35f);
     points.clear();
   };
@@ -239,7 +269,10 @@ void drawPath(const SharedSpan<Vec3>& path, const SharedSamples& times, const Pa
         std::abs(at.x - points.back().at.x) + std::abs(at.y - points.back().at.y) < 1.5f * context.unit)
       continue;
     const float halfWidth = widthScale * std::max(look.minHalfWidth, float(look.radius * camera.pixelsPerUnitAt(p)));
-    points.push_back({at, halfWidth, color, placement.world(p)});
+    const SphereCover cover = placement.onSphere
+                                  ? sphereCoverNear(camera, p, (2.0 + std::abs(look.offset)) * halfWidth + 1.0)
+                                  : SphereCover::PerPixel;
+    points.push_back({at, halfWidth, color, placement.world(p), cover});
   }
   flush();
   flushHidden();

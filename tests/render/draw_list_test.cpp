@@ -369,6 +369,119 @@ TEST(DrawList, AFamilyIsCaptionedWithoutATextPanel) {
   EXPECT_LE(glyphs(FrameComposer(view, {1280, 720}).compose(frame)), poles) << "the text panel explains the runs";
 }
 
+// A polyline's sections between points the sphere hides wholly are left out; those between points clear of it are
+// lit without the per-pixel test (w = -1); the others keep it (w = 1).
+TEST(ShapeBatchTest, SectionsKnownHiddenAreLeftOutAndThoseKnownClearSkipTheSphereTest) {
+  const auto line = [](std::vector<SphereCover> covers) {
+    std::vector<PolylinePoint> points;
+    for (std::size_t i = 0; i < covers.size(); ++i)
+      points.push_back({{10.0f * float(i), 0}, 0.6f, {0, 0, 1, 1}, {0, 0, 1.014f, 1}, covers[i]});
+    ShapeBatch batch;
+    batch.polyline(points);
+    return batch;
+  };
+  using C = SphereCover;
+  EXPECT_TRUE(line({C::Hidden, C::Hidden, C::Hidden}).vertices().empty());
+  const ShapeBatch mixed = line({C::Hidden, C::Hidden, C::PerPixel, C::Clear, C::Clear});
+  ASSERT_EQ(mixed.vertices().size(), 3u * 6);  // hidden-hidden left out; hidden-tested, tested-clear, clear-clear
+  for (std::size_t v = 0; v < 12; ++v) EXPECT_EQ(mixed.vertices()[v].ww, 1.0f) << v;
+  for (std::size_t v = 12; v < 18; ++v) EXPECT_EQ(mixed.vertices()[v].ww, -1.0f) << v;
+  ASSERT_EQ(mixed.segments().size(), 1u);
+  EXPECT_EQ(mixed.segments()[0].program, ShapeProgram::Lit);  // still lit as every occludable shape
+}
+
+// A thin path's points merged where they lie on a straight section: a straight run keeps its ends, an arc keeps
+// every dropped point within the tolerance of the section drawn in its place, and a change of colour or of the
+// sphere's cover is never merged over.
+TEST(ShapeBatchTest, StraightRunsAreMergedWithinTheTolerance) {
+  const auto point = [](float x, float y) { return PolylinePoint{{x, y}, 0.6f, {0.2f, 0.4f, 0.8f, 1}, {}}; };
+  std::vector<PolylinePoint> line;
+  for (int i = 0; i <= 40; ++i) line.push_back(point(1.5f * float(i), 0.5f * float(i)));
+  mergeStraightRuns(line, 0.05f);
+  ASSERT_EQ(line.size(), 2u);
+  EXPECT_EQ(line.back().at.x, 60.0f);
+
+  std::vector<PolylinePoint> arc;
+  for (int i = 0; i <= 200; ++i) {
+    const float a = 0.01f * float(i);
+    arc.push_back(point(100 * std::cos(a), 100 * std::sin(a)));
+  }
+  const std::vector<PolylinePoint> all = arc;
+  mergeStraightRuns(arc, 0.05f);
+  EXPECT_LT(arc.size(), all.size() / 3);
+  EXPECT_GT(arc.size(), 10u);  // a 100 px arc of 2 rad bends: sections of ~6 px at 0.05 px
+  for (const PolylinePoint& p : all) {  // each original point's distance from the nearest section drawn
+    float nearest = 1e9f;
+    for (std::size_t k = 0; k + 1 < arc.size(); ++k) {
+      const P2 a = arc[k].at, b = arc[k + 1].at;
+      const float dx = b.x - a.x, dy = b.y - a.y;
+      const float u = std::clamp(((p.at.x - a.x) * dx + (p.at.y - a.y) * dy) / (dx * dx + dy * dy), 0.0f, 1.0f);
+      nearest = std::min(nearest, std::hypot(p.at.x - a.x - u * dx, p.at.y - a.y - u * dy));
+    }
+    EXPECT_LE(nearest, 0.0501f);
+  }
+
+  std::vector<PolylinePoint> turning = {point(0, 0), point(1.5f, 0), point(3, 0), point(4.5f, 0), point(6, 0)};
+  turning[2].color.g = 0.6f;
+  turning[3].cover = SphereCover::Clear;
+  mergeStraightRuns(turning, 0.05f);
+  EXPECT_EQ(turning.size(), 5u);
+}
+
+// shaders/lit.frag's hiddenBySphere, in double: how much the unit sphere hides a fragment at `pixel` whose point is
+// `world` (not a ball).
+double hiddenBySphereAt(const SphereCamera& camera, P2 pixel, V3 world, bool antialias) {
+  const V3 e = camera.eye(), f = camera.forward(), r = camera.right(), u = camera.up();
+  const double focal = camera.focal(), dx = pixel.x - camera.centre().x, dy = pixel.y - camera.centre().y;
+  V3 ray{f.x * focal + r.x * dx - u.x * dy, f.y * focal + r.y * dx - u.y * dy, f.z * focal + r.z * dx - u.z * dy};
+  const double n = std::sqrt(ray.x * ray.x + ray.y * ray.y + ray.z * ray.z);
+  ray = {ray.x / n, ray.y / n, ray.z / n};
+  const double closest = -(ray.x * e.x + ray.y * e.y + ray.z * e.z);
+  const double miss2 = e.x * e.x + e.y * e.y + e.z * e.z - closest * closest;
+  const double size = closest / focal;
+  const double inside = (1.0 - std::sqrt(std::max(miss2, 0.0))) / size;
+  const double cover = antialias ? std::clamp(inside + 0.5, 0.0, 1.0) : (inside >= 0 ? 1.0 : 0.0);
+  const double nearHit = closest - std::sqrt(std::max(1.0 - miss2, 0.0));
+  const double toPoint = std::sqrt((world.x - e.x) * (world.x - e.x) + (world.y - e.y) * (world.y - e.y) +
+                                   (world.z - e.z) * (world.z - e.z));
+  const double x = std::clamp((toPoint - nearHit + size) / (2 * size), 0.0, 1.0);
+  return cover * x * x * (3 - 2 * x);
+}
+
+// Every path section drawn without the per-pixel sphere test (w = -1) is one the test would not have touched:
+// checked at each corner of its quads (the farthest its fragments reach) by the shader's own formula, for a family
+// whose members circle the sphere, at three sizes and two directions; and some sections still keep the test.
+TEST(DrawList, PathSectionsDrawnWithoutTheSphereTestAreClearOfTheSphere) {
+  FrameState frame = syntheticFrame(9.0, 540);
+  frame.runs[0].members.resize(8);
+  for (std::size_t m = 0; m < frame.runs[0].members.size(); ++m) {
+    MemberFrame& member = frame.runs[0].members[m];
+    member.path = m % 2 ? frame.runs[0].path : frame.runs[1].path;
+    member.pathTimes = m % 2 ? frame.runs[0].pathTimes : frame.runs[1].pathTimes;
+    member.current = m % 2 ? frame.runs[0].current : frame.runs[1].current;
+  }
+  std::size_t clear = 0, tested = 0;
+  for (const ImageSize size : {ImageSize{320, 180}, ImageSize{1280, 720}, ImageSize{3840, 2160}}) {
+    for (const Vec3 direction : {Vec3{1, 0, 0}, Vec3{0.3, -1, 0.4}}) {
+      ViewSettings view;
+      view.panels = {{PanelKind::Sphere, std::nullopt, 0}};
+      view.camera.viewDirection = direction;
+      const DrawList list = FrameComposer(view, size).compose(frame);
+      ASSERT_TRUE(list.panels[0].sphere);
+      const SphereCamera& camera = list.panels[0].sphere->camera;
+      for (const ShapeVertex& v : list.panels[0].shapes.vertices()) {
+        tested += v.ww > 0.5f;
+        if (v.ww > -0.5f) continue;
+        ++clear;
+        EXPECT_EQ(hiddenBySphereAt(camera, {v.x, v.y}, {v.wx, v.wy, v.wz}, list.antialias), 0.0)
+            << size.width << " px at (" << v.x << ", " << v.y << ")";
+      }
+    }
+  }
+  EXPECT_GT(clear, 1000u);
+  EXPECT_GT(tested, 0u);
+}
+
 TEST(DrawList, ShapesStayNearTheirPanel) {
   const FrameComposer composer(fourPanels(), {640, 360});
   const DrawList list = composer.compose(syntheticFrame(5.0, 300));

@@ -41,6 +41,7 @@ struct Renderer::Impl {
   GlContext context;
   ShaderProgram flat, glyph, lit, sphereOpaque, sphereGlass, sphereColored, sphereGrid;
   GLuint vertexArray = 0, vertexBuffer = 0, glyphTexture = 0, fieldTexture = 0;
+  mutable std::size_t vertexCapacity = 0;  // bytes of vertexBuffer's storage
   std::unique_ptr<GlLayer> sphereLayer;
   // The plain balls (opaque without grid, glass) of the panels, each drawn once: the same for every direction.
   struct BallLayer {
@@ -147,7 +148,13 @@ struct Renderer::Impl {
     const auto& vertices = shapes.vertices();
     glBindVertexArray(vertexArray);
     glBindBuffer(GL_ARRAY_BUFFER, vertexBuffer);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(ShapeVertex)), vertices.data(), GL_STREAM_DRAW);
+    // The buffer only grows: storage allocated afresh for every batch cost page faults worth a tenth of a fan frame.
+    const std::size_t bytes = vertices.size() * sizeof(ShapeVertex);
+    if (bytes > vertexCapacity) {
+      vertexCapacity = std::max(bytes, vertexCapacity + vertexCapacity / 2);
+      glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertexCapacity), nullptr, GL_STREAM_DRAW);
+    }
+    glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(bytes), vertices.data());
   }
 
   void drawShapes(const DrawList& list, const ShapeBatch& shapes, const SphereCamera* camera) {
