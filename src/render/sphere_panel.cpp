@@ -149,6 +149,9 @@ class LabelPlacer {
         const float cx = anchor.x + dx * (r + 0.5f * width * std::abs(dx));
         const float cy = anchor.y + dy * (r + 0.5f * height * std::abs(dy));
         const Box box{cx - 0.5f * width, cy - 0.5f * height, cx + 0.5f * width, cy + 0.5f * height};
+        // A wide box on a diagonal reaches back over its anchor and the mark drawn there (a pole's ring): refused.
+        const float nearX = std::clamp(anchor.x, box.x0, box.x1) - anchor.x, nearY = std::clamp(anchor.y, box.y0, box.y1) - anchor.y;
+        if (std::hypot(nearX, nearY) < 0.6f * clearance) continue;
         if (box.x0 < area_.x || box.y0 < area_.y || box.x1 > area_.x + area_.width || box.y1 > area_.y + area_.height)
           continue;
         if (std::any_of(taken_.begin(), taken_.end(), [&](const Box& t) { return overlapArea(box, t) > 0; }))
