@@ -709,6 +709,8 @@ void drawLoci(const SphereDecoration& decoration, const PanelContext& context, c
     const Rgba halo = palette::withAlpha(palette::ink, faint ? 0.0f : 0.55f);
     std::vector<PolylinePoint> line, under, hidden;
     auto flush = [&] {
+      for (auto* points : {&under, &line, &hidden})
+        for (PolylinePoint& point : *points) point.at = withinOutline(camera, point.at, point.halfWidth);
       surface.polyline(under);
       surface.polyline(line);
       back.dashedPolyline(hidden, kGhostDash * markUnit(context.unit), kGhostGap * markUnit(context.unit));
@@ -724,7 +726,7 @@ void drawLoci(const SphereDecoration& decoration, const PanelContext& context, c
         continue;
       }
       const P2 at = camera.project(p);
-      const bool behind = behindSphere(camera, p);
+      const bool behind = surfaceBehind(camera, p);
       if (behind != wasHidden) {  // across the limb: the dashes reach the solid line
         if (behind && !line.empty()) hidden.push_back({line.back().at, ghostHalfWidth, ghost(color), {}});
         if (!behind) hidden.push_back({at, ghostHalfWidth, ghost(color), {}});
