@@ -223,6 +223,7 @@ struct FrameState {
   double time = 0;        // simulation time of this frame
   double duration = 0;    // total simulated time
   std::string title;      // scene title
+  std::string shortTitle;  // the scene's short title, for frames too narrow for the title (empty: none)
   int rods = 4;           // n
   ViewSpace viewSpace = ViewSpace::Sphere;
   std::vector<RunFrame> runs;

@@ -18,6 +18,12 @@ namespace sl {
 
 namespace {
 
+// What the title's {injectivity_radius} says: the distance colouring's, when the sphere has one.
+std::optional<double> injectivityRadiusOf(const std::shared_ptr<const SphereDecoration>& decoration) {
+  if (!decoration || !decoration->distance) return std::nullopt;
+  return decoration->distance->injectivityRadius;
+}
+
 // When a run stopped, as far as the frame shows it: infinite while it runs (PlotSeries::stopTime).
 double stopTimeSoFar(const RunFrame& run) {
   return run.stopped ? run.stopTime : std::numeric_limits<double>::infinity();
@@ -136,10 +142,8 @@ FrameBuilder::FrameBuilder(const Scene& scene, const std::vector<InitialState>& 
       divergence_(runs_.empty() ? 0 : runs_.size() - 1),
       sphereDecoration_(makeSphereDecoration(scene.chain, scene.view.sphereSurface, distancePoint(scene, starts),
                                              !scene.distanceFrom)),
-      title_(fillTitlePlaceholders(scene.title, scene,
-                                   sphereDecoration_ && sphereDecoration_->distance
-                                       ? std::optional<double>(sphereDecoration_->distance->injectivityRadius)
-                                       : std::nullopt)),
+      title_(fillTitlePlaceholders(scene.title, scene, injectivityRadiusOf(sphereDecoration_))),
+      shortTitle_(fillTitlePlaceholders(scene.shortTitle, scene, injectivityRadiusOf(sphereDecoration_))),
       overview_(overviewMotion(scene, starts, cancelled)),
 
       cameraDirections_(planDirectedCamera(scene, starts, view_, cancelled)) {
@@ -299,6 +303,7 @@ FrameState FrameBuilder::snapshot(int k) const {
   state.time = scene_.frameTime(k);
   state.duration = scene_.duration;
   state.title = title_;
+  state.shortTitle = shortTitle_;
   state.rods = scene_.chain.rods;
   state.viewSpace = view_.space();
   state.sphereDecoration = sphereDecoration_;

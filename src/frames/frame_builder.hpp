@@ -74,7 +74,7 @@ class FrameBuilder {
   SharedTrack<double> plotTimes_;
   std::vector<SharedTrack<double>> divergence_;  // [run - 1][frame]: run 0 against run
   std::shared_ptr<const SphereDecoration> sphereDecoration_;  // computed once, shared by every frame
-  std::string title_;  // the scene's, with what the decoration found ({injectivity_radius})
+  std::string title_, shortTitle_;  // the scene's, with what the decoration found ({injectivity_radius})
   MotionOverview overview_;  // per plot: the whole animation's range, empty note; the linkage panel's box
   std::vector<Vec3> cameraDirections_;  // per frame: the directed camera (frames/directed_camera.hpp); else empty
 };

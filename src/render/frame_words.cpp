@@ -160,6 +160,8 @@ std::string curveName(SphereCurveKind kind) {
   return "";
 }
 
+std::vector<std::string> twoSlopeNotes() { return {"each sign on its own scale", "two scales"}; }
+
 std::vector<std::string> injectivityNotes(double radius, bool fromStart) {
   char value[32];
   std::snprintf(value, sizeof value, "%.3g", radius);
@@ -185,6 +187,12 @@ std::string fittedForm(const FontAtlas& font, const std::vector<std::string>& fo
   for (const std::string& form : forms)
     if (font.width(form, size) <= width) return form;
   return forms.empty() ? "" : font.fitted(forms.back(), size, width);
+}
+
+std::string shownTitle(const FontAtlas& font, const FrameState& frame, TextSize size, float width) {
+  std::vector<std::string> forms{frame.title};
+  if (!frame.shortTitle.empty()) forms.push_back(frame.shortTitle);
+  return fittedForm(font, forms, size, width);
 }
 
 std::string fittedWrappedForm(const FontAtlas& font, const std::vector<std::string>& forms, TextSize size, float width,

@@ -34,9 +34,13 @@ std::string curveName(SphereCurveKind kind);  // a curve's label on the sphere, 
 // Below the distance's colour bar: from where, and the injectivity radius, longest first, e.g. "from the start;
 // injectivity radius 2.09", then "injectivity radius 2.09", "inj. radius 2.09", "inj. 2.09".
 std::vector<std::string> injectivityNotes(double radius, bool fromStart);
+// Below a two-slope (diverging) colour bar: "each sign on its own scale", then "two scales".
+std::vector<std::string> twoSlopeNotes();
 
 // The first of `forms` no wider than `width`; if none is, the last shortened at a word with an ellipsis.
 std::string fittedForm(const FontAtlas& font, const std::vector<std::string>& forms, TextSize size, float width);
+// The scene's title as a frame of that width shows it: whole, else the scene's short title, else cut at a word.
+std::string shownTitle(const FontAtlas& font, const FrameState& frame, TextSize size, float width);
 // The longest form that word-wraps into at most `lines` lines of that width without cutting a word; "" if none.
 std::string fittedWrappedForm(const FontAtlas& font, const std::vector<std::string>& forms, TextSize size, float width,
                               std::size_t lines);

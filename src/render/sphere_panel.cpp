@@ -830,12 +830,11 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
       const std::string caption =
           fittedForm(context.font, fieldCaptions(field.coloring, fromStart), TextSize::Small, bar.width);
       // The note under the bar wraps onto two lines at most; a narrow strip takes a shorter form, never a cut one.
-      const std::string note =
-          field.diverging       ? "each sign on its own scale"
-          : decoration->distance ? fittedWrappedForm(context.font,
-                                                     injectivityNotes(decoration->distance->injectivityRadius, fromStart),
-                                                     TextSize::Small, bar.width, 2)
-                                 : "";
+      const std::vector<std::string> notes =
+          field.diverging       ? twoSlopeNotes()
+          : decoration->distance ? injectivityNotes(decoration->distance->injectivityRadius, fromStart)
+                                 : std::vector<std::string>{};
+      const std::string note = fittedWrappedForm(context.font, notes, TextSize::Small, bar.width, 2);
       drawColorBar(scaleOf(field), caption, note, bar, context.font, batch);
       colorBarBox = bar;
     }

@@ -106,7 +106,7 @@ void drawTextPanel(const PanelContext& c, ShapeBatch& batch) {
   const std::string time = "t = " + format("%.2f", c.frame.time) + " / " + format("%.2f", c.frame.duration);
   const float timeWidth = c.font.width(time, TextSize::Normal);
   // The title gives way to the time: shortened with an ellipsis rather than running under it.
-  c.font.draw(batch, c.font.fitted(c.frame.title, TextSize::Title, c.rect.width - timeWidth - 4 * pad), TextSize::Title,
+  c.font.draw(batch, shownTitle(c.font, c.frame, TextSize::Title, c.rect.width - timeWidth - 4 * pad), TextSize::Title,
               c.rect.x + pad, y, palette::ink);
   c.font.draw(batch, time, TextSize::Normal, c.rect.x + c.rect.width - pad - timeWidth, y, palette::ink);
 
@@ -152,7 +152,7 @@ void drawTitleLine(const PanelContext& c, ShapeBatch& batch) {
   const float y = c.rect.y + 0.3f * line + c.font.ascent(TextSize::Normal);
   const std::string time = "t = " + format("%.2f", c.frame.time) + " / " + format("%.2f", c.frame.duration);
   const float timeWidth = c.font.width(time, TextSize::Normal);
-  const std::string title = c.font.fitted(c.frame.title, TextSize::Normal, c.rect.width - timeWidth - 4 * pad);
+  const std::string title = shownTitle(c.font, c.frame, TextSize::Normal, c.rect.width - timeWidth - 4 * pad);
   // On a veil of the background, so that a panel reaching up under the line never makes it unreadable.
   const float titleWidth = c.font.width(title, TextSize::Normal);
   const ColorRGB& b = c.settings.background;

@@ -35,6 +35,7 @@ struct Scene {
   std::string identity;
   std::string name;  // also the default output folder name
   std::string title;
+  std::string shortTitle;  // shown where the title does not fit (small frames); empty: the title, cut at a word
   Chain chain;          // the runs' default linkage; n is every run's
   InitialSpec initial;  // the runs' default start
   double duration = 20;

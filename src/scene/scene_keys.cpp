@@ -96,6 +96,15 @@ std::vector<SceneKey> describeKeys() {
                   "point (`view.sphere.distance_from`)",
        .allowed = "any string",
        .defaultText = "`name`"},
+      {.path = "short_title",
+       .type = KeyType::String,
+       .summary = "the title for frames too narrow for it",
+       .target = "Scene::shortTitle",
+       .meaning = "shown instead of `title` where a frame is too narrow for the whole title (small sizes, previews), "
+                  "so the title keeps what it promises instead of losing its end to an ellipsis; the same "
+                  "placeholders as `title`",
+       .allowed = "any string",
+       .defaultText = "none: the title, shortened at a word"},
       {.path = "linkage",
        .type = KeyType::Object,
        .required = true,

@@ -652,6 +652,7 @@ Scene parseScene(const std::string& text, const std::string& file, const std::ve
                            "; expected " + expectedWords(sceneKey("name")));
   }
   scene.title = top.string("title").value_or(scene.name);
+  scene.shortTitle = top.string("short_title").value_or("");
   // Left out, the duration is the longest found motion's (when every run starts from one: checked below).
   scene.durationFromMotions = !top.has("duration");
   if (const auto duration = top.number("duration"); duration && top.checkPositive("duration", *duration)) {
@@ -683,6 +684,7 @@ Scene parseScene(const std::string& text, const std::string& file, const std::ve
   if (problems.empty() && !scene.durationFromMotions) problems = checkSceneCost(scene);
   if (!problems.empty()) throw SceneError(file, std::move(problems));
   scene.title = fillTitlePlaceholders(scene.title, scene);
+  scene.shortTitle = fillTitlePlaceholders(scene.shortTitle, scene);
   return scene;
 }
 

@@ -88,6 +88,27 @@ TEST(FrameWords, AWrappedNoteIsAWholeForm) {
   EXPECT_EQ(fittedWrappedForm(font, forms, TextSize::Small, 0.8f * shortest, 2), forms.back());
 }
 
+// The scene's title where it fits, else its short title (scene key short_title), else the shorter of them cut at a word;
+// with no short title, the title cut at a word.
+TEST(FrameWords, AShortTitleStandsInForATitleThatDoesNotFit) {
+  const FrameComposer composer(ViewSettings{}, {320, 180});
+  const FontAtlas& font = composer.font();
+  FrameState frame;
+  frame.title = "Through a pole of the chart: the published method stops, chart switching and chart-free carry on";
+  frame.shortTitle = "At a chart pole, the published stops";
+  const float whole = font.width(frame.title, TextSize::Normal), brief = font.width(frame.shortTitle, TextSize::Normal);
+  EXPECT_EQ(shownTitle(font, frame, TextSize::Normal, whole), frame.title);
+  EXPECT_EQ(shownTitle(font, frame, TextSize::Normal, 0.9f * whole), frame.shortTitle);
+  EXPECT_EQ(shownTitle(font, frame, TextSize::Normal, brief), frame.shortTitle);
+  const std::string cut = shownTitle(font, frame, TextSize::Normal, 0.7f * brief);
+  EXPECT_EQ(cut.rfind("At a chart", 0), 0u) << cut;
+  EXPECT_NE(cut.find(kEllipsis), std::string::npos) << cut;
+  frame.shortTitle.clear();
+  const std::string alone = shownTitle(font, frame, TextSize::Normal, 0.9f * whole);
+  EXPECT_EQ(alone.rfind("Through a pole", 0), 0u) << alone;
+  EXPECT_NE(alone.find(kEllipsis), std::string::npos) << alone;
+}
+
 // Every plot kind's title is one of its forms, whole, in a plot panel at every frame size (at 320x180 the full
 // titles do not fit: a shorter form is shown, never "relative energy err…").
 TEST(FrameWords, PlotTitlesAreWholeFormsAtEverySize) {
