@@ -157,7 +157,7 @@ void checkSpaceForFrames(const RenderPlan& plan, Renderer& renderer, FrameBuilde
 // --resume found complete.
 bool renderFrames(const RenderPlan& plan, FrameManifest* pngManifest,
                   const std::vector<FrameSink*>& sinks, Renderer& renderer, FrameBuilder& builder,
-                  int& drawn, int& skipped) {
+                  ImageRecycler& buffers, int& drawn, int& skipped) {
   Progress progress(plan.range.count(), plan.quiet, "render", "frame");
   long done = 0;
   for (int k = plan.range.first; k < plan.range.end; k += plan.range.step) {
@@ -169,7 +169,8 @@ bool renderFrames(const RenderPlan& plan, FrameManifest* pngManifest,
     }
     // Frames before k are sampled (not rendered) for the path and plot history.
     if (!sampleUpTo(builder, k)) return false;
-    Image image = renderer.render(builder.frame(k));
+    Image image = buffers.take();
+    renderer.render(builder.frame(k), image);
     for (size_t i = 0; i + 1 < sinks.size(); ++i) sinks[i]->consume(k, image);
     sinks.back()->consume(k, std::move(image));
     ++drawn;
@@ -228,6 +229,7 @@ void runRender(const RenderArguments& args) {
   }
   checkSpaceForFrames(plan, renderer, builder);
 
+  ImageRecycler buffers;  // before the sinks: they give buffers back until they are finished or destroyed
   std::unique_ptr<FrameManifest> pngManifest, videoManifest;
   std::unique_ptr<PngSequenceSink> pngSink;
   std::unique_ptr<VideoSink> videoSink;
@@ -269,11 +271,12 @@ void runRender(const RenderArguments& args) {
     sinks.push_back(pngSink.get());
   }
   if (videoSink) sinks.push_back(videoSink.get());
+  if (!sinks.empty()) sinks.back()->recycleInto(buffers);  // the last sink gets each frame's own buffer
 
   int drawn = 0, skipped = 0;
   bool finished = false;
   try {
-    finished = renderFrames(plan, pngManifest.get(), sinks, renderer, builder, drawn, skipped);
+    finished = renderFrames(plan, pngManifest.get(), sinks, renderer, builder, buffers, drawn, skipped);
   } catch (const RunCancelled&) {  // a signal in the middle of a long frame: handled like one between frames
   } catch (const EncodingCancelled&) {  // a signal while the encoder was not reading
   }

@@ -12,6 +12,17 @@ class FrameSink {
   virtual ~FrameSink() = default;
   virtual void consume(int frameIndex, Image image) = 0;
   virtual void finish() = 0;
+  // Where the sink gives each frame's buffer back once it is done with it (none: the buffer is freed). The
+  // recycler must outlive the sink.
+  void recycleInto(ImageRecycler& recycler) { recycler_ = &recycler; }
+
+ protected:
+  void giveBack(Image& image) {
+    if (recycler_) recycler_->give(std::move(image));
+  }
+
+ private:
+  ImageRecycler* recycler_ = nullptr;
 };
 
 }  // namespace sl

@@ -31,6 +31,7 @@ void PngSequenceSink::consume(int frameIndex, Image image) {
   workers_->submit([this, frameIndex, shared] {
     thread_local PngEncoder fast(PngCompression::Fast), small(PngCompression::Small);
     const std::vector<std::uint8_t> png = (compression_ == PngCompression::Fast ? fast : small).encode(*shared);
+    giveBack(*shared);
     const std::string name = frameFileName(frameIndex);
     writeFileAtomically(folder_ + "/" + name, png);
     manifest_.record({frameIndex, name, "", sha256Hex(png)});

@@ -167,6 +167,7 @@ void VideoSink::consume(int frameIndex, Image image) {
   writer_->submit([this, frameIndex, shared] {
     writeFrame(shared->rgb.data(), shared->rgb.size());
     frames_.push_back({frameIndex, "", sha256Hex(shared->rgb), ""});
+    giveBack(*shared);
   });
 }
 

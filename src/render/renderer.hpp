@@ -25,6 +25,8 @@ class Renderer {
 
   // Draws one frame. Deterministic: the same FrameState gives the same bytes, whatever came before.
   Image render(const FrameState& frame);
+  // The same into `image`, reusing its buffer where it has the size (ImageRecycler).
+  void render(const FrameState& frame, Image& image);
 
   std::string glRenderer() const;  // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
   std::string glVersion() const;   // GL_VERSION

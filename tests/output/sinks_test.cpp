@@ -58,6 +58,35 @@ TEST(PngSequenceSink, WritesFramesAndRecordsTheirChecksums) {
   EXPECT_FALSE(manifest.entry(2));
 }
 
+// A sink gives each frame's buffer back once its file is written (the render loop draws the next frames into
+// them), and what it wrote is the frame it was given, not what the buffer holds later.
+TEST(PngSequenceSink, GivesBuffersBackAfterWritingThem) {
+  const testing::TempFolder temp;
+  const std::string folder = temp.path();
+  FrameManifest manifest(folder, {{"test", "png"}});
+  ImageRecycler buffers;
+  {
+    PngSequenceSink sink(folder, manifest, 2);
+    sink.recycleInto(buffers);
+    for (int k = 0; k < 4; ++k) sink.consume(k, gradient(32, 24, k));
+    sink.finish();
+  }
+  int givenBack = 0;
+  for (Image image = buffers.take(); !image.rgb.empty(); image = buffers.take()) {
+    EXPECT_EQ(image.rgb.size(), 32u * 24u * 3u);
+    ++givenBack;
+  }
+  EXPECT_EQ(givenBack, 4);
+  for (int k = 0; k < 4; ++k) {
+    int w = 0, h = 0, channels = 0;
+    stbi_uc* pixels = stbi_load((folder + "/" + frameFileName(k)).c_str(), &w, &h, &channels, 3);
+    ASSERT_TRUE(pixels) << k;
+    const Image expected = gradient(32, 24, k);
+    EXPECT_TRUE(std::equal(expected.rgb.begin(), expected.rgb.end(), pixels)) << k;
+    stbi_image_free(pixels);
+  }
+}
+
 TEST(VideoSink, ProducesAPlayableMp4WithEveryFrame) {
   const testing::TempFolder temp;
   const std::string folder = temp.path();

@@ -17,6 +17,23 @@ TEST(Determinism, SameFrameTwiceGivesSameBytes) {
   EXPECT_EQ(first.rgb, second.rgb);
 }
 
+// The render loop draws into buffers the sinks gave back (ImageRecycler): every byte of the stale frame is
+// overwritten, whatever size the buffer had.
+TEST(Determinism, RenderingIntoAStaleBufferEqualsAFreshRender) {
+  Renderer renderer(testing::smallSettings(), testing::kSmallSize);
+  const FrameState frame = syntheticFrame(2.5, 150);
+  const Image fresh = renderer.render(frame);
+  Image stale = renderer.render(syntheticFrame(4.0, 240));
+  ASSERT_NE(stale.rgb, fresh.rgb);  // the comparison can fail
+  renderer.render(frame, stale);
+  EXPECT_EQ(stale.rgb, fresh.rgb);
+  Image wrongSize{7, 3, std::vector<std::uint8_t>(63, 200)};
+  renderer.render(frame, wrongSize);
+  EXPECT_EQ(wrongSize.width, fresh.width);
+  EXPECT_EQ(wrongSize.height, fresh.height);
+  EXPECT_EQ(wrongSize.rgb, fresh.rgb);
+}
+
 TEST(Determinism, FrameAloneEqualsFrameInSequence) {
   for (double orbit : {0.0, 20.0}) {
     ViewSettings settings = testing::smallSettings();

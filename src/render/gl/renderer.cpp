@@ -305,16 +305,16 @@ struct Renderer::Impl {
     glEnable(GL_SCISSOR_TEST);
   }
 
-  Image draw(const DrawList& list) {
+  void draw(const DrawList& list, Image& image) {
     context.bindFramebuffer();
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied alpha
     clearToBackground(list);
     for (const PanelDrawing& panel : list.panels) drawPanel(list, panel);
-    Image image{size.width, size.height, {}};
+    image.width = size.width;
+    image.height = size.height;
     context.readRgb(image.rgb);
-    return image;
   }
 };
 
@@ -332,7 +332,12 @@ Renderer::Renderer(const ViewSettings& view, ImageSize size, const std::string& 
     : impl_(std::make_unique<Impl>(view, size, shaderFolder)) {}
 Renderer::~Renderer() = default;
 
-Image Renderer::render(const FrameState& frame) { return impl_->draw(impl_->composer.compose(frame)); }
+Image Renderer::render(const FrameState& frame) {
+  Image image;
+  render(frame, image);
+  return image;
+}
+void Renderer::render(const FrameState& frame, Image& image) { impl_->draw(impl_->composer.compose(frame), image); }
 std::string Renderer::glRenderer() const { return impl_->context.rendererName(); }
 std::string Renderer::glVersion() const { return impl_->context.version(); }
 
