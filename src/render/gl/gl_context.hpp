@@ -53,6 +53,7 @@ class GlContext {
   void* context_ = nullptr;                 // OSMesaContext
   std::vector<std::uint8_t> clientBuffer_;  // OSMesaMakeCurrent needs one; 1x1 is enough
   std::unique_ptr<GlLayer> frame_;          // the frame itself
+  mutable std::vector<std::uint8_t> rgba_;  // readRgb: the framebuffer as read, before its alpha is dropped
 };
 
 }  // namespace sl
