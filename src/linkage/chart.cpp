@@ -58,9 +58,10 @@ Eigen::VectorXd coordinatesFromHinges(const Chain& chain, const Eigen::Matrix2Xd
 }
 
 namespace {
-template <class Map>
-Eigen::MatrixXd forwardJacobian(const Eigen::VectorXd& at, Map&& map, Eigen::Index outputs) {
-  using Dual = Eigen::AutoDiffScalar<Eigen::VectorXd>;
+// Forward AD with `Derivatives` as the dual numbers' derivative vectors, k = at.size() of them.
+template <class Derivatives, class Map>
+Eigen::MatrixXd forwardJacobianWith(const Eigen::VectorXd& at, Map&& map, Eigen::Index outputs) {
+  using Dual = Eigen::AutoDiffScalar<Derivatives>;
   const Eigen::Index k = at.size();
   VectorX<Dual> arg(k);
   for (Eigen::Index i = 0; i < k; ++i) arg(i) = Dual(at(i), k, i);
@@ -68,33 +69,46 @@ Eigen::MatrixXd forwardJacobian(const Eigen::VectorXd& at, Map&& map, Eigen::Ind
   Eigen::MatrixXd jacobian(outputs, k);
   for (Eigen::Index h = 0; h < hinges.cols(); ++h)
     for (int c = 0; c < 2; ++c) {
-      const Eigen::VectorXd& derivative = hinges(c, h).derivatives();
-      jacobian.row(2 * h + c) =
-          derivative.size() ? Eigen::RowVectorXd(derivative.transpose()) : Eigen::RowVectorXd::Zero(k);
+      const auto& derivative = hinges(c, h).derivatives();
+      if (derivative.size())
+        jacobian.row(2 * h + c) = derivative.transpose();
+      else
+        jacobian.row(2 * h + c).setZero();
     }
   return jacobian;
+}
+
+// Up to this many variables the derivative vectors live on the stack: a heap vector per intermediate value cost
+// most of a sample's time (a 64-member fan samples every member every frame). The same operations on the same
+// numbers either way, so the same Jacobian to the bit.
+constexpr int kStackDerivatives = 8;
+
+template <class Map>
+Eigen::MatrixXd forwardJacobian(const Eigen::VectorXd& at, Map&& map, Eigen::Index outputs) {
+  if (at.size() <= kStackDerivatives)
+    return forwardJacobianWith<Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kStackDerivatives, 1>>(at, map, outputs);
+  return forwardJacobianWith<Eigen::VectorXd>(at, map, outputs);
 }
 }  // namespace
 
 Eigen::MatrixXd chartJacobian(const Chain& chain, const std::vector<int>& axes, const Eigen::VectorXd& coords) {
-  using Dual = Eigen::AutoDiffScalar<Eigen::VectorXd>;
   return forwardJacobian(
-      coords, [&](const VectorX<Dual>& c) { return hingePositionsInChart<Dual>(chain, axes, c); },
+      coords,
+      [&]<class Dual>(const VectorX<Dual>& c) { return hingePositionsInChart<Dual>(chain, axes, c); },
       2 * chain.hingeCount());
 }
 
 Eigen::MatrixXd chartJacobian(const ChainConstants& bound, const std::vector<int>& axes,
                               const Eigen::VectorXd& coords) {
-  using Dual = Eigen::AutoDiffScalar<Eigen::VectorXd>;
   return forwardJacobian(
-      coords, [&](const VectorX<Dual>& c) { return hingePositionsInChart<Dual>(bound, axes, c); },
+      coords,
+      [&]<class Dual>(const VectorX<Dual>& c) { return hingePositionsInChart<Dual>(bound, axes, c); },
       2 * bound.chain.hingeCount());
 }
 
 Eigen::MatrixXd sphereJacobian(const Chain& chain, const Eigen::VectorXd& spherePoint) {
-  using Dual = Eigen::AutoDiffScalar<Eigen::VectorXd>;
   return forwardJacobian(
-      spherePoint, [&](const VectorX<Dual>& x) { return hingePositionsOnSphere<Dual>(chain, x); },
+      spherePoint, [&]<class Dual>(const VectorX<Dual>& x) { return hingePositionsOnSphere<Dual>(chain, x); },
       2 * chain.hingeCount());
 }
 
