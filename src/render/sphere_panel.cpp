@@ -424,7 +424,8 @@ void drawBall(const RunFrame& run, const BallPlace& ball, float unit, const Sphe
   front.disc(at, radius, toRgba(run.color), true, 0.55f, world, radius / pixelsPerUnit);
 }
 
-// The start of a run's path: a short dark bar across its first section (faint where the sphere hides it).
+// The start of a run's path: a short dark bar across its first section (faint where the sphere hides it), kept
+// within the sphere's outline as the path is (each end a half width inside it, so a bar at the limb is shortened).
 void drawStart(const RunFrame& run, float offset, float unit, const SphereCamera& camera, const Placement& placement,
                ShapeBatch& back, ShapeBatch& front) {
   if (run.path.size() < 2 || !drawable(run.path[0])) return;
@@ -442,14 +443,20 @@ void drawStart(const RunFrame& run, float offset, float unit, const SphereCamera
   const float mark = markUnit(unit);
   const P2 across{-along.y, along.x};
   const float tube = std::max(1.8f * unit, float(kTubeRadius * camera.pixelsPerUnitAt(p)));
-  const P2 middle = plus(at, across, offset * tube);
   const float half = 2.2f * tube + 2 * mark;
-  if (placement.onSphere && surfaceBehind(camera, p)) {
-    back.capsule(plus(middle, across, -half), plus(middle, across, half), 0.7f * mark, ghost(palette::ink));
+  const bool behind = placement.onSphere && surfaceBehind(camera, p);
+  const float halfWidth = (behind ? 0.7f : 1.1f) * mark;
+  const P2 middle = plus(at, across, offset * tube);
+  P2 from = plus(middle, across, -half), to = plus(middle, across, half);
+  if (placement.onSphere) {
+    from = withinOutline(camera, from, halfWidth);
+    to = withinOutline(camera, to, halfWidth);
+  }
+  if (behind) {
+    back.capsule(from, to, halfWidth, ghost(palette::ink));
     return;
   }
-  front.capsule(plus(middle, across, -half), plus(middle, across, half), 1.1f * mark, palette::ink, false, 0,
-                placement.world(p));
+  front.capsule(from, to, halfWidth, palette::ink, false, 0, placement.world(p));
 }
 
 // Conjugate points on the path (runs with Jacobi fields): an ink ring around a dot of the run's colour, where

@@ -176,14 +176,14 @@ TEST_F(PixelProbe, PathBehindTheSphereIsDashedAndFaint) {
 
 // Nothing drawn on the sphere hangs past its outline: where the probe's path crosses the limb (lifted off the
 // surface, a tube, and shifted sideways as one of two coinciding runs), the band just outside the outline is bare
-// background. Before, a path just beyond the limb was still in sight past the sphere and drawn as in front.
+// background. Before, a path just beyond the limb was still in sight past the sphere and drawn as in front. So too
+// where a path starts at the limb running along it: its start bar, across the path, points out of the sphere.
 TEST_F(PixelProbe, NothingOnTheSphereHangsPastItsOutline) {
   FrameState two = frame;
   two.runs.push_back(two.runs[0]);  // coinciding: drawn side by side, each shifted a half width
   two.runs[1].color = {0.0f, 0.45f, 0.70f};
   const ImageSize size{1280, 720};
   Renderer large(settings, size);
-  const Image picture = large.render(two);
   const auto rects = layoutPanels(settings.panels, size.width, size.height);
   PixelRect panel;
   for (std::size_t i = 0; i < settings.panels.size(); ++i)
@@ -192,19 +192,52 @@ TEST_F(PixelProbe, NothingOnTheSphereHangsPastItsOutline) {
   const P2 c = view.centre();
   const double outline = view.outlineRadius();
   ASSERT_GT(outline, 100);
+  // Pixels drawn on in the band 2 to 14 px outside the outline, within 0.2 rad of the screen direction of `at`.
+  auto drawnOutside = [&](const Image& picture, P2 at, int& probed) {
+    const double towards = std::atan2(at.y - c.y, at.x - c.x);
+    int drawn = 0;
+    for (double a = towards - 0.2; a <= towards + 0.2; a += 0.005)
+      for (double r = outline + 2; r <= outline + 14; r += 1) {
+        const Rgb8 p = pixel(picture, int(std::lround(c.x + r * std::cos(a))), int(std::lround(c.y + r * std::sin(a))));
+        ++probed;
+        drawn += !isBackground(p);
+      }
+    return drawn;
+  };
   // The direction on the screen where the path meets the limb (t = 97.5 deg at phi = 7.5 deg is 90 deg from the eye).
   const Vec3 meet = onSphere(7.5 * kDeg, 97.5 * kDeg);
-  const P2 limb = view.project({meet.x, meet.y, meet.z});
-  const double towards = std::atan2(limb.y - c.y, limb.x - c.x);
-  int probed = 0, drawn = 0;
-  for (double a = towards - 0.2; a <= towards + 0.2; a += 0.005)
-    for (double r = outline + 2; r <= outline + 14; r += 1) {
-      const Rgb8 p = pixel(picture, int(std::lround(c.x + r * std::cos(a))), int(std::lround(c.y + r * std::sin(a))));
-      ++probed;
-      drawn += !isBackground(p);
-    }
+  int probed = 0;
+  const int drawn = drawnOutside(large.render(two), view.project({meet.x, meet.y, meet.z}), probed);
   EXPECT_GT(probed, 500);
   EXPECT_EQ(drawn, 0) << drawn << " of " << probed << " pixels just outside the outline are drawn on";
+
+  // A path starting 2 deg in front of the limb (the circle where sight lines graze the sphere) and running along it.
+  const V3 eye = view.eye();
+  const double eyeDistance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
+  const V3 w{eye.x / eyeDistance, eye.y / eyeDistance, eye.z / eyeDistance};
+  const double ez = std::sqrt(w.x * w.x + w.y * w.y);  // a unit vector across w, then the third of the frame
+  ASSERT_GT(ez, 0.1);
+  const V3 u{-w.y / ez, w.x / ez, 0}, v{w.y * u.z - w.z * u.y, w.z * u.x - w.x * u.z, w.x * u.y - w.y * u.x};
+  const double polar = std::acos(1.0 / eyeDistance) - 2 * kDeg;
+  FrameState start = frame;
+  RunFrame& run = start.runs[0];
+  run.path.clear();
+  run.pathTimes.clear();
+  for (int k = 0; k <= 40; ++k) {
+    const double a = -20 * kDeg + k * kDeg;  // starts 20 deg before the top of the circle, ends past it
+    const double s = std::sin(polar), z = std::cos(polar);
+    run.path.push_back({z * w.x + s * (std::cos(a) * v.x + std::sin(a) * u.x),
+                        z * w.y + s * (std::cos(a) * v.y + std::sin(a) * u.y),
+                        z * w.z + s * (std::cos(a) * v.z + std::sin(a) * u.z)});
+    run.pathTimes.push_back(3.0);
+  }
+  run.current = run.path.back();  // 40 deg on: far from the start's direction
+  const Vec3 first = run.path.front();
+  int probedStart = 0;
+  const int drawnStart = drawnOutside(large.render(start), view.project({first.x, first.y, first.z}), probedStart);
+  EXPECT_GT(probedStart, 500);
+  EXPECT_EQ(drawnStart, 0) << drawnStart << " of " << probedStart
+                           << " pixels just outside the outline by the path's start are drawn on";
 }
 
 TEST_F(PixelProbe, PinsAreCharcoal) {
