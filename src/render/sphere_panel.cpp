@@ -354,14 +354,19 @@ BallPlace placeBall(const RunFrame& run, float unit, const SphereCamera& camera,
   ball.behind = placement.onSphere && surfaceBehind(camera, ball.centre);
   // At the limb a ball resting on the surface would stand out past the outline: its centre stays on or inside it.
   if (placement.onSphere) ball.at = withinOutline(camera, ball.at, 0.0f);
-  // The heading: from the last path point at least a few units back on the screen to the state.
+  // The heading: from the last path point at least a few units back on the screen to the state, both as the path
+  // is placed (the ball's centre, lifted higher, is shifted away from the sphere's centre on the screen: measured from
+  // it, the heading would point outwards wherever the ball is off the centre).
+  const V3 state = placement.place(run.current);
+  if (!camera.inFront(state)) return ball;
+  const P2 now = camera.project(state);
   for (std::size_t i = run.path.size(); i-- > 0;) {
     if (!drawable(run.path[i])) break;
     const V3 p = placement.place(run.path[i]);
     if (!camera.inFront(p)) break;
     const P2 q = camera.project(p);
-    if (std::hypot(ball.at.x - q.x, ball.at.y - q.y) >= 3 * unit) {
-      ball.heading = unitDirection(q, ball.at);
+    if (std::hypot(now.x - q.x, now.y - q.y) >= 3 * unit) {
+      ball.heading = unitDirection(q, now);
       ball.headingKnown = true;
       break;
     }
@@ -392,25 +397,40 @@ void spreadCoincidingBalls(std::vector<BallPlace>& balls) {
 
 // The current state of a run. In front: a shaded ball on a thin dark rim (a stopped run's on a red halo), hidden
 // per pixel where the sphere's outline passes in front of it. Behind the sphere: a hollow ring in its colour (a red
-// one around it when stopped), nothing inside, so it never reads as a spot on the front. An arrowhead just past the
-// ball points along the last section of the path (a moving run only).
+// one around it when stopped), nothing inside, so it never reads as a spot on the front. The direction mark: a
+// chevron just past the ball pointing along the last section of the path (a moving run only), dark on a light halo
+// in front (it reads on a dark path or colour map), faint alone behind. The chevron and the hidden rings are kept
+// within the sphere's outline (a ball in front, standing on the surface, may stand out past it at the limb).
 void drawBall(const RunFrame& run, const BallPlace& ball, float unit, const SphereCamera& camera,
-              const Placement& placement, ShapeBatch& back, ShapeBatch& front) {
+              const Placement& placement, const ColorRGB& background, ShapeBatch& back, ShapeBatch& front) {
   if (!ball.shown) return;
   const float radius = ball.radius;
   const P2 at = ball.at;
   const float mark = markUnit(unit);
   if (!run.stopped && ball.headingKnown) {
     const P2 d = ball.heading, n{-d.y, d.x};
-    const P2 tip = plus(at, d, radius + 7 * mark), base = plus(at, d, radius + 2.5f * mark);
-    const Rgba arrow = ball.behind ? ghost(palette::ink) : palette::ink;
-    ShapeBatch& layer = ball.behind ? back : front;
-    layer.capsule(plus(base, n, 3.5f * mark), tip, 0.8f * mark, arrow);
-    layer.capsule(plus(base, n, -3.5f * mark), tip, 0.8f * mark, arrow);
+    const float halfWidth = (ball.behind ? 0.8f : 0.9f) * mark;
+    P2 tip = plus(at, d, radius + 8.5f * mark);
+    const P2 base = plus(at, d, radius + 3 * mark);
+    P2 left = plus(base, n, 4 * mark), right = plus(base, n, -4 * mark);
+    if (placement.onSphere)
+      for (P2* point : {&tip, &left, &right}) *point = withinOutline(camera, *point, halfWidth);
+    if (ball.behind) {
+      back.capsule(left, tip, halfWidth, ghost(palette::ink));
+      back.capsule(right, tip, halfWidth, ghost(palette::ink));
+    } else {
+      const Rgba halo{background.r, background.g, background.b, 0.75f};
+      for (const auto& [width, color] : {std::pair{halfWidth + 0.9f * mark, halo}, std::pair{halfWidth, palette::ink}}) {
+        front.capsule(left, tip, width, color);
+        front.capsule(right, tip, width, color);
+      }
+    }
   }
   if (ball.behind) {
-    back.ring(at, 0.8f * radius, 0.9f * mark, ghost(toRgba(run.color)));
-    if (run.stopped) back.ring(at, 0.8f * radius + 2.5f * mark, 0.8f * mark, ghost(palette::stopRed));
+    const float outer = 0.8f * radius + (run.stopped ? 2.5f : 0.0f) * mark + 0.9f * mark;
+    const P2 ring = placement.onSphere ? withinOutline(camera, at, outer) : at;
+    back.ring(ring, 0.8f * radius, 0.9f * mark, ghost(toRgba(run.color)));
+    if (run.stopped) back.ring(ring, 0.8f * radius + 2.5f * mark, 0.8f * mark, ghost(palette::stopRed));
     return;
   }
   Placement ballPlacement = placement;
@@ -874,7 +894,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   spreadCoincidingBalls(balls);
   std::vector<PixelRect> ballBoxes;
   for (std::size_t k = 0; k < runs.size(); ++k) {
-    drawBall(runs[k], balls[k], context.unit, camera, placement, back, front);
+    drawBall(runs[k], balls[k], context.unit, camera, placement, context.settings.background, back, front);
     if (!balls[k].shown) continue;
     const float r = balls[k].radius + 2.5f * context.unit;
     placer.avoid({balls[k].at.x - r, balls[k].at.y - r, balls[k].at.x + r, balls[k].at.y + r});

@@ -240,6 +240,81 @@ TEST_F(PixelProbe, NothingOnTheSphereHangsPastItsOutline) {
                            << " pixels just outside the outline by the path's start are drawn on";
 }
 
+// Time on the sphere: the current state carries a direction mark, a dark chevron just past the ball on the side it
+// moves to (not on the side it came from), and at the limb the chevron stays within the outline. The state here is
+// off the view's centre and moving towards it: the ball, lifted higher than the path, is shifted outwards on the
+// screen, and a heading measured from the ball's centre would point outwards instead.
+TEST_F(PixelProbe, TheCurrentStateCarriesADirectionMarkWithinTheOutline) {
+  const ImageSize size{1280, 720};
+  Renderer large(settings, size);
+  const auto rects = layoutPanels(settings.panels, size.width, size.height);
+  PixelRect panel;
+  for (std::size_t i = 0; i < settings.panels.size(); ++i)
+    if (settings.panels[i].kind == PanelKind::Sphere) panel = rects[i];
+  const SphereCamera view(settings.camera, frame.time, panel);
+  auto lifted = [](const Vec3& p, double r) { return V3{p.x * r, p.y * r, p.z * r}; };
+  // A run along phi = 7.5 deg from t = 70 deg to t = 40 deg (the view's centre is at t = 7.5 deg).
+  auto runFrom = [&](double t0, double t1) {
+    FrameState moving = frame;
+    RunFrame& run = moving.runs[0];
+    run.path.clear();
+    run.pathTimes.clear();
+    for (int k = 0; k <= 60; ++k) {
+      run.path.push_back(onSphere(7.5 * kDeg, (t0 + (t1 - t0) * k / 60.0) * kDeg));
+      run.pathTimes.push_back(3.0);
+    }
+    run.current = run.path.back();
+    return moving;
+  };
+  auto isInk = [](Rgb8 c) { return c.r < 110 && c.g < 110 && c.b < 110 && std::abs(c.r - c.b) < 30; };
+  // Dark neutral pixels within 3 px of `at`.
+  auto inkNear = [&](const Image& picture, P2 at) {
+    int ink = 0;
+    for (int dy = -3; dy <= 3; ++dy)
+      for (int dx = -3; dx <= 3; ++dx) ink += isInk(pixel(picture, int(std::lround(at.x)) + dx, int(std::lround(at.y)) + dy));
+    return ink;
+  };
+  const FrameState inwards = runFrom(70, 40);
+  const Image picture = large.render(inwards);
+  const Vec3 state = inwards.runs[0].current, before = inwards.runs[0].path[55];
+  const P2 on = view.project(lifted(state, 1.014)), back = view.project(lifted(before, 1.014));
+  const P2 ball = view.project(lifted(state, 1.055));
+  const double length = std::hypot(on.x - back.x, on.y - back.y);
+  ASSERT_GT(length, 3);
+  const P2 heading{float((on.x - back.x) / length), float((on.y - back.y) / length)};
+  const float radius = std::max(3.5f, float(0.055 * view.pixelsPerUnitAt(lifted(state, 1.055))));
+  const float reach = radius + 7.5f;  // the chevron's tip is 8.5 frame units past the ball's edge
+  const P2 ahead{ball.x + reach * heading.x, ball.y + reach * heading.y};
+  const P2 behind{ball.x - reach * heading.x, ball.y - reach * heading.y};
+  EXPECT_GE(inkNear(picture, ahead), 3) << "no direction mark ahead of the state";
+  EXPECT_EQ(inkNear(picture, behind), 0) << "a direction mark on the side the state came from";
+
+  // Out through the limb: a path along phi = 7.5 deg ending just in front of the limb (t = 97.5 deg is 90 deg from
+  // the view's centre; the limb, where sight lines graze the sphere, is nearer). Just outside the outline nothing is
+  // drawn but the ball, which stands on the surface at the outline: the chevron keeps within it.
+  const V3 eye = view.eye();
+  const double limb = std::acos(1.0 / std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z)) / kDeg;
+  const FrameState outwards = runFrom(40, 7.5 + limb - 1.5);
+  const Image atLimb = large.render(outwards);
+  const P2 c = view.centre();
+  const double outline = view.outlineRadius();
+  P2 standing = view.project(lifted(outwards.runs[0].current, 1.055));  // the ball's centre, on or inside the outline
+  const double out = std::hypot(standing.x - c.x, standing.y - c.y);
+  if (out > outline)
+    standing = {float(c.x + (standing.x - c.x) * outline / out), float(c.y + (standing.y - c.y) * outline / out)};
+  const double towards = std::atan2(standing.y - c.y, standing.x - c.x);
+  int probed = 0, drawn = 0;
+  for (double a = towards - 0.25; a <= towards + 0.25; a += 0.004)
+    for (double r = outline + 2; r <= outline + 20; r += 1) {
+      const P2 p{float(c.x + r * std::cos(a)), float(c.y + r * std::sin(a))};
+      if (std::hypot(p.x - standing.x, p.y - standing.y) < radius + 3) continue;  // the ball, its rim and a pixel
+      ++probed;
+      drawn += !isBackground(pixel(atLimb, int(std::lround(p.x)), int(std::lround(p.y))));
+    }
+  EXPECT_GT(probed, 500);
+  EXPECT_EQ(drawn, 0) << drawn << " of " << probed << " pixels just outside the outline by the state at the limb are drawn on";
+}
+
 TEST_F(PixelProbe, PinsAreCharcoal) {
   // Side by side (one run): the run's name has its line at the foot of the panel.
   const FrameComposer composer(settings, testing::kSmallSize);
