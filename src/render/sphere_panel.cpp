@@ -101,6 +101,32 @@ Rgba ghost(Rgba c) { return palette::withAlpha(c, c.a * kGhostAlpha); }
 // Dashes and gaps of hidden paths, in frame units.
 constexpr float kGhostDash = 5.0f, kGhostGap = 3.5f;
 
+// Over a colour-mapped sphere the far side's faint lines would vanish on the map's dark end (viridis' purple): there
+// they are drawn on a light halo, faint with them. The plain sphere is light: no halo, its look unchanged.
+bool onColouredSphere(const PanelContext& context) {
+  return context.frame.viewSpace == ViewSpace::Sphere && context.frame.sphereDecoration &&
+         context.frame.sphereDecoration->field;
+}
+Rgba farSideHalo(Rgba ghostColor) { return {1, 1, 1, 0.8f * ghostColor.a}; }
+// A hidden line, dashed and faint (on its halo over a coloured sphere); the halo's dashes are the line's own.
+void dashedBehind(const PanelContext& context, const std::vector<PolylinePoint>& points, ShapeBatch& back) {
+  const float mark = markUnit(context.unit);
+  if (onColouredSphere(context) && points.size() >= 2) {
+    std::vector<PolylinePoint> halo = points;
+    for (PolylinePoint& point : halo) {
+      point.halfWidth += 0.6f * mark;
+      point.color = farSideHalo(point.color);
+    }
+    back.dashedPolyline(halo, kGhostDash * mark, kGhostGap * mark);
+  }
+  back.dashedPolyline(points, kGhostDash * mark, kGhostGap * mark);
+}
+// A hidden ring, faint (on its halo over a coloured sphere).
+void ringBehind(const PanelContext& context, P2 at, float radius, float halfWidth, Rgba color, ShapeBatch& back) {
+  if (onColouredSphere(context)) back.ring(at, radius, halfWidth + 0.6f * markUnit(context.unit), farSideHalo(color));
+  back.ring(at, radius, halfWidth, color);
+}
+
 P2 plus(P2 a, P2 b, float s = 1) { return {a.x + s * b.x, a.y + s * b.y}; }
 P2 unitDirection(P2 from, P2 to) {
   const float dx = to.x - from.x, dy = to.y - from.y, len = std::hypot(dx, dy);
@@ -223,7 +249,7 @@ void drawPath(const SharedSpan<Vec3>& path, const SharedSamples& times, const Pa
   const float ghostHalfWidth = (look.thin ? 0.4f : 0.7f) * markUnit(context.unit);
   auto flushHidden = [&] {
     for (PolylinePoint& point : hiddenPoints) point.at = withinOutline(camera, point.at, point.halfWidth);
-    back.dashedPolyline(hiddenPoints, kGhostDash * markUnit(context.unit), kGhostGap * markUnit(context.unit));
+    dashedBehind(context, hiddenPoints, back);
     hiddenPoints.clear();
   };
   auto flush = [&] {
@@ -296,7 +322,7 @@ void drawFamily(const RunFrame& run, const PanelContext& context, const SphereCa
   auto flush = [&] {
     front.polyline(wavefront, true, 0.2f);
     wavefront.clear();
-    back.dashedPolyline(hiddenWavefront, kGhostDash * markUnit(context.unit), kGhostGap * markUnit(context.unit));
+    dashedBehind(context, hiddenWavefront, back);
     hiddenWavefront.clear();
   };
   const Rgba waveInk = palette::withAlpha(palette::ink, 0.9f);
@@ -320,7 +346,7 @@ void drawFamily(const RunFrame& run, const PanelContext& context, const SphereCa
     const float pixelsPerUnit = float(camera.pixelsPerUnitAt(p));
     const float radius = std::max(1.5f * context.unit, 0.35f * float(kBallRadius) * pixelsPerUnit);
     if (placement.onSphere && surfaceBehind(camera, p)) {
-      back.ring(camera.project(p), radius, 0.5f * context.unit, ghost(memberColor(run.color, m, count)));
+      ringBehind(context, camera.project(p), radius, 0.5f * context.unit, ghost(memberColor(run.color, m, count)), back);
       continue;
     }
     if (member.stopped) front.disc(camera.project(p), radius + 1.5f * context.unit, palette::stopRed, false, 0, placement.world(p));
@@ -401,9 +427,11 @@ void spreadCoincidingBalls(std::vector<BallPlace>& balls) {
 // chevron just past the ball pointing along the last section of the path (a moving run only), dark on a light halo
 // in front (it reads on a dark path or colour map), faint alone behind. The chevron and the hidden rings are kept
 // within the sphere's outline (a ball in front, standing on the surface, may stand out past it at the limb).
-void drawBall(const RunFrame& run, const BallPlace& ball, float unit, const SphereCamera& camera,
-              const Placement& placement, const ColorRGB& background, ShapeBatch& back, ShapeBatch& front) {
+void drawBall(const RunFrame& run, const BallPlace& ball, const PanelContext& context, const SphereCamera& camera,
+              const Placement& placement, ShapeBatch& back, ShapeBatch& front) {
   if (!ball.shown) return;
+  const float unit = context.unit;
+  const ColorRGB& background = context.settings.background;
   const float radius = ball.radius;
   const P2 at = ball.at;
   const float mark = markUnit(unit);
@@ -429,8 +457,8 @@ void drawBall(const RunFrame& run, const BallPlace& ball, float unit, const Sphe
   if (ball.behind) {
     const float outer = 0.8f * radius + (run.stopped ? 2.5f : 0.0f) * mark + 0.9f * mark;
     const P2 ring = placement.onSphere ? withinOutline(camera, at, outer) : at;
-    back.ring(ring, 0.8f * radius, 0.9f * mark, ghost(toRgba(run.color)));
-    if (run.stopped) back.ring(ring, 0.8f * radius + 2.5f * mark, 0.8f * mark, ghost(palette::stopRed));
+    ringBehind(context, ring, 0.8f * radius, 0.9f * mark, ghost(toRgba(run.color)), back);
+    if (run.stopped) ringBehind(context, ring, 0.8f * radius + 2.5f * mark, 0.8f * mark, ghost(palette::stopRed), back);
     return;
   }
   Placement ballPlacement = placement;
@@ -665,7 +693,7 @@ void labelChartPoles(const PanelContext& context, const SphereCamera& camera, La
     if (!camera.inFront(pole)) continue;
     const P2 at = camera.project(pole);
     const bool hidden = behindSphere(camera, pole);
-    if (hidden) back.ring(at, 4 * markUnit(context.unit), 0.6f * markUnit(context.unit), ghost(palette::poleMark));
+    if (hidden) ringBehind(context, at, 4 * markUnit(context.unit), 0.6f * markUnit(context.unit), ghost(palette::poleMark), back);
     drawLabel(fittedForm(context.font, chartPoleLabels(z > 0), TextSize::Small, labelBudget(camera)), at, hidden, context,
               placer, placed, batch);
   }
@@ -683,7 +711,7 @@ void drawSeams(const PanelContext& context, const SphereCamera& camera, LabelPla
     std::vector<PolylinePoint> front_, back_;
     auto flush = [&] {
       front.dashedPolyline(front_, 7 * context.unit, 3 * context.unit);
-      back.dashedPolyline(back_, kGhostDash * markUnit(context.unit), kGhostGap * markUnit(context.unit));
+      dashedBehind(context, back_, back);
       front_.clear();
       back_.clear();
     };
@@ -740,7 +768,7 @@ void drawLoci(const SphereDecoration& decoration, const PanelContext& context, c
         for (PolylinePoint& point : *points) point.at = withinOutline(camera, point.at, point.halfWidth);
       surface.polyline(under);
       surface.polyline(line);
-      back.dashedPolyline(hidden, kGhostDash * markUnit(context.unit), kGhostGap * markUnit(context.unit));
+      dashedBehind(context, hidden, back);
       line.clear();
       under.clear();
       hidden.clear();
@@ -894,7 +922,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   spreadCoincidingBalls(balls);
   std::vector<PixelRect> ballBoxes;
   for (std::size_t k = 0; k < runs.size(); ++k) {
-    drawBall(runs[k], balls[k], context.unit, camera, placement, context.settings.background, back, front);
+    drawBall(runs[k], balls[k], context, camera, placement, back, front);
     if (!balls[k].shown) continue;
     const float r = balls[k].radius + 2.5f * context.unit;
     placer.avoid({balls[k].at.x - r, balls[k].at.y - r, balls[k].at.x + r, balls[k].at.y + r});

@@ -540,6 +540,47 @@ INSTANTIATE_TEST_SUITE_P(Colourings, FaithfulColour,
 // The distance colouring's loci are drawn where the decoration puts them: a cut-locus point facing the eye is
 // covered by the cut locus's white (no colour of viridis is light in all three channels), a conjugate-locus point by its magenta; a locus point behind the sphere is not
 // drawn as in front (at most the far side's faint dashes).
+// The far side over a dark colour map (view.sphere.color_by: bending, viridis' purple end, as in
+// scenes/stiffness.json): the hidden section's dashes stand out from the sphere under them (a luminance change of at
+// least 50 levels somewhere along it: the light halo; faint dark red alone on purple changed it by about 20), and it
+// stays dashed (some of it the bare sphere).
+TEST_F(PixelProbe, HiddenDashesReadOnADarkColourMap) {
+  auto decoration = std::make_shared<SphereDecoration>();
+  SphereField field{SphereColoring::Bending, false, 32, 64, {}, 0.0, 1.0};
+  field.values.assign(std::size_t(field.phiCount * field.tCount), 0.0f);  // the map's dark end everywhere
+  decoration->field = field;
+  FrameState dark = frame;
+  dark.sphereDecoration = decoration;
+  FrameState bare = dark;
+  bare.runs.clear();
+  const ImageSize size{1280, 720};
+  Renderer large(settings, size);
+  const Image picture = large.render(dark), sphere = large.render(bare);
+  const auto rects = layoutPanels(settings.panels, size.width, size.height);
+  PixelRect rect{};
+  for (std::size_t i = 0; i < settings.panels.size(); ++i)
+    if (settings.panels[i].kind == PanelKind::Sphere) rect = rects[i];
+  rect.width -= std::min(0.24f * rect.width, 0.45f * rect.height);  // framed left of the colour bar
+  const SphereCamera view(settings.camera, dark.time, rect);
+  auto luminance = [](Rgb8 c) { return 0.30 * c.r + 0.59 * c.g + 0.11 * c.b; };
+  int readable = 0, gaps = 0, probed = 0;
+  for (int k = 0; k <= 80; ++k) {
+    const Vec3 p = onSphere(7.5 * kDeg, (120 + 0.5 * k) * kDeg);  // far side, away from the state
+    const P2 at = view.project({p.x * 1.014, p.y * 1.014, p.z * 1.014});
+    double change = 0;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int x = int(std::lround(at.x)) + dx, y = int(std::lround(at.y)) + dy;
+        change = std::max(change, std::abs(luminance(pixel(picture, x, y)) - luminance(pixel(sphere, x, y))));
+      }
+    ++probed;
+    readable += change >= 50;
+    gaps += change <= 4;
+  }
+  EXPECT_GE(readable, probed / 4) << "the hidden dashes barely show on the dark map";
+  EXPECT_GT(gaps, 0) << "the hidden section is not dashed";
+}
+
 TEST_F(PixelProbe, LociAreDrawnWhereTheDistanceMapPutsThem) {
   auto decoration = std::make_shared<SphereDecoration>();
   SphereField field{SphereColoring::Distance, false, 32, 64, {}, 0.0, 3.0};
