@@ -231,7 +231,7 @@ void FrameBuilder::sampleMembers(int k) {
       thinOut(path);
       if (step == substeps) {
         member.hinges = hingeList(sample->hinges);
-        member.stopped = stopsBy(trajectory, t, sampleSpacing());  // stopped at the frame time itself: this frame shows it
+        member.stopped = stopsBy(trajectory, t, sampleSpacing());  // stopped at the frame time itself: shown now
       }
     }
   });
@@ -280,7 +280,7 @@ void FrameBuilder::sampleRunAt(size_t run, double t, bool isFrameTime) {
   thinOut(history.path);
   if (!isFrameTime) return;
   recordFrameState(history, *sample);
-  if (stopsBy(runs_[run], t, sampleSpacing())) markStopped(run, t);  // stopped at the frame time itself: this frame shows it
+  if (stopsBy(runs_[run], t, sampleSpacing())) markStopped(run, t);  // stopped at the frame time itself: shown now
 }
 
 // At a frame time: the linkage, the plots' values and the trails (one point per frame, while visible).

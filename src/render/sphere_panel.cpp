@@ -346,7 +346,8 @@ void drawFamily(const RunFrame& run, const PanelContext& context, const SphereCa
     const float pixelsPerUnit = float(camera.pixelsPerUnitAt(p));
     const float radius = std::max(1.5f * context.unit, 0.35f * float(kBallRadius) * pixelsPerUnit);
     if (placement.onSphere && surfaceBehind(camera, p)) {
-      ringBehind(context, camera.project(p), radius, 0.5f * context.unit, ghost(memberColor(run.color, m, count)), back);
+      ringBehind(context, camera.project(p), radius, 0.5f * context.unit, ghost(memberColor(run.color, m, count)),
+                 back);
       continue;
     }
     if (member.stopped) front.disc(camera.project(p), radius + 1.5f * context.unit, palette::stopRed, false, 0, placement.world(p));
@@ -448,7 +449,8 @@ void drawBall(const RunFrame& run, const BallPlace& ball, const PanelContext& co
       back.capsule(right, tip, halfWidth, ghost(palette::ink));
     } else {
       const Rgba halo{background.r, background.g, background.b, 0.75f};
-      for (const auto& [width, color] : {std::pair{halfWidth + 0.9f * mark, halo}, std::pair{halfWidth, palette::ink}}) {
+      const std::pair<float, Rgba> strokes[] = {{halfWidth + 0.9f * mark, halo}, {halfWidth, palette::ink}};
+      for (const auto& [width, color] : strokes) {
         front.capsule(left, tip, width, color);
         front.capsule(right, tip, width, color);
       }
@@ -693,7 +695,8 @@ void labelChartPoles(const PanelContext& context, const SphereCamera& camera, La
     if (!camera.inFront(pole)) continue;
     const P2 at = camera.project(pole);
     const bool hidden = behindSphere(camera, pole);
-    if (hidden) ringBehind(context, at, 4 * markUnit(context.unit), 0.6f * markUnit(context.unit), ghost(palette::poleMark), back);
+    const float mark = markUnit(context.unit);
+    if (hidden) ringBehind(context, at, 4 * mark, 0.6f * mark, ghost(palette::poleMark), back);
     drawLabel(fittedForm(context.font, chartPoleLabels(z > 0), TextSize::Small, labelBudget(camera)), at, hidden, context,
               placer, placed, batch);
   }

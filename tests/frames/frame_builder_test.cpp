@@ -317,7 +317,8 @@ TEST(FrameBuilder, AStopShowsOnTheFrameWhoseIntervalHoldsIt) {
     for (int k = 0; k < pole.frameCount(); ++k) {
       const FrameState state = walk.frame(k);
       if (state.runs[1].stopped && shown < 0) shown = k;
-      EXPECT_EQ(state.runs[1].stopped, stopTime <= state.time + 1e-9) << fps << " fps, frame " << k << " at t = " << state.time;
+      EXPECT_EQ(state.runs[1].stopped, stopTime <= state.time + 1e-9)
+          << fps << " fps, frame " << k << " at t = " << state.time;
     }
     EXPECT_EQ(shown, fps == 30 ? 42 : 69) << fps << " fps";
   }

@@ -271,7 +271,8 @@ TEST_F(PixelProbe, TheCurrentStateCarriesADirectionMarkWithinTheOutline) {
   auto inkNear = [&](const Image& picture, P2 at) {
     int ink = 0;
     for (int dy = -3; dy <= 3; ++dy)
-      for (int dx = -3; dx <= 3; ++dx) ink += isInk(pixel(picture, int(std::lround(at.x)) + dx, int(std::lround(at.y)) + dy));
+      for (int dx = -3; dx <= 3; ++dx)
+        ink += isInk(pixel(picture, int(std::lround(at.x)) + dx, int(std::lround(at.y)) + dy));
     return ink;
   };
   const FrameState inwards = runFrom(70, 40);
@@ -312,7 +313,8 @@ TEST_F(PixelProbe, TheCurrentStateCarriesADirectionMarkWithinTheOutline) {
       drawn += !isBackground(pixel(atLimb, int(std::lround(p.x)), int(std::lround(p.y))));
     }
   EXPECT_GT(probed, 500);
-  EXPECT_EQ(drawn, 0) << drawn << " of " << probed << " pixels just outside the outline by the state at the limb are drawn on";
+  EXPECT_EQ(drawn, 0) << drawn << " of " << probed
+                      << " pixels just outside the outline by the state at the limb are drawn on";
 }
 
 TEST_F(PixelProbe, PinsAreCharcoal) {
