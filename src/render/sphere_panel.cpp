@@ -703,9 +703,10 @@ void labelChartPoles(const PanelContext& context, const SphereCamera& camera, La
 }
 
 // The seams t = +-pi/2 (view.sphere.seam), where the published metric divides by zero: two meridians drawn as dashed
-// red lines on the sphere (fainter behind it), one named where it faces the eye.
+// red lines on the sphere (fainter behind it), one named where it faces the eye. The lines ride on the sphere under
+// the paths and balls (`surface`), kept within its outline; the name goes with the labels.
 void drawSeams(const PanelContext& context, const SphereCamera& camera, LabelPlacer& placer,
-               std::vector<PixelRect>& placed, ShapeBatch& back, ShapeBatch& front) {
+               std::vector<PixelRect>& placed, ShapeBatch& surface, ShapeBatch& back, ShapeBatch& labels) {
   const double pi = std::acos(-1.0);
   const Rgba red = palette::withAlpha(palette::stopRed, 0.85f);
   std::optional<P2> named;
@@ -713,7 +714,9 @@ void drawSeams(const PanelContext& context, const SphereCamera& camera, LabelPla
   for (const double t : {pi / 2, -pi / 2}) {
     std::vector<PolylinePoint> front_, back_;
     auto flush = [&] {
-      front.dashedPolyline(front_, 7 * context.unit, 3 * context.unit);
+      for (auto* points : {&front_, &back_})
+        for (PolylinePoint& point : *points) point.at = withinOutline(camera, point.at, point.halfWidth);
+      surface.dashedPolyline(front_, 7 * context.unit, 3 * context.unit);
       dashedBehind(context, back_, back);
       front_.clear();
       back_.clear();
@@ -722,7 +725,7 @@ void drawSeams(const PanelContext& context, const SphereCamera& camera, LabelPla
       const double phi = -pi / 2 + pi * k / 128;
       const V3 p{1.003 * std::cos(phi) * std::cos(t), 1.003 * std::cos(phi) * std::sin(t), 1.003 * std::sin(phi)};
       if (!camera.inFront(p)) continue;
-      const bool hidden = behindSphere(camera, p);
+      const bool hidden = surfaceBehind(camera, p);
       auto& side = hidden ? back_ : front_;
       auto& other = hidden ? front_ : back_;
       if (!other.empty()) flush();
@@ -739,7 +742,7 @@ void drawSeams(const PanelContext& context, const SphereCamera& camera, LabelPla
   }
   if (named)
     drawLabel(fittedForm(context.font, seamLabels(), TextSize::Small, labelBudget(camera)), *named, false, context, placer,
-              placed, front);
+              placed, labels);
 }
 
 // The distance colouring's loci and the closed geodesics (frame_state.hpp SphereCurve) riding on the sphere: a locus
@@ -934,7 +937,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   for (const P2& p : pathPoints) placer.avoidPoint(p);
   // Labels over the paths (never struck through), placed clear of the balls, the paths and each other.
   ShapeBatch labelLayer, loci;  // the loci ride on the sphere, under every path
-  if (decoration && decoration->seam) drawSeams(context, camera, placer, labels, back, labelLayer);
+  if (decoration && decoration->seam) drawSeams(context, camera, placer, labels, loci, back, labelLayer);
   if (decoration && !decoration->curves.empty()) drawLoci(*decoration, context, camera, placer, labels, loci, back, labelLayer);
   if (space == ViewSpace::Sphere) labelChartPoles(context, camera, placer, labels, back, labelLayer);
   batch.append(loci);

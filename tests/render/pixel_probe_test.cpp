@@ -317,6 +317,53 @@ TEST_F(PixelProbe, TheCurrentStateCarriesADirectionMarkWithinTheOutline) {
                       << " pixels just outside the outline by the state at the limb are drawn on";
 }
 
+// The seam (view.sphere.seam) rides on the sphere under the paths and balls: a state on the seam shows its ball
+// whole, not struck through by the seam's red dashes (scenes/seam.json starts there).
+TEST_F(PixelProbe, TheSeamRunsUnderAStateOnIt) {
+  auto decoration = std::make_shared<SphereDecoration>();
+  decoration->seam = true;
+  ViewSettings facing = settings;
+  facing.camera.viewDirection = onSphere(10 * kDeg, 80 * kDeg);  // the seam t = 90 deg runs down the front
+  const ImageSize size{1280, 720};
+  Renderer large(facing, size);
+  FrameState onSeam = frame;
+  onSeam.sphereDecoration = decoration;
+  RunFrame& run = onSeam.runs[0];
+  run.path.clear();
+  run.pathTimes.clear();
+  for (int k = 0; k <= 30; ++k) {  // along the equator, ending on the seam
+    run.path.push_back(onSphere(0, (60 + k) * kDeg));
+    run.pathTimes.push_back(3.0);
+  }
+  run.current = run.path.back();
+  const Image picture = large.render(onSeam);
+  const auto rects = layoutPanels(facing.panels, size.width, size.height);
+  PixelRect panel;
+  for (std::size_t i = 0; i < facing.panels.size(); ++i)
+    if (facing.panels[i].kind == PanelKind::Sphere) panel = rects[i];
+  const SphereCamera view(facing.camera, onSeam.time, panel);
+  const Vec3 state = run.current;
+  const P2 ball = view.project({state.x * 1.055, state.y * 1.055, state.z * 1.055});
+  const P2 seam = view.project({state.x * 1.003, state.y * 1.003, state.z * 1.003});  // the seam under the ball
+  const float radius = float(0.055 * view.pixelsPerUnitAt({state.x * 1.055, state.y * 1.055, state.z * 1.055}));
+  auto plain = std::make_shared<SphereDecoration>();
+  FrameState noSeam = onSeam;
+  noSeam.sphereDecoration = plain;
+  const Image without = large.render(noSeam);
+  // Along the seam within the ball (a few pixels inside its outline): the ball as it is without the seam.
+  int struck = 0, probed = 0;
+  for (int dy = -12; dy <= 12; ++dy) {
+    const P2 at{seam.x, seam.y + float(dy)};
+    if (std::hypot(at.x - ball.x, at.y - ball.y) > radius - 3) continue;
+    const int x = int(std::lround(at.x)), y = int(std::lround(at.y));
+    const Rgb8 c = pixel(picture, x, y), b = pixel(without, x, y);
+    ++probed;
+    struck += std::abs(c.r - b.r) + std::abs(c.g - b.g) + std::abs(c.b - b.b) > 6;
+  }
+  EXPECT_GT(probed, 10);
+  EXPECT_EQ(struck, 0) << struck << " of " << probed << " pixels along the seam within the ball show the seam";
+}
+
 TEST_F(PixelProbe, PinsAreCharcoal) {
   // Side by side (one run): the run's name has its line at the foot of the panel.
   const FrameComposer composer(settings, testing::kSmallSize);
