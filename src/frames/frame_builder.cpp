@@ -31,6 +31,15 @@ double stopTimeSoFar(const RunFrame& run) {
 
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+// Whether a run that could be sampled at frame time t stops by t: its last good time is t itself (up to the
+// rounding of step times summed against k / fps), so the stop lies in this frame's interval ((k - 1) / fps, k / fps]
+// and this frame shows it, not the next. Asking for the state just past t tries the step after it; the steps never
+// depend on the times asked for (simulation/trajectory.hpp), and the next sample, `spacing` later, is still after it.
+constexpr double kSameTime = 1e-9;  // relative
+bool stopsBy(Trajectory& trajectory, double t, double spacing) {
+  return !trajectory.sampleAt(t + std::min(kSameTime * std::max(1.0, std::abs(t)), 0.1 * spacing));
+}
+
 std::vector<Vec2> hingeList(const Eigen::Matrix2Xd& hinges) {
   std::vector<Vec2> list;
   for (Eigen::Index k = 0; k < hinges.cols(); ++k) list.push_back({hinges(0, k), hinges(1, k)});
@@ -169,6 +178,10 @@ double FrameBuilder::pathSampleTime(int k, int j, int substeps) const {
   return j == substeps ? scene_.frameTime(k) : ((k - 1) * substeps + j) / double(substeps * scene_.output.fps);
 }
 
+double FrameBuilder::sampleSpacing() const {
+  return 1.0 / (double(scene_.view.pathSamplesPerFrame) * scene_.output.fps);
+}
+
 void FrameBuilder::advanceTo(int k) {
   if (k < sampled_ || k >= frameCount_) throw std::out_of_range("FrameBuilder: frame out of order or range");
   while (sampled_ < k) sampleFrame(sampled_ + 1);
@@ -216,25 +229,37 @@ void FrameBuilder::sampleMembers(int k) {
       path.times.push_back(t);
       fadeOut(path, t, scene_.view.pathFadeSeconds);
       thinOut(path);
-      if (step == substeps) member.hinges = hingeList(sample->hinges);
+      if (step == substeps) {
+        member.hinges = hingeList(sample->hinges);
+        member.stopped = stopsBy(trajectory, t, sampleSpacing());  // stopped at the frame time itself: shown now
+      }
     }
   });
+}
+
+// The run shown stopped from now on, with when and why (t: the first time it could not be sampled at).
+void FrameBuilder::markStopped(std::size_t run, double t) {
+  RunFrame& frame = history_[run].frame;
+  frame.stopped = true;
+  const std::optional<StopInfo>& stop = runs_[run].stop();
+  frame.stopTime = stop ? stop->time : t;
+  if (stop) {
+    frame.stopReason = stop->reason;
+    frame.stopMeasured = stop->measured;
+    frame.stopLimit = stop->limit;
+  }
 }
 
 void FrameBuilder::sampleRunAt(size_t run, double t, bool isFrameTime) {
   RunHistory& history = history_[run];
   RunFrame& frame = history.frame;
-  if (frame.stopped) return;
+  if (frame.stopped) {  // the frame showing the stop kept its last good hinges; no plot values after it
+    history.hingesAtFrame.resize(2, 0);
+    return;
+  }
   const std::optional<Sample> sample = runs_[run].sampleAt(t);
   if (!sample) {
-    frame.stopped = true;
-    const std::optional<StopInfo>& stop = runs_[run].stop();
-    frame.stopTime = stop ? stop->time : t;
-    if (stop) {
-      frame.stopReason = stop->reason;
-      frame.stopMeasured = stop->measured;
-      frame.stopLimit = stop->limit;
-    }
+    markStopped(run, t);
     history.hingesAtFrame.resize(2, 0);
     return;
   }
@@ -253,7 +278,9 @@ void FrameBuilder::sampleRunAt(size_t run, double t, bool isFrameTime) {
   }
   fadeOut(history.path, t, scene_.view.pathFadeSeconds);
   thinOut(history.path);
-  if (isFrameTime) recordFrameState(history, *sample);
+  if (!isFrameTime) return;
+  recordFrameState(history, *sample);
+  if (stopsBy(runs_[run], t, sampleSpacing())) markStopped(run, t);  // stopped at the frame time itself: shown now
 }
 
 // At a frame time: the linkage, the plots' values and the trails (one point per frame, while visible).

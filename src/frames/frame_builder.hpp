@@ -50,7 +50,7 @@ class FrameBuilder {
     PathHistory path;
     std::vector<SharedTrack<Vec2>> trails;
     std::vector<PathHistory> memberPaths;
-    Eigen::Matrix2Xd hingesAtFrame;    // for the divergence plot; no columns once stopped
+    Eigen::Matrix2Xd hingesAtFrame;    // for the divergence plot; no columns after the frame showing the stop
     SharedTrack<double> energyErrors;  // one per frame while running
     SharedTrack<double> jacobiSizes;   // one per frame while running (runs with Jacobi fields; else NaN)
     SharedTrack<double> spreads;       // one per frame: the family's largest hinge distance from the run
@@ -58,8 +58,10 @@ class FrameBuilder {
 
   void sampleFrame(int k);  // advance the history to frame k (k = sampled_ + 1)
   void sampleRunAt(size_t run, double t, bool isFrameTime);
+  void markStopped(std::size_t run, double t);
   void recordFrameState(RunHistory& history, const Sample& sample);
   void sampleMembers(int k);
+  double sampleSpacing() const;  // between consecutive path samples (after frame 0)
   double pathSampleTime(int k, int j, int substeps) const;  // every family member up to frame k, members spread over the cores
   void recordPlots(int k);
   FrameState snapshot(int k) const;

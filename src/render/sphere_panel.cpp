@@ -101,6 +101,32 @@ Rgba ghost(Rgba c) { return palette::withAlpha(c, c.a * kGhostAlpha); }
 // Dashes and gaps of hidden paths, in frame units.
 constexpr float kGhostDash = 5.0f, kGhostGap = 3.5f;
 
+// Over a colour-mapped sphere the far side's faint lines would vanish on the map's dark end (viridis' purple): there
+// they are drawn on a light halo, faint with them. The plain sphere is light: no halo, its look unchanged.
+bool onColouredSphere(const PanelContext& context) {
+  return context.frame.viewSpace == ViewSpace::Sphere && context.frame.sphereDecoration &&
+         context.frame.sphereDecoration->field;
+}
+Rgba farSideHalo(Rgba ghostColor) { return {1, 1, 1, 0.8f * ghostColor.a}; }
+// A hidden line, dashed and faint (on its halo over a coloured sphere); the halo's dashes are the line's own.
+void dashedBehind(const PanelContext& context, const std::vector<PolylinePoint>& points, ShapeBatch& back) {
+  const float mark = markUnit(context.unit);
+  if (onColouredSphere(context) && points.size() >= 2) {
+    std::vector<PolylinePoint> halo = points;
+    for (PolylinePoint& point : halo) {
+      point.halfWidth += 0.6f * mark;
+      point.color = farSideHalo(point.color);
+    }
+    back.dashedPolyline(halo, kGhostDash * mark, kGhostGap * mark);
+  }
+  back.dashedPolyline(points, kGhostDash * mark, kGhostGap * mark);
+}
+// A hidden ring, faint (on its halo over a coloured sphere).
+void ringBehind(const PanelContext& context, P2 at, float radius, float halfWidth, Rgba color, ShapeBatch& back) {
+  if (onColouredSphere(context)) back.ring(at, radius, halfWidth + 0.6f * markUnit(context.unit), farSideHalo(color));
+  back.ring(at, radius, halfWidth, color);
+}
+
 P2 plus(P2 a, P2 b, float s = 1) { return {a.x + s * b.x, a.y + s * b.y}; }
 P2 unitDirection(P2 from, P2 to) {
   const float dx = to.x - from.x, dy = to.y - from.y, len = std::hypot(dx, dy);
@@ -223,7 +249,7 @@ void drawPath(const SharedSpan<Vec3>& path, const SharedSamples& times, const Pa
   const float ghostHalfWidth = (look.thin ? 0.4f : 0.7f) * markUnit(context.unit);
   auto flushHidden = [&] {
     for (PolylinePoint& point : hiddenPoints) point.at = withinOutline(camera, point.at, point.halfWidth);
-    back.dashedPolyline(hiddenPoints, kGhostDash * markUnit(context.unit), kGhostGap * markUnit(context.unit));
+    dashedBehind(context, hiddenPoints, back);
     hiddenPoints.clear();
   };
   auto flush = [&] {
@@ -296,7 +322,7 @@ void drawFamily(const RunFrame& run, const PanelContext& context, const SphereCa
   auto flush = [&] {
     front.polyline(wavefront, true, 0.2f);
     wavefront.clear();
-    back.dashedPolyline(hiddenWavefront, kGhostDash * markUnit(context.unit), kGhostGap * markUnit(context.unit));
+    dashedBehind(context, hiddenWavefront, back);
     hiddenWavefront.clear();
   };
   const Rgba waveInk = palette::withAlpha(palette::ink, 0.9f);
@@ -320,7 +346,8 @@ void drawFamily(const RunFrame& run, const PanelContext& context, const SphereCa
     const float pixelsPerUnit = float(camera.pixelsPerUnitAt(p));
     const float radius = std::max(1.5f * context.unit, 0.35f * float(kBallRadius) * pixelsPerUnit);
     if (placement.onSphere && surfaceBehind(camera, p)) {
-      back.ring(camera.project(p), radius, 0.5f * context.unit, ghost(memberColor(run.color, m, count)));
+      ringBehind(context, camera.project(p), radius, 0.5f * context.unit, ghost(memberColor(run.color, m, count)),
+                 back);
       continue;
     }
     if (member.stopped) front.disc(camera.project(p), radius + 1.5f * context.unit, palette::stopRed, false, 0, placement.world(p));
@@ -354,14 +381,19 @@ BallPlace placeBall(const RunFrame& run, float unit, const SphereCamera& camera,
   ball.behind = placement.onSphere && surfaceBehind(camera, ball.centre);
   // At the limb a ball resting on the surface would stand out past the outline: its centre stays on or inside it.
   if (placement.onSphere) ball.at = withinOutline(camera, ball.at, 0.0f);
-  // The heading: from the last path point at least a few units back on the screen to the state.
+  // The heading: from the last path point at least a few units back on the screen to the state, both as the path
+  // is placed (the ball's centre, lifted higher, is shifted away from the sphere's centre on the screen: measured from
+  // it, the heading would point outwards wherever the ball is off the centre).
+  const V3 state = placement.place(run.current);
+  if (!camera.inFront(state)) return ball;
+  const P2 now = camera.project(state);
   for (std::size_t i = run.path.size(); i-- > 0;) {
     if (!drawable(run.path[i])) break;
     const V3 p = placement.place(run.path[i]);
     if (!camera.inFront(p)) break;
     const P2 q = camera.project(p);
-    if (std::hypot(ball.at.x - q.x, ball.at.y - q.y) >= 3 * unit) {
-      ball.heading = unitDirection(q, ball.at);
+    if (std::hypot(now.x - q.x, now.y - q.y) >= 3 * unit) {
+      ball.heading = unitDirection(q, now);
       ball.headingKnown = true;
       break;
     }
@@ -392,25 +424,43 @@ void spreadCoincidingBalls(std::vector<BallPlace>& balls) {
 
 // The current state of a run. In front: a shaded ball on a thin dark rim (a stopped run's on a red halo), hidden
 // per pixel where the sphere's outline passes in front of it. Behind the sphere: a hollow ring in its colour (a red
-// one around it when stopped), nothing inside, so it never reads as a spot on the front. An arrowhead just past the
-// ball points along the last section of the path (a moving run only).
-void drawBall(const RunFrame& run, const BallPlace& ball, float unit, const SphereCamera& camera,
+// one around it when stopped), nothing inside, so it never reads as a spot on the front. The direction mark: a
+// chevron just past the ball pointing along the last section of the path (a moving run only), dark on a light halo
+// in front (it reads on a dark path or colour map), faint alone behind. The chevron and the hidden rings are kept
+// within the sphere's outline (a ball in front, standing on the surface, may stand out past it at the limb).
+void drawBall(const RunFrame& run, const BallPlace& ball, const PanelContext& context, const SphereCamera& camera,
               const Placement& placement, ShapeBatch& back, ShapeBatch& front) {
   if (!ball.shown) return;
+  const float unit = context.unit;
+  const ColorRGB& background = context.settings.background;
   const float radius = ball.radius;
   const P2 at = ball.at;
   const float mark = markUnit(unit);
   if (!run.stopped && ball.headingKnown) {
     const P2 d = ball.heading, n{-d.y, d.x};
-    const P2 tip = plus(at, d, radius + 7 * mark), base = plus(at, d, radius + 2.5f * mark);
-    const Rgba arrow = ball.behind ? ghost(palette::ink) : palette::ink;
-    ShapeBatch& layer = ball.behind ? back : front;
-    layer.capsule(plus(base, n, 3.5f * mark), tip, 0.8f * mark, arrow);
-    layer.capsule(plus(base, n, -3.5f * mark), tip, 0.8f * mark, arrow);
+    const float halfWidth = (ball.behind ? 0.8f : 0.9f) * mark;
+    P2 tip = plus(at, d, radius + 8.5f * mark);
+    const P2 base = plus(at, d, radius + 3 * mark);
+    P2 left = plus(base, n, 4 * mark), right = plus(base, n, -4 * mark);
+    if (placement.onSphere)
+      for (P2* point : {&tip, &left, &right}) *point = withinOutline(camera, *point, halfWidth);
+    if (ball.behind) {
+      back.capsule(left, tip, halfWidth, ghost(palette::ink));
+      back.capsule(right, tip, halfWidth, ghost(palette::ink));
+    } else {
+      const Rgba halo{background.r, background.g, background.b, 0.75f};
+      const std::pair<float, Rgba> strokes[] = {{halfWidth + 0.9f * mark, halo}, {halfWidth, palette::ink}};
+      for (const auto& [width, color] : strokes) {
+        front.capsule(left, tip, width, color);
+        front.capsule(right, tip, width, color);
+      }
+    }
   }
   if (ball.behind) {
-    back.ring(at, 0.8f * radius, 0.9f * mark, ghost(toRgba(run.color)));
-    if (run.stopped) back.ring(at, 0.8f * radius + 2.5f * mark, 0.8f * mark, ghost(palette::stopRed));
+    const float outer = 0.8f * radius + (run.stopped ? 2.5f : 0.0f) * mark + 0.9f * mark;
+    const P2 ring = placement.onSphere ? withinOutline(camera, at, outer) : at;
+    ringBehind(context, ring, 0.8f * radius, 0.9f * mark, ghost(toRgba(run.color)), back);
+    if (run.stopped) ringBehind(context, ring, 0.8f * radius + 2.5f * mark, 0.8f * mark, ghost(palette::stopRed), back);
     return;
   }
   Placement ballPlacement = placement;
@@ -424,7 +474,8 @@ void drawBall(const RunFrame& run, const BallPlace& ball, float unit, const Sphe
   front.disc(at, radius, toRgba(run.color), true, 0.55f, world, radius / pixelsPerUnit);
 }
 
-// The start of a run's path: a short dark bar across its first section (faint where the sphere hides it).
+// The start of a run's path: a short dark bar across its first section (faint where the sphere hides it), kept
+// within the sphere's outline as the path is (each end a half width inside it, so a bar at the limb is shortened).
 void drawStart(const RunFrame& run, float offset, float unit, const SphereCamera& camera, const Placement& placement,
                ShapeBatch& back, ShapeBatch& front) {
   if (run.path.size() < 2 || !drawable(run.path[0])) return;
@@ -442,14 +493,20 @@ void drawStart(const RunFrame& run, float offset, float unit, const SphereCamera
   const float mark = markUnit(unit);
   const P2 across{-along.y, along.x};
   const float tube = std::max(1.8f * unit, float(kTubeRadius * camera.pixelsPerUnitAt(p)));
-  const P2 middle = plus(at, across, offset * tube);
   const float half = 2.2f * tube + 2 * mark;
-  if (placement.onSphere && surfaceBehind(camera, p)) {
-    back.capsule(plus(middle, across, -half), plus(middle, across, half), 0.7f * mark, ghost(palette::ink));
+  const bool behind = placement.onSphere && surfaceBehind(camera, p);
+  const float halfWidth = (behind ? 0.7f : 1.1f) * mark;
+  const P2 middle = plus(at, across, offset * tube);
+  P2 from = plus(middle, across, -half), to = plus(middle, across, half);
+  if (placement.onSphere) {
+    from = withinOutline(camera, from, halfWidth);
+    to = withinOutline(camera, to, halfWidth);
+  }
+  if (behind) {
+    back.capsule(from, to, halfWidth, ghost(palette::ink));
     return;
   }
-  front.capsule(plus(middle, across, -half), plus(middle, across, half), 1.1f * mark, palette::ink, false, 0,
-                placement.world(p));
+  front.capsule(from, to, halfWidth, palette::ink, false, 0, placement.world(p));
 }
 
 // Conjugate points on the path (runs with Jacobi fields): an ink ring around a dot of the run's colour, where
@@ -638,16 +695,18 @@ void labelChartPoles(const PanelContext& context, const SphereCamera& camera, La
     if (!camera.inFront(pole)) continue;
     const P2 at = camera.project(pole);
     const bool hidden = behindSphere(camera, pole);
-    if (hidden) back.ring(at, 4 * markUnit(context.unit), 0.6f * markUnit(context.unit), ghost(palette::poleMark));
+    const float mark = markUnit(context.unit);
+    if (hidden) ringBehind(context, at, 4 * mark, 0.6f * mark, ghost(palette::poleMark), back);
     drawLabel(fittedForm(context.font, chartPoleLabels(z > 0), TextSize::Small, labelBudget(camera)), at, hidden, context,
               placer, placed, batch);
   }
 }
 
 // The seams t = +-pi/2 (view.sphere.seam), where the published metric divides by zero: two meridians drawn as dashed
-// red lines on the sphere (fainter behind it), one named where it faces the eye.
+// red lines on the sphere (fainter behind it), one named where it faces the eye. The lines ride on the sphere under
+// the paths and balls (`surface`), kept within its outline; the name goes with the labels.
 void drawSeams(const PanelContext& context, const SphereCamera& camera, LabelPlacer& placer,
-               std::vector<PixelRect>& placed, ShapeBatch& back, ShapeBatch& front) {
+               std::vector<PixelRect>& placed, ShapeBatch& surface, ShapeBatch& back, ShapeBatch& labels) {
   const double pi = std::acos(-1.0);
   const Rgba red = palette::withAlpha(palette::stopRed, 0.85f);
   std::optional<P2> named;
@@ -655,8 +714,10 @@ void drawSeams(const PanelContext& context, const SphereCamera& camera, LabelPla
   for (const double t : {pi / 2, -pi / 2}) {
     std::vector<PolylinePoint> front_, back_;
     auto flush = [&] {
-      front.dashedPolyline(front_, 7 * context.unit, 3 * context.unit);
-      back.dashedPolyline(back_, kGhostDash * markUnit(context.unit), kGhostGap * markUnit(context.unit));
+      for (auto* points : {&front_, &back_})
+        for (PolylinePoint& point : *points) point.at = withinOutline(camera, point.at, point.halfWidth);
+      surface.dashedPolyline(front_, 7 * context.unit, 3 * context.unit);
+      dashedBehind(context, back_, back);
       front_.clear();
       back_.clear();
     };
@@ -664,7 +725,7 @@ void drawSeams(const PanelContext& context, const SphereCamera& camera, LabelPla
       const double phi = -pi / 2 + pi * k / 128;
       const V3 p{1.003 * std::cos(phi) * std::cos(t), 1.003 * std::cos(phi) * std::sin(t), 1.003 * std::sin(phi)};
       if (!camera.inFront(p)) continue;
-      const bool hidden = behindSphere(camera, p);
+      const bool hidden = surfaceBehind(camera, p);
       auto& side = hidden ? back_ : front_;
       auto& other = hidden ? front_ : back_;
       if (!other.empty()) flush();
@@ -681,7 +742,7 @@ void drawSeams(const PanelContext& context, const SphereCamera& camera, LabelPla
   }
   if (named)
     drawLabel(fittedForm(context.font, seamLabels(), TextSize::Small, labelBudget(camera)), *named, false, context, placer,
-              placed, front);
+              placed, labels);
 }
 
 // The distance colouring's loci and the closed geodesics (frame_state.hpp SphereCurve) riding on the sphere: a locus
@@ -713,7 +774,7 @@ void drawLoci(const SphereDecoration& decoration, const PanelContext& context, c
         for (PolylinePoint& point : *points) point.at = withinOutline(camera, point.at, point.halfWidth);
       surface.polyline(under);
       surface.polyline(line);
-      back.dashedPolyline(hidden, kGhostDash * markUnit(context.unit), kGhostGap * markUnit(context.unit));
+      dashedBehind(context, hidden, back);
       line.clear();
       under.clear();
       hidden.clear();
@@ -867,7 +928,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   spreadCoincidingBalls(balls);
   std::vector<PixelRect> ballBoxes;
   for (std::size_t k = 0; k < runs.size(); ++k) {
-    drawBall(runs[k], balls[k], context.unit, camera, placement, back, front);
+    drawBall(runs[k], balls[k], context, camera, placement, back, front);
     if (!balls[k].shown) continue;
     const float r = balls[k].radius + 2.5f * context.unit;
     placer.avoid({balls[k].at.x - r, balls[k].at.y - r, balls[k].at.x + r, balls[k].at.y + r});
@@ -876,7 +937,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   for (const P2& p : pathPoints) placer.avoidPoint(p);
   // Labels over the paths (never struck through), placed clear of the balls, the paths and each other.
   ShapeBatch labelLayer, loci;  // the loci ride on the sphere, under every path
-  if (decoration && decoration->seam) drawSeams(context, camera, placer, labels, back, labelLayer);
+  if (decoration && decoration->seam) drawSeams(context, camera, placer, labels, loci, back, labelLayer);
   if (decoration && !decoration->curves.empty()) drawLoci(*decoration, context, camera, placer, labels, loci, back, labelLayer);
   if (space == ViewSpace::Sphere) labelChartPoles(context, camera, placer, labels, back, labelLayer);
   batch.append(loci);

@@ -278,6 +278,52 @@ TEST(FrameBuilder, StoppedRunIsFrozenWithItsReason) {
   EXPECT_TRUE(std::isnan(late.plots[0].series[0].values.back()));  // no divergence once one side stopped
 }
 
+// A stop shows on the frame whose interval ((k - 1) / fps, k / fps] holds it, never on the next: a run stopped at
+// t = 0 (a start on the seam t = pi/2, where the published single chart fails at its first step, as in
+// scenes/seam.json) is stopped in frame 0, frozen at its start; and in every frame, stopped exactly when its stop
+// time has come.
+TEST(FrameBuilder, AStopShowsOnTheFrameWhoseIntervalHoldsIt) {
+  const Scene scene = parseScene(R"({"name": "s", "linkage": {"rods": 4, "L": 3},
+    "initial": {"coords": [0.2, 1.5707963267948966], "velocity": [0.3, 1.0]}, "duration": 0.3,
+    "runs": [{"name": "exact", "method": "christoffel", "integrator": "dopri5", "tolerance": 1e-10},
+             {"name": "published", "method": "christoffel-fd", "integrator": "rk4", "step": 0.02}],
+    "output": {"fps": 30}, "view": {"panels": ["sphere", "linkage", {"panel": "plot", "plot": "energy"}]}})",
+                                 "s.json");
+  FrameBuilder builder = builderFor(scene);
+  const FrameState first = builder.frame(0);
+  ASSERT_TRUE(first.runs[1].stopped) << "the stop at t = 0 shows only on a later frame";
+  EXPECT_EQ(first.runs[1].stopTime, 0.0);
+  EXPECT_EQ(first.runs[1].stopReason, StopReason::FieldBlowUp);
+  EXPECT_FALSE(first.runs[0].stopped);
+  const FrameState second = builder.frame(1);
+  ASSERT_TRUE(second.runs[1].stopped);
+  EXPECT_EQ(second.runs[1].hinges[1].x, first.runs[1].hinges[1].x);  // frozen at its last good state
+  EXPECT_EQ(second.runs[1].hinges[1].y, first.runs[1].hinges[1].y);
+
+  // Through a chart pole (scenes/pole-passage.json) the published method stops at t = 1.38, between two frames at
+  // 30 fps and on a frame at 50 fps (its steps of 0.02 summed, against 69 / 50): stopped from the first frame at or
+  // after it, and not before.
+  for (const int fps : {30, 50}) {
+    const Scene pole = parseScene(R"({"name": "p", "linkage": {"rods": 4, "L": 3},
+      "initial": {"coords": [0.0, 0.0], "velocity": [1.0, 0.0]}, "duration": 1.5,
+      "runs": [{"name": "chart-free", "method": "ambient", "integrator": "dopri5", "tolerance": 1e-10},
+               {"name": "published", "method": "christoffel-fd", "integrator": "rk4", "step": 0.02}],
+      "output": {"fps": )" + std::to_string(fps) + R"(}, "view": {"panels": ["sphere", "linkage"]}})",
+                                  "p.json");
+    FrameBuilder walk = builderFor(pole);
+    const double stopTime = builderFor(pole).frame(pole.frameCount() - 1).runs[1].stopTime;
+    ASSERT_NEAR(stopTime, 1.38, 1e-9);
+    int shown = -1;
+    for (int k = 0; k < pole.frameCount(); ++k) {
+      const FrameState state = walk.frame(k);
+      if (state.runs[1].stopped && shown < 0) shown = k;
+      EXPECT_EQ(state.runs[1].stopped, stopTime <= state.time + 1e-9)
+          << fps << " fps, frame " << k << " at t = " << state.time;
+    }
+    EXPECT_EQ(shown, fps == 30 ? 42 : 69) << fps << " fps";
+  }
+}
+
 // The same double, NaN included.
 bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 

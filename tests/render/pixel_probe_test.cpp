@@ -176,14 +176,14 @@ TEST_F(PixelProbe, PathBehindTheSphereIsDashedAndFaint) {
 
 // Nothing drawn on the sphere hangs past its outline: where the probe's path crosses the limb (lifted off the
 // surface, a tube, and shifted sideways as one of two coinciding runs), the band just outside the outline is bare
-// background. Before, a path just beyond the limb was still in sight past the sphere and drawn as in front.
+// background. Before, a path just beyond the limb was still in sight past the sphere and drawn as in front. So too
+// where a path starts at the limb running along it: its start bar, across the path, points out of the sphere.
 TEST_F(PixelProbe, NothingOnTheSphereHangsPastItsOutline) {
   FrameState two = frame;
   two.runs.push_back(two.runs[0]);  // coinciding: drawn side by side, each shifted a half width
   two.runs[1].color = {0.0f, 0.45f, 0.70f};
   const ImageSize size{1280, 720};
   Renderer large(settings, size);
-  const Image picture = large.render(two);
   const auto rects = layoutPanels(settings.panels, size.width, size.height);
   PixelRect panel;
   for (std::size_t i = 0; i < settings.panels.size(); ++i)
@@ -192,19 +192,176 @@ TEST_F(PixelProbe, NothingOnTheSphereHangsPastItsOutline) {
   const P2 c = view.centre();
   const double outline = view.outlineRadius();
   ASSERT_GT(outline, 100);
+  // Pixels drawn on in the band 2 to 14 px outside the outline, within 0.2 rad of the screen direction of `at`.
+  auto drawnOutside = [&](const Image& picture, P2 at, int& probed) {
+    const double towards = std::atan2(at.y - c.y, at.x - c.x);
+    int drawn = 0;
+    for (double a = towards - 0.2; a <= towards + 0.2; a += 0.005)
+      for (double r = outline + 2; r <= outline + 14; r += 1) {
+        const Rgb8 p = pixel(picture, int(std::lround(c.x + r * std::cos(a))), int(std::lround(c.y + r * std::sin(a))));
+        ++probed;
+        drawn += !isBackground(p);
+      }
+    return drawn;
+  };
   // The direction on the screen where the path meets the limb (t = 97.5 deg at phi = 7.5 deg is 90 deg from the eye).
   const Vec3 meet = onSphere(7.5 * kDeg, 97.5 * kDeg);
-  const P2 limb = view.project({meet.x, meet.y, meet.z});
-  const double towards = std::atan2(limb.y - c.y, limb.x - c.x);
-  int probed = 0, drawn = 0;
-  for (double a = towards - 0.2; a <= towards + 0.2; a += 0.005)
-    for (double r = outline + 2; r <= outline + 14; r += 1) {
-      const Rgb8 p = pixel(picture, int(std::lround(c.x + r * std::cos(a))), int(std::lround(c.y + r * std::sin(a))));
-      ++probed;
-      drawn += !isBackground(p);
-    }
+  int probed = 0;
+  const int drawn = drawnOutside(large.render(two), view.project({meet.x, meet.y, meet.z}), probed);
   EXPECT_GT(probed, 500);
   EXPECT_EQ(drawn, 0) << drawn << " of " << probed << " pixels just outside the outline are drawn on";
+
+  // A path starting 2 deg in front of the limb (the circle where sight lines graze the sphere) and running along it.
+  const V3 eye = view.eye();
+  const double eyeDistance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
+  const V3 w{eye.x / eyeDistance, eye.y / eyeDistance, eye.z / eyeDistance};
+  const double ez = std::sqrt(w.x * w.x + w.y * w.y);  // a unit vector across w, then the third of the frame
+  ASSERT_GT(ez, 0.1);
+  const V3 u{-w.y / ez, w.x / ez, 0}, v{w.y * u.z - w.z * u.y, w.z * u.x - w.x * u.z, w.x * u.y - w.y * u.x};
+  const double polar = std::acos(1.0 / eyeDistance) - 2 * kDeg;
+  FrameState start = frame;
+  RunFrame& run = start.runs[0];
+  run.path.clear();
+  run.pathTimes.clear();
+  for (int k = 0; k <= 40; ++k) {
+    const double a = -20 * kDeg + k * kDeg;  // starts 20 deg before the top of the circle, ends past it
+    const double s = std::sin(polar), z = std::cos(polar);
+    run.path.push_back({z * w.x + s * (std::cos(a) * v.x + std::sin(a) * u.x),
+                        z * w.y + s * (std::cos(a) * v.y + std::sin(a) * u.y),
+                        z * w.z + s * (std::cos(a) * v.z + std::sin(a) * u.z)});
+    run.pathTimes.push_back(3.0);
+  }
+  run.current = run.path.back();  // 40 deg on: far from the start's direction
+  const Vec3 first = run.path.front();
+  int probedStart = 0;
+  const int drawnStart = drawnOutside(large.render(start), view.project({first.x, first.y, first.z}), probedStart);
+  EXPECT_GT(probedStart, 500);
+  EXPECT_EQ(drawnStart, 0) << drawnStart << " of " << probedStart
+                           << " pixels just outside the outline by the path's start are drawn on";
+}
+
+// Time on the sphere: the current state carries a direction mark, a dark chevron just past the ball on the side it
+// moves to (not on the side it came from), and at the limb the chevron stays within the outline. The state here is
+// off the view's centre and moving towards it: the ball, lifted higher than the path, is shifted outwards on the
+// screen, and a heading measured from the ball's centre would point outwards instead.
+TEST_F(PixelProbe, TheCurrentStateCarriesADirectionMarkWithinTheOutline) {
+  const ImageSize size{1280, 720};
+  Renderer large(settings, size);
+  const auto rects = layoutPanels(settings.panels, size.width, size.height);
+  PixelRect panel;
+  for (std::size_t i = 0; i < settings.panels.size(); ++i)
+    if (settings.panels[i].kind == PanelKind::Sphere) panel = rects[i];
+  const SphereCamera view(settings.camera, frame.time, panel);
+  auto lifted = [](const Vec3& p, double r) { return V3{p.x * r, p.y * r, p.z * r}; };
+  // A run along phi = 7.5 deg from t = 70 deg to t = 40 deg (the view's centre is at t = 7.5 deg).
+  auto runFrom = [&](double t0, double t1) {
+    FrameState moving = frame;
+    RunFrame& run = moving.runs[0];
+    run.path.clear();
+    run.pathTimes.clear();
+    for (int k = 0; k <= 60; ++k) {
+      run.path.push_back(onSphere(7.5 * kDeg, (t0 + (t1 - t0) * k / 60.0) * kDeg));
+      run.pathTimes.push_back(3.0);
+    }
+    run.current = run.path.back();
+    return moving;
+  };
+  auto isInk = [](Rgb8 c) { return c.r < 110 && c.g < 110 && c.b < 110 && std::abs(c.r - c.b) < 30; };
+  // Dark neutral pixels within 3 px of `at`.
+  auto inkNear = [&](const Image& picture, P2 at) {
+    int ink = 0;
+    for (int dy = -3; dy <= 3; ++dy)
+      for (int dx = -3; dx <= 3; ++dx)
+        ink += isInk(pixel(picture, int(std::lround(at.x)) + dx, int(std::lround(at.y)) + dy));
+    return ink;
+  };
+  const FrameState inwards = runFrom(70, 40);
+  const Image picture = large.render(inwards);
+  const Vec3 state = inwards.runs[0].current, before = inwards.runs[0].path[55];
+  const P2 on = view.project(lifted(state, 1.014)), back = view.project(lifted(before, 1.014));
+  const P2 ball = view.project(lifted(state, 1.055));
+  const double length = std::hypot(on.x - back.x, on.y - back.y);
+  ASSERT_GT(length, 3);
+  const P2 heading{float((on.x - back.x) / length), float((on.y - back.y) / length)};
+  const float radius = std::max(3.5f, float(0.055 * view.pixelsPerUnitAt(lifted(state, 1.055))));
+  const float reach = radius + 7.5f;  // the chevron's tip is 8.5 frame units past the ball's edge
+  const P2 ahead{ball.x + reach * heading.x, ball.y + reach * heading.y};
+  const P2 behind{ball.x - reach * heading.x, ball.y - reach * heading.y};
+  EXPECT_GE(inkNear(picture, ahead), 3) << "no direction mark ahead of the state";
+  EXPECT_EQ(inkNear(picture, behind), 0) << "a direction mark on the side the state came from";
+
+  // Out through the limb: a path along phi = 7.5 deg ending just in front of the limb (t = 97.5 deg is 90 deg from
+  // the view's centre; the limb, where sight lines graze the sphere, is nearer). Just outside the outline nothing is
+  // drawn but the ball, which stands on the surface at the outline: the chevron keeps within it.
+  const V3 eye = view.eye();
+  const double limb = std::acos(1.0 / std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z)) / kDeg;
+  const FrameState outwards = runFrom(40, 7.5 + limb - 1.5);
+  const Image atLimb = large.render(outwards);
+  const P2 c = view.centre();
+  const double outline = view.outlineRadius();
+  P2 standing = view.project(lifted(outwards.runs[0].current, 1.055));  // the ball's centre, on or inside the outline
+  const double out = std::hypot(standing.x - c.x, standing.y - c.y);
+  if (out > outline)
+    standing = {float(c.x + (standing.x - c.x) * outline / out), float(c.y + (standing.y - c.y) * outline / out)};
+  const double towards = std::atan2(standing.y - c.y, standing.x - c.x);
+  int probed = 0, drawn = 0;
+  for (double a = towards - 0.25; a <= towards + 0.25; a += 0.004)
+    for (double r = outline + 2; r <= outline + 20; r += 1) {
+      const P2 p{float(c.x + r * std::cos(a)), float(c.y + r * std::sin(a))};
+      if (std::hypot(p.x - standing.x, p.y - standing.y) < radius + 3) continue;  // the ball, its rim and a pixel
+      ++probed;
+      drawn += !isBackground(pixel(atLimb, int(std::lround(p.x)), int(std::lround(p.y))));
+    }
+  EXPECT_GT(probed, 500);
+  EXPECT_EQ(drawn, 0) << drawn << " of " << probed
+                      << " pixels just outside the outline by the state at the limb are drawn on";
+}
+
+// The seam (view.sphere.seam) rides on the sphere under the paths and balls: a state on the seam shows its ball
+// whole, not struck through by the seam's red dashes (scenes/seam.json starts there).
+TEST_F(PixelProbe, TheSeamRunsUnderAStateOnIt) {
+  auto decoration = std::make_shared<SphereDecoration>();
+  decoration->seam = true;
+  ViewSettings facing = settings;
+  facing.camera.viewDirection = onSphere(10 * kDeg, 80 * kDeg);  // the seam t = 90 deg runs down the front
+  const ImageSize size{1280, 720};
+  Renderer large(facing, size);
+  FrameState onSeam = frame;
+  onSeam.sphereDecoration = decoration;
+  RunFrame& run = onSeam.runs[0];
+  run.path.clear();
+  run.pathTimes.clear();
+  for (int k = 0; k <= 30; ++k) {  // along the equator, ending on the seam
+    run.path.push_back(onSphere(0, (60 + k) * kDeg));
+    run.pathTimes.push_back(3.0);
+  }
+  run.current = run.path.back();
+  const Image picture = large.render(onSeam);
+  const auto rects = layoutPanels(facing.panels, size.width, size.height);
+  PixelRect panel;
+  for (std::size_t i = 0; i < facing.panels.size(); ++i)
+    if (facing.panels[i].kind == PanelKind::Sphere) panel = rects[i];
+  const SphereCamera view(facing.camera, onSeam.time, panel);
+  const Vec3 state = run.current;
+  const P2 ball = view.project({state.x * 1.055, state.y * 1.055, state.z * 1.055});
+  const P2 seam = view.project({state.x * 1.003, state.y * 1.003, state.z * 1.003});  // the seam under the ball
+  const float radius = float(0.055 * view.pixelsPerUnitAt({state.x * 1.055, state.y * 1.055, state.z * 1.055}));
+  auto plain = std::make_shared<SphereDecoration>();
+  FrameState noSeam = onSeam;
+  noSeam.sphereDecoration = plain;
+  const Image without = large.render(noSeam);
+  // Along the seam within the ball (a few pixels inside its outline): the ball as it is without the seam.
+  int struck = 0, probed = 0;
+  for (int dy = -12; dy <= 12; ++dy) {
+    const P2 at{seam.x, seam.y + float(dy)};
+    if (std::hypot(at.x - ball.x, at.y - ball.y) > radius - 3) continue;
+    const int x = int(std::lround(at.x)), y = int(std::lround(at.y));
+    const Rgb8 c = pixel(picture, x, y), b = pixel(without, x, y);
+    ++probed;
+    struck += std::abs(c.r - b.r) + std::abs(c.g - b.g) + std::abs(c.b - b.b) > 6;
+  }
+  EXPECT_GT(probed, 10);
+  EXPECT_EQ(struck, 0) << struck << " of " << probed << " pixels along the seam within the ball show the seam";
 }
 
 TEST_F(PixelProbe, PinsAreCharcoal) {
@@ -432,6 +589,47 @@ INSTANTIATE_TEST_SUITE_P(Colourings, FaithfulColour,
 // The distance colouring's loci are drawn where the decoration puts them: a cut-locus point facing the eye is
 // covered by the cut locus's white (no colour of viridis is light in all three channels), a conjugate-locus point by its magenta; a locus point behind the sphere is not
 // drawn as in front (at most the far side's faint dashes).
+// The far side over a dark colour map (view.sphere.color_by: bending, viridis' purple end, as in
+// scenes/stiffness.json): the hidden section's dashes stand out from the sphere under them (a luminance change of at
+// least 50 levels somewhere along it: the light halo; faint dark red alone on purple changed it by about 20), and it
+// stays dashed (some of it the bare sphere).
+TEST_F(PixelProbe, HiddenDashesReadOnADarkColourMap) {
+  auto decoration = std::make_shared<SphereDecoration>();
+  SphereField field{SphereColoring::Bending, false, 32, 64, {}, 0.0, 1.0};
+  field.values.assign(std::size_t(field.phiCount * field.tCount), 0.0f);  // the map's dark end everywhere
+  decoration->field = field;
+  FrameState dark = frame;
+  dark.sphereDecoration = decoration;
+  FrameState bare = dark;
+  bare.runs.clear();
+  const ImageSize size{1280, 720};
+  Renderer large(settings, size);
+  const Image picture = large.render(dark), sphere = large.render(bare);
+  const auto rects = layoutPanels(settings.panels, size.width, size.height);
+  PixelRect rect{};
+  for (std::size_t i = 0; i < settings.panels.size(); ++i)
+    if (settings.panels[i].kind == PanelKind::Sphere) rect = rects[i];
+  rect.width -= std::min(0.24f * rect.width, 0.45f * rect.height);  // framed left of the colour bar
+  const SphereCamera view(settings.camera, dark.time, rect);
+  auto luminance = [](Rgb8 c) { return 0.30 * c.r + 0.59 * c.g + 0.11 * c.b; };
+  int readable = 0, gaps = 0, probed = 0;
+  for (int k = 0; k <= 80; ++k) {
+    const Vec3 p = onSphere(7.5 * kDeg, (120 + 0.5 * k) * kDeg);  // far side, away from the state
+    const P2 at = view.project({p.x * 1.014, p.y * 1.014, p.z * 1.014});
+    double change = 0;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int x = int(std::lround(at.x)) + dx, y = int(std::lround(at.y)) + dy;
+        change = std::max(change, std::abs(luminance(pixel(picture, x, y)) - luminance(pixel(sphere, x, y))));
+      }
+    ++probed;
+    readable += change >= 50;
+    gaps += change <= 4;
+  }
+  EXPECT_GE(readable, probed / 4) << "the hidden dashes barely show on the dark map";
+  EXPECT_GT(gaps, 0) << "the hidden section is not dashed";
+}
+
 TEST_F(PixelProbe, LociAreDrawnWhereTheDistanceMapPutsThem) {
   auto decoration = std::make_shared<SphereDecoration>();
   SphereField field{SphereColoring::Distance, false, 32, 64, {}, 0.0, 3.0};
