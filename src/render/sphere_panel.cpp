@@ -101,17 +101,18 @@ Rgba ghost(Rgba c) { return palette::withAlpha(c, c.a * kGhostAlpha); }
 // Dashes and gaps of hidden paths, in frame units.
 constexpr float kGhostDash = 5.0f, kGhostGap = 3.5f;
 
-// Over a colour-mapped sphere the far side's faint lines would vanish on the map's dark end (viridis' purple): there
-// they are drawn on a light halo, faint with them. The plain sphere is light: no halo, its look unchanged.
-bool onColouredSphere(const PanelContext& context) {
+// Over a sequential colour map the far side's faint lines would vanish on its dark end (viridis' purple): there
+// they are drawn on a light halo, faint with them. The plain sphere and the diverging map (light in the middle, its
+// ends mid-tones) keep them bare: a halo there changed little and doubled the hidden dashes a fan of 64 draws.
+bool onDarkEndedMap(const PanelContext& context) {
   return context.frame.viewSpace == ViewSpace::Sphere && context.frame.sphereDecoration &&
-         context.frame.sphereDecoration->field;
+         context.frame.sphereDecoration->field && !context.frame.sphereDecoration->field->diverging;
 }
 Rgba farSideHalo(Rgba ghostColor) { return {1, 1, 1, 0.8f * ghostColor.a}; }
-// A hidden line, dashed and faint (on its halo over a coloured sphere); the halo's dashes are the line's own.
+// A hidden line, dashed and faint (on its halo over a dark-ended map); the halo's dashes are the line's own.
 void dashedBehind(const PanelContext& context, const std::vector<PolylinePoint>& points, ShapeBatch& back) {
   const float mark = markUnit(context.unit);
-  if (onColouredSphere(context) && points.size() >= 2) {
+  if (onDarkEndedMap(context) && points.size() >= 2) {
     std::vector<PolylinePoint> halo = points;
     for (PolylinePoint& point : halo) {
       point.halfWidth += 0.6f * mark;
@@ -121,9 +122,9 @@ void dashedBehind(const PanelContext& context, const std::vector<PolylinePoint>&
   }
   back.dashedPolyline(points, kGhostDash * mark, kGhostGap * mark);
 }
-// A hidden ring, faint (on its halo over a coloured sphere).
+// A hidden ring, faint (on its halo over a dark-ended map).
 void ringBehind(const PanelContext& context, P2 at, float radius, float halfWidth, Rgba color, ShapeBatch& back) {
-  if (onColouredSphere(context)) back.ring(at, radius, halfWidth + 0.6f * markUnit(context.unit), farSideHalo(color));
+  if (onDarkEndedMap(context)) back.ring(at, radius, halfWidth + 0.6f * markUnit(context.unit), farSideHalo(color));
   back.ring(at, radius, halfWidth, color);
 }
 
