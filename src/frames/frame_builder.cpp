@@ -37,7 +37,7 @@ const double kNaN = std::numeric_limits<double>::quiet_NaN();
 // depend on the times asked for (simulation/trajectory.hpp), and the next sample, `spacing` later, is still after it.
 constexpr double kSameTime = 1e-9;  // relative
 bool stopsBy(Trajectory& trajectory, double t, double spacing) {
-  return !trajectory.sampleAt(t + std::min(kSameTime * std::max(1.0, std::abs(t)), 0.1 * spacing));
+  return !trajectory.reaches(t + std::min(kSameTime * std::max(1.0, std::abs(t)), 0.1 * spacing));
 }
 
 std::vector<Vec2> hingeList(const Eigen::Matrix2Xd& hinges) {

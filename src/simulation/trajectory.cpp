@@ -264,7 +264,7 @@ Trajectory::~Trajectory() = default;
 Trajectory::Trajectory(Trajectory&&) noexcept = default;
 Trajectory& Trajectory::operator=(Trajectory&&) noexcept = default;
 
-std::optional<Sample> Trajectory::sampleAt(double t) {
+bool Trajectory::reaches(double t) {
   Impl& run = *impl_;
   if (!std::isfinite(t) || t < 0) throw std::invalid_argument("sample time must be finite and >= 0");
   if (t < run.lastSampleTime) throw std::invalid_argument("sample times must be non-decreasing");
@@ -272,8 +272,14 @@ std::optional<Sample> Trajectory::sampleAt(double t) {
     if (run.cancelled && run.cancelled()) throw RunCancelled();
     run.advance();
   }
-  if (run.stop && t > run.stop->time) return std::nullopt;  // the stop time itself can still be sampled
+  if (run.stop && t > run.stop->time) return false;  // the stop time itself can still be sampled
   run.lastSampleTime = t;
+  return true;
+}
+
+std::optional<Sample> Trajectory::sampleAt(double t) {
+  Impl& run = *impl_;
+  if (!reaches(t)) return std::nullopt;
   State y;
   run.stepper->stateAt(t, y);
   return run.sample(t, y);

@@ -79,6 +79,8 @@ class Trajectory {
   // are asked for, so every sampling of the same run sees the same motion. Empty once the run has
   // stopped before t; stop() then says why and when.
   std::optional<Sample> sampleAt(double t);
+  // Whether sampleAt(t) would give a state (integrating up to t as it does), without computing that state.
+  bool reaches(double t);
 
   // Asked before every integration step (so a long sampleAt answers within one step), e.g. "was SIGTERM
   // received?"; empty = never cancelled.

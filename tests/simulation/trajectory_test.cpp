@@ -95,6 +95,22 @@ TEST(Trajectory, StopsCleanlyAndSaysWhy) {
   EXPECT_FALSE(run.sampleAt(16.0));
 }
 
+// reaches(t) answers what sampleAt(t) would, up to the stop time itself (which can still be sampled), and past it.
+TEST(Trajectory, ReachesAgreesWithSampleAtAboutTheStop) {
+  RunConfig c = testing::config("ambient");
+  c.maxSteps = 10;
+  Trajectory probe(specChain, testing::genericStart(specChain), c);
+  EXPECT_FALSE(probe.reaches(15.0));
+  ASSERT_TRUE(probe.stop());
+  const double stopTime = probe.stop()->time;
+  for (double t : {0.0, 0.5 * stopTime, stopTime, stopTime + 1e-9, stopTime + 1.0}) {
+    Trajectory a(specChain, testing::genericStart(specChain), c), b(specChain, testing::genericStart(specChain), c);
+    EXPECT_EQ(a.reaches(t), b.sampleAt(t).has_value()) << "t = " << t;
+    EXPECT_EQ(a.reaches(t), t <= stopTime) << "t = " << t;
+  }
+  EXPECT_THROW(probe.reaches(-1.0), std::invalid_argument);
+}
+
 TEST(Trajectory, EnergyWatchdogCatchesAnUnstableStepSize) {
   RunConfig c = testing::config("christoffel", "rk4");
   c.step = 0.7;
