@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
 
 #include "inverse/geodesic_flow.hpp"
@@ -32,7 +33,18 @@ bool solveDiscrete(const ConstrainedModel& model, std::vector<Eigen::VectorXd>& 
   };
   // Multipliers from least squares on the current nodes.
   std::vector<Eigen::VectorXd> mu(static_cast<std::size_t>(count), Eigen::VectorXd::Zero(m));
+  // Long chains (a sparse model) assemble from the sparse M, G and A_i: O(n) per node instead of O(n^2)
+  // (docs/geometry.md, "Long chains"); small models keep the dense formulas.
+  const bool sparse = model.sparse();
   for (int i = first; i <= last; ++i) {
+    if (sparse) {
+      const Eigen::SparseMatrix<double> g = model.sparseJacobian(node(i));
+      const Eigen::VectorXd r = model.sparseMass() * (node(i + 1) - 2 * node(i) + node(i - 1));
+      const Eigen::SparseMatrix<double> normal = g * g.transpose();
+      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(normal);
+      mu[static_cast<std::size_t>(i)] = -ldlt.solve(Eigen::VectorXd(g * r));
+      continue;
+    }
     const Eigen::MatrixXd g = model.jacobian(node(i));
     const Eigen::VectorXd r = model.mass() * (node(i + 1) - 2 * node(i) + node(i - 1));
     mu[static_cast<std::size_t>(i)] = -(g * g.transpose()).ldlt().solve(g * r);
@@ -47,6 +59,32 @@ bool solveDiscrete(const ConstrainedModel& model, std::vector<Eigen::VectorXd>& 
       const int row = (i - first) * block;
       const Eigen::VectorXd& q = node(i);
       const Eigen::VectorXd& mui = mu[static_cast<std::size_t>(i)];
+      if (sparse) {
+        const Eigen::SparseMatrix<double> g = model.sparseJacobian(q);
+        residual.segment(row, n) =
+            model.sparseMass() * (node(i + 1) - 2 * q + node(i - 1)) + Eigen::VectorXd(g.transpose() * mui);
+        residual.segment(row + n, m) = model.values(q);
+        const Eigen::SparseMatrix<double>& mass = model.sparseMass();
+        for (int k = 0; k < mass.outerSize(); ++k)
+          for (Eigen::SparseMatrix<double>::InnerIterator it(mass, k); it; ++it) {
+            const int r = static_cast<int>(it.row()), c = static_cast<int>(it.col());
+            entries.emplace_back(row + r, row + c, -2.0 * it.value());
+            for (int neighbour : {i - 1, i + 1}) {
+              int j = neighbour;
+              if (periodic) j = (j + count) % count;
+              if (j < first || j > last) continue;
+              entries.emplace_back(row + r, (j - first) * block + c, it.value());
+            }
+          }
+        model.hessianEntries(mui, row, row, entries);
+        for (int k = 0; k < g.outerSize(); ++k)
+          for (Eigen::SparseMatrix<double>::InnerIterator it(g, k); it; ++it) {
+            entries.emplace_back(row + n + static_cast<int>(it.row()), row + static_cast<int>(it.col()), it.value());
+            entries.emplace_back(row + static_cast<int>(it.col()), row + n + static_cast<int>(it.row()), it.value());
+          }
+        for (int k = 0; k < m; ++k) entries.emplace_back(row + n + k, row + n + k, 0.0);
+        continue;
+      }
       const Eigen::MatrixXd g = model.jacobian(q);
       residual.segment(row, n) = model.mass() * (node(i + 1) - 2 * q + node(i - 1)) + g.transpose() * mui;
       residual.segment(row + n, m) = model.values(q);
@@ -159,10 +197,19 @@ std::optional<Connection> shootConnection(const ConstrainedModel& model, const E
   const GeodesicFlow flow(model, tolerance);
   const int n = model.dimension();
   const Eigen::MatrixXd basis = model.tangentBasis(from);
+  const int d = static_cast<int>(basis.cols());
+  // Long chains: the derivative dq(1)/dv costs d variation columns, O(d) times a bare shot; shot once, then
+  // kept up to date by Broyden's rank-one updates from bare shots, and shot again only when a step fails
+  // to halve the error (docs/geometry.md, "Long chains"). Small models take the exact derivative every time.
+  const bool broyden = d > kExactShootingFreedom;
   velocity = model.projectVelocity(from, velocity);
   double previous = INFINITY;
-  for (int iteration = 1; iteration <= 40; ++iteration) {
-    FlowState state{from, velocity, Eigen::MatrixXd::Zero(n, basis.cols()), basis};
+  Eigen::MatrixXd jacobian;     // dq(1)/dv B: exact, or Broyden's estimate
+  bool fresh = false;           // `jacobian` is the exact derivative at `velocity`
+  Eigen::VectorXd lastStep, lastResidual;  // for Broyden's update
+  for (int iteration = 1; iteration <= (broyden ? 80 : 40); ++iteration) {
+    const bool exact = !broyden || jacobian.size() == 0 || lastStep.size() == 0;
+    FlowState state{from, velocity, Eigen::MatrixXd::Zero(n, exact ? d : 0), exact ? basis : Eigen::MatrixXd(n, 0)};
     try {
       flow.advance(state, 1.0);
     } catch (const std::runtime_error&) {
@@ -178,15 +225,39 @@ std::optional<Connection> shootConnection(const ConstrainedModel& model, const E
       c.newtonIterations = iteration;
       return c;
     }
+    if (exact) {
+      jacobian = state.dq;
+      fresh = true;
+    } else if (error > 0.5 * previous && !fresh) {
+      // Broyden's estimate no longer halves the error: back to the last point, the exact derivative there.
+      velocity -= basis * lastStep;
+      lastStep.resize(0);
+      continue;
+    } else {
+      const Eigen::VectorXd change = residual - lastResidual;
+      jacobian += (change - jacobian * lastStep) * lastStep.transpose() / lastStep.squaredNorm();
+      fresh = false;
+    }
     previous = error;
+    lastResidual = residual;
     // Gauss-Newton in the mass metric: min |J x + r|_M.
-    const Eigen::MatrixXd& j = state.dq;
-    const Eigen::MatrixXd normal = j.transpose() * model.mass() * j;
-    const Eigen::VectorXd x = normal.ldlt().solve(-(j.transpose() * model.mass() * residual));
+    const Eigen::MatrixXd& j = jacobian;
+    Eigen::VectorXd x;
+    if (broyden) {
+      const Eigen::MatrixXd mj = model.sparseMass() * j;
+      x = (j.transpose() * mj).ldlt().solve(-(mj.transpose() * residual));
+    } else {
+      const Eigen::MatrixXd normal = j.transpose() * model.mass() * j;
+      x = normal.ldlt().solve(-(j.transpose() * model.mass() * residual));
+    }
     Eigen::VectorXd step = basis * x;
     const double limit = 0.5 * std::max(1.0, model.norm(velocity));
-    if (model.norm(step) > limit) step *= limit / model.norm(step);
+    if (model.norm(step) > limit) {
+      x *= limit / model.norm(step);
+      step = basis * x;
+    }
     velocity += step;
+    lastStep = x;
     if (!velocity.allFinite()) return std::nullopt;
   }
   return std::nullopt;

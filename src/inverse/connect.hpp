@@ -22,6 +22,9 @@
 namespace sl {
 
 constexpr int kPathSamples = 8;  // paths are compared at t = j / 8, j = 0..8
+// Up to this many degrees of freedom (12 rods) shooting takes the exact derivative dq(1)/dv at every Newton
+// step; beyond, once, then Broyden's updates (docs/geometry.md, "Long chains").
+constexpr int kExactShootingFreedom = 10;
 
 struct DiscreteGeodesic {
   double length = 0;                  // Richardson-extrapolated
