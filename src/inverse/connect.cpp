@@ -335,6 +335,44 @@ int morseIndexOnChain(const Chain& chain, const Eigen::VectorXd& from, const Eig
   return count;
 }
 
+int discreteMorseIndex(const ConstrainedModel& model, const Eigen::VectorXd& from, const Eigen::VectorXd& velocity,
+                       int intervals) {
+  std::vector<Eigen::VectorXd> nodes = shootingPath(model, from, velocity, intervals);
+  if (!solveDiscrete(model, nodes)) return -1;
+  // The second variation of the discrete energy sum |q_(i+1) - q_i|_M^2 / 2 - sum mu_i . c(q_i) on the
+  // tangent spaces of the interior nodes: diagonal blocks Z_i^T (2M - sum_k mu_ik A_k) Z_i, off-diagonal
+  // -Z_i^T M Z_(i+1). Its negative eigenvalues, counted by the block LDL^T (Sylvester's law of inertia), are
+  // the Morse index of the broken geodesic, which is the geodesic's for short enough segments.
+  const int count = static_cast<int>(nodes.size());
+  const Eigen::SparseMatrix<double>& mass = model.sparseMass();
+  int index = 0;
+  Eigen::MatrixXd schur, previousBasis;
+  for (int i = 1; i + 1 < count; ++i) {
+    const Eigen::VectorXd& q = nodes[static_cast<std::size_t>(i)];
+    const Eigen::SparseMatrix<double> g = model.sparseJacobian(q);
+    const Eigen::VectorXd r = mass * (nodes[static_cast<std::size_t>(i + 1)] - 2 * q + nodes[static_cast<std::size_t>(i - 1)]);
+    const Eigen::SparseMatrix<double> normal = g * g.transpose();
+    const Eigen::VectorXd mu = -Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>(normal).solve(Eigen::VectorXd(g * r));
+    const Eigen::MatrixXd basis = model.tangentBasis(q);
+    const Eigen::MatrixXd hz = 2.0 * (mass * basis) - [&] {
+      Eigen::MatrixXd out(basis.rows(), basis.cols());
+      for (Eigen::Index c = 0; c < basis.cols(); ++c) out.col(c) = model.hessianCombination(mu, basis.col(c));
+      return out;
+    }();
+    Eigen::MatrixXd block = basis.transpose() * hz;
+    if (i > 1) {
+      const Eigen::MatrixXd coupling = -(previousBasis.transpose() * (mass * basis));
+      block -= coupling.transpose() * schur.ldlt().solve(coupling);
+    }
+    schur = 0.5 * (block + block.transpose());
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(schur, Eigen::EigenvaluesOnly);
+    for (Eigen::Index k = 0; k < eigen.eigenvalues().size(); ++k)
+      if (eigen.eigenvalues()(k) < 0) ++index;
+    previousBasis = basis;
+  }
+  return index;
+}
+
 std::optional<Connection> directConnection(const ConstrainedModel& model, const Chain* chain,
                                            const Eigen::VectorXd& from, const Eigen::VectorXd& to, double tolerance) {
   if (chain == nullptr || chain->isSlack()) return shootConnection(model, from, to, to - from, tolerance);
@@ -410,7 +448,10 @@ std::vector<Connection> findConnections(const ConstrainedModel& model, const Cha
     }
   }
   std::sort(seeds.begin(), seeds.end(), [](const Seed& a, const Seed& b) { return a.distance < b.distance; });
-  if (seeds.size() > 60) seeds.resize(60);
+  // Each seed costs a shot with the derivative; in high dimension the fan's close approaches mostly lead
+  // back to the same few geodesics, so only the closest are shot (docs/geometry.md, "Long chains").
+  const std::size_t shots = d > kExactShootingFreedom ? kLongChainSeeds : 60;
+  if (seeds.size() > shots) seeds.resize(shots);
   for (const Seed& seed : seeds) add(shootConnection(model, from, to, seed.velocity, options.tolerance));
   found.erase(std::remove_if(found.begin(), found.end(),
                              [&](const Connection& c) { return c.length > maxLength * (1 + 1e-12); }),
@@ -419,7 +460,11 @@ std::vector<Connection> findConnections(const ConstrainedModel& model, const Cha
 
   for (Connection& c : found) {
     c.path = shootingPath(model, from, c.velocity, kPathSamples, options.tolerance);
-    if (chain != nullptr) c.morseIndex = morseIndexOnChain(*chain, from, c.velocity);
+    // The Jacobi fields' Gram determinant of n - 3 fields loses its zeros among the products of many small
+    // factors on long chains; there the discrete action's second variation counts them.
+    if (chain != nullptr)
+      c.morseIndex = d > kExactShootingFreedom ? discreteMorseIndex(model, from, c.velocity)
+                                               : morseIndexOnChain(*chain, from, c.velocity);
   }
   if (!options.discreteRoute) return found;
 

@@ -25,6 +25,8 @@ constexpr int kPathSamples = 8;  // paths are compared at t = j / 8, j = 0..8
 // Up to this many degrees of freedom (12 rods) shooting takes the exact derivative dq(1)/dv at every Newton
 // step; beyond, once, then Broyden's updates (docs/geometry.md, "Long chains").
 constexpr int kExactShootingFreedom = 10;
+// Beyond it, the fan's closest approaches shot as seeds (60 below).
+constexpr std::size_t kLongChainSeeds = 8;
 
 struct DiscreteGeodesic {
   double length = 0;                  // Richardson-extrapolated
@@ -79,6 +81,13 @@ std::vector<std::vector<Eigen::VectorXd>> sphereArcPaths(const Chain& chain, con
 
 // Conjugate points along the geodesic from `from` with velocity v over time 1, strictly inside (chains).
 int morseIndexOnChain(const Chain& chain, const Eigen::VectorXd& from, const Eigen::VectorXd& velocity);
+
+// The same from the discrete action (any model): route 2's equations solved on route 1's path sampled at
+// `intervals` segments, the negative eigenvalues of their second variation on the constraints counted. O(n^3)
+// per node by dense blocks, no determinant: what long chains use (docs/geometry.md, "Morse index"). -1 when
+// route 2 does not converge there.
+int discreteMorseIndex(const ConstrainedModel& model, const Eigen::VectorXd& from, const Eigen::VectorXd& velocity,
+                       int intervals = 40);
 
 // The path of route 1 sampled at t = j / intervals, j = 0..intervals.
 std::vector<Eigen::VectorXd> shootingPath(const ConstrainedModel& model, const Eigen::VectorXd& from,

@@ -52,6 +52,24 @@ TEST(Connect, HeavyRodsAndFiveRods) {
   expectRoutesAgree(findConnections(model, &chain, from, to, options));
 }
 
+// The Morse index long chains take from the discrete action's second variation agrees with the Jacobi
+// fields' conjugate points on the motions that pass some (4 rods: indices 0, 1, 1, ...; 5 rods).
+TEST(Connect, DiscreteMorseIndexAgreesWithTheJacobiFields) {
+  const Chain chain = Chain::uniform(4, 3.0);
+  const ConstrainedModel model = ConstrainedModel::fromChain(chain);
+  ConnectOptions options;
+  options.maxLength = 6.0;
+  options.discreteRoute = false;
+  const Eigen::VectorXd from = pointOf(chain, 0.5, 0.3);
+  const auto found = findConnections(model, &chain, from, pointOf(chain, -0.6, 2.2), options);
+  int passing = 0;
+  for (const Connection& c : found) {
+    EXPECT_EQ(discreteMorseIndex(model, from, c.velocity), c.morseIndex) << "length " << c.length;
+    if (c.morseIndex > 0) ++passing;
+  }
+  EXPECT_GE(passing, 1);
+}
+
 // Long chains: hinge coordinates as large as the base L, whose rounding (about 1e-16 of L^2 in a constraint,
 // 1e-14 of L in a Newton step) stopped both the projection and route 2 short of their absolute bounds.
 TEST(Connect, LongChainsBothRoutesAgree) {
