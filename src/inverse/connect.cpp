@@ -51,8 +51,12 @@ bool solveDiscrete(const ConstrainedModel& model, std::vector<Eigen::VectorXd>& 
   }
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
   bool analysed = false;
-  double previousStep = INFINITY;
+  double previousStep = INFINITY, shrink = INFINITY, previousSize = 0;
   for (int iteration = 0; iteration < 40; ++iteration) {
+    // Long chains: the factorisation is most of the work (the fill of a K x n grid), so near the solution
+    // (steps below 1e-6 of the coordinates) it is kept while the steps it gives shrink tenfold (the chord
+    // method; the residual is always the exact one, so the solution is the same).
+    const bool factor = !sparse || !(shrink < 0.1 && previousStep < 1e-6 * (1.0 + previousSize));
     std::vector<Eigen::Triplet<double>> entries;
     Eigen::VectorXd residual(unknowns * block);
     for (int i = first; i <= last; ++i) {
@@ -64,6 +68,7 @@ bool solveDiscrete(const ConstrainedModel& model, std::vector<Eigen::VectorXd>& 
         residual.segment(row, n) =
             model.sparseMass() * (node(i + 1) - 2 * q + node(i - 1)) + Eigen::VectorXd(g.transpose() * mui);
         residual.segment(row + n, m) = model.values(q);
+        if (!factor) continue;
         const Eigen::SparseMatrix<double>& mass = model.sparseMass();
         for (int k = 0; k < mass.outerSize(); ++k)
           for (Eigen::SparseMatrix<double>::InnerIterator it(mass, k); it; ++it) {
@@ -110,14 +115,16 @@ bool solveDiscrete(const ConstrainedModel& model, std::vector<Eigen::VectorXd>& 
       // Keep the structural diagonal of the multiplier rows (zero) so the pattern never changes.
       for (int k = 0; k < m; ++k) entries.emplace_back(row + n + k, row + n + k, 0.0);
     }
-    Eigen::SparseMatrix<double> jac(unknowns * block, unknowns * block);
-    jac.setFromTriplets(entries.begin(), entries.end());
-    if (!analysed) {
-      lu.analyzePattern(jac);
-      analysed = true;
+    if (factor) {
+      Eigen::SparseMatrix<double> jac(unknowns * block, unknowns * block);
+      jac.setFromTriplets(entries.begin(), entries.end());
+      if (!analysed) {
+        lu.analyzePattern(jac);
+        analysed = true;
+      }
+      lu.factorize(jac);
+      if (lu.info() != Eigen::Success) return false;
     }
-    lu.factorize(jac);
-    if (lu.info() != Eigen::Success) return false;
     const Eigen::VectorXd step = lu.solve(-residual);
     if (!step.allFinite()) return false;
     double largest = 0, size = 0;
@@ -134,7 +141,9 @@ bool solveDiscrete(const ConstrainedModel& model, std::vector<Eigen::VectorXd>& 
     // 1e-14 of their size, or near it and no longer shrinking (Newton's steps at rounding level jitter).
     const double rounding = 1e-14 * (1.0 + size);
     if (largest < rounding || (largest < 100 * rounding && largest >= 0.5 * previousStep)) return true;
+    shrink = std::isfinite(previousStep) ? largest / previousStep : INFINITY;
     previousStep = largest;
+    previousSize = size;
   }
   return false;
 }
@@ -277,6 +286,7 @@ std::optional<DiscreteGeodesic> discreteGeodesic(const ConstrainedModel& model, 
     const Eigen::VectorXd length = lengths.add(Eigen::VectorXd::Constant(1, polygonLength(model, nodes)));
     const Eigen::VectorXd path = paths.add(samplesOf(nodes));
     out.nodes = static_cast<int>(nodes.size()) - 1;
+    out.startVelocity = (nodes[1] - nodes[0]) * out.nodes;
     if (level > 0) {
       out.lengthChange = std::abs(length(0) - previousLength(0));
       const double pathChange = maxAbs(path - previousPath);
@@ -484,7 +494,24 @@ std::vector<Connection> findConnections(const ConstrainedModel& model, const Cha
     const auto arcs = sphereArcPaths(*chain, from, to, 5 * kPathSamples);
     for (std::size_t k = 0; k < arcs.size(); ++k) {
       const auto g = discreteGeodesic(model, arcs[k], k == 0 ? "sphere arc" : "sphere arc, long way");
-      if (g) record(match(*g), *g);
+      if (!g) continue;
+      Connection* c = match(*g);
+      // Long chains shoot few of the fan's seeds and may miss a geodesic route 2 found from the arc: shot
+      // from the discrete path's first chord (projected onto the tangent space, O(h^2) from the geodesic's
+      // velocity), it is found by route 1 too and then checked like the others.
+      if (c == nullptr && d > kExactShootingFreedom && g->length <= maxLength * (1 + 1e-12)) {
+        const std::size_t before = found.size();
+        add(shootConnection(model, from, to, g->startVelocity, options.tolerance));
+        if (found.size() > before) {
+          Connection& added = found.back();
+          added.path = shootingPath(model, from, added.velocity, kPathSamples, options.tolerance);
+          added.morseIndex = discreteMorseIndex(model, from, added.velocity);
+        }
+        std::sort(found.begin(), found.end(),
+                  [](const Connection& a, const Connection& b) { return a.length < b.length; });
+        c = match(*g);
+      }
+      record(c, *g);
     }
   }
   for (Connection& c : found) {

@@ -34,6 +34,7 @@ struct DiscreteGeodesic {
   std::vector<Eigen::VectorXd> path;  // extrapolated, at t = j / kPathSamples
   int nodes = 0;                      // the finest K
   std::string seed;                   // where the discrete path started ("sphere arc", "shooting path", ...)
+  Eigen::VectorXd startVelocity;      // the first chord over its time step at the finest K: a shooting seed
 };
 
 struct Connection {

@@ -85,6 +85,27 @@ TEST(Connect, LongChainsBothRoutesAgree) {
   expectRoutesAgree(findConnections(model, &chain, from, to, options));
 }
 
+// Beyond 12 rods shooting takes its derivative once and then Broyden's updates, the fan shoots fewer seeds and
+// the Morse index comes from the discrete action: 60 rods, both routes agree and the end point is hit.
+TEST(Connect, SixtyRodsBothRoutesAgree) {
+  const Chain chain = Chain::uniform(60, 59.2);
+  const ConstrainedModel model = ConstrainedModel::fromChain(chain);
+  ASSERT_GT(model.freedom(), kExactShootingFreedom);
+  Eigen::VectorXd a = Eigen::VectorXd::Zero(59), b = Eigen::VectorXd::Zero(59);
+  a(0) = 0.8, a(3) = -0.4, a(7) = 0.3, a(10) = 0.2, a(30) = 0.1, a(58) = -0.1;
+  b(0) = 0.7, b(3) = 0.2, b(6) = -0.5, b(9) = 0.3, b(41) = 0.1, b(57) = 0.1;
+  const Eigen::VectorXd from = ConstrainedModel::stack(hingePositionsAt(chain, a.normalized()));
+  const Eigen::VectorXd to = ConstrainedModel::stack(hingePositionsAt(chain, b.normalized()));
+  ConnectOptions options;
+  options.maxLength = 2.5;
+  const auto found = findConnections(model, &chain, from, to, options);
+  expectRoutesAgree(found);
+  const auto direct = directConnection(model, &chain, from, to);
+  ASSERT_TRUE(direct.has_value());
+  EXPECT_LE(direct->endError, 1e-12);
+  EXPECT_NEAR(direct->length, found[0].length, 1e-10);
+}
+
 // The sparse KKT solve (long chains) against the dense one written out: the same x and multipliers.
 TEST(ConstrainedModel, SparseKktSolveAgreesWithTheDenseOne) {
   Chain chain = Chain::uniform(20, 18.5);
