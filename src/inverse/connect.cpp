@@ -216,8 +216,12 @@ std::optional<Connection> shootConnection(const ConstrainedModel& model, const E
   Eigen::MatrixXd jacobian;     // dq(1)/dv B: exact, or Broyden's estimate
   bool fresh = false;           // `jacobian` is the exact derivative at `velocity`
   Eigen::VectorXd lastStep, lastResidual;  // for Broyden's update
+  int exactShots = 0;
   for (int iteration = 1; iteration <= (broyden ? 80 : 40); ++iteration) {
     const bool exact = !broyden || jacobian.size() == 0 || lastStep.size() == 0;
+    // Near the conjugate locus Newton stalls with the exact derivative too; the exact shots, the costly ones,
+    // are bounded so that such a seed fails in a few of them.
+    if (broyden && exact && ++exactShots > kMaxExactShots) return std::nullopt;
     FlowState state{from, velocity, Eigen::MatrixXd::Zero(n, exact ? d : 0), exact ? basis : Eigen::MatrixXd(n, 0)};
     try {
       flow.advance(state, 1.0);

@@ -25,6 +25,7 @@ constexpr int kPathSamples = 8;  // paths are compared at t = j / 8, j = 0..8
 // Up to this many degrees of freedom (12 rods) shooting takes the exact derivative dq(1)/dv at every Newton
 // step; beyond, once, then Broyden's updates (docs/geometry.md, "Long chains").
 constexpr int kExactShootingFreedom = 10;
+constexpr int kMaxExactShots = 6;  // beyond it, per Newton solve (each costs d bare shots)
 // Beyond it, the fan's closest approaches shot as seeds (60 below).
 constexpr std::size_t kLongChainSeeds = 8;
 
