@@ -214,7 +214,7 @@ std::optional<Connection> shootConnection(const ConstrainedModel& model, const E
   velocity = model.projectVelocity(from, velocity);
   double previous = INFINITY;
   Eigen::MatrixXd jacobian;     // dq(1)/dv B: exact, or Broyden's estimate
-  bool fresh = false;           // `jacobian` is the exact derivative at `velocity`
+  bool fresh = false;           // the last step came from the exact derivative
   Eigen::VectorXd lastStep, lastResidual;  // for Broyden's update
   int exactShots = 0;
   for (int iteration = 1; iteration <= (broyden ? 80 : 40); ++iteration) {
