@@ -63,8 +63,11 @@ inline constexpr double kMaxLockWaitSeconds = 60;
 // How long the video encoder may read nothing of a frame before the render gives up on it (an encoder stopped
 // or hung); it says what it waits for after the first second. LINKAGE_ENCODER_WAIT (seconds) overrides it.
 inline constexpr double kMaxEncoderStallSeconds = 60;
-// `connect` (src/inverse) solves the constrained geodesic flow with a dense KKT system, n^3 per evaluation.
-inline constexpr int kMaxConnectRods = 40;
+// `connect` (src/inverse): sparse KKT systems, one exact shooting derivative per Newton solve then Broyden's
+// updates, route 2 and the Morse index O(n) per node but the dense d x d blocks of the index O(n^3). Measured
+// (bench/README.md, "Inverse problems"): 100 rods in about 15 s, 200 rods in about 2 minutes, growing like
+// n^2.5-n^3; beyond 200 one `connect` would take a quarter of an hour and more.
+inline constexpr int kMaxConnectRods = 200;
 // A scene's start may name a found motion (initial.connect, initial.periodic): its index in the list, and the
 // longest motion the search looks for (the commands' --max-length bounds).
 inline constexpr int kMaxMotionIndex = 99;

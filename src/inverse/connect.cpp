@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
 
 #include "inverse/geodesic_flow.hpp"
@@ -32,21 +33,63 @@ bool solveDiscrete(const ConstrainedModel& model, std::vector<Eigen::VectorXd>& 
   };
   // Multipliers from least squares on the current nodes.
   std::vector<Eigen::VectorXd> mu(static_cast<std::size_t>(count), Eigen::VectorXd::Zero(m));
+  // Long chains (a sparse model) assemble from the sparse M, G and A_i: O(n) per node instead of O(n^2)
+  // (docs/geometry.md, "Long chains"); small models keep the dense formulas.
+  const bool sparse = model.sparse();
   for (int i = first; i <= last; ++i) {
+    if (sparse) {
+      const Eigen::SparseMatrix<double> g = model.sparseJacobian(node(i));
+      const Eigen::VectorXd r = model.sparseMass() * (node(i + 1) - 2 * node(i) + node(i - 1));
+      const Eigen::SparseMatrix<double> normal = g * g.transpose();
+      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(normal);
+      mu[static_cast<std::size_t>(i)] = -ldlt.solve(Eigen::VectorXd(g * r));
+      continue;
+    }
     const Eigen::MatrixXd g = model.jacobian(node(i));
     const Eigen::VectorXd r = model.mass() * (node(i + 1) - 2 * node(i) + node(i - 1));
     mu[static_cast<std::size_t>(i)] = -(g * g.transpose()).ldlt().solve(g * r);
   }
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
   bool analysed = false;
-  double previousStep = INFINITY;
+  double previousStep = INFINITY, shrink = INFINITY, previousSize = 0;
   for (int iteration = 0; iteration < 40; ++iteration) {
+    // Long chains: the factorisation is most of the work (the fill of a K x n grid), so near the solution
+    // (steps below 1e-6 of the coordinates) it is kept while the steps it gives shrink tenfold (the chord
+    // method; the residual is always the exact one, so the solution is the same).
+    const bool factor = !sparse || !(shrink < 0.1 && previousStep < 1e-6 * (1.0 + previousSize));
     std::vector<Eigen::Triplet<double>> entries;
     Eigen::VectorXd residual(unknowns * block);
     for (int i = first; i <= last; ++i) {
       const int row = (i - first) * block;
       const Eigen::VectorXd& q = node(i);
       const Eigen::VectorXd& mui = mu[static_cast<std::size_t>(i)];
+      if (sparse) {
+        const Eigen::SparseMatrix<double> g = model.sparseJacobian(q);
+        residual.segment(row, n) =
+            model.sparseMass() * (node(i + 1) - 2 * q + node(i - 1)) + Eigen::VectorXd(g.transpose() * mui);
+        residual.segment(row + n, m) = model.values(q);
+        if (!factor) continue;
+        const Eigen::SparseMatrix<double>& mass = model.sparseMass();
+        for (int k = 0; k < mass.outerSize(); ++k)
+          for (Eigen::SparseMatrix<double>::InnerIterator it(mass, k); it; ++it) {
+            const int r = static_cast<int>(it.row()), c = static_cast<int>(it.col());
+            entries.emplace_back(row + r, row + c, -2.0 * it.value());
+            for (int neighbour : {i - 1, i + 1}) {
+              int j = neighbour;
+              if (periodic) j = (j + count) % count;
+              if (j < first || j > last) continue;
+              entries.emplace_back(row + r, (j - first) * block + c, it.value());
+            }
+          }
+        model.hessianEntries(mui, row, row, entries);
+        for (int k = 0; k < g.outerSize(); ++k)
+          for (Eigen::SparseMatrix<double>::InnerIterator it(g, k); it; ++it) {
+            entries.emplace_back(row + n + static_cast<int>(it.row()), row + static_cast<int>(it.col()), it.value());
+            entries.emplace_back(row + static_cast<int>(it.col()), row + n + static_cast<int>(it.row()), it.value());
+          }
+        for (int k = 0; k < m; ++k) entries.emplace_back(row + n + k, row + n + k, 0.0);
+        continue;
+      }
       const Eigen::MatrixXd g = model.jacobian(q);
       residual.segment(row, n) = model.mass() * (node(i + 1) - 2 * q + node(i - 1)) + g.transpose() * mui;
       residual.segment(row + n, m) = model.values(q);
@@ -72,14 +115,16 @@ bool solveDiscrete(const ConstrainedModel& model, std::vector<Eigen::VectorXd>& 
       // Keep the structural diagonal of the multiplier rows (zero) so the pattern never changes.
       for (int k = 0; k < m; ++k) entries.emplace_back(row + n + k, row + n + k, 0.0);
     }
-    Eigen::SparseMatrix<double> jac(unknowns * block, unknowns * block);
-    jac.setFromTriplets(entries.begin(), entries.end());
-    if (!analysed) {
-      lu.analyzePattern(jac);
-      analysed = true;
+    if (factor) {
+      Eigen::SparseMatrix<double> jac(unknowns * block, unknowns * block);
+      jac.setFromTriplets(entries.begin(), entries.end());
+      if (!analysed) {
+        lu.analyzePattern(jac);
+        analysed = true;
+      }
+      lu.factorize(jac);
+      if (lu.info() != Eigen::Success) return false;
     }
-    lu.factorize(jac);
-    if (lu.info() != Eigen::Success) return false;
     const Eigen::VectorXd step = lu.solve(-residual);
     if (!step.allFinite()) return false;
     double largest = 0, size = 0;
@@ -96,7 +141,9 @@ bool solveDiscrete(const ConstrainedModel& model, std::vector<Eigen::VectorXd>& 
     // 1e-14 of their size, or near it and no longer shrinking (Newton's steps at rounding level jitter).
     const double rounding = 1e-14 * (1.0 + size);
     if (largest < rounding || (largest < 100 * rounding && largest >= 0.5 * previousStep)) return true;
+    shrink = std::isfinite(previousStep) ? largest / previousStep : INFINITY;
     previousStep = largest;
+    previousSize = size;
   }
   return false;
 }
@@ -159,10 +206,23 @@ std::optional<Connection> shootConnection(const ConstrainedModel& model, const E
   const GeodesicFlow flow(model, tolerance);
   const int n = model.dimension();
   const Eigen::MatrixXd basis = model.tangentBasis(from);
+  const int d = static_cast<int>(basis.cols());
+  // Long chains: the derivative dq(1)/dv costs d variation columns, O(d) times a bare shot; shot once, then
+  // kept up to date by Broyden's rank-one updates from bare shots, and shot again only when a step fails
+  // to halve the error (docs/geometry.md, "Long chains"). Small models take the exact derivative every time.
+  const bool broyden = d > kExactShootingFreedom;
   velocity = model.projectVelocity(from, velocity);
   double previous = INFINITY;
-  for (int iteration = 1; iteration <= 40; ++iteration) {
-    FlowState state{from, velocity, Eigen::MatrixXd::Zero(n, basis.cols()), basis};
+  Eigen::MatrixXd jacobian;     // dq(1)/dv B: exact, or Broyden's estimate
+  bool fresh = false;           // the last step came from the exact derivative
+  Eigen::VectorXd lastStep, lastResidual;  // for Broyden's update
+  int exactShots = 0;
+  for (int iteration = 1; iteration <= (broyden ? 80 : 40); ++iteration) {
+    const bool exact = !broyden || jacobian.size() == 0 || lastStep.size() == 0;
+    // Near the conjugate locus Newton stalls with the exact derivative too; the exact shots, the costly ones,
+    // are bounded so that such a seed fails in a few of them.
+    if (broyden && exact && ++exactShots > kMaxExactShots) return std::nullopt;
+    FlowState state{from, velocity, Eigen::MatrixXd::Zero(n, exact ? d : 0), exact ? basis : Eigen::MatrixXd(n, 0)};
     try {
       flow.advance(state, 1.0);
     } catch (const std::runtime_error&) {
@@ -178,15 +238,39 @@ std::optional<Connection> shootConnection(const ConstrainedModel& model, const E
       c.newtonIterations = iteration;
       return c;
     }
+    if (exact) {
+      jacobian = state.dq;
+      fresh = true;
+    } else if (error > 0.5 * previous && !fresh) {
+      // Broyden's estimate no longer halves the error: back to the last point, the exact derivative there.
+      velocity -= basis * lastStep;
+      lastStep.resize(0);
+      continue;
+    } else {
+      const Eigen::VectorXd change = residual - lastResidual;
+      jacobian += (change - jacobian * lastStep) * lastStep.transpose() / lastStep.squaredNorm();
+      fresh = false;
+    }
     previous = error;
+    lastResidual = residual;
     // Gauss-Newton in the mass metric: min |J x + r|_M.
-    const Eigen::MatrixXd& j = state.dq;
-    const Eigen::MatrixXd normal = j.transpose() * model.mass() * j;
-    const Eigen::VectorXd x = normal.ldlt().solve(-(j.transpose() * model.mass() * residual));
+    const Eigen::MatrixXd& j = jacobian;
+    Eigen::VectorXd x;
+    if (broyden) {
+      const Eigen::MatrixXd mj = model.sparseMass() * j;
+      x = (j.transpose() * mj).ldlt().solve(-(mj.transpose() * residual));
+    } else {
+      const Eigen::MatrixXd normal = j.transpose() * model.mass() * j;
+      x = normal.ldlt().solve(-(j.transpose() * model.mass() * residual));
+    }
     Eigen::VectorXd step = basis * x;
     const double limit = 0.5 * std::max(1.0, model.norm(velocity));
-    if (model.norm(step) > limit) step *= limit / model.norm(step);
+    if (model.norm(step) > limit) {
+      x *= limit / model.norm(step);
+      step = basis * x;
+    }
     velocity += step;
+    lastStep = x;
     if (!velocity.allFinite()) return std::nullopt;
   }
   return std::nullopt;
@@ -206,6 +290,7 @@ std::optional<DiscreteGeodesic> discreteGeodesic(const ConstrainedModel& model, 
     const Eigen::VectorXd length = lengths.add(Eigen::VectorXd::Constant(1, polygonLength(model, nodes)));
     const Eigen::VectorXd path = paths.add(samplesOf(nodes));
     out.nodes = static_cast<int>(nodes.size()) - 1;
+    out.startVelocity = (nodes[1] - nodes[0]) * out.nodes;
     if (level > 0) {
       out.lengthChange = std::abs(length(0) - previousLength(0));
       const double pathChange = maxAbs(path - previousPath);
@@ -262,6 +347,44 @@ int morseIndexOnChain(const Chain& chain, const Eigen::VectorXd& from, const Eig
   for (double t : run.conjugateTimes())
     if (t < length * (1 - 1e-9)) ++count;
   return count;
+}
+
+int discreteMorseIndex(const ConstrainedModel& model, const Eigen::VectorXd& from, const Eigen::VectorXd& velocity,
+                       int intervals) {
+  std::vector<Eigen::VectorXd> nodes = shootingPath(model, from, velocity, intervals);
+  if (!solveDiscrete(model, nodes)) return -1;
+  // The second variation of the discrete energy sum |q_(i+1) - q_i|_M^2 / 2 - sum mu_i . c(q_i) on the
+  // tangent spaces of the interior nodes: diagonal blocks Z_i^T (2M - sum_k mu_ik A_k) Z_i, off-diagonal
+  // -Z_i^T M Z_(i+1). Its negative eigenvalues, counted by the block LDL^T (Sylvester's law of inertia), are
+  // the Morse index of the broken geodesic, which is the geodesic's for short enough segments.
+  const int count = static_cast<int>(nodes.size());
+  const Eigen::SparseMatrix<double>& mass = model.sparseMass();
+  int index = 0;
+  Eigen::MatrixXd schur, previousBasis;
+  for (int i = 1; i + 1 < count; ++i) {
+    const Eigen::VectorXd& q = nodes[static_cast<std::size_t>(i)];
+    const Eigen::SparseMatrix<double> g = model.sparseJacobian(q);
+    const Eigen::VectorXd r = mass * (nodes[static_cast<std::size_t>(i + 1)] - 2 * q + nodes[static_cast<std::size_t>(i - 1)]);
+    const Eigen::SparseMatrix<double> normal = g * g.transpose();
+    const Eigen::VectorXd mu = -Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>(normal).solve(Eigen::VectorXd(g * r));
+    const Eigen::MatrixXd basis = model.tangentBasis(q);
+    const Eigen::MatrixXd hz = 2.0 * (mass * basis) - [&] {
+      Eigen::MatrixXd out(basis.rows(), basis.cols());
+      for (Eigen::Index c = 0; c < basis.cols(); ++c) out.col(c) = model.hessianCombination(mu, basis.col(c));
+      return out;
+    }();
+    Eigen::MatrixXd block = basis.transpose() * hz;
+    if (i > 1) {
+      const Eigen::MatrixXd coupling = -(previousBasis.transpose() * (mass * basis));
+      block -= coupling.transpose() * schur.ldlt().solve(coupling);
+    }
+    schur = 0.5 * (block + block.transpose());
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(schur, Eigen::EigenvaluesOnly);
+    for (Eigen::Index k = 0; k < eigen.eigenvalues().size(); ++k)
+      if (eigen.eigenvalues()(k) < 0) ++index;
+    previousBasis = basis;
+  }
+  return index;
 }
 
 std::optional<Connection> directConnection(const ConstrainedModel& model, const Chain* chain,
@@ -339,7 +462,10 @@ std::vector<Connection> findConnections(const ConstrainedModel& model, const Cha
     }
   }
   std::sort(seeds.begin(), seeds.end(), [](const Seed& a, const Seed& b) { return a.distance < b.distance; });
-  if (seeds.size() > 60) seeds.resize(60);
+  // Each seed costs a shot with the derivative; in high dimension the fan's close approaches mostly lead
+  // back to the same few geodesics, so only the closest are shot (docs/geometry.md, "Long chains").
+  const std::size_t shots = d > kExactShootingFreedom ? kLongChainSeeds : 60;
+  if (seeds.size() > shots) seeds.resize(shots);
   for (const Seed& seed : seeds) add(shootConnection(model, from, to, seed.velocity, options.tolerance));
   found.erase(std::remove_if(found.begin(), found.end(),
                              [&](const Connection& c) { return c.length > maxLength * (1 + 1e-12); }),
@@ -348,7 +474,11 @@ std::vector<Connection> findConnections(const ConstrainedModel& model, const Cha
 
   for (Connection& c : found) {
     c.path = shootingPath(model, from, c.velocity, kPathSamples, options.tolerance);
-    if (chain != nullptr) c.morseIndex = morseIndexOnChain(*chain, from, c.velocity);
+    // The Jacobi fields' Gram determinant of n - 3 fields loses its zeros among the products of many small
+    // factors on long chains; there the discrete action's second variation counts them.
+    if (chain != nullptr)
+      c.morseIndex = d > kExactShootingFreedom ? discreteMorseIndex(model, from, c.velocity)
+                                               : morseIndexOnChain(*chain, from, c.velocity);
   }
   if (!options.discreteRoute) return found;
 
@@ -368,7 +498,24 @@ std::vector<Connection> findConnections(const ConstrainedModel& model, const Cha
     const auto arcs = sphereArcPaths(*chain, from, to, 5 * kPathSamples);
     for (std::size_t k = 0; k < arcs.size(); ++k) {
       const auto g = discreteGeodesic(model, arcs[k], k == 0 ? "sphere arc" : "sphere arc, long way");
-      if (g) record(match(*g), *g);
+      if (!g) continue;
+      Connection* c = match(*g);
+      // Long chains shoot few of the fan's seeds and may miss a geodesic route 2 found from the arc: shot
+      // from the discrete path's first chord (projected onto the tangent space, O(h^2) from the geodesic's
+      // velocity), it is found by route 1 too and then checked like the others.
+      if (c == nullptr && d > kExactShootingFreedom && g->length <= maxLength * (1 + 1e-12)) {
+        const std::size_t before = found.size();
+        add(shootConnection(model, from, to, g->startVelocity, options.tolerance));
+        if (found.size() > before) {
+          Connection& added = found.back();
+          added.path = shootingPath(model, from, added.velocity, kPathSamples, options.tolerance);
+          added.morseIndex = discreteMorseIndex(model, from, added.velocity);
+        }
+        std::sort(found.begin(), found.end(),
+                  [](const Connection& a, const Connection& b) { return a.length < b.length; });
+        c = match(*g);
+      }
+      record(c, *g);
     }
   }
   for (Connection& c : found) {

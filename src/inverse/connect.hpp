@@ -22,6 +22,12 @@
 namespace sl {
 
 constexpr int kPathSamples = 8;  // paths are compared at t = j / 8, j = 0..8
+// Up to this many degrees of freedom (12 rods) shooting takes the exact derivative dq(1)/dv at every Newton
+// step; beyond, once, then Broyden's updates (docs/geometry.md, "Long chains").
+constexpr int kExactShootingFreedom = 10;
+constexpr int kMaxExactShots = 6;  // beyond it, per Newton solve (each costs d bare shots)
+// Beyond it, the fan's closest approaches shot as seeds (60 below).
+constexpr std::size_t kLongChainSeeds = 8;
 
 struct DiscreteGeodesic {
   double length = 0;                  // Richardson-extrapolated
@@ -29,6 +35,7 @@ struct DiscreteGeodesic {
   std::vector<Eigen::VectorXd> path;  // extrapolated, at t = j / kPathSamples
   int nodes = 0;                      // the finest K
   std::string seed;                   // where the discrete path started ("sphere arc", "shooting path", ...)
+  Eigen::VectorXd startVelocity;      // the first chord over its time step at the finest K: a shooting seed
 };
 
 struct Connection {
@@ -76,6 +83,13 @@ std::vector<std::vector<Eigen::VectorXd>> sphereArcPaths(const Chain& chain, con
 
 // Conjugate points along the geodesic from `from` with velocity v over time 1, strictly inside (chains).
 int morseIndexOnChain(const Chain& chain, const Eigen::VectorXd& from, const Eigen::VectorXd& velocity);
+
+// The same from the discrete action (any model): route 2's equations solved on route 1's path sampled at
+// `intervals` segments, the negative eigenvalues of their second variation on the constraints counted. O(n^3)
+// per node by dense blocks, no determinant: what long chains use (docs/geometry.md, "Morse index"). -1 when
+// route 2 does not converge there.
+int discreteMorseIndex(const ConstrainedModel& model, const Eigen::VectorXd& from, const Eigen::VectorXd& velocity,
+                       int intervals = 40);
 
 // The path of route 1 sampled at t = j / intervals, j = 0..intervals.
 std::vector<Eigen::VectorXd> shootingPath(const ConstrainedModel& model, const Eigen::VectorXd& from,

@@ -164,6 +164,13 @@ Eigen::MatrixXd ConstrainedModel::hessianMatrix(const Eigen::VectorXd& mu) const
   return out;
 }
 
+void ConstrainedModel::hessianEntries(const Eigen::VectorXd& mu, int rowOffset, int colOffset,
+                                      std::vector<Eigen::Triplet<double>>& out) const {
+  for (int i = 0; i < constraintCount(); ++i)
+    for (const auto& e : constraints_[static_cast<std::size_t>(i)].hessian)
+      out.emplace_back(rowOffset + e.row, colOffset + e.col, mu(i) * e.value);
+}
+
 Eigen::VectorXd ConstrainedModel::correctionFor(const Eigen::VectorXd& q, const Eigen::VectorXd& residual) const {
   return KktFactor(*this, q).correction(residual);
 }

@@ -64,6 +64,7 @@ class ConstrainedModel {
   int constraintCount() const { return static_cast<int>(constraints_.size()); }  // m
   int freedom() const { return dimension_ - constraintCount(); }                 // dimension of the space
   const Eigen::MatrixXd& mass() const { return mass_; }
+  const Eigen::SparseMatrix<double>& sparseMass() const { return sparseMass_; }
 
   Eigen::VectorXd values(const Eigen::VectorXd& q) const;    // c(q), m entries
   Eigen::MatrixXd jacobian(const Eigen::VectorXd& q) const;  // G = dc/dq, m x N
@@ -73,6 +74,9 @@ class ConstrainedModel {
   Eigen::VectorXd hessianCombination(const Eigen::VectorXd& mu, const Eigen::VectorXd& u) const;
   // sum_i mu_i A_i as a dense matrix.
   Eigen::MatrixXd hessianMatrix(const Eigen::VectorXd& mu) const;
+  // The same as (row, col, value) entries, duplicates to be summed: O(n) for a chain.
+  void hessianEntries(const Eigen::VectorXd& mu, int rowOffset, int colOffset,
+                      std::vector<Eigen::Triplet<double>>& out) const;
 
   double norm(const Eigen::VectorXd& u) const { return std::sqrt(inner(u, u)); }
   double inner(const Eigen::VectorXd& u, const Eigen::VectorXd& w) const {

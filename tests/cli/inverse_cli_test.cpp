@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "contracts/limits.hpp"
 #include "support/files.hpp"
 #include "support/linkage_binary.hpp"
 #include "support/scene_files.hpp"
@@ -102,10 +103,43 @@ TEST(PeriodicCli, ThreeSimpleClosedGeodesicsAsJson) {
 
 TEST(ConnectCli, RefusesChainsBeyondItsLimit) {
   TempFolder folder;
-  const ProcessResult result =
-      runLinkage({"connect", shippedScene("rope.json"), "--to", R"({"coords": [0]})"}, folder.path());
+  const std::string rods = std::to_string(limits::kMaxConnectRods + 1);
+  const ProcessResult result = runLinkage({"connect", shippedScene("rope.json"), "--set", "linkage.rods=" + rods,
+                                           "--to", R"({"coords": [0]})"},
+                                          folder.path());
   EXPECT_EQ(result.code, 2);
-  EXPECT_NE(result.err.find("connect handles at most 40 rods"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("connect handles at most " + std::to_string(limits::kMaxConnectRods) + " rods"),
+            std::string::npos)
+      << result.err;
+}
+
+// A chain well past the 40 rods connect once stopped at (docs/geometry.md, "Long chains"): 50 rods, from the
+// scene's start to a target given by its chart coordinates, end to end (distance 0.7766).
+TEST(ConnectCli, FiftyRodsEndToEnd) {
+  TempFolder folder;
+  std::string start = "0.3, -0.2", target = "0.1, 0", rates = "0.1, 0";
+  for (int k = 2; k < 48; ++k) {
+    start += k == 20 ? ", 0.1" : ", 0";
+    target += k == 20 ? ", 0.1" : k == 33 ? ", -0.05" : ", 0";
+    rates += ", 0";
+  }
+  const std::filesystem::path scene = folder.path() / "fifty.json";
+  writeFile(scene, R"({"name": "fifty", "linkage": {"rods": 50, "L": 49.2}, "initial": {"coords": [)" + start +
+                       R"(], "velocity": [)" + rates + R"(]}, "duration": 1, "runs": [{"name": "a", "method": "ambient"}]})");
+  const ProcessResult result = runLinkage(
+      {"connect", scene.string(), "--to", R"({"coords": [)" + target + "]}", "--max-length", "1", "--json"},
+      folder.path());
+  ASSERT_EQ(result.code, 0) << result.err;
+  const nlohmann::json list = nlohmann::json::parse(result.out);
+  ASSERT_GE(list.size(), 1u);
+  EXPECT_TRUE(list[0]["shortest"].get<bool>());
+  EXPECT_EQ(list[0]["morse_index"].get<int>(), 0);
+  EXPECT_LE(list[0]["end_error"].get<double>(), 1e-12);
+  EXPECT_EQ(list[0]["coords"].size(), 48u);
+  EXPECT_EQ(list[0]["hinge_velocities"].size(), 49u);
+  ASSERT_FALSE(list[0]["discrete_length"].is_null());
+  EXPECT_LT(list[0]["length_difference"].get<double>(), 1e-8);
+  EXPECT_LT(list[0]["path_difference"].get<double>(), 1e-7);
 }
 
 TEST(PeriodicCli, RefusesLongChains) {

@@ -52,6 +52,24 @@ TEST(Connect, HeavyRodsAndFiveRods) {
   expectRoutesAgree(findConnections(model, &chain, from, to, options));
 }
 
+// The Morse index long chains take from the discrete action's second variation agrees with the Jacobi
+// fields' conjugate points on the motions that pass some (4 rods: indices 0, 1, 1, ...; 5 rods).
+TEST(Connect, DiscreteMorseIndexAgreesWithTheJacobiFields) {
+  const Chain chain = Chain::uniform(4, 3.0);
+  const ConstrainedModel model = ConstrainedModel::fromChain(chain);
+  ConnectOptions options;
+  options.maxLength = 6.0;
+  options.discreteRoute = false;
+  const Eigen::VectorXd from = pointOf(chain, 0.5, 0.3);
+  const auto found = findConnections(model, &chain, from, pointOf(chain, -0.6, 2.2), options);
+  int passing = 0;
+  for (const Connection& c : found) {
+    EXPECT_EQ(discreteMorseIndex(model, from, c.velocity), c.morseIndex) << "length " << c.length;
+    if (c.morseIndex > 0) ++passing;
+  }
+  EXPECT_GE(passing, 1);
+}
+
 // Long chains: hinge coordinates as large as the base L, whose rounding (about 1e-16 of L^2 in a constraint,
 // 1e-14 of L in a Newton step) stopped both the projection and route 2 short of their absolute bounds.
 TEST(Connect, LongChainsBothRoutesAgree) {
@@ -65,6 +83,27 @@ TEST(Connect, LongChainsBothRoutesAgree) {
   ConnectOptions options;
   options.directions = 8;
   expectRoutesAgree(findConnections(model, &chain, from, to, options));
+}
+
+// Beyond 12 rods shooting takes its derivative once and then Broyden's updates, the fan shoots fewer seeds and
+// the Morse index comes from the discrete action: 60 rods, both routes agree and the end point is hit.
+TEST(Connect, SixtyRodsBothRoutesAgree) {
+  const Chain chain = Chain::uniform(60, 59.2);
+  const ConstrainedModel model = ConstrainedModel::fromChain(chain);
+  ASSERT_GT(model.freedom(), kExactShootingFreedom);
+  Eigen::VectorXd a = Eigen::VectorXd::Zero(59), b = Eigen::VectorXd::Zero(59);
+  a(0) = 0.8, a(3) = -0.4, a(7) = 0.3, a(10) = 0.2, a(30) = 0.1, a(58) = -0.1;
+  b(0) = 0.7, b(3) = 0.2, b(6) = -0.5, b(9) = 0.3, b(41) = 0.1, b(57) = 0.1;
+  const Eigen::VectorXd from = ConstrainedModel::stack(hingePositionsAt(chain, a.normalized()));
+  const Eigen::VectorXd to = ConstrainedModel::stack(hingePositionsAt(chain, b.normalized()));
+  ConnectOptions options;
+  options.maxLength = 2.5;
+  const auto found = findConnections(model, &chain, from, to, options);
+  expectRoutesAgree(found);
+  const auto direct = directConnection(model, &chain, from, to);
+  ASSERT_TRUE(direct.has_value());
+  EXPECT_LE(direct->endError, 1e-12);
+  EXPECT_NEAR(direct->length, found[0].length, 1e-10);
 }
 
 // The sparse KKT solve (long chains) against the dense one written out: the same x and multipliers.
