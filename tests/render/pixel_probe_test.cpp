@@ -37,8 +37,8 @@ ViewSettings probeSettings() {
   return s;
 }
 
-PixelRect panelRect(const ViewSettings& s, PanelKind kind) {
-  const auto rects = layoutPanels(s.panels, testing::kWidth, testing::kHeight);
+PixelRect panelRect(const ViewSettings& s, PanelKind kind, ImageSize size = {testing::kWidth, testing::kHeight}) {
+  const auto rects = layoutPanels(s.panels, size.width, size.height);
   for (std::size_t i = 0; i < s.panels.size(); ++i)
     if (s.panels[i].kind == kind) return rects[i];
   return {};
@@ -184,10 +184,7 @@ TEST_F(PixelProbe, NothingOnTheSphereHangsPastItsOutline) {
   two.runs[1].color = {0.0f, 0.45f, 0.70f};
   const ImageSize size{1280, 720};
   Renderer large(settings, size);
-  const auto rects = layoutPanels(settings.panels, size.width, size.height);
-  PixelRect panel;
-  for (std::size_t i = 0; i < settings.panels.size(); ++i)
-    if (settings.panels[i].kind == PanelKind::Sphere) panel = rects[i];
+  const PixelRect panel = panelRect(settings, PanelKind::Sphere, size);
   const SphereCamera view(settings.camera, two.time, panel);
   const P2 c = view.centre();
   const double outline = view.outlineRadius();
@@ -247,10 +244,7 @@ TEST_F(PixelProbe, NothingOnTheSphereHangsPastItsOutline) {
 TEST_F(PixelProbe, TheCurrentStateCarriesADirectionMarkWithinTheOutline) {
   const ImageSize size{1280, 720};
   Renderer large(settings, size);
-  const auto rects = layoutPanels(settings.panels, size.width, size.height);
-  PixelRect panel;
-  for (std::size_t i = 0; i < settings.panels.size(); ++i)
-    if (settings.panels[i].kind == PanelKind::Sphere) panel = rects[i];
+  const PixelRect panel = panelRect(settings, PanelKind::Sphere, size);
   const SphereCamera view(settings.camera, frame.time, panel);
   auto lifted = [](const Vec3& p, double r) { return V3{p.x * r, p.y * r, p.z * r}; };
   // A run along phi = 7.5 deg from t = 70 deg to t = 40 deg (the view's centre is at t = 7.5 deg).
@@ -605,10 +599,7 @@ TEST_F(PixelProbe, HiddenDashesReadOnADarkColourMap) {
   const ImageSize size{1280, 720};
   Renderer large(settings, size);
   const Image picture = large.render(dark), sphere = large.render(bare);
-  const auto rects = layoutPanels(settings.panels, size.width, size.height);
-  PixelRect rect{};
-  for (std::size_t i = 0; i < settings.panels.size(); ++i)
-    if (settings.panels[i].kind == PanelKind::Sphere) rect = rects[i];
+  PixelRect rect = panelRect(settings, PanelKind::Sphere, size);
   rect.width -= std::min(0.24f * rect.width, 0.45f * rect.height);  // framed left of the colour bar
   const SphereCamera view(settings.camera, dark.time, rect);
   auto luminance = [](Rgb8 c) { return 0.30 * c.r + 0.59 * c.g + 0.11 * c.b; };
