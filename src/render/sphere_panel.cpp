@@ -476,10 +476,12 @@ void spreadCoincidingBalls(const std::vector<RunFrame>& runs, std::vector<BallPl
 // chevron just past the ball pointing along the last section of the path (a moving run only; one for a group of
 // coinciding balls, past the group's centre), dark on a light halo in front (it reads on a dark path or colour map),
 // faint alone behind. The chevron and the hidden rings are kept within the sphere's outline (a ball in front,
-// standing on the surface, may stand out past it at the limb).
-void drawBall(const RunFrame& run, const BallPlace& ball, const PanelContext& context, const SphereCamera& camera,
-              const Placement& placement, ShapeBatch& back, ShapeBatch& front) {
-  if (!ball.shown) return;
+// standing on the surface, may stand out past it at the limb). Returns the box of a chevron drawn in front, for
+// labels to keep clear of.
+std::optional<Box> drawBall(const RunFrame& run, const BallPlace& ball, const PanelContext& context,
+                            const SphereCamera& camera, const Placement& placement, ShapeBatch& back, ShapeBatch& front) {
+  std::optional<Box> chevron;
+  if (!ball.shown) return chevron;
   const float unit = context.unit;
   const ColorRGB& background = context.settings.background;
   const float radius = ball.radius;
@@ -503,6 +505,9 @@ void drawBall(const RunFrame& run, const BallPlace& ball, const PanelContext& co
         front.capsule(left, tip, width, color);
         front.capsule(right, tip, width, color);
       }
+      const float w = halfWidth + 0.9f * mark;
+      chevron = Box{std::min({tip.x, left.x, right.x}) - w, std::min({tip.y, left.y, right.y}) - w,
+                    std::max({tip.x, left.x, right.x}) + w, std::max({tip.y, left.y, right.y}) + w};
     }
   }
   if (ball.behind) {
@@ -510,7 +515,7 @@ void drawBall(const RunFrame& run, const BallPlace& ball, const PanelContext& co
     const P2 ring = placement.onSphere ? withinOutline(camera, at, outer) : at;
     ringBehind(context, ring, 0.8f * radius, 0.9f * mark, ghost(toRgba(run.color)), back);
     if (run.stopped) ringBehind(context, ring, 0.8f * radius + 2.5f * mark, 0.8f * mark, ghost(palette::stopRed), back);
-    return;
+    return chevron;
   }
   Placement ballPlacement = placement;
   ballPlacement.lift = kBallRadius;
@@ -521,6 +526,7 @@ void drawBall(const RunFrame& run, const BallPlace& ball, const PanelContext& co
   // A thin dark rim sets the ball off from its own path, which has its colour (small frames lost it in the tube).
   else front.disc(at, radius + unit, palette::withAlpha(palette::ink, 0.75f), false, 0, world, (radius + unit) / pixelsPerUnit);
   front.disc(at, radius, toRgba(run.color), true, 0.55f, world, radius / pixelsPerUnit);
+  return chevron;
 }
 
 // The start of a run's path: a short dark bar across its first section (faint where the sphere hides it), kept
@@ -979,7 +985,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   spreadCoincidingBalls(runs, balls);
   std::vector<PixelRect> ballBoxes;
   for (std::size_t k = 0; k < runs.size(); ++k) {
-    drawBall(runs[k], balls[k], context, camera, placement, back, front);
+    if (const auto chevron = drawBall(runs[k], balls[k], context, camera, placement, back, front)) placer.avoid(*chevron);
     if (!balls[k].shown) continue;
     const float r = balls[k].radius + 2.5f * context.unit;
     placer.avoidBall(balls[k].at, r);
