@@ -361,7 +361,8 @@ TEST_F(PixelProbe, TheSeamRunsUnderAStateOnIt) {
   auto decoration = std::make_shared<SphereDecoration>();
   decoration->seam = true;
   ViewSettings facing = settings;
-  facing.camera.viewDirection = onSphere(10 * kDeg, 80 * kDeg);  // the seam t = 90 deg runs down the front
+  // The seam t = 90 deg runs down the front, facing the eye most at the state (phi = 0), where it would be named.
+  facing.camera.viewDirection = onSphere(0, 80 * kDeg);
   const ImageSize size{1280, 720};
   Renderer large(facing, size);
   FrameState onSeam = frame;
@@ -400,6 +401,18 @@ TEST_F(PixelProbe, TheSeamRunsUnderAStateOnIt) {
   }
   EXPECT_GT(probed, 10);
   EXPECT_EQ(struck, 0) << struck << " of " << probed << " pixels along the seam within the ball show the seam";
+  // Nor is the seam's name tied to the ball: no leader line runs over it (the whole ball as it is without the seam).
+  int crossed = 0, inBall = 0;
+  for (int dy = -int(radius); dy <= int(radius); ++dy)
+    for (int dx = -int(radius); dx <= int(radius); ++dx) {
+      if (std::hypot(float(dx), float(dy)) > radius - 3) continue;
+      const int x = int(std::lround(ball.x)) + dx, y = int(std::lround(ball.y)) + dy;
+      const Rgb8 c = pixel(picture, x, y), b = pixel(without, x, y);
+      ++inBall;
+      crossed += std::abs(c.r - b.r) + std::abs(c.g - b.g) + std::abs(c.b - b.b) > 6;
+    }
+  EXPECT_GT(inBall, 100);
+  EXPECT_EQ(crossed, 0) << crossed << " of " << inBall << " pixels within the ball differ from the ball without the seam";
 }
 
 TEST_F(PixelProbe, PinsAreCharcoal) {
