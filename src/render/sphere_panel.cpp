@@ -163,6 +163,40 @@ class LabelPlacer {
   explicit LabelPlacer(const PixelRect& area) : area_(area) {}
   void avoid(const Box& box) { taken_.push_back(box); }
   void avoidPoint(P2 p) { points_.push_back(p); }
+  // A ball: its square is avoided as a box; its disc is where a leader line may not run (over the ball).
+  void avoidBall(P2 at, float radius) {
+    avoid({at.x - radius, at.y - radius, at.x + radius, at.y + radius});
+    balls_.push_back({at, radius});
+  }
+  bool onBall(P2 p) const {
+    return std::any_of(balls_.begin(), balls_.end(),
+                       [&](const auto& ball) { return std::hypot(p.x - ball.first.x, p.y - ball.first.y) < ball.second; });
+  }
+  // Where a leader line from `anchor` to `to` starts: the anchor, or for an anchor under a ball (a pole or a seam a
+  // state sits on) the edge of the ball, of the balls spread over it one after another: a leader never strikes
+  // through the ball over its anchor.
+  P2 leaderStart(P2 anchor, P2 to) const {
+    const float dx = to.x - anchor.x, dy = to.y - anchor.y, length = std::hypot(dx, dy);
+    if (length <= 0) return anchor;
+    float from = 0;  // along the line, as a fraction of its length
+    for (std::size_t pass = 0; pass < balls_.size(); ++pass) {
+      bool moved = false;
+      for (const auto& [at, radius] : balls_) {
+        // The line's parameters s where |anchor + s (to - anchor) - at| = radius: entry and exit.
+        const float ox = anchor.x - at.x, oy = anchor.y - at.y;
+        const float b = (ox * dx + oy * dy) / (length * length);
+        const float c = (ox * ox + oy * oy - radius * radius) / (length * length);
+        if (b * b - c <= 0) continue;
+        const float exit = -b + std::sqrt(b * b - c), entry = -b - std::sqrt(b * b - c);
+        if (entry <= from && exit > from) {
+          from = std::min(exit, 1.0f);
+          moved = true;
+        }
+      }
+      if (!moved) break;
+    }
+    return {anchor.x + from * dx, anchor.y + from * dy};
+  }
   // The box of a label of `width` x `height` placed near `anchor`, and whether it is far enough to need a leader.
   std::optional<std::pair<Box, bool>> place(P2 anchor, float width, float height, float clearance) {
     std::optional<std::pair<Box, bool>> best;
@@ -200,6 +234,7 @@ class LabelPlacer {
   PixelRect area_;
   std::vector<Box> taken_;
   std::vector<P2> points_;
+  std::vector<std::pair<P2, float>> balls_;
 };
 
 // On the opaque sphere, points ride on a shell just outside it so the tube's front half is never
@@ -358,7 +393,9 @@ void drawFamily(const RunFrame& run, const PanelContext& context, const SphereCa
 }
 
 // Where a run's state is drawn: its ball's centre and radius on the screen, the direction of its last section
-// (the velocity's, seen from the eye), and whether the sphere hides it.
+// (the velocity's, seen from the eye), and whether the sphere hides it. The direction mark is measured from
+// `markAt` (the ball's centre, or the centre of the group of coinciding balls it is spread in) and drawn only by a
+// `marksDirection` ball: one mark per group, as one state moves one way.
 struct BallPlace {
   bool shown = false;
   P2 at;
@@ -367,6 +404,8 @@ struct BallPlace {
   bool headingKnown = false;
   bool behind = false;
   V3 centre;
+  P2 markAt;
+  bool marksDirection = true;
 };
 
 BallPlace placeBall(const RunFrame& run, float unit, const SphereCamera& camera, const Placement& placement) {
@@ -382,6 +421,7 @@ BallPlace placeBall(const RunFrame& run, float unit, const SphereCamera& camera,
   ball.behind = placement.onSphere && surfaceBehind(camera, ball.centre);
   // At the limb a ball resting on the surface would stand out past the outline: its centre stays on or inside it.
   if (placement.onSphere) ball.at = withinOutline(camera, ball.at, 0.0f);
+  ball.markAt = ball.at;
   // The heading: from the last path point at least a few units back on the screen to the state, both as the path
   // is placed (the ball's centre, lifted higher, is shifted away from the sphere's centre on the screen: measured from
   // it, the heading would point outwards wherever the ball is off the centre).
@@ -403,8 +443,9 @@ BallPlace placeBall(const RunFrame& run, float unit, const SphereCamera& camera,
 }
 
 // Balls whose places coincide on the screen (runs in the same state) are spread across their heading, side by side
-// in run order, as their paths are: each stays visible and none looks larger or ranked.
-void spreadCoincidingBalls(std::vector<BallPlace>& balls) {
+// in run order, as their paths are: each stays visible and none looks larger or ranked. The group's direction mark
+// is one chevron from the group's centre, drawn by its first moving member (a chevron per ball read as a double one).
+void spreadCoincidingBalls(const std::vector<RunFrame>& runs, std::vector<BallPlace>& balls) {
   std::vector<bool> done(balls.size(), false);
   for (std::size_t i = 0; i < balls.size(); ++i) {
     if (!balls[i].shown || done[i]) continue;
@@ -414,11 +455,17 @@ void spreadCoincidingBalls(std::vector<BallPlace>& balls) {
           std::hypot(balls[j].at.x - balls[i].at.x, balls[j].at.y - balls[i].at.y) < 0.5f * balls[i].radius)
         group.push_back(j);
     if (group.size() < 2) continue;
+    const P2 centre = balls[i].at;
     const P2 across{-balls[i].heading.y, balls[i].heading.x};
     const float step = 0.9f * balls[i].radius;
+    bool marked = false;
     for (std::size_t g = 0; g < group.size(); ++g) {
+      BallPlace& ball = balls[group[g]];
       done[group[g]] = true;
-      balls[group[g]].at = plus(balls[i].at, across, step * (float(g) - 0.5f * float(group.size() - 1)));
+      ball.at = plus(centre, across, step * (float(g) - 0.5f * float(group.size() - 1)));
+      ball.markAt = centre;
+      ball.marksDirection = !marked && !runs[group[g]].stopped && ball.headingKnown;
+      marked = marked || ball.marksDirection;
     }
   }
 }
@@ -426,22 +473,25 @@ void spreadCoincidingBalls(std::vector<BallPlace>& balls) {
 // The current state of a run. In front: a shaded ball on a thin dark rim (a stopped run's on a red halo), hidden
 // per pixel where the sphere's outline passes in front of it. Behind the sphere: a hollow ring in its colour (a red
 // one around it when stopped), nothing inside, so it never reads as a spot on the front. The direction mark: a
-// chevron just past the ball pointing along the last section of the path (a moving run only), dark on a light halo
-// in front (it reads on a dark path or colour map), faint alone behind. The chevron and the hidden rings are kept
-// within the sphere's outline (a ball in front, standing on the surface, may stand out past it at the limb).
-void drawBall(const RunFrame& run, const BallPlace& ball, const PanelContext& context, const SphereCamera& camera,
-              const Placement& placement, ShapeBatch& back, ShapeBatch& front) {
-  if (!ball.shown) return;
+// chevron just past the ball pointing along the last section of the path (a moving run only; one for a group of
+// coinciding balls, past the group's centre), dark on a light halo in front (it reads on a dark path or colour map),
+// faint alone behind. The chevron and the hidden rings are kept within the sphere's outline (a ball in front,
+// standing on the surface, may stand out past it at the limb). Returns the box of a chevron drawn in front, for
+// labels to keep clear of.
+std::optional<Box> drawBall(const RunFrame& run, const BallPlace& ball, const PanelContext& context,
+                            const SphereCamera& camera, const Placement& placement, ShapeBatch& back, ShapeBatch& front) {
+  std::optional<Box> chevron;
+  if (!ball.shown) return chevron;
   const float unit = context.unit;
   const ColorRGB& background = context.settings.background;
   const float radius = ball.radius;
   const P2 at = ball.at;
   const float mark = markUnit(unit);
-  if (!run.stopped && ball.headingKnown) {
+  if (!run.stopped && ball.headingKnown && ball.marksDirection) {
     const P2 d = ball.heading, n{-d.y, d.x};
     const float halfWidth = (ball.behind ? 0.8f : 0.9f) * mark;
-    P2 tip = plus(at, d, radius + 8.5f * mark);
-    const P2 base = plus(at, d, radius + 3 * mark);
+    P2 tip = plus(ball.markAt, d, radius + 8.5f * mark);
+    const P2 base = plus(ball.markAt, d, radius + 3 * mark);
     P2 left = plus(base, n, 4 * mark), right = plus(base, n, -4 * mark);
     if (placement.onSphere)
       for (P2* point : {&tip, &left, &right}) *point = withinOutline(camera, *point, halfWidth);
@@ -455,6 +505,9 @@ void drawBall(const RunFrame& run, const BallPlace& ball, const PanelContext& co
         front.capsule(left, tip, width, color);
         front.capsule(right, tip, width, color);
       }
+      const float w = halfWidth + 0.9f * mark;
+      chevron = Box{std::min({tip.x, left.x, right.x}) - w, std::min({tip.y, left.y, right.y}) - w,
+                    std::max({tip.x, left.x, right.x}) + w, std::max({tip.y, left.y, right.y}) + w};
     }
   }
   if (ball.behind) {
@@ -462,7 +515,7 @@ void drawBall(const RunFrame& run, const BallPlace& ball, const PanelContext& co
     const P2 ring = placement.onSphere ? withinOutline(camera, at, outer) : at;
     ringBehind(context, ring, 0.8f * radius, 0.9f * mark, ghost(toRgba(run.color)), back);
     if (run.stopped) ringBehind(context, ring, 0.8f * radius + 2.5f * mark, 0.8f * mark, ghost(palette::stopRed), back);
-    return;
+    return chevron;
   }
   Placement ballPlacement = placement;
   ballPlacement.lift = kBallRadius;
@@ -473,6 +526,7 @@ void drawBall(const RunFrame& run, const BallPlace& ball, const PanelContext& co
   // A thin dark rim sets the ball off from its own path, which has its colour (small frames lost it in the tube).
   else front.disc(at, radius + unit, palette::withAlpha(palette::ink, 0.75f), false, 0, world, (radius + unit) / pixelsPerUnit);
   front.disc(at, radius, toRgba(run.color), true, 0.55f, world, radius / pixelsPerUnit);
+  return chevron;
 }
 
 // The start of a run's path: a short dark bar across its first section (faint where the sphere hides it), kept
@@ -672,9 +726,10 @@ void drawLabel(const std::string& text, P2 anchor, bool hidden, const PanelConte
   if (!spot) return;  // no room in the panel
   const Box& box = spot->first;
   const Rgba ink = hidden ? ghost(palette::softInk) : palette::softInk;
-  if (spot->second) {  // the leader: from the anchor to the nearest point of the box
+  if (spot->second) {  // the leader: from the anchor (or the edge of a ball over it) to the nearest point of the box
     const P2 to{std::clamp(anchor.x, box.x0, box.x1), std::clamp(anchor.y, box.y0, box.y1)};
-    batch.capsule(anchor, to, 0.5f * markUnit(context.unit), ink);
+    const P2 from = placer.leaderStart(anchor, to);
+    if (std::hypot(to.x - from.x, to.y - from.y) > markUnit(context.unit)) batch.capsule(from, to, 0.5f * markUnit(context.unit), ink);
   }
   const ColorRGB& b = context.settings.background;
   batch.rect(box.x0, box.y0, box.x1, box.y1, {b.r, b.g, b.b, 0.7f});
@@ -734,7 +789,8 @@ void drawSeams(const PanelContext& context, const SphereCamera& camera, LabelPla
       if (!hidden) placer.avoidPoint(camera.project(p));  // labels keep off the seam as off the paths
       const V3 eye = camera.eye();
       const double facing = (p.x * eye.x + p.y * eye.y + p.z * eye.z) / std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
-      if (!hidden && std::abs(phi) < 1.2 && facing > namedFacing) {
+      // A seam is named at a point of it in sight: not under a ball (a state on the seam covers it there).
+      if (!hidden && std::abs(phi) < 1.2 && facing > namedFacing && !placer.onBall(camera.project(p))) {
         namedFacing = facing;
         named = camera.project(p);
       }
@@ -926,13 +982,13 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   if (space == ViewSpace::Ball) drawBallStart(context, camera, front);
   std::vector<BallPlace> balls;
   for (const RunFrame& run : runs) balls.push_back(placeBall(run, context.unit, camera, placement));
-  spreadCoincidingBalls(balls);
+  spreadCoincidingBalls(runs, balls);
   std::vector<PixelRect> ballBoxes;
   for (std::size_t k = 0; k < runs.size(); ++k) {
-    drawBall(runs[k], balls[k], context, camera, placement, back, front);
+    if (const auto chevron = drawBall(runs[k], balls[k], context, camera, placement, back, front)) placer.avoid(*chevron);
     if (!balls[k].shown) continue;
     const float r = balls[k].radius + 2.5f * context.unit;
-    placer.avoid({balls[k].at.x - r, balls[k].at.y - r, balls[k].at.x + r, balls[k].at.y + r});
+    placer.avoidBall(balls[k].at, r);
     ballBoxes.push_back({balls[k].at.x - r, balls[k].at.y - r, 2 * r, 2 * r});
   }
   for (const P2& p : pathPoints) placer.avoidPoint(p);

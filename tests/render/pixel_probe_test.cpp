@@ -311,13 +311,58 @@ TEST_F(PixelProbe, TheCurrentStateCarriesADirectionMarkWithinTheOutline) {
                       << " pixels just outside the outline by the state at the limb are drawn on";
 }
 
+// Runs in the same state (their balls spread side by side) move one way: one direction mark for the group, past its
+// centre, not a chevron per ball (two read as a double one, "»"). Dark pixels just past the balls: as many for two
+// coinciding runs as for one run alone.
+TEST_F(PixelProbe, CoincidingStatesShareOneDirectionMark) {
+  const ImageSize size{1280, 720};
+  Renderer large(settings, size);
+  const SphereCamera view(settings.camera, frame.time, panelRect(settings, PanelKind::Sphere, size));
+  auto lifted = [](const Vec3& p, double r) { return V3{p.x * r, p.y * r, p.z * r}; };
+  FrameState one = frame;  // along phi = 7.5 deg from t = 70 deg to t = 40 deg, towards the view's centre
+  RunFrame& run = one.runs[0];
+  run.path.clear();
+  run.pathTimes.clear();
+  for (int k = 0; k <= 60; ++k) {
+    run.path.push_back(onSphere(7.5 * kDeg, (70 - 30 * k / 60.0) * kDeg));
+    run.pathTimes.push_back(3.0);
+  }
+  run.current = run.path.back();
+  FrameState two = one;
+  two.runs.push_back(two.runs[0]);
+  two.runs[1].name = "same state";
+  two.runs[1].color = {0.0f, 0.45f, 0.70f};
+  const P2 on = view.project(lifted(run.current, 1.014)), back = view.project(lifted(run.path[55], 1.014));
+  const P2 ball = view.project(lifted(run.current, 1.055));
+  const double length = std::hypot(on.x - back.x, on.y - back.y);
+  ASSERT_GT(length, 3);
+  const P2 heading{float((on.x - back.x) / length), float((on.y - back.y) / length)}, across{-heading.y, heading.x};
+  const float radius = std::max(3.5f, float(0.055 * view.pixelsPerUnitAt(lifted(run.current, 1.055))));
+  auto isInk = [](Rgb8 c) { return c.r < 110 && c.g < 110 && c.b < 110 && std::abs(c.r - c.b) < 30; };
+  // Dark neutral pixels past the balls' edge (the chevron's tip is 8.5 frame units past it), across the whole group.
+  auto inkAhead = [&](const Image& picture) {
+    int ink = 0;
+    for (float along = radius + 1.5f; along <= radius + 14; along += 1)
+      for (float side = -2.5f * radius; side <= 2.5f * radius; side += 1)
+        ink += isInk(pixel(picture, int(std::lround(ball.x + along * heading.x + side * across.x)),
+                           int(std::lround(ball.y + along * heading.y + side * across.y))));
+    return ink;
+  };
+  const int alone = inkAhead(large.render(one)), together = inkAhead(large.render(two));
+  EXPECT_GE(alone, 10) << "no direction mark ahead of the state";
+  EXPECT_GE(together, alone * 3 / 4) << "the group's direction mark is missing";
+  EXPECT_LE(together, alone * 5 / 4) << together << " dark pixels ahead of two coinciding states, " << alone
+                                     << " ahead of one: a chevron per ball";
+}
+
 // The seam (view.sphere.seam) rides on the sphere under the paths and balls: a state on the seam shows its ball
 // whole, not struck through by the seam's red dashes (scenes/seam.json starts there).
 TEST_F(PixelProbe, TheSeamRunsUnderAStateOnIt) {
   auto decoration = std::make_shared<SphereDecoration>();
   decoration->seam = true;
   ViewSettings facing = settings;
-  facing.camera.viewDirection = onSphere(10 * kDeg, 80 * kDeg);  // the seam t = 90 deg runs down the front
+  // The seam t = 90 deg runs down the front, facing the eye most at the state (phi = 0), where it would be named.
+  facing.camera.viewDirection = onSphere(0, 80 * kDeg);
   const ImageSize size{1280, 720};
   Renderer large(facing, size);
   FrameState onSeam = frame;
@@ -356,6 +401,18 @@ TEST_F(PixelProbe, TheSeamRunsUnderAStateOnIt) {
   }
   EXPECT_GT(probed, 10);
   EXPECT_EQ(struck, 0) << struck << " of " << probed << " pixels along the seam within the ball show the seam";
+  // Nor is the seam's name tied to the ball: no leader line runs over it (the whole ball as it is without the seam).
+  int crossed = 0, inBall = 0;
+  for (int dy = -int(radius); dy <= int(radius); ++dy)
+    for (int dx = -int(radius); dx <= int(radius); ++dx) {
+      if (std::hypot(float(dx), float(dy)) > radius - 3) continue;
+      const int x = int(std::lround(ball.x)) + dx, y = int(std::lround(ball.y)) + dy;
+      const Rgb8 c = pixel(picture, x, y), b = pixel(without, x, y);
+      ++inBall;
+      crossed += std::abs(c.r - b.r) + std::abs(c.g - b.g) + std::abs(c.b - b.b) > 6;
+    }
+  EXPECT_GT(inBall, 100);
+  EXPECT_EQ(crossed, 0) << crossed << " of " << inBall << " pixels within the ball differ from the ball without the seam";
 }
 
 TEST_F(PixelProbe, PinsAreCharcoal) {
