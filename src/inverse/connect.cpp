@@ -20,6 +20,22 @@ namespace {
 
 double maxAbs(const Eigen::VectorXd& v) { return v.cwiseAbs().maxCoeff(); }
 
+// A node's multipliers by least squares: G G^T mu = -G r with r = M (q_(i+1) - 2 q_i + q_(i-1)), the discrete
+// Euler-Lagrange residual without them. Long chains (a sparse model) from the sparse M and G, O(n) instead of
+// O(n^2) (docs/geometry.md, "Long chains"); small models by the dense formulas.
+Eigen::VectorXd nodeMultipliers(const ConstrainedModel& model, const Eigen::VectorXd& before, const Eigen::VectorXd& q,
+                                const Eigen::VectorXd& after) {
+  if (model.sparse()) {
+    const Eigen::SparseMatrix<double> g = model.sparseJacobian(q);
+    const Eigen::VectorXd r = model.sparseMass() * (after - 2 * q + before);
+    const Eigen::SparseMatrix<double> normal = g * g.transpose();
+    return -Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>(normal).solve(Eigen::VectorXd(g * r));
+  }
+  const Eigen::MatrixXd g = model.jacobian(q);
+  const Eigen::VectorXd r = model.mass() * (after - 2 * q + before);
+  return -(g * g.transpose()).ldlt().solve(g * r);
+}
+
 // Newton's method on the discrete Euler-Lagrange equations with multipliers; nodes 0 and K fixed.
 bool solveDiscrete(const ConstrainedModel& model, std::vector<Eigen::VectorXd>& nodes, bool periodic = false) {
   const int n = model.dimension(), m = model.constraintCount(), block = n + m;
@@ -33,22 +49,11 @@ bool solveDiscrete(const ConstrainedModel& model, std::vector<Eigen::VectorXd>& 
   };
   // Multipliers from least squares on the current nodes.
   std::vector<Eigen::VectorXd> mu(static_cast<std::size_t>(count), Eigen::VectorXd::Zero(m));
+  for (int i = first; i <= last; ++i)
+    mu[static_cast<std::size_t>(i)] = nodeMultipliers(model, node(i - 1), node(i), node(i + 1));
   // Long chains (a sparse model) assemble from the sparse M, G and A_i: O(n) per node instead of O(n^2)
   // (docs/geometry.md, "Long chains"); small models keep the dense formulas.
   const bool sparse = model.sparse();
-  for (int i = first; i <= last; ++i) {
-    if (sparse) {
-      const Eigen::SparseMatrix<double> g = model.sparseJacobian(node(i));
-      const Eigen::VectorXd r = model.sparseMass() * (node(i + 1) - 2 * node(i) + node(i - 1));
-      const Eigen::SparseMatrix<double> normal = g * g.transpose();
-      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(normal);
-      mu[static_cast<std::size_t>(i)] = -ldlt.solve(Eigen::VectorXd(g * r));
-      continue;
-    }
-    const Eigen::MatrixXd g = model.jacobian(node(i));
-    const Eigen::VectorXd r = model.mass() * (node(i + 1) - 2 * node(i) + node(i - 1));
-    mu[static_cast<std::size_t>(i)] = -(g * g.transpose()).ldlt().solve(g * r);
-  }
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
   bool analysed = false;
   double previousStep = INFINITY, shrink = INFINITY, previousSize = 0;
@@ -213,8 +218,8 @@ std::optional<Connection> shootConnection(const ConstrainedModel& model, const E
   const bool broyden = d > kExactShootingFreedom;
   velocity = model.projectVelocity(from, velocity);
   double previous = INFINITY;
-  Eigen::MatrixXd jacobian;     // dq(1)/dv B: exact, or Broyden's estimate
-  bool fresh = false;           // the last step came from the exact derivative
+  Eigen::MatrixXd jacobian;                // dq(1)/dv B: exact, or Broyden's estimate
+  bool fresh = false;                      // the last step came from the exact derivative
   Eigen::VectorXd lastStep, lastResidual;  // for Broyden's update
   int exactShots = 0;
   for (int iteration = 1; iteration <= (broyden ? 80 : 40); ++iteration) {
@@ -363,10 +368,8 @@ int discreteMorseIndex(const ConstrainedModel& model, const Eigen::VectorXd& fro
   Eigen::MatrixXd schur, previousBasis;
   for (int i = 1; i + 1 < count; ++i) {
     const Eigen::VectorXd& q = nodes[static_cast<std::size_t>(i)];
-    const Eigen::SparseMatrix<double> g = model.sparseJacobian(q);
-    const Eigen::VectorXd r = mass * (nodes[static_cast<std::size_t>(i + 1)] - 2 * q + nodes[static_cast<std::size_t>(i - 1)]);
-    const Eigen::SparseMatrix<double> normal = g * g.transpose();
-    const Eigen::VectorXd mu = -Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>(normal).solve(Eigen::VectorXd(g * r));
+    const Eigen::VectorXd mu =
+        nodeMultipliers(model, nodes[static_cast<std::size_t>(i - 1)], q, nodes[static_cast<std::size_t>(i + 1)]);
     const Eigen::MatrixXd basis = model.tangentBasis(q);
     const Eigen::MatrixXd hz = 2.0 * (mass * basis) - [&] {
       Eigen::MatrixXd out(basis.rows(), basis.cols());
@@ -470,16 +473,19 @@ std::vector<Connection> findConnections(const ConstrainedModel& model, const Cha
   found.erase(std::remove_if(found.begin(), found.end(),
                              [&](const Connection& c) { return c.length > maxLength * (1 + 1e-12); }),
               found.end());
-  std::sort(found.begin(), found.end(), [](const Connection& a, const Connection& b) { return a.length < b.length; });
+  const auto shorter = [](const Connection& a, const Connection& b) { return a.length < b.length; };
+  std::sort(found.begin(), found.end(), shorter);
 
-  for (Connection& c : found) {
+  // A motion route 1 found: its path and its Morse index.
+  const auto describe = [&](Connection& c) {
     c.path = shootingPath(model, from, c.velocity, kPathSamples, options.tolerance);
     // The Jacobi fields' Gram determinant of n - 3 fields loses its zeros among the products of many small
     // factors on long chains; there the discrete action's second variation counts them.
     if (chain != nullptr)
       c.morseIndex = d > kExactShootingFreedom ? discreteMorseIndex(model, from, c.velocity)
                                                : morseIndexOnChain(*chain, from, c.velocity);
-  }
+  };
+  for (Connection& c : found) describe(c);
   if (!options.discreteRoute) return found;
 
   // Route 2: first from seeds that know nothing of route 1, then from route 1's paths for the rest.
@@ -506,13 +512,8 @@ std::vector<Connection> findConnections(const ConstrainedModel& model, const Cha
       if (c == nullptr && d > kExactShootingFreedom && g->length <= maxLength * (1 + 1e-12)) {
         const std::size_t before = found.size();
         add(shootConnection(model, from, to, g->startVelocity, options.tolerance));
-        if (found.size() > before) {
-          Connection& added = found.back();
-          added.path = shootingPath(model, from, added.velocity, kPathSamples, options.tolerance);
-          added.morseIndex = discreteMorseIndex(model, from, added.velocity);
-        }
-        std::sort(found.begin(), found.end(),
-                  [](const Connection& a, const Connection& b) { return a.length < b.length; });
+        if (found.size() > before) describe(found.back());
+        std::sort(found.begin(), found.end(), shorter);
         c = match(*g);
       }
       record(c, *g);
