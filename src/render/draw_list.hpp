@@ -3,6 +3,7 @@
 // for a sphere panel the impostor sphere drawn under them. The GL part (render/gl/) only executes this,
 // so everything about layout, text and panels is testable without a GL context.
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -25,6 +26,7 @@ struct SphereImpostor {
   SphereLook look;
   std::vector<PixelRect> labels;  // the boxes of the labels placed on the sphere (poles, seams)
   std::vector<PixelRect> balls;   // the boxes kept free around the runs' balls
+  std::vector<std::array<P2, 2>> leaders;  // the leader lines (from, to) of labels placed away from their anchors
   PixelRect colorBar{};           // the colour bar's strip (ticks, caption and note included); empty without one
 };
 

@@ -197,6 +197,20 @@ class LabelPlacer {
     }
     return {anchor.x + from * dx, anchor.y + from * dy};
   }
+  // Whether the leader from `anchor` to the nearest point of `box` runs over a ball (past those over the anchor,
+  // which it starts beyond): a leader strikes through no ball.
+  bool leaderCrossesABall(P2 anchor, const Box& box) const {
+    const P2 to{std::clamp(anchor.x, box.x0, box.x1), std::clamp(anchor.y, box.y0, box.y1)};
+    const P2 from = leaderStart(anchor, to);
+    const float dx = to.x - from.x, dy = to.y - from.y, length2 = dx * dx + dy * dy;
+    return std::any_of(balls_.begin(), balls_.end(), [&](const auto& ball) {
+      const auto& [at, radius] = ball;
+      const float s = length2 > 0 ? std::clamp(((at.x - from.x) * dx + (at.y - from.y) * dy) / length2, 0.0f, 1.0f) : 0.0f;
+      return std::hypot(from.x + s * dx - at.x, from.y + s * dy - at.y) < 0.99f * radius;
+    });
+  }
+  void recordLeader(P2 from, P2 to) { leaders_.push_back({from, to}); }
+  const std::vector<std::array<P2, 2>>& leaders() const { return leaders_; }
   // The box of a label of `width` x `height` placed near `anchor`, and whether it is far enough to need a leader.
   std::optional<std::pair<Box, bool>> place(P2 anchor, float width, float height, float clearance) {
     std::optional<std::pair<Box, bool>> best;
@@ -217,6 +231,7 @@ class LabelPlacer {
           continue;
         if (std::any_of(taken_.begin(), taken_.end(), [&](const Box& t) { return overlapArea(box, t) > 0; }))
           continue;
+        if (reach > 1 && leaderCrossesABall(anchor, box)) continue;
         float score = reach;  // nearer wins a tie
         for (const P2& p : points_)
           if (p.x > box.x0 && p.x < box.x1 && p.y > box.y0 && p.y < box.y1) score += 10;
@@ -235,6 +250,7 @@ class LabelPlacer {
   std::vector<Box> taken_;
   std::vector<P2> points_;
   std::vector<std::pair<P2, float>> balls_;
+  std::vector<std::array<P2, 2>> leaders_;
 };
 
 // On the opaque sphere, points ride on a shell just outside it so the tube's front half is never
@@ -729,7 +745,10 @@ void drawLabel(const std::string& text, P2 anchor, bool hidden, const PanelConte
   if (spot->second) {  // the leader: from the anchor (or the edge of a ball over it) to the nearest point of the box
     const P2 to{std::clamp(anchor.x, box.x0, box.x1), std::clamp(anchor.y, box.y0, box.y1)};
     const P2 from = placer.leaderStart(anchor, to);
-    if (std::hypot(to.x - from.x, to.y - from.y) > markUnit(context.unit)) batch.capsule(from, to, 0.5f * markUnit(context.unit), ink);
+    if (std::hypot(to.x - from.x, to.y - from.y) > markUnit(context.unit)) {
+      batch.capsule(from, to, 0.5f * markUnit(context.unit), ink);
+      placer.recordLeader(from, to);
+    }
   }
   const ColorRGB& b = context.settings.background;
   batch.rect(box.x0, box.y0, box.x1, box.y1, {b.r, b.g, b.b, 0.7f});
@@ -1003,7 +1022,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   batch.append(labelLayer);
   if (!captioned && !textPanel) captionFamilies(context, sphereRect.width, batch);
   const SphereLook look = colored ? SphereLook::Colored : space == ViewSpace::Sphere ? SphereLook::Opaque : SphereLook::Glass;
-  return {camera, look, labels, ballBoxes, colorBarBox};
+  return {camera, look, labels, ballBoxes, placer.leaders(), colorBarBox};
 }
 
 }  // namespace sl

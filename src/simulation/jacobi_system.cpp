@@ -86,8 +86,8 @@ double determinantRate(const Eigen::MatrixXd& gram, const Eigen::MatrixXd& rate)
 
 }  // namespace
 
-bool isConjugateMinimum(double determinantAtMinimum, double largest) {
-  return determinantAtMinimum <= 1e-12 * largest;
+bool isConjugateMinimum(double smallestEigenvalueAtMinimum, double largestMean) {
+  return smallestEigenvalueAtMinimum <= 1e-12 * largestMean;
 }
 
 double gramDeterminantRate(const Eigen::MatrixXd& gram, const Eigen::MatrixXd& rate) {
@@ -197,7 +197,7 @@ bool JacobiSystem::settleBetweenSteps(State& y) {
   return true;
 }
 
-JacobiState JacobiSystem::jacobiAt(const State& y) const {
+void JacobiSystem::gramAt(const State& y, Eigen::MatrixXd& gram, Eigen::MatrixXd& rate) const {
   const Eigen::Index h = hinges_;
   const std::size_t block = static_cast<std::size_t>(4 * h);
   const ConstHinges v(y.data() + 2 * h, 2, h);
@@ -209,7 +209,8 @@ JacobiState JacobiSystem::jacobiAt(const State& y) const {
     fields.push_back(dq - (mass_.innerProduct(dq, v) / vv) * v);  // the part across the motion
     rates.push_back(ConstHinges(y.data() + offset + 2 * h, 2, h));
   }
-  Eigen::MatrixXd gram(fields_, fields_), rate(fields_, fields_);
+  gram.resize(fields_, fields_);
+  rate.resize(fields_, fields_);
   for (int i = 0; i < fields_; ++i)
     for (int j = 0; j < fields_; ++j) {
       const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
@@ -217,11 +218,23 @@ JacobiState JacobiSystem::jacobiAt(const State& y) const {
       // <J_i, J_j>' = <dv_i, J_j> + <J_i, dv_j>: dv's normal part is M-orthogonal to the tangent J's.
       rate(i, j) = mass_.innerProduct(rates[ui], fields[uj]) + mass_.innerProduct(fields[ui], rates[uj]);
     }
+}
+
+JacobiState JacobiSystem::jacobiAt(const State& y) const {
+  Eigen::MatrixXd gram, rate;
+  gramAt(y, gram, rate);
   JacobiState out;
   out.gramDeterminant = determinant(gram);
   out.gramRate = determinantRate(gram, rate);
+  out.gramMean = gram.trace() / fields_;
   out.size = std::pow(std::max(out.gramDeterminant, 0.0), 0.5 / fields_);
   return out;
+}
+
+double JacobiSystem::smallestGramEigenvalue(const State& y) const {
+  Eigen::MatrixXd gram, rate;
+  gramAt(y, gram, rate);
+  return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(gram, Eigen::EigenvaluesOnly).eigenvalues()(0);
 }
 
 }  // namespace sl

@@ -28,6 +28,7 @@ struct JacobiState {
   double size = 0;
   double gramDeterminant = 0;  // det G
   double gramRate = 0;         // d/dt det G: changes sign at each zero of det G (and at its maxima)
+  double gramMean = 0;         // tr G / m, the mean eigenvalue: the fields' squared size, the scale of a zero
 };
 
 // d/dt det G = tr(adj(G) G') for a symmetric positive semi-definite G (the fields' Gram matrix) and its rate
@@ -35,9 +36,12 @@ struct JacobiState {
 double gramDeterminantRate(const Eigen::MatrixXd& gram, const Eigen::MatrixXd& rate);
 
 // Whether a minimum of det G found between two steps is a zero of it (a conjugate point) and not a dip that stays
-// away from zero: its value at the minimum is zero to rounding, at most 1e-12 of `largest`, the largest det G of
-// the motion so far (a true zero located to ~1e-14 in time leaves far less; tests/simulation/jacobi_test.cpp).
-bool isConjugateMinimum(double determinantAtMinimum, double largest);
+// away from zero: G's smallest eigenvalue there is zero to rounding, at most 1e-12 of `largestMean`, the largest
+// mean eigenvalue tr G / m of the motion so far (a true zero located to ~1e-14 in time leaves far less;
+// tests/simulation/jacobi_test.cpp). Eigenvalues, not det G itself: det G is a product of m eigenvalues, so with
+// many fields a dip where each is a few times below its largest would fall under any fixed share of the largest
+// det G. For one field (4 rods) the two tests are the same.
+bool isConjugateMinimum(double smallestEigenvalueAtMinimum, double largestMean);
 
 class JacobiSystem : public GeodesicSystem {
  public:
@@ -57,9 +61,13 @@ class JacobiSystem : public GeodesicSystem {
 
   int fieldCount() const { return fields_; }
   JacobiState jacobiAt(const State& y) const;
+  // The smallest eigenvalue of the fields' Gram matrix G at y (isConjugateMinimum), asked at minima of det G only.
+  double smallestGramEigenvalue(const State& y) const;
 
  private:
   void inverseMassTimes(const Eigen::Matrix2Xd& f, Eigen::Matrix2Xd& out) const;
+  // G = (<J_i, J_j>) of the fields' parts across the motion, and G' = (<J_i, J_j>)'.
+  void gramAt(const State& y, Eigen::MatrixXd& gram, Eigen::MatrixXd& rate) const;
 
   AmbientSystem motion_;  // the geodesic: the first 4(n-1) numbers of the state
   Chain chain_;

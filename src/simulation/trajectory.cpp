@@ -122,17 +122,17 @@ struct Trajectory::Impl {
   std::optional<StopInfo> stop;
   InvariantExtremes extremes;
   std::function<bool()> cancelled;
-  // Jacobi fields (RunConfig::jacobi): the system, the Gram determinant's rate at the last step's end, its
-  // largest value so far, and the conjugate points found.
+  // Jacobi fields (RunConfig::jacobi): the system, the Gram determinant's rate at the last step's end, the
+  // largest mean eigenvalue of the Gram matrix so far, and the conjugate points found.
   const JacobiSystem* jacobi = nullptr;
-  double lastGramRate = 0, maxGramDeterminant = 0;
+  double lastGramRate = 0, maxGramMean = 0;
   std::vector<double> conjugateTimes;
 
-  // A conjugate point is a zero of det G: there its rate goes from negative to positive (a minimum) and the
-  // determinant itself is zero to rounding, far below its size elsewhere (a dip that stays away from zero is
-  // not one). Located by bisection on the rate over the last step's dense output.
-  void findConjugatePoint(double t0, double t1, double rate1, double determinant1) {
-    maxGramDeterminant = std::max(maxGramDeterminant, determinant1);
+  // A conjugate point is a zero of det G: there its rate goes from negative to positive (a minimum) and G is
+  // singular to rounding, its smallest eigenvalue far below the fields' size elsewhere (a dip that stays away
+  // from zero is not one). Located by bisection on the rate over the last step's dense output.
+  void findConjugatePoint(double t0, double t1, double rate1, double mean1) {
+    maxGramMean = std::max(maxGramMean, mean1);
     const bool minimumInside = lastGramRate < 0 && rate1 >= 0;
     lastGramRate = rate1;
     if (!minimumInside) return;
@@ -145,7 +145,7 @@ struct Trajectory::Impl {
     }
     const double time = 0.5 * (low + high);
     stepper->stateAt(time, y);
-    if (isConjugateMinimum(jacobi->jacobiAt(y).gramDeterminant, maxGramDeterminant)) conjugateTimes.push_back(time);
+    if (isConjugateMinimum(jacobi->smallestGramEigenvalue(y), maxGramMean)) conjugateTimes.push_back(time);
   }
 
   void halt(const StopInfo& info) { stop = info; }
@@ -211,7 +211,7 @@ struct Trajectory::Impl {
           reading(StopReason::RodLength, t1, summary.rodLengthError, config.maxRodLengthError));
     if (jacobi) {
       const JacobiState field = jacobi->jacobiAt(end);
-      findConjugatePoint(t0, t1, field.gramRate, field.gramDeterminant);
+      findConjugatePoint(t0, t1, field.gramRate, field.gramMean);
     }
     extremes.maxRelativeEnergyDrift = std::max(extremes.maxRelativeEnergyDrift, drift);
     extremes.maxRodLengthError = std::max(extremes.maxRodLengthError, summary.rodLengthError);

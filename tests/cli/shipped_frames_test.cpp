@@ -69,9 +69,18 @@ PixelRect titleBand(const DrawList& list) {
   return {0, 0, float(list.size.width), bottom};
 }
 
+// Whether the segment from `from` to `to` runs over the disc inscribed in a ball's box (a leader may touch the edge
+// it starts from).
+bool segmentCrossesDisc(P2 from, P2 to, const PixelRect& ball) {
+  const float r = 0.5f * ball.width, cx = ball.x + r, cy = ball.y + r;
+  const float dx = to.x - from.x, dy = to.y - from.y, length2 = dx * dx + dy * dy;
+  const float s = length2 > 0 ? std::clamp(((cx - from.x) * dx + (cy - from.y) * dy) / length2, 0.0f, 1.0f) : 0.0f;
+  return std::hypot(from.x + s * dx - cx, from.y + s * dy - cy) < 0.98f * r;
+}
+
 TEST(ShippedFrames, SphereLabelsCoverNothingAtEverySizeAndKeyTime) {
   const std::vector<ImageSize> sizes{{320, 180}, {1280, 720}, {3840, 2160}};
-  int scenesWithLabels = 0, checked = 0;
+  int scenesWithLabels = 0, checked = 0, leaders = 0;
   for (const std::filesystem::path& file : shippedScenes()) {
     SCOPED_TRACE(file.filename().string());
     const Scene scene = loadSceneForCommand(file.string());
@@ -89,6 +98,12 @@ TEST(ShippedFrames, SphereLabelsCoverNothingAtEverySizeAndKeyTime) {
           if (!list.panels[p].sphere) continue;
           const SphereImpostor& sphere = *list.panels[p].sphere;
           const auto& labels = sphere.labels;
+          for (const auto& [from, to] : sphere.leaders) {
+            ++leaders;
+            for (const PixelRect& ball : sphere.balls)
+              EXPECT_FALSE(segmentCrossesDisc(from, to, ball))
+                  << list.size.width << "x" << list.size.height << " frame " << k << ": a leader across a ball";
+          }
           for (std::size_t i = 0; i < labels.size(); ++i) {
             labelled = true;
             ++checked;
@@ -113,6 +128,7 @@ TEST(ShippedFrames, SphereLabelsCoverNothingAtEverySizeAndKeyTime) {
   }
   EXPECT_GE(scenesWithLabels, 10);  // every 4-rod scene with a sphere names its poles
   EXPECT_GT(checked, 200);
+  EXPECT_GT(leaders, 100);  // 156 at these sizes and times; 6 crossed a ball before leaders were checked
 }
 
 // The distance from a point to a box (0 inside it).
