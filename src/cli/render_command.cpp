@@ -154,53 +154,27 @@ void checkSpaceForFrames(const RenderPlan& plan, Renderer& renderer, FrameBuilde
 }
 
 // The frames of the plan's range into the sinks; returns false if interrupted. Counts what it drew and what
-// --resume found complete. Pipelined (docs/rendering.md, "The render loop"): while the rasteriser threads draw frame
-// k, this thread builds and composes the next frame to draw, then reads frame k back and hands it on.
+// --resume found complete.
 bool renderFrames(const RenderPlan& plan, FrameManifest* pngManifest,
                   const std::vector<FrameSink*>& sinks, Renderer& renderer, FrameBuilder& builder,
                   ImageRecycler& buffers, int& drawn, int& skipped) {
   Progress progress(plan.range.count(), plan.quiet, "render", "frame");
   long done = 0;
-  // The first frame from k on still to draw (those --resume finds complete are counted as they are passed);
-  // -1 if none.
-  const auto nextToDraw = [&](int k) {
-    for (; k < plan.range.end; k += plan.range.step) {
-      if (!(plan.resume && pngManifest && pngManifest->isFrameComplete(k))) return k;
+  for (int k = plan.range.first; k < plan.range.end; k += plan.range.step) {
+    const bool complete = plan.resume && pngManifest && pngManifest->isFrameComplete(k);
+    if (complete) {
       ++skipped;
       progress.update(++done);
+      continue;
     }
-    return -1;
-  };
-  // Frame k's CPU part; frames before k are sampled (not rendered) for the path and plot history. False if
-  // interrupted.
-  const auto prepare = [&](int k) {
+    // Frames before k are sampled (not rendered) for the path and plot history.
     if (!sampleUpTo(builder, k)) return false;
-    renderer.prepare(builder.frame(k));
-    return true;
-  };
-  const auto deliver = [&](int k) {
     Image image = buffers.take();
-    renderer.readBack(image);
+    renderer.render(builder.frame(k), image);
     for (size_t i = 0; i + 1 < sinks.size(); ++i) sinks[i]->consume(k, image);
     sinks.back()->consume(k, std::move(image));
     ++drawn;
     progress.update(++done);
-  };
-  int k = nextToDraw(plan.range.first);
-  if (k >= 0 && !prepare(k)) return false;
-  while (k >= 0) {
-    renderer.submit();
-    const int next = nextToDraw(k + plan.range.step);
-    bool interrupted = false;
-    try {
-      interrupted = next >= 0 && !prepare(next);
-    } catch (...) {  // the frame in flight is written all the same, as before a signal between frames
-      deliver(k);
-      throw;
-    }
-    deliver(k);
-    if (interrupted) return false;
-    k = next;
   }
   return true;
 }

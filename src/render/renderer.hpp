@@ -28,15 +28,6 @@ class Renderer {
   // The same into `image`, reusing its buffer where it has the size (ImageRecycler).
   void render(const FrameState& frame, Image& image);
 
-  // render() in three steps, so that a render loop can do the next frame's CPU work while the rasteriser threads
-  // draw this one (docs/rendering.md, "The render loop"): prepare() is the CPU part (the frame's draw list, no GL),
-  // submit() issues the prepared frame's drawing and returns without waiting for it, readBack() waits for the
-  // submitted frame and reads it. Between submit() and readBack() only prepare() may be called; the bytes are
-  // render()'s, whatever the interleaving.
-  void prepare(const FrameState& frame);
-  void submit();
-  void readBack(Image& image);
-
   std::string glRenderer() const;  // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
   std::string glVersion() const;   // GL_VERSION
 

@@ -1,8 +1,6 @@
 // The same FrameState gives the same bytes, whatever was rendered before, with a fixed camera (cached
 // sphere layer), an orbiting one (sphere redrawn every frame) and a directed one (redrawn when it turns).
 
-#include <stdexcept>
-
 #include <gtest/gtest.h>
 
 #include "fixtures/synthetic_frame.hpp"
@@ -85,45 +83,6 @@ TEST(Determinism, EveryLookAfterTheOthersEqualsAFreshRender) {
   for (std::size_t k = 0; k < fresh.size(); ++k) EXPECT_EQ(fresh[k].rgb, inSequence[k].rgb) << "look " << k;
   // The comparison can fail: the looks are different pictures.
   EXPECT_NE(fresh[0].rgb, fresh[2].rgb);
-}
-
-// The render loop's pipeline (Renderer::prepare, submit, readBack; docs/rendering.md "The render loop"): the next
-// frame is prepared while the submitted one is drawn. Every frame equals the same frame rendered one shot at a
-// time, across the sphere's looks, an orbiting camera, a directed one at rest and turning (the cached layers filled
-// while a frame is in flight) and the same frame twice.
-TEST(Determinism, PipelinedFramesEqualFramesRenderedOneByOne) {
-  ViewSettings settings = testing::smallSettings();
-  settings.camera.orbitDegreesPerSecond = 20;
-  std::vector<FrameState> frames;
-  for (int k = 0; k < 8; ++k) {
-    SyntheticOptions options;
-    options.viewSpace = k % 3 == 1 ? ViewSpace::Ball : ViewSpace::Sphere;
-    frames.push_back(syntheticFrame(0.5 + 0.4 * k, 30 + 24 * k, options));
-    if (k >= 5) frames.back().cameraDirection = Vec3{0.2, k == 7 ? 0.9 : -0.9, 0.4};
-  }
-  frames.push_back(frames.back());
-  std::vector<Image> pipelined(frames.size());
-  {
-    Renderer renderer(settings, testing::kSmallSize);
-    renderer.prepare(frames[0]);
-    for (std::size_t k = 0; k < frames.size(); ++k) {
-      renderer.submit();
-      if (k + 1 < frames.size()) renderer.prepare(frames[k + 1]);
-      renderer.readBack(pipelined[k]);
-    }
-  }
-  Renderer oneByOne(settings, testing::kSmallSize);
-  for (std::size_t k = 0; k < frames.size(); ++k) EXPECT_EQ(oneByOne.render(frames[k]).rgb, pipelined[k].rgb) << k;
-  EXPECT_NE(pipelined[0].rgb, pipelined[1].rgb);  // the comparison can fail
-  // Out of order is a programming error, said at once rather than a frame read twice or lost.
-  EXPECT_THROW(oneByOne.submit(), std::logic_error);
-  Image image;
-  EXPECT_THROW(oneByOne.readBack(image), std::logic_error);
-  oneByOne.prepare(frames[0]);
-  oneByOne.submit();
-  EXPECT_THROW(oneByOne.submit(), std::logic_error);
-  oneByOne.readBack(image);
-  EXPECT_EQ(image.rgb, pipelined[0].rgb);
 }
 
 TEST(Determinism, OrbitingCameraMovesTheSphere) {

@@ -305,27 +305,17 @@ struct Renderer::Impl {
     glEnable(GL_SCISSOR_TEST);
   }
 
-  // Issues the frame's drawing; glFlush hands it to llvmpipe's rasteriser threads and returns without waiting
-  // (the frame is an FBO, not the OSMesa buffer, so no copy waits for it).
-  void draw(const DrawList& list) {
+  void draw(const DrawList& list, Image& image) {
     context.bindFramebuffer();
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied alpha
     clearToBackground(list);
     for (const PanelDrawing& panel : list.panels) drawPanel(list, panel);
-    glFlush();
-  }
-
-  // Waits for the drawn frame (glReadPixels does) and reads it.
-  void readBack(Image& image) const {
     image.width = size.width;
     image.height = size.height;
     context.readRgb(image.rgb);
   }
-
-  std::optional<DrawList> prepared;  // prepare() to submit()
-  bool submitted = false;            // submit() to readBack()
 };
 
 // Mesa (libOSMesa, its llvmpipe/gallium driver and the LLVM it JITs with) keeps allocations alive for the life
@@ -347,27 +337,7 @@ Image Renderer::render(const FrameState& frame) {
   render(frame, image);
   return image;
 }
-void Renderer::render(const FrameState& frame, Image& image) {
-  prepare(frame);
-  submit();
-  readBack(image);
-}
-
-void Renderer::prepare(const FrameState& frame) { impl_->prepared = impl_->composer.compose(frame); }
-
-void Renderer::submit() {
-  if (!impl_->prepared) throw std::logic_error("Renderer::submit without a prepared frame");
-  if (impl_->submitted) throw std::logic_error("Renderer::submit before the submitted frame was read back");
-  impl_->draw(*impl_->prepared);
-  impl_->prepared.reset();
-  impl_->submitted = true;
-}
-
-void Renderer::readBack(Image& image) {
-  if (!impl_->submitted) throw std::logic_error("Renderer::readBack without a submitted frame");
-  impl_->submitted = false;
-  impl_->readBack(image);
-}
+void Renderer::render(const FrameState& frame, Image& image) { impl_->draw(impl_->composer.compose(frame), image); }
 std::string Renderer::glRenderer() const { return impl_->context.rendererName(); }
 std::string Renderer::glVersion() const { return impl_->context.version(); }
 
