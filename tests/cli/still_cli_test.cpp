@@ -74,9 +74,9 @@ TEST(StillCli, AtAFrameTimeItIsThatFrameOfAFullRender) {
   EXPECT_FALSE(fs::exists(folder.path() / "x.jpg"));
 }
 
-// The render loop draws a frame while it prepares the next (docs/rendering.md, "The render loop"); a still renders
-// its one frame alone. Frames of a range with a step, and of a --resume that skips complete frames between the ones
-// it draws, are those stills pixel for pixel.
+// A still renders its one frame alone, in a renderer of its own. The render loop's frames of a range with a step,
+// and of a --resume that skips complete frames between the ones it draws (one renderer, one history for them all),
+// are those stills pixel for pixel.
 TEST(StillCli, SteppedAndResumedRenderFramesAreTheStillsOfThoseFrames) {
   TempFolder folder;
   const std::string scene = shippedScene("comparison.json");
