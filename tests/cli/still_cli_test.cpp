@@ -74,6 +74,38 @@ TEST(StillCli, AtAFrameTimeItIsThatFrameOfAFullRender) {
   EXPECT_FALSE(fs::exists(folder.path() / "x.jpg"));
 }
 
+// A still renders its one frame alone, in a renderer of its own. The render loop's frames of a range with a step,
+// and of a --resume that skips complete frames between the ones it draws (one renderer, one history for them all),
+// are those stills pixel for pixel.
+TEST(StillCli, SteppedAndResumedRenderFramesAreTheStillsOfThoseFrames) {
+  TempFolder folder;
+  const std::string scene = shippedScene("comparison.json");
+  const std::vector<std::string> render{"render", scene, "--size", "320x180", "--frames", "42:70:9", "--out", "stepped",
+                                        "--quiet"};
+  ASSERT_EQ(runLinkage(render, folder.path()).code, 0);
+  for (const char* frame : {"00051", "00069"}) fs::remove(folder.path() / "stepped" / ("frame_" + std::string(frame) + ".png"));
+  std::vector<std::string> resume = render;
+  resume.push_back("--resume");
+  const ProcessResult resumed = runLinkage(resume, folder.path());
+  ASSERT_EQ(resumed.code, 0) << resumed.err;
+  // Frame k at 30 fps is t = k / 30.
+  std::vector<std::vector<unsigned char>> stills;
+  for (const auto& [time, frame] :
+       std::vector<std::pair<std::string, std::string>>{{"1.4", "00042"}, {"1.7", "00051"}, {"2", "00060"}, {"2.3", "00069"}}) {
+    ASSERT_EQ(runLinkage({"still", scene, "--time", time, "--size", "320x180", "--out", "still.png", "--quiet"},
+                         folder.path())
+                  .code,
+              0);
+    const Picture still = decode(folder.path() / "still.png"),
+                  rendered = decode(folder.path() / "stepped" / ("frame_" + frame + ".png"));
+    ASSERT_EQ(rendered.width, 320) << frame;
+    EXPECT_TRUE(still.pixels == rendered.pixels) << "frame " << frame;
+    stills.push_back(still.pixels);
+  }
+  EXPECT_FALSE(stills[0] == stills[1]);  // the comparison can fail
+  EXPECT_FALSE(fs::exists(folder.path() / "stepped" / "frame_00043.png"));
+}
+
 // Transparent: the background is gone (alpha 0 in a corner), the drawing opaque (the sphere's centre), and laid
 // back over the scene's background colour it is the opaque still again, to rounding.
 TEST(StillCli, TransparentBackgroundComposesBackToTheOpaqueStill) {
