@@ -110,9 +110,12 @@ void addRunEvents(const Scene& scene, std::size_t r, const RunTrack& track, Traj
     for (int k = 0; k < frames && at(k); ++k) last = k;
     if (last >= 0) events.push_back({CameraEventKind::Stop, run.stop()->time, *at(last), index});
   }
-  // Pole passages: closest approaches to a pole of the chart (phi = +-pi/2, the points z = +-1).
+  // Pole passages: closest approaches to a pole of the chart (phi = +-pi/2, the points z = +-1), for runs
+  // integrated in charts (where the published methods fail and the others switch charts); a chart-free run passes
+  // a pole as any other point (periodic.json: a pole passage 0.15 s before another motion closes).
   const double nearPole = std::cos(radians(kPoleDegrees));
-  for (int k = 0; k < frames; ++k) {
+  const MethodTraits& method = traitsOf(kMethods, scene.runs[r].config.method);
+  for (int k = 0; k < frames && method.chartBased; ++k) {
     if (!at(k) || std::abs(at(k)->z) < nearPole) continue;
     const double z = std::abs(at(k)->z);
     const bool risen = k == 0 || !at(k - 1) || std::abs(at(k - 1)->z) <= z;
@@ -121,7 +124,7 @@ void addRunEvents(const Scene& scene, std::size_t r, const RunTrack& track, Traj
   }
   // Seam crossings t = pi/2 + k pi (the points x = 0 off the poles), where the published formulas break down: for
   // runs on them only. A start on the seam is one.
-  if (traitsOf(kMethods, scene.runs[r].config.method).published) {
+  if (method.published) {
     for (int k = 0; k < frames; ++k) {
       if (!at(k) || std::abs(at(k)->z) > nearPole) continue;
       const bool onSeam = k == 0 && std::abs(at(k)->x) < 1e-9;
@@ -133,12 +136,21 @@ void addRunEvents(const Scene& scene, std::size_t r, const RunTrack& track, Traj
         events.push_back({CameraEventKind::SeamCrossing, scene.frameTime(k), *at(k), index});
     }
   }
-  // Conjugate points, placed between the frames around them.
-  for (const double time : run.conjugateTimes()) {
+  // An event at `time`, placed between the frames around it.
+  const auto addAt = [&](CameraEventKind kind, double time) {
     const int k = int(std::ceil(time * scene.output.fps - 1e-9));
-    if (k <= 0 || k >= frames || !at(k) || !at(k - 1)) continue;
+    if (k <= 0 || k >= frames || !at(k) || !at(k - 1)) return;
     const double u = (time - scene.frameTime(k - 1)) / (scene.frameTime(k) - scene.frameTime(k - 1));
-    events.push_back({CameraEventKind::ConjugatePoint, time, between(*at(k - 1), *at(k), u), index});
+    events.push_back({kind, time, between(*at(k - 1), *at(k), u), index});
+  };
+  for (const double time : run.conjugateTimes()) addAt(CameraEventKind::ConjugatePoint, time);
+  // A found motion's moment: a connecting motion's arrival at its target, each return of a closed one to its start.
+  const InitialSpec& initial = scene.runs[r].initial;
+  if (initial.motion && initial.motion->time > 0) {
+    if (initial.kind == InitialSpec::Kind::Connect) addAt(CameraEventKind::Arrival, initial.motion->time);
+    if (initial.kind == InitialSpec::Kind::Periodic)
+      for (double time = initial.motion->time; time <= scene.duration; time += initial.motion->time)
+        addAt(CameraEventKind::Closure, time);
   }
 }
 
@@ -188,6 +200,8 @@ std::string_view cameraEventName(CameraEventKind kind) {
     case CameraEventKind::SeamCrossing: return "seam crossing";
     case CameraEventKind::ConjugatePoint: return "conjugate point";
     case CameraEventKind::Focus: return "focus";
+    case CameraEventKind::Arrival: return "arrival";
+    case CameraEventKind::Closure: return "closure";
   }
   return "?";
 }

@@ -4,7 +4,8 @@
 //
 // It keeps the action in front: it follows the runs' current states (a run with a family: the family's centre) and
 // turns to face each event when it happens: a run's stop, a pole passage of the chart, a seam crossing t = pi/2 + k
-// pi of a run on the published formulas (or its start on the seam), a conjugate point, a family's focus. Per frame a
+// pi of a run on the published formulas (or its start on the seam), a conjugate point, a family's focus, a
+// connecting motion's arrival, a closed geodesic's return to its start. Per frame a
 // target direction (the state, drawn towards the event nearest in time while one is due), smoothed forward and
 // backward, then reframed: while the target stays within kDeadZoneDegrees of the view's centre the direction stays
 // exactly the same (the renderer reuses its cached sphere then); once it leaves, the camera turns towards where the
@@ -38,7 +39,9 @@ inline constexpr double kSmoothingSeconds = 0.25;   // the targets' Gaussian smo
 inline constexpr double kPoleDegrees = 20;          // a pole passage: a closest approach to a chart pole within this
 }  // namespace directed_camera
 
-enum class CameraEventKind { Stop, PolePassage, SeamCrossing, ConjugatePoint, Focus };
+// Arrival: a connecting motion (initial.connect) reaches its target; Closure: a closed geodesic (initial.periodic)
+// is back at its start, once per period.
+enum class CameraEventKind { Stop, PolePassage, SeamCrossing, ConjugatePoint, Focus, Arrival, Closure };
 
 std::string_view cameraEventName(CameraEventKind kind);
 

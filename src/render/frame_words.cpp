@@ -86,9 +86,7 @@ std::string emptyPlotNote(const PlotFrame& plot) {
     case PlotEmptiness::RunsStopped: {
       std::string why;
       for (const EarlyStop& stop : plot.earlyStops) {
-        char time[32];
-        std::snprintf(time, sizeof time, "%.3g", stop.time);
-        why += (why.empty() ? "" : "; ") + ("\"" + stop.run + "\" stopped at t = " + time + " (" +
+        why += (why.empty() ? "" : "; ") + ("\"" + stop.run + "\" stopped at t = " + timeWords(stop.time) + " (" +
                                             stopReasonWords(stop.reason) + ")");
       }
       return "nothing to plot: " + why;
@@ -215,6 +213,16 @@ std::string fittedWrappedForm(const FontAtlas& font, const std::vector<std::stri
     if (wrapped.size() <= lines && !cut && kept == wordsIn(form)) return form;
   }
   return "";
+}
+
+std::string timeWords(double t) {
+  std::string text = typesetNumber("%.2f", t);
+  while (text.find('.') != std::string::npos && (text.back() == '0' || text.back() == '.')) {
+    const bool dot = text.back() == '.';
+    text.pop_back();
+    if (dot) break;
+  }
+  return text == "\u22120" ? "0" : text;
 }
 
 }  // namespace sl

@@ -49,5 +49,8 @@ std::string fittedWrappedForm(const FontAtlas& font, const std::vector<std::stri
 std::string typesetNumber(const char* pattern, double value);
 std::string superscript(int exponent);   // "⁻¹⁵"
 std::string typesetPowerOfTen(double value);  // "3×10⁻¹⁵": a positive value to one significant digit
+// A moment of the motion (a stop, a conjugate point) to the frame clock's hundredths, trailing zeros dropped:
+// "19.74", "3.34", "0" (the clock says "t = 19.77 / 20.00": a stop at 19.74 read "19.7" beside it).
+std::string timeWords(double t);
 
 }  // namespace sl

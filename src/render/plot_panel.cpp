@@ -165,12 +165,6 @@ class PlacedLabels {
   std::vector<std::array<float, 4>> boxes_;
 };
 
-std::string timeText(double t) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", t);
-  return text;
-}
-
 // `text` in small type beside the point (right of it, or left when the area's edge is near), above its
 // baseline `y`, unless it would overlap a label already placed.
 void labelEvent(const PanelContext& c, const PlotArea& area, const std::string& text, P2 at, float gap, Rgba color,
@@ -206,8 +200,17 @@ void drawStop(const PanelContext& c, const PlotSeries& series, const DrawnSample
   at.y = std::clamp(at.y, area.y0 + arm + 1, std::max(area.y0 + arm + 1, area.y1 - arm - 1));
   batch.capsule({at.x - arm, at.y - arm}, {at.x + arm, at.y + arm}, width, palette::stopRed);
   batch.capsule({at.x - arm, at.y + arm}, {at.x + arm, at.y - arm}, width, palette::stopRed);
-  labelEvent(c, area, "stop " + timeText(series.stopTime), at, arm + 0.5f * c.font.ascent(TextSize::Small),
-             palette::stopRed, placed, batch);
+  // The time above the cross (below it at the area's top), ending at its right arm: beside it, on the line's own
+  // height, it lay over the line coming in (comparison.json, frame 593).
+  const std::string text = "stop " + timeWords(series.stopTime);
+  const float textWidth = c.font.width(text, TextSize::Small), ascent = c.font.ascent(TextSize::Small);
+  const float gap = 0.4f * ascent;
+  const float left = std::max(area.x0, at.x + arm - textWidth);
+  float baseline = at.y - arm - gap;
+  if (baseline - ascent < area.y0) baseline = at.y + arm + gap + ascent;
+  if (baseline > area.y1 || !placed.free(left, baseline - ascent, left + textWidth, baseline + 0.2f * ascent)) return;
+  placed.add(left, baseline - ascent, left + textWidth, baseline + 0.2f * ascent);
+  c.font.draw(batch, text, TextSize::Small, left, baseline, palette::stopRed);
 }
 
 // `halfWidth`: this line's (nested, runStyleWidth); `stopHalfWidth`: the stop cross's, the same for every line.
@@ -238,7 +241,7 @@ void drawSeries(const PanelContext& c, const PlotSeries& series, const Axis& x, 
     batch.disc(foot, 2.4f * stopHalfWidth, toRgba(series.color));
     batch.disc(foot, 1.2f * stopHalfWidth, palette::withAlpha(palette::gridLight, 1.0f));
     const float ascent = c.font.ascent(TextSize::Small);
-    labelEvent(c, area, timeText(t), {top.x, top.y + 0.6f * ascent}, 0.4f * ascent, toRgba(series.color), placed,
+    labelEvent(c, area, timeWords(t), {top.x, top.y + 0.6f * ascent}, 0.4f * ascent, toRgba(series.color), placed,
                batch);
   }
 }

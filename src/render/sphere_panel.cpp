@@ -98,8 +98,8 @@ SphereCover sphereCoverNear(const SphereCamera& camera, const V3& p, double reac
 // The far side's look: the colour at a fraction of its opacity, drawn flat over the sphere.
 constexpr float kGhostAlpha = 0.55f;
 Rgba ghost(Rgba c) { return palette::withAlpha(c, c.a * kGhostAlpha); }
-// Dashes and gaps of hidden paths, in frame units.
-constexpr float kGhostDash = 5.0f, kGhostGap = 3.5f;
+// Dashes and gaps of hidden paths, in frame units; their width at most this share of the path's in front.
+constexpr float kGhostDash = 5.0f, kGhostGap = 3.5f, kGhostWidthShare = 0.6f;
 
 // Over a sequential colour map the far side's faint lines would vanish on its dark end (viridis' purple): there
 // they are drawn on a light halo, faint with them. The plain sphere and the diverging map (light in the middle, its
@@ -313,8 +313,9 @@ void drawPath(const SharedSpan<Vec3>& path, const SharedSamples& times, const Pa
         if (kept.x != point.at.x || kept.y != point.at.y) point.cover = SphereCover::PerPixel;
         point.at = kept;
       }
+    // A thin path (a family's member, many at once) gives every fourth point: enough for labels to keep off it.
     if (drawn)
-      for (const PolylinePoint& point : points) drawn->push_back(point.at);
+      for (std::size_t i = 0; i < points.size(); i += look.thin ? 4 : 1) drawn->push_back(points[i].at);
     if (look.thin) mergeStraightRuns(points, kThinPathTolerance * context.unit);
     front.polyline(points, !look.thin, 0.35f);
     points.clear();
@@ -339,17 +340,19 @@ void drawPath(const SharedSpan<Vec3>& path, const SharedSamples& times, const Pa
     if (hidden) continue;
     const P2 at = camera.project(p);
     const Rgba color = palette::withAlpha(look.color, look.color.a * alpha);
+    const float halfWidth = widthScale * std::max(look.minHalfWidth, float(look.radius * camera.pixelsPerUnitAt(p)));
+    // Hidden dashes are never bolder than the path in front (a small frame's floor of a mark unit made them so).
+    const float hiddenHalfWidth = std::min(ghostHalfWidth, kGhostWidthShare * halfWidth);
     if (behind) {
-      hiddenPoints.push_back({at, ghostHalfWidth, ghost(color), {}});
+      hiddenPoints.push_back({at, hiddenHalfWidth, ghost(color), {}});
     } else if (!hiddenPoints.empty()) {  // out from behind: the dashes reach the limb
-      hiddenPoints.push_back({at, ghostHalfWidth, ghost(color), {}});
+      hiddenPoints.push_back({at, hiddenHalfWidth, ghost(color), {}});
       flushHidden();
     }
     const bool last = i + 1 == path.size();
     if (look.thin && !points.empty() && !last &&
         std::abs(at.x - points.back().at.x) + std::abs(at.y - points.back().at.y) < 1.5f * context.unit)
       continue;
-    const float halfWidth = widthScale * std::max(look.minHalfWidth, float(look.radius * camera.pixelsPerUnitAt(p)));
     const SphereCover cover = placement.onSphere
                                   ? sphereCoverNear(camera, p, (2.0 + std::abs(look.offset)) * halfWidth + 1.0)
                                   : SphereCover::PerPixel;
@@ -363,12 +366,13 @@ void drawPath(const SharedSpan<Vec3>& path, const SharedSamples& times, const Pa
 // through the members' current points in member order, as a dark line over them, and a dot per member (a
 // stopped member's dot on a red halo, as a stopped run's ball). Behind the sphere: dashed lines and rings.
 void drawFamily(const RunFrame& run, const PanelContext& context, const SphereCamera& camera,
-                const Placement& placement, bool throughAntipode, ShapeBatch& back, ShapeBatch& front) {
+                const Placement& placement, bool throughAntipode, ShapeBatch& back, ShapeBatch& front,
+                std::vector<P2>& drawn) {
   const std::size_t count = run.members.size();
   for (std::size_t m = 0; m < count; ++m) {
     const PathLook look{memberColor(run.color, m, count, 0.85f), 0.3 * kTubeRadius, 0.6f * context.unit, true, 0, false};
     drawPath(run.members[m].path, run.members[m].pathTimes, look, context, camera, placement, throughAntipode, back,
-             front);
+             front, &drawn);
   }
   std::vector<PolylinePoint> wavefront, hiddenWavefront;
   auto flush = [&] {
@@ -384,9 +388,10 @@ void drawFamily(const RunFrame& run, const PanelContext& context, const SphereCa
     const bool jump = throughAntipode && m > 0 && distance(run.members[m - 1].current, at) > kMaxPathChord;
     if (!drawable(at) || !camera.inFront(p) || jump) flush();
     if (!drawable(at) || !camera.inFront(p)) continue;
-    if (placement.onSphere && surfaceBehind(camera, p))
-      hiddenWavefront.push_back({camera.project(p), 0.7f * markUnit(context.unit), ghost(waveInk), {}});
     const float halfWidth = std::max(context.unit, float(0.45 * kTubeRadius * camera.pixelsPerUnitAt(p)));
+    if (placement.onSphere && surfaceBehind(camera, p))
+      hiddenWavefront.push_back(
+          {camera.project(p), std::min(0.7f * markUnit(context.unit), kGhostWidthShare * halfWidth), ghost(waveInk), {}});
     const P2 on = placement.onSphere ? withinOutline(camera, camera.project(p), halfWidth) : camera.project(p);
     wavefront.push_back({on, halfWidth, waveInk, placement.world(p)});
   }
@@ -402,6 +407,7 @@ void drawFamily(const RunFrame& run, const PanelContext& context, const SphereCa
                  back);
       continue;
     }
+    drawn.push_back(camera.project(p));  // a member's dot: labels keep off it as off the paths
     if (member.stopped) front.disc(camera.project(p), radius + 1.5f * context.unit, palette::stopRed, false, 0, placement.world(p));
     front.disc(camera.project(p), radius, memberColor(run.color, m, count), true, 0.3f, placement.world(p),
                radius / pixelsPerUnit);
@@ -503,34 +509,52 @@ std::optional<Box> drawBall(const RunFrame& run, const BallPlace& ball, const Pa
   const float radius = ball.radius;
   const P2 at = ball.at;
   const float mark = markUnit(unit);
-  if (!run.stopped && ball.headingKnown && ball.marksDirection) {
+  // The chevron starts clear of the ball: measured from the path (markAt) it could fall under the ball, which is
+  // lifted off the surface and so shifted outwards on the screen near the limb.
+  auto drawChevron = [&] {
+    if (run.stopped || !ball.headingKnown || !ball.marksDirection) return;
     const P2 d = ball.heading, n{-d.y, d.x};
     const float halfWidth = (ball.behind ? 0.8f : 0.9f) * mark;
-    P2 tip = plus(ball.markAt, d, radius + 8.5f * mark);
-    const P2 base = plus(ball.markAt, d, radius + 3 * mark);
-    P2 left = plus(base, n, 4 * mark), right = plus(base, n, -4 * mark);
-    if (placement.onSphere)
-      for (P2* point : {&tip, &left, &right}) *point = withinOutline(camera, *point, halfWidth);
+    const float clear = radius + 3 * mark;
+    const float ox = ball.markAt.x - at.x, oy = ball.markAt.y - at.y, b = ox * d.x + oy * d.y;
+    const float exit = -b + std::sqrt(std::max(b * b - (ox * ox + oy * oy - clear * clear), 0.0f));
+    const float from = std::max(clear, exit);
+    P2 tip = plus(ball.markAt, d, from + 10 * mark);
+    const P2 base = plus(ball.markAt, d, from);
+    P2 left = plus(base, n, 4.5f * mark), right = plus(base, n, -4.5f * mark);
+    if (placement.onSphere) {  // moved within the outline as one piece, so it keeps its shape
+      P2 shift{0, 0};
+      for (const P2& point : {tip, left, right}) {
+        const P2 kept = withinOutline(camera, point, halfWidth);
+        if (std::hypot(kept.x - point.x, kept.y - point.y) > std::hypot(shift.x, shift.y)) shift = {kept.x - point.x, kept.y - point.y};
+      }
+      for (P2* point : {&tip, &left, &right}) *point = withinOutline(camera, plus(*point, shift), halfWidth);
+    }
+    // A filled arrowhead (a ribbon tapering from the base's width to a point): it reads as a direction at any
+    // angle, where two strokes pointing up and to the right read as the digit 7.
+    const P2 middle{0.5f * (left.x + right.x), 0.5f * (left.y + right.y)};
+    const float baseHalf = 0.5f * std::hypot(left.x - right.x, left.y - right.y);
+    const auto arrowhead = [&](ShapeBatch& into, float grow, Rgba color) {
+      const P2 dir = unitDirection(middle, tip);
+      into.polyline({{plus(middle, dir, -grow), baseHalf + grow, color, {}}, {plus(tip, dir, grow), 0.35f * mark + grow, color, {}}});
+    };
     if (ball.behind) {
-      back.capsule(left, tip, halfWidth, ghost(palette::ink));
-      back.capsule(right, tip, halfWidth, ghost(palette::ink));
+      arrowhead(back, 0, ghost(palette::ink));
     } else {
       const Rgba halo{background.r, background.g, background.b, 0.75f};
-      const std::pair<float, Rgba> strokes[] = {{halfWidth + 0.9f * mark, halo}, {halfWidth, palette::ink}};
-      for (const auto& [width, color] : strokes) {
-        front.capsule(left, tip, width, color);
-        front.capsule(right, tip, width, color);
-      }
+      arrowhead(front, 0.9f * mark, halo);
+      arrowhead(front, 0, palette::ink);
       const float w = halfWidth + 0.9f * mark;
       chevron = Box{std::min({tip.x, left.x, right.x}) - w, std::min({tip.y, left.y, right.y}) - w,
                     std::max({tip.x, left.x, right.x}) + w, std::max({tip.y, left.y, right.y}) + w};
     }
-  }
+  };
   if (ball.behind) {
     const float outer = 0.8f * radius + (run.stopped ? 2.5f : 0.0f) * mark + 0.9f * mark;
     const P2 ring = placement.onSphere ? withinOutline(camera, at, outer) : at;
     ringBehind(context, ring, 0.8f * radius, 0.9f * mark, ghost(toRgba(run.color)), back);
     if (run.stopped) ringBehind(context, ring, 0.8f * radius + 2.5f * mark, 0.8f * mark, ghost(palette::stopRed), back);
+    drawChevron();
     return chevron;
   }
   Placement ballPlacement = placement;
@@ -542,6 +566,7 @@ std::optional<Box> drawBall(const RunFrame& run, const BallPlace& ball, const Pa
   // A thin dark rim sets the ball off from its own path, which has its colour (small frames lost it in the tube).
   else front.disc(at, radius + unit, palette::withAlpha(palette::ink, 0.75f), false, 0, world, (radius + unit) / pixelsPerUnit);
   front.disc(at, radius, toRgba(run.color), true, 0.55f, world, radius / pixelsPerUnit);
+  drawChevron();  // over the ball: where the outline pushes it back, it is never hidden by its own ball
   return chevron;
 }
 
@@ -980,13 +1005,13 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   ShapeBatch back, front;
   const bool throughAntipode = space == ViewSpace::Ball;
   const auto& runs = context.frame.runs;
-  for (const RunFrame& run : runs) drawFamily(run, context, camera, placement, throughAntipode, back, front);
+  std::vector<P2> pathPoints;  // where the paths are drawn in front, for labels to keep off
+  for (const RunFrame& run : runs) drawFamily(run, context, camera, placement, throughAntipode, back, front, pathPoints);
   // Several runs: side by side where they coincide (each shifted by its half width times 2k - (n - 1), narrower by
   // 1/sqrt(n), so n coinciding paths make one band of equal stripes), older sections thinner and fainter
   // (unless the scene fades paths out itself).
   const bool several = runs.size() > 1;
   const auto offsetOf = [&](std::size_t k) { return several ? 2.0f * (float(k) - 0.5f * float(runs.size() - 1)) : 0.0f; };
-  std::vector<P2> pathPoints;
   for (std::size_t k = 0; k < runs.size(); ++k) {
     const float narrower = std::max(0.45f, 1.0f / std::sqrt(float(runs.size())));
     const PathLook look{toRgba(runs[k].color), narrower * kTubeRadius, narrower * 1.8f * context.unit, false,

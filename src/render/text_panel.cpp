@@ -53,7 +53,7 @@ enum class StopDetail { Reason, Measured, Explained };
 
 // "stopped at t = 5.2: reason", with the watchdog's reading unless only the reason is asked for.
 std::string stopSentence(const RunFrame& run, StopDetail detail) {
-  std::string stop = "stopped at t = " + format("%.3g", run.stopTime) + ": " + stopReasonWords(run.stopReason);
+  std::string stop = "stopped at t = " + timeWords(run.stopTime) + ": " + stopReasonWords(run.stopReason);
   const std::string reading = stopReadingWords(run);
   if (detail != StopDetail::Reason && !reading.empty()) stop += " (" + reading + ")";
   return stop;
@@ -85,13 +85,15 @@ float flowRuns(const PanelContext& c, TextSize size, StopDetail detail, float pa
     }
     x += width;
   }
-  // Below the runs, what each stop means: one line per stopped run, in small text, shortened to the panel.
+  // Below the runs, what each stop means: per stopped run, in small text, wrapped onto two lines at most (one cut
+  // short with an ellipsis lost the explanation: seam.json).
   for (const RunFrame& run : c.frame.runs) {
     if (detail != StopDetail::Explained || !run.stopped) continue;
-    y += c.font.lineHeight(TextSize::Small);
-    const std::string why = c.font.fitted(run.name + " " + stopSentence(run, detail) + " \u2014 " + stopMeaningWords(run.stopReason),
-                                          TextSize::Small, c.rect.width - 2 * pad);
-    if (batch) c.font.draw(*batch, why, TextSize::Small, c.rect.x + pad, y, palette::stopRed);
+    const std::string why = run.name + " " + stopSentence(run, detail) + " \u2014 " + stopMeaningWords(run.stopReason);
+    for (const std::string& part : c.font.wrapped(why, TextSize::Small, c.rect.width - 2 * pad, 2)) {
+      y += c.font.lineHeight(TextSize::Small);
+      if (batch) c.font.draw(*batch, part, TextSize::Small, c.rect.x + pad, y, palette::stopRed);
+    }
   }
   return y + (line - c.font.ascent(size));
 }
@@ -135,7 +137,7 @@ void drawTextPanel(const PanelContext& c, ShapeBatch& batch) {
     const RunFrame& run = runs[k];
     const float x = c.rect.x + pad + share * float(k);
     // Once stopped: "stopped t=5" where it fits in 60% of the share, else "t=5" whole (the red says it stopped).
-    const std::string full = " stopped t=" + format("%.3g", run.stopTime), brief = " t=" + format("%.3g", run.stopTime);
+    const std::string full = " stopped t=" + timeWords(run.stopTime), brief = " t=" + timeWords(run.stopTime);
     const float room = share - 2.5f * swatch - pad;
     const std::string stopText =
         !run.stopped ? "" : c.font.width(full, TextSize::Small) <= 0.6f * room ? full : brief;

@@ -54,7 +54,7 @@ TEST(DirectedCamera, EveryShippedSceneFacesItsEventsWhenTheyHappen) {
                                     [](const PanelSpec& p) { return p.kind == PanelKind::Sphere; });
     if (scene.chain.rods != 4 || !sphere) continue;
     // Starts on found motions (connect.json, periodic.json) are resolved by the commands (cli/motion_starts.hpp),
-    // a stage these tests do not link; their motions have no event of the kinds the camera turns to.
+    // a stage these tests do not link: their arrivals and closures are checked in tests/cli/shipped_frames_test.cpp.
     if (std::any_of(scene.runs.begin(), scene.runs.end(), [](const RunSpec& run) { return run.initial.namesAMotion(); }))
       continue;
     SCOPED_TRACE(entry.path().filename().string());
