@@ -98,9 +98,12 @@ void drawChain(const RunFrame& run, const PlaneView& view, double base, float ro
     batch.disc(pin, pinRadius, palette::pinCharcoal, true, 0.3f);
     batch.disc(pin, pinRadius * (0.7f / 2.2f), palette::silver);
   }
-  if (run.stopped) {  // crossed out over the middle of the chain
+  if (run.stopped) {  // crossed out over the middle of the chain, at most a fifth of its span (a small frame's
+                      // mark floor made the cross larger than the chain)
     const P2 middle = joints[joints.size() / 2];
-    drawCross(middle, 9 * markUnit(unit), 1.6f * markUnit(unit), palette::stopRed, batch);
+    const float span = std::hypot(joints.back().x - joints.front().x, joints.back().y - joints.front().y);
+    const float arm = std::min(9 * markUnit(unit), std::max(0.2f * span, 3 * unit));
+    drawCross(middle, arm, std::min(1.6f * markUnit(unit), 0.18f * arm), palette::stopRed, batch);
   }
 }
 
