@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <numbers>
 
 #include <Eigen/Sparse>
@@ -174,7 +172,8 @@ double polygonLength(const ConstrainedModel& model, const std::vector<Eigen::Vec
 
 double pathEnergy(const ConstrainedModel& model, const std::vector<Eigen::VectorXd>& nodes) {
   double energy = 0;
-  for (std::size_t i = 0; i + 1 < nodes.size(); ++i) energy += model.inner(nodes[i + 1] - nodes[i], nodes[i + 1] - nodes[i]);
+  for (std::size_t i = 0; i + 1 < nodes.size(); ++i)
+    energy += model.inner(nodes[i + 1] - nodes[i], nodes[i + 1] - nodes[i]);
   return energy;
 }
 
@@ -197,8 +196,8 @@ bool descendDiscrete(const ConstrainedModel& model, std::vector<Eigen::VectorXd>
     for (int i = first; i <= last; ++i) {
       const int row = (i - first) * block;
       const Eigen::VectorXd& q = nodes[static_cast<std::size_t>(i)];
-      const Eigen::VectorXd mui = nodeMultipliers(model, nodes[static_cast<std::size_t>(i - 1)], q,
-                                                  nodes[static_cast<std::size_t>(i + 1)]);
+      const Eigen::VectorXd mui =
+          nodeMultipliers(model, nodes[static_cast<std::size_t>(i - 1)], q, nodes[static_cast<std::size_t>(i + 1)]);
       const Eigen::SparseMatrix<double> g = model.sparseJacobian(q);
       residual.segment(row, n) = model.sparseMass() * (nodes[static_cast<std::size_t>(i + 1)] - 2 * q +
                                                        nodes[static_cast<std::size_t>(i - 1)]) +
@@ -227,9 +226,6 @@ bool descendDiscrete(const ConstrainedModel& model, std::vector<Eigen::VectorXd>
       size = std::max(size, maxAbs(q));
     }
     const double trialEnergy = projected ? pathEnergy(model, trial) : INFINITY;
-    if (std::getenv("SL_DEBUG_DESCENT"))
-      std::fprintf(stderr, "descent %d shift %.3g step %.3g energy %.12g -> %.12g\n", iteration, shift, largest,
-                   energy, trialEnergy);
     if (trialEnergy < energy) {
       nodes = std::move(trial);
       energy = trialEnergy;
@@ -622,8 +618,8 @@ std::vector<Connection> findConnections(const ConstrainedModel& model, const Cha
   if (chain != nullptr) {
     const auto arcs = sphereArcPaths(*chain, from, to, 5 * kPathSamples);
     for (std::size_t k = 0; k < arcs.size(); ++k) {
-      const auto g = discreteGeodesic(model, arcs[k], k == 0 ? "sphere arc" : "sphere arc, long way",
-                                      d > kExactShootingFreedom);
+      const auto g =
+          discreteGeodesic(model, arcs[k], k == 0 ? "sphere arc" : "sphere arc, long way", d > kExactShootingFreedom);
       if (!g) continue;
       Connection* c = match(*g);
       // Long chains shoot few of the fan's seeds and may miss a geodesic route 2 found from the arc: shot

@@ -150,7 +150,8 @@ TEST(ConstrainedModel, SparseKktSolveAgreesWithTheDenseOne) {
   const Eigen::MatrixXd g = model.jacobian(q);
   Eigen::MatrixXd kkt = Eigen::MatrixXd::Zero(n + m, n + m);
   kkt << model.mass(), g.transpose(), g, Eigen::MatrixXd::Zero(m, m);
-  const Eigen::VectorXd top = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0), bottom = Eigen::VectorXd::LinSpaced(m, 0.3, -0.7);
+  const Eigen::VectorXd top = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0),
+                        bottom = Eigen::VectorXd::LinSpaced(m, 0.3, -0.7);
   Eigen::VectorXd rhs(n + m);
   rhs << top, bottom;
   const Eigen::VectorXd dense = kkt.fullPivLu().solve(rhs);
@@ -163,7 +164,8 @@ TEST(ConstrainedModel, SparseKktSolveAgreesWithTheDenseOne) {
   // The correction is the M-smallest x with G x = -r.
   const Eigen::VectorXd correction = factor.correction(bottom);
   EXPECT_LT((g * correction + bottom).cwiseAbs().maxCoeff(), 1e-11);
-  EXPECT_NEAR(model.norm(correction), std::sqrt(bottom.dot((g * model.mass().inverse() * g.transpose()).ldlt().solve(bottom))), 1e-10);
+  EXPECT_NEAR(model.norm(correction),
+              std::sqrt(bottom.dot((g * model.mass().inverse() * g.transpose()).ldlt().solve(bottom))), 1e-10);
 }
 
 TEST(ConstrainedModel, ProjectsFortyRodsOntoTheirConstraints) {
@@ -203,8 +205,8 @@ TEST(Connect, ChartMethodsFindTheSameMotions) {
   }
   // A method that cannot move the chain says why.
   const Chain five = Chain::uniform(5, 3.5);
-  EXPECT_THROW(shootWithMethod(five, Method::ChristoffelFd, ConstrainedModel::stack(hingePositionsAt(
-                                                                five, Eigen::Vector3d(1, 0, 0))),
+  EXPECT_THROW(shootWithMethod(five, Method::ChristoffelFd,
+                               ConstrainedModel::stack(hingePositionsAt(five, Eigen::Vector3d(1, 0, 0))),
                                ConstrainedModel::stack(hingePositionsAt(five, Eigen::Vector3d(0, 1, 0))),
                                Eigen::VectorXd::Zero(8)),
                std::invalid_argument);
