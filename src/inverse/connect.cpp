@@ -36,6 +36,35 @@ Eigen::VectorXd nodeMultipliers(const ConstrainedModel& model, const Eigen::Vect
   return -(g * g.transpose()).ldlt().solve(g * r);
 }
 
+// The Newton matrix's entries of interior node i (row block (i - first) * block) from the sparse M, G and A_k:
+// diagonal -(2 + shift) M + sum_k mu_k A_k and G, off-diagonal M to the unknown neighbours (`periodic`: the
+// node count of a closed path, 0 for fixed ends). shift > 0 adds shift * M to the action's second variation
+// (the Levenberg-Marquardt term of descendDiscrete).
+void sparseNodeEntries(const ConstrainedModel& model, const Eigen::SparseMatrix<double>& g, const Eigen::VectorXd& mui,
+                       int i, int first, int last, int block, int periodic, double shift,
+                       std::vector<Eigen::Triplet<double>>& entries) {
+  const int n = model.dimension(), m = model.constraintCount(), row = (i - first) * block;
+  const Eigen::SparseMatrix<double>& mass = model.sparseMass();
+  for (int k = 0; k < mass.outerSize(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(mass, k); it; ++it) {
+      const int r = static_cast<int>(it.row()), c = static_cast<int>(it.col());
+      entries.emplace_back(row + r, row + c, -(2.0 + shift) * it.value());
+      for (int neighbour : {i - 1, i + 1}) {
+        int j = neighbour;
+        if (periodic > 0) j = (j + periodic) % periodic;
+        if (j < first || j > last) continue;
+        entries.emplace_back(row + r, (j - first) * block + c, it.value());
+      }
+    }
+  model.hessianEntries(mui, row, row, entries);
+  for (int k = 0; k < g.outerSize(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(g, k); it; ++it) {
+      entries.emplace_back(row + n + static_cast<int>(it.row()), row + static_cast<int>(it.col()), it.value());
+      entries.emplace_back(row + static_cast<int>(it.col()), row + n + static_cast<int>(it.row()), it.value());
+    }
+  for (int k = 0; k < m; ++k) entries.emplace_back(row + n + k, row + n + k, 0.0);
+}
+
 // Newton's method on the discrete Euler-Lagrange equations with multipliers; nodes 0 and K fixed.
 bool solveDiscrete(const ConstrainedModel& model, std::vector<Eigen::VectorXd>& nodes, bool periodic = false) {
   const int n = model.dimension(), m = model.constraintCount(), block = n + m;
@@ -74,25 +103,7 @@ bool solveDiscrete(const ConstrainedModel& model, std::vector<Eigen::VectorXd>& 
             model.sparseMass() * (node(i + 1) - 2 * q + node(i - 1)) + Eigen::VectorXd(g.transpose() * mui);
         residual.segment(row + n, m) = model.values(q);
         if (!factor) continue;
-        const Eigen::SparseMatrix<double>& mass = model.sparseMass();
-        for (int k = 0; k < mass.outerSize(); ++k)
-          for (Eigen::SparseMatrix<double>::InnerIterator it(mass, k); it; ++it) {
-            const int r = static_cast<int>(it.row()), c = static_cast<int>(it.col());
-            entries.emplace_back(row + r, row + c, -2.0 * it.value());
-            for (int neighbour : {i - 1, i + 1}) {
-              int j = neighbour;
-              if (periodic) j = (j + count) % count;
-              if (j < first || j > last) continue;
-              entries.emplace_back(row + r, (j - first) * block + c, it.value());
-            }
-          }
-        model.hessianEntries(mui, row, row, entries);
-        for (int k = 0; k < g.outerSize(); ++k)
-          for (Eigen::SparseMatrix<double>::InnerIterator it(g, k); it; ++it) {
-            entries.emplace_back(row + n + static_cast<int>(it.row()), row + static_cast<int>(it.col()), it.value());
-            entries.emplace_back(row + static_cast<int>(it.col()), row + n + static_cast<int>(it.row()), it.value());
-          }
-        for (int k = 0; k < m; ++k) entries.emplace_back(row + n + k, row + n + k, 0.0);
+        sparseNodeEntries(model, g, mui, i, first, last, block, periodic ? count : 0, 0.0, entries);
         continue;
       }
       const Eigen::MatrixXd g = model.jacobian(q);
@@ -157,6 +168,75 @@ double polygonLength(const ConstrainedModel& model, const std::vector<Eigen::Vec
   double length = 0;
   for (std::size_t i = 0; i + 1 < nodes.size(); ++i) length += model.norm(nodes[i + 1] - nodes[i]);
   return length;
+}
+
+double pathEnergy(const ConstrainedModel& model, const std::vector<Eigen::VectorXd>& nodes) {
+  double energy = 0;
+  for (std::size_t i = 0; i + 1 < nodes.size(); ++i)
+    energy += model.inner(nodes[i + 1] - nodes[i], nodes[i + 1] - nodes[i]);
+  return energy;
+}
+
+// Descent on the discrete action from a seed far from any geodesic (long chains, docs/geometry.md, "Long
+// chains"): Newton's steps on the stationarity equations with shift * M added to the action's second variation
+// (Levenberg-Marquardt), the nodes projected back onto the constraints after each step, a step kept only when
+// it lowers the action; the shift shrinks after a kept step and grows after a refused one. It ends near a
+// local minimum (a geodesic without conjugate points inside), where plain Newton (solveDiscrete) takes over.
+bool descendDiscrete(const ConstrainedModel& model, std::vector<Eigen::VectorXd>& nodes) {
+  if (!model.sparse()) return true;
+  const int n = model.dimension(), m = model.constraintCount(), block = n + m;
+  const int count = static_cast<int>(nodes.size()), first = 1, last = count - 2, unknowns = last - first + 1;
+  if (unknowns <= 0) return true;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+  bool analysed = false;
+  double shift = 1.0, energy = pathEnergy(model, nodes);
+  for (int iteration = 0; iteration < 60; ++iteration) {
+    std::vector<Eigen::Triplet<double>> entries;
+    Eigen::VectorXd residual(unknowns * block);
+    for (int i = first; i <= last; ++i) {
+      const int row = (i - first) * block;
+      const Eigen::VectorXd& q = nodes[static_cast<std::size_t>(i)];
+      const Eigen::VectorXd mui =
+          nodeMultipliers(model, nodes[static_cast<std::size_t>(i - 1)], q, nodes[static_cast<std::size_t>(i + 1)]);
+      const Eigen::SparseMatrix<double> g = model.sparseJacobian(q);
+      residual.segment(row, n) = model.sparseMass() * (nodes[static_cast<std::size_t>(i + 1)] - 2 * q +
+                                                       nodes[static_cast<std::size_t>(i - 1)]) +
+                                 Eigen::VectorXd(g.transpose() * mui);
+      residual.segment(row + n, m) = model.values(q);
+      sparseNodeEntries(model, g, mui, i, first, last, block, 0, shift, entries);
+    }
+    Eigen::SparseMatrix<double> jac(unknowns * block, unknowns * block);
+    jac.setFromTriplets(entries.begin(), entries.end());
+    if (!analysed) {
+      lu.analyzePattern(jac);
+      analysed = true;
+    }
+    lu.factorize(jac);
+    if (lu.info() != Eigen::Success) return false;
+    const Eigen::VectorXd step = lu.solve(-residual);
+    if (!step.allFinite()) return false;
+    std::vector<Eigen::VectorXd> trial = nodes;
+    double largest = 0, size = 0;
+    bool projected = true;
+    for (int i = first; i <= last; ++i) {
+      Eigen::VectorXd& q = trial[static_cast<std::size_t>(i)];
+      q += step.segment((i - first) * block, n);
+      projected = projected && model.projectPosition(q);
+      largest = std::max(largest, maxAbs(step.segment((i - first) * block, n)));
+      size = std::max(size, maxAbs(q));
+    }
+    const double trialEnergy = projected ? pathEnergy(model, trial) : INFINITY;
+    if (trialEnergy < energy) {
+      nodes = std::move(trial);
+      energy = trialEnergy;
+      shift /= 4;
+      if (shift < 1e-6 && largest < 1e-6 * (1.0 + size)) return true;
+    } else {
+      shift *= 8;
+      if (shift > 1e8) return false;
+    }
+  }
+  return false;
 }
 
 std::vector<Eigen::VectorXd> refine(const ConstrainedModel& model, const std::vector<Eigen::VectorXd>& nodes) {
@@ -282,7 +362,7 @@ std::optional<Connection> shootConnection(const ConstrainedModel& model, const E
 }
 
 std::optional<DiscreteGeodesic> discreteGeodesic(const ConstrainedModel& model, std::vector<Eigen::VectorXd> nodes,
-                                                 const std::string& seedName) {
+                                                 const std::string& seedName, bool descend) {
   for (std::size_t i = 1; i + 1 < nodes.size(); ++i) model.projectPosition(nodes[i]);
   Richardson lengths, paths;
   DiscreteGeodesic out;
@@ -291,7 +371,12 @@ std::optional<DiscreteGeodesic> discreteGeodesic(const ConstrainedModel& model, 
   Eigen::VectorXd previousPath;
   for (int level = 0; level < 7; ++level) {
     if (level > 0) nodes = refine(model, nodes);
-    if (!solveDiscrete(model, nodes)) return std::nullopt;
+    const std::vector<Eigen::VectorXd> seed = level == 0 && descend ? nodes : std::vector<Eigen::VectorXd>{};
+    if (!solveDiscrete(model, nodes)) {
+      if (seed.empty()) return std::nullopt;
+      nodes = seed;
+      if (!descendDiscrete(model, nodes) || !solveDiscrete(model, nodes)) return std::nullopt;
+    }
     const Eigen::VectorXd length = lengths.add(Eigen::VectorXd::Constant(1, polygonLength(model, nodes)));
     const Eigen::VectorXd path = paths.add(samplesOf(nodes));
     out.nodes = static_cast<int>(nodes.size()) - 1;
@@ -390,6 +475,36 @@ int discreteMorseIndex(const ConstrainedModel& model, const Eigen::VectorXd& fro
   return index;
 }
 
+namespace {
+
+// When the continuation fails: shot from the arc's first chord; on long chains, where the arc's branch of
+// shots can fold before the target (docs/geometry.md, "Long chains"), from route 2's geodesic found by descent
+// from the arc.
+std::optional<Connection> fromTheArc(const ConstrainedModel& model, const Chain& chain, const Eigen::VectorXd& from,
+                                     const Eigen::VectorXd& to, const std::vector<Eigen::VectorXd>& arc,
+                                     double tolerance) {
+  const int intervals = static_cast<int>(arc.size()) - 1;
+  auto c = shootConnection(model, from, to, (arc[1] - arc[0]) * intervals, tolerance);
+  if (c || static_cast<int>(model.tangentBasis(from).cols()) <= kExactShootingFreedom) return c;
+  // The first chord over its time step, projected onto the tangent space, is the initial velocity to O(h^2)
+  // (the geodesic's acceleration is normal to it); two node counts extrapolate it to O(h^4). No refinement to
+  // route 2's accuracy: Newton's shots finish the job.
+  std::vector<Eigen::VectorXd> nodes = sphereArcPaths(chain, from, to, 5 * kPathSamples)[0];
+  for (std::size_t i = 1; i + 1 < nodes.size(); ++i) model.projectPosition(nodes[i]);
+  if (!descendDiscrete(model, nodes) || !solveDiscrete(model, nodes)) return std::nullopt;
+  const auto chord = [&] {
+    const double k = static_cast<double>(nodes.size() - 1);
+    return model.projectVelocity(from, (nodes[1] - nodes[0]) * k);
+  };
+  const Eigen::VectorXd coarse = chord();
+  if ((c = shootConnection(model, from, to, coarse, tolerance))) return c;
+  nodes = refine(model, nodes);
+  if (!solveDiscrete(model, nodes)) return std::nullopt;
+  return shootConnection(model, from, to, (4 * chord() - coarse) / 3, tolerance);
+}
+
+}  // namespace
+
 std::optional<Connection> directConnection(const ConstrainedModel& model, const Chain* chain,
                                            const Eigen::VectorXd& from, const Eigen::VectorXd& to, double tolerance) {
   if (chain == nullptr || chain->isSlack()) return shootConnection(model, from, to, to - from, tolerance);
@@ -401,7 +516,7 @@ std::optional<Connection> directConnection(const ConstrainedModel& model, const 
   std::optional<Connection> c;
   for (int stage = 1; stage <= stages; ++stage) {
     c = shootConnection(model, from, arc[static_cast<std::size_t>(stage * intervals / stages)], velocity, tolerance);
-    if (!c) return shootConnection(model, from, to, (arc[1] - arc[0]) * intervals, tolerance);
+    if (!c) return fromTheArc(model, *chain, from, to, arc, tolerance);
     velocity = c->velocity * (stage + 1.0) / stage;
   }
   return c;
@@ -503,7 +618,8 @@ std::vector<Connection> findConnections(const ConstrainedModel& model, const Cha
   if (chain != nullptr) {
     const auto arcs = sphereArcPaths(*chain, from, to, 5 * kPathSamples);
     for (std::size_t k = 0; k < arcs.size(); ++k) {
-      const auto g = discreteGeodesic(model, arcs[k], k == 0 ? "sphere arc" : "sphere arc, long way");
+      const auto g =
+          discreteGeodesic(model, arcs[k], k == 0 ? "sphere arc" : "sphere arc, long way", d > kExactShootingFreedom);
       if (!g) continue;
       Connection* c = match(*g);
       // Long chains shoot few of the fan's seeds and may miss a geodesic route 2 found from the arc: shot

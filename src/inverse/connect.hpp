@@ -62,9 +62,11 @@ std::optional<Connection> shootConnection(const ConstrainedModel& model, const E
                                           const Eigen::VectorXd& to, Eigen::VectorXd velocity,
                                           double tolerance = 1e-12);
 
-// Route 2 from a seed path (K + 1 nodes, K a multiple of kPathSamples, end points the fixed ones).
+// Route 2 from a seed path (K + 1 nodes, K a multiple of kPathSamples, end points the fixed ones). `descend`:
+// where Newton's method fails from the seed, descend on the action first (long chains; docs/geometry.md, "Long
+// chains").
 std::optional<DiscreteGeodesic> discreteGeodesic(const ConstrainedModel& model, std::vector<Eigen::VectorXd> seed,
-                                                 const std::string& seedName);
+                                                 const std::string& seedName, bool descend = false);
 
 // Both routes. For a chain (`chain` given) route 2 is also seeded from the great-circle arcs between the two
 // sphere points (independent of route 1), and the Morse index is counted. Sorted by length.

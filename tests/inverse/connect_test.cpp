@@ -125,6 +125,37 @@ TEST(Connect, SixtyRodsBothRoutesAgree) {
   EXPECT_NEAR(direct->length, found[0].length, 1e-10);
 }
 
+// Shapes bent along every coordinate (as the benchmark's, amplitude 0.4): the continuation along the sphere arc
+// meets a fold at its last stage and the arc's first chord misses too; the shortest motion is found from
+// route 2's descent from the arc (docs/geometry.md, "Long chains").
+TEST(Connect, LongChainTargetBeyondTheArcsFold) {
+  const int rods = 35, d = rods - 1;
+  const Chain chain = Chain::uniform(rods, rods - 0.8);
+  const ConstrainedModel model = ConstrainedModel::fromChain(chain);
+  Eigen::VectorXd a = Eigen::VectorXd::Zero(d), b = Eigen::VectorXd::Zero(d);
+  a(0) = 0.8, a(3) = -0.4, a(7) = 0.3, a(10) = 0.2;
+  b(0) = 0.7, b(3) = 0.2, b(6) = -0.5, b(9) = 0.3;
+  for (int i = 0; i < d; ++i) {
+    a(i) += 0.4 * std::cos(0.7 * i + 0.3) / std::sqrt(d / 10.0);
+    b(i) += 0.4 * std::sin(1.3 * i) / std::sqrt(d / 10.0);
+  }
+  const Eigen::VectorXd from = ConstrainedModel::stack(hingePositionsAt(chain, a.normalized()));
+  const Eigen::VectorXd to = ConstrainedModel::stack(hingePositionsAt(chain, b.normalized()));
+  const auto direct = directConnection(model, &chain, from, to);
+  ASSERT_TRUE(direct.has_value());
+  EXPECT_LE(direct->endError, 1e-12);
+  // Route 2 on its own: Newton from the arc fails, the descent reaches the same geodesic.
+  const auto arc = sphereArcPaths(chain, from, to, 5 * kPathSamples)[0];
+  EXPECT_FALSE(discreteGeodesic(model, arc, "sphere arc").has_value());
+  const auto discrete = discreteGeodesic(model, arc, "sphere arc", true);
+  ASSERT_TRUE(discrete.has_value());
+  EXPECT_NEAR(discrete->length, direct->length, 1e-8);
+  const auto path = shootingPath(model, from, direct->velocity, kPathSamples);
+  for (int j = 0; j <= kPathSamples; ++j)
+    EXPECT_LT((path[j] - discrete->path[j]).cwiseAbs().maxCoeff(), 1e-7) << "t = " << j << " / " << kPathSamples;
+  EXPECT_EQ(discreteMorseIndex(model, from, direct->velocity), 0);
+}
+
 // The sparse KKT solve (long chains) against the dense one written out: the same x and multipliers.
 TEST(ConstrainedModel, SparseKktSolveAgreesWithTheDenseOne) {
   Chain chain = Chain::uniform(20, 18.5);
@@ -138,7 +169,8 @@ TEST(ConstrainedModel, SparseKktSolveAgreesWithTheDenseOne) {
   const Eigen::MatrixXd g = model.jacobian(q);
   Eigen::MatrixXd kkt = Eigen::MatrixXd::Zero(n + m, n + m);
   kkt << model.mass(), g.transpose(), g, Eigen::MatrixXd::Zero(m, m);
-  const Eigen::VectorXd top = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0), bottom = Eigen::VectorXd::LinSpaced(m, 0.3, -0.7);
+  const Eigen::VectorXd top = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0),
+                        bottom = Eigen::VectorXd::LinSpaced(m, 0.3, -0.7);
   Eigen::VectorXd rhs(n + m);
   rhs << top, bottom;
   const Eigen::VectorXd dense = kkt.fullPivLu().solve(rhs);
@@ -151,7 +183,8 @@ TEST(ConstrainedModel, SparseKktSolveAgreesWithTheDenseOne) {
   // The correction is the M-smallest x with G x = -r.
   const Eigen::VectorXd correction = factor.correction(bottom);
   EXPECT_LT((g * correction + bottom).cwiseAbs().maxCoeff(), 1e-11);
-  EXPECT_NEAR(model.norm(correction), std::sqrt(bottom.dot((g * model.mass().inverse() * g.transpose()).ldlt().solve(bottom))), 1e-10);
+  EXPECT_NEAR(model.norm(correction),
+              std::sqrt(bottom.dot((g * model.mass().inverse() * g.transpose()).ldlt().solve(bottom))), 1e-10);
 }
 
 TEST(ConstrainedModel, ProjectsFortyRodsOntoTheirConstraints) {
@@ -191,8 +224,8 @@ TEST(Connect, ChartMethodsFindTheSameMotions) {
   }
   // A method that cannot move the chain says why.
   const Chain five = Chain::uniform(5, 3.5);
-  EXPECT_THROW(shootWithMethod(five, Method::ChristoffelFd, ConstrainedModel::stack(hingePositionsAt(
-                                                                five, Eigen::Vector3d(1, 0, 0))),
+  EXPECT_THROW(shootWithMethod(five, Method::ChristoffelFd,
+                               ConstrainedModel::stack(hingePositionsAt(five, Eigen::Vector3d(1, 0, 0))),
                                ConstrainedModel::stack(hingePositionsAt(five, Eigen::Vector3d(0, 1, 0))),
                                Eigen::VectorXd::Zero(8)),
                std::invalid_argument);
