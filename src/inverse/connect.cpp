@@ -65,6 +65,20 @@ void sparseNodeEntries(const ConstrainedModel& model, const Eigen::SparseMatrix<
   for (int k = 0; k < m; ++k) entries.emplace_back(row + n + k, row + n + k, 0.0);
 }
 
+// The node system from its entries, factorised by `lu`, its pattern analysed on the first call only (the grid's
+// pattern never changes); false if the factorisation fails.
+bool factorNodeSystem(const std::vector<Eigen::Triplet<double>>& entries, int size,
+                      Eigen::SparseLU<Eigen::SparseMatrix<double>>& lu, bool& analysed) {
+  Eigen::SparseMatrix<double> jac(size, size);
+  jac.setFromTriplets(entries.begin(), entries.end());
+  if (!analysed) {
+    lu.analyzePattern(jac);
+    analysed = true;
+  }
+  lu.factorize(jac);
+  return lu.info() == Eigen::Success;
+}
+
 // Newton's method on the discrete Euler-Lagrange equations with multipliers; nodes 0 and K fixed.
 bool solveDiscrete(const ConstrainedModel& model, std::vector<Eigen::VectorXd>& nodes, bool periodic = false) {
   const int n = model.dimension(), m = model.constraintCount(), block = n + m;
@@ -131,16 +145,7 @@ bool solveDiscrete(const ConstrainedModel& model, std::vector<Eigen::VectorXd>& 
       // Keep the structural diagonal of the multiplier rows (zero) so the pattern never changes.
       for (int k = 0; k < m; ++k) entries.emplace_back(row + n + k, row + n + k, 0.0);
     }
-    if (factor) {
-      Eigen::SparseMatrix<double> jac(unknowns * block, unknowns * block);
-      jac.setFromTriplets(entries.begin(), entries.end());
-      if (!analysed) {
-        lu.analyzePattern(jac);
-        analysed = true;
-      }
-      lu.factorize(jac);
-      if (lu.info() != Eigen::Success) return false;
-    }
+    if (factor && !factorNodeSystem(entries, unknowns * block, lu, analysed)) return false;
     const Eigen::VectorXd step = lu.solve(-residual);
     if (!step.allFinite()) return false;
     double largest = 0, size = 0;
@@ -205,14 +210,7 @@ bool descendDiscrete(const ConstrainedModel& model, std::vector<Eigen::VectorXd>
       residual.segment(row + n, m) = model.values(q);
       sparseNodeEntries(model, g, mui, i, first, last, block, 0, shift, entries);
     }
-    Eigen::SparseMatrix<double> jac(unknowns * block, unknowns * block);
-    jac.setFromTriplets(entries.begin(), entries.end());
-    if (!analysed) {
-      lu.analyzePattern(jac);
-      analysed = true;
-    }
-    lu.factorize(jac);
-    if (lu.info() != Eigen::Success) return false;
+    if (!factorNodeSystem(entries, unknowns * block, lu, analysed)) return false;
     const Eigen::VectorXd step = lu.solve(-residual);
     if (!step.allFinite()) return false;
     std::vector<Eigen::VectorXd> trial = nodes;
