@@ -65,7 +65,7 @@ std::string stopReadingWords(const RunFrame& run) {
 std::vector<std::string> plotTitles(const PlotFrame& plot) {
   switch (plot.kind) {  // every kind, no default: the compiler names a kind left out
     case PlotKind::Divergence:
-      return {"divergence from " + plot.referenceRun + " (max hinge distance)", "divergence from " + plot.referenceRun,
+      return {"divergence from " + plot.referenceRun + ": max hinge distance", "divergence from " + plot.referenceRun,
               "divergence"};
     case PlotKind::EnergyError:
       return {"relative energy error |E \u2212 E\u2080| / E\u2080", "energy error |E \u2212 E\u2080| / E\u2080",
@@ -161,10 +161,13 @@ std::string curveName(SphereCurveKind kind) {
 std::vector<std::string> twoSlopeNotes() { return {"each sign on its own scale", "two scales"}; }
 
 std::vector<std::string> injectivityNotes(double radius, bool fromStart) {
-  char value[32];
-  std::snprintf(value, sizeof value, "%.3g", radius);
-  return {std::string("from the ") + (fromStart ? "start" : "marked shape") + "; injectivity radius " + value,
-          std::string("injectivity radius ") + value, std::string("inj. radius ") + value, std::string("inj. ") + value};
+  // As the scene's title gives it (5 digits, title placeholders) where there is room, else 3.
+  char full[32], brief[32];
+  std::snprintf(full, sizeof full, "%.5g", radius);
+  std::snprintf(brief, sizeof brief, "%.3g", radius);
+  const std::string from = std::string("from the ") + (fromStart ? "start" : "marked shape") + "; injectivity radius ";
+  return {from + full, from + brief, std::string("injectivity radius ") + brief, std::string("inj. radius ") + brief,
+          std::string("inj. ") + brief};
 }
 
 std::vector<std::string> ellipseCaptions() {

@@ -194,7 +194,7 @@ namespace {
 TEST(FontAtlas, FittedTextStaysWithinItsWidth) {
   const FrameComposer composer(ViewSettings{}, {640, 360});
   const FontAtlas& font = composer.font();
-  const std::string title = "divergence from christoffel (published) (max hinge distance)";
+  const std::string title = "divergence from christoffel (published): max hinge distance";
   EXPECT_EQ(font.fitted(title, TextSize::Normal, 1e6), title);
   const float whole = font.width(title, TextSize::Normal);
   for (float width : {0.8f * whole, 0.4f * whole, 40.0f}) {

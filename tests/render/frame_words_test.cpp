@@ -76,11 +76,12 @@ TEST(FrameWords, AWrappedNoteIsAWholeForm) {
   const FrameComposer composer(ViewSettings{}, {320, 180});
   const FontAtlas& font = composer.font();
   const std::vector<std::string> forms = injectivityNotes(2.0854, true);
-  ASSERT_EQ(forms.front(), "from the start; injectivity radius 2.09");
+  ASSERT_EQ(forms.front(), "from the start; injectivity radius 2.0854");  // as the title gives it
+  ASSERT_EQ(forms[1], "from the start; injectivity radius 2.09");
   EXPECT_EQ(fittedWrappedForm(font, forms, TextSize::Small, 1e6f, 1), forms.front());
   const float longest = font.width(forms.front(), TextSize::Small);
-  EXPECT_EQ(fittedWrappedForm(font, forms, TextSize::Small, 0.6f * longest, 2), forms.front());  // on two lines
-  EXPECT_NE(fittedWrappedForm(font, forms, TextSize::Small, 0.6f * longest, 1), forms.front());
+  EXPECT_EQ(fittedWrappedForm(font, forms, TextSize::Small, 0.7f * longest, 2), forms.front());  // on two lines
+  EXPECT_NE(fittedWrappedForm(font, forms, TextSize::Small, 0.7f * longest, 1), forms.front());
   const float shortest = font.width(forms.back(), TextSize::Small);
   EXPECT_EQ(fittedWrappedForm(font, forms, TextSize::Small, shortest, 2), forms.back());
   EXPECT_EQ(fittedWrappedForm(font, forms, TextSize::Small, 0.5f * shortest, 2), "");
