@@ -2,15 +2,10 @@
 // the size may be overridden; --frames A:B renders a shard, --resume skips frames already complete.
 
 #include <algorithm>
-#include <condition_variable>
-#include <exception>
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <mutex>
 #include <optional>
-#include <thread>
-#include <utility>
 
 #include <CLI/CLI.hpp>
 
@@ -158,104 +153,13 @@ void checkSpaceForFrames(const RenderPlan& plan, Renderer& renderer, FrameBuilde
   refuseIfFramesCannotFit(need);
 }
 
-// A second renderer on a thread of its own (an OSMesa context is current on the thread that made it), one frame at a
-// time: while it draws one frame, the render loop draws the next, so one frame's CPU work overlaps the other's
-// rasterisation (docs/rendering.md, "Render loop"). Errors, its construction's included, reach collect().
-class SecondRenderer {
- public:
-  SecondRenderer(const ViewSettings& view, ImageSize size, const std::string& shaderFolder)
-      : thread_([this, view, size, shaderFolder] { run(view, size, shaderFolder); }) {}
-  ~SecondRenderer() {
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      stop_ = true;
-    }
-    changed_.notify_all();
-    thread_.join();
-  }
-  SecondRenderer(const SecondRenderer&) = delete;
-  SecondRenderer& operator=(const SecondRenderer&) = delete;
-
-  // Hands over one frame; the previous one must have been collected.
-  void submit(FrameState frame, Image image) {
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      frame_ = std::move(frame);
-      image_ = std::move(image);
-      state_ = State::drawing;
-    }
-    changed_.notify_all();
-  }
-  // Waits for the frame handed over; rethrows what drawing it threw.
-  Image collect() {
-    std::unique_lock<std::mutex> lock(mutex_);
-    changed_.wait(lock, [this] { return state_ == State::drawn; });
-    state_ = State::idle;
-    if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
-    return std::move(image_);
-  }
-
- private:
-  enum class State { idle, drawing, drawn };
-
-  void run(const ViewSettings& view, ImageSize size, const std::string& shaderFolder) {
-    std::optional<Renderer> renderer;
-    std::exception_ptr failed;
-    try {
-      renderer.emplace(view, size, shaderFolder);
-    } catch (...) {
-      failed = std::current_exception();
-    }
-    std::unique_lock<std::mutex> lock(mutex_);
-    while (true) {
-      changed_.wait(lock, [this] { return stop_ || state_ == State::drawing; });
-      if (stop_) return;
-      FrameState frame = std::move(frame_);
-      Image image = std::move(image_);
-      lock.unlock();
-      std::exception_ptr error = failed;
-      if (!error) {
-        try {
-          renderer->render(frame, image);
-        } catch (...) {
-          error = std::current_exception();
-        }
-      }
-      lock.lock();
-      image_ = std::move(image);
-      error_ = error;
-      state_ = State::drawn;
-      changed_.notify_all();
-    }
-  }
-
-  std::mutex mutex_;
-  std::condition_variable changed_;
-  State state_ = State::idle;
-  bool stop_ = false;
-  FrameState frame_;
-  Image image_;
-  std::exception_ptr error_;
-  std::thread thread_;  // last: it starts once the members it uses exist
-};
-
-// The frames of the plan's range into the sinks, in order; returns false if interrupted. Counts what it drew and
-// what --resume found complete. With a second renderer, every other frame is drawn on its thread beside the next.
+// The frames of the plan's range into the sinks; returns false if interrupted. Counts what it drew and what
+// --resume found complete.
 bool renderFrames(const RenderPlan& plan, FrameManifest* pngManifest,
-                  const std::vector<FrameSink*>& sinks, Renderer& renderer, SecondRenderer* second,
-                  FrameBuilder& builder, ImageRecycler& buffers, int& drawn, int& skipped) {
+                  const std::vector<FrameSink*>& sinks, Renderer& renderer, FrameBuilder& builder,
+                  ImageRecycler& buffers, int& drawn, int& skipped) {
   Progress progress(plan.range.count(), plan.quiet, "render", "frame");
   long done = 0;
-  const auto emit = [&](int k, Image image) {
-    for (size_t i = 0; i + 1 < sinks.size(); ++i) sinks[i]->consume(k, image);
-    sinks.back()->consume(k, std::move(image));
-    ++drawn;
-    progress.update(++done);
-  };
-  std::optional<int> handedOver;  // the frame the second renderer draws
-  const auto emitHandedOver = [&] {
-    if (handedOver) emit(*std::exchange(handedOver, std::nullopt), second->collect());
-  };
   for (int k = plan.range.first; k < plan.range.end; k += plan.range.step) {
     const bool complete = plan.resume && pngManifest && pngManifest->isFrameComplete(k);
     if (complete) {
@@ -264,21 +168,14 @@ bool renderFrames(const RenderPlan& plan, FrameManifest* pngManifest,
       continue;
     }
     // Frames before k are sampled (not rendered) for the path and plot history.
-    if (!sampleUpTo(builder, k)) {
-      emitHandedOver();  // a frame in flight is written whole
-      return false;
-    }
-    if (second && !handedOver) {
-      second->submit(builder.frame(k), buffers.take());
-      handedOver = k;
-      continue;
-    }
+    if (!sampleUpTo(builder, k)) return false;
     Image image = buffers.take();
     renderer.render(builder.frame(k), image);
-    emitHandedOver();
-    emit(k, std::move(image));
+    for (size_t i = 0; i + 1 < sinks.size(); ++i) sinks[i]->consume(k, image);
+    sinks.back()->consume(k, std::move(image));
+    ++drawn;
+    progress.update(++done);
   }
-  emitHandedOver();
   return true;
 }
 
@@ -376,14 +273,10 @@ void runRender(const RenderArguments& args) {
   if (videoSink) sinks.push_back(videoSink.get());
   if (!sinks.empty()) sinks.back()->recycleInto(buffers);  // the last sink gets each frame's own buffer
 
-  // A second renderer pays from two frames on; it holds a second frame's GL buffers.
-  std::optional<SecondRenderer> second;
-  if (plan.range.count() >= 2) second.emplace(scene.view, scene.output.size, environment().shaderFolder);
   int drawn = 0, skipped = 0;
   bool finished = false;
   try {
-    finished = renderFrames(plan, pngManifest.get(), sinks, renderer, second ? &*second : nullptr, builder, buffers,
-                            drawn, skipped);
+    finished = renderFrames(plan, pngManifest.get(), sinks, renderer, builder, buffers, drawn, skipped);
   } catch (const RunCancelled&) {  // a signal in the middle of a long frame: handled like one between frames
   } catch (const EncodingCancelled&) {  // a signal while the encoder was not reading
   }
