@@ -170,6 +170,13 @@ std::vector<std::string> injectivityNotes(double radius, bool fromStart) {
           std::string("inj. ") + brief};
 }
 
+std::vector<std::string> familyCaptions(std::size_t members) {
+  const std::string n = std::to_string(members);
+  return {"large ball: the run; thin paths and small dots: its " + n + " members; dark curve: their wavefront",
+          "ball: the run; lines and dots: its " + n + " members; dark curve: wavefront",
+          "ball: run; dots: " + n + " members; dark: wavefront"};
+}
+
 std::vector<std::string> ellipseCaptions() {
   return {"ellipses: stiffness |II(v,v)|\u00b2 over directions v, half-axes ~ \u221amax, \u221amin",
           "ellipses: stiffness |II(v,v)|\u00b2 over directions v", "ellipses: stiffness"};

@@ -27,6 +27,9 @@ std::vector<std::string> plotTitles(const PlotFrame& plot);       // e.g. "relat
 // The colour bar's, e.g. "K, Gaussian curvature"; the distance's from the start or from a point the scene names.
 std::vector<std::string> fieldCaptions(SphereColoring coloring, bool fromStart = true);
 std::vector<std::string> ellipseCaptions();            // the line explaining the stiffness ellipses
+// A family's key: "large ball: the run; thin paths and small dots: its 32 members; dark curve: their wavefront",
+// then shorter, down to "ball: run; dots: 32 members; dark: wavefront" (320x180 cut the longest at "its 32…").
+std::vector<std::string> familyCaptions(std::size_t members);
 std::vector<std::string> chartPoleLabels(bool north);  // "chart pole φ = 90°", "φ = 90°", "N" (south: −90°, "S")
 std::vector<std::string> seamLabels();                 // "seam t = ±π/2", "seam"
 std::vector<std::string> scaleBreakWords();  // "scale changes at", "scale break at": before a two-slope bar's zero

@@ -932,9 +932,10 @@ void captionFamilies(const PanelContext& context, float width, ShapeBatch& batch
   std::size_t members = 0;
   for (const RunFrame& run : context.frame.runs) members = std::max(members, run.members.size());
   if (members == 0) return;
-  const std::string text = "large ball: the run; thin paths and small dots: its " + std::to_string(members) +
-                           " members; dark curve: their wavefront";
   const float pad = 0.02f * context.rect.height, line = context.font.lineHeight(TextSize::Small);
+  // The longest form that wraps into two lines with every word whole; the shortest, cut, where none does.
+  std::string text = fittedWrappedForm(context.font, familyCaptions(members), TextSize::Small, width - 2 * pad, 2);
+  if (text.empty()) text = familyCaptions(members).back();
   const std::vector<std::string> lines = context.font.wrapped(text, TextSize::Small, width - 2 * pad, 2);
   float y = context.rect.y + context.rect.height - pad - line * float(lines.size() - 1);
   for (const std::string& caption : lines) {

@@ -70,6 +70,23 @@ TEST(FrameWords, AFormThatFitsIsChosenBeforeAnyCut) {
   EXPECT_LE(font.width(fittedForm(font, forms, TextSize::Small, 0.5f * shortest), TextSize::Small), 0.5f * shortest);
 }
 
+// A family's key comes in forms, longest first; a 320x180 frame's sphere panel (about 150 px for the caption) shows a
+// whole shorter form on two lines, where the longest was cut at "its 32…" and lost the wavefront's key.
+TEST(FrameWords, AFamilyKeyFitsASmallPanelWhole) {
+  const FrameComposer composer(ViewSettings{}, {320, 180});
+  const FontAtlas& font = composer.font();
+  const std::vector<std::string> forms = familyCaptions(32);
+  ASSERT_GE(forms.size(), 2u);
+  for (const std::string& form : forms) {
+    EXPECT_NE(form.find("32 members"), std::string::npos) << form;
+    EXPECT_NE(form.find("wavefront"), std::string::npos) << form;
+  }
+  EXPECT_EQ(fittedWrappedForm(font, forms, TextSize::Small, 1e6f, 1), forms.front());
+  const std::string shown = fittedWrappedForm(font, forms, TextSize::Small, 150, 2);
+  EXPECT_FALSE(shown.empty());
+  EXPECT_NE(shown, forms.front());
+}
+
 // A note under a colour bar wraps onto two lines: the longest form that does so with every word whole, then shorter
 // ones (the distance's note at 320x180 is "inj. 2.09", not "from / the…"); nothing when none fits.
 TEST(FrameWords, AWrappedNoteIsAWholeForm) {
