@@ -161,11 +161,17 @@ void drawRun(const PanelContext& context, const RunFrame* run, const PixelRect& 
   drawChain(*run, view, base, rod, outline * rod, u, batch);
   drawPush(*run, view, u, batch);
   if (label) {
-    const std::string name = context.font.fitted(run->name, TextSize::Small, area.width);
-    const float width = context.font.width(name, TextSize::Small);
+    // Centred under the chain; a name wider than the column wraps onto a second line where the column has room
+    // below (cut at a word, "single…" beside "chart…", the names of small frames could not be told apart).
     const float baseline = std::min(view.boxBottom + 1.1f * line, area.y + area.height - 0.3f * line);
-    context.font.draw(batch, name, TextSize::Small, area.x + 0.5f * (area.width - width), baseline,
-                      toRgba(run->color));
+    std::vector<std::string> lines = context.font.wrapped(run->name, TextSize::Small, area.width, 2);
+    if (lines.size() > 1 && baseline + line > area.y + area.height - 0.3f * line)
+      lines = {context.font.fitted(run->name, TextSize::Small, area.width)};
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      const float width = context.font.width(lines[i], TextSize::Small);
+      context.font.draw(batch, lines[i], TextSize::Small, area.x + 0.5f * (area.width - width),
+                        baseline + float(i) * line, toRgba(run->color));
+    }
   }
 }
 
