@@ -100,20 +100,28 @@ std::string emptyPlotNote(const PlotFrame& plot) {
 }
 
 std::string roundoffNote(const PlotFrame& plot) {
-  if (!plot.roundoff) return "";
+  const std::vector<std::string> forms = roundoffNotes(plot);
+  return forms.empty() ? "" : forms.front();
+}
+
+std::vector<std::string> roundoffNotes(const PlotFrame& plot) {
+  if (!plot.roundoff) return {};
   const PlotFrame::RoundoffOnly& r = *plot.roundoff;
   const std::string level = r.largest > 0 ? "to " + typesetPowerOfTen(r.largest) : "exactly";
   switch (plot.kind) {  // every kind, no default
-    case PlotKind::EnergyError:
-      return "energy conserved " + level + (r.runs > 1 ? " by every run" : " over the run") +
-             (r.byTolerance ? ", as its integrator's tolerance allows" : "");
+    case PlotKind::EnergyError: {
+      const std::string conserved = "energy conserved " + level;
+      const std::string whole = conserved + (r.runs > 1 ? " by every run" : " over the run");
+      if (!r.byTolerance) return {whole, conserved};
+      return {whole + ", as its integrator's tolerance allows", conserved + ", as the tolerance allows", conserved};
+    }
     case PlotKind::Divergence:
-      return "the runs agree " + level + " (largest hinge distance)";
+      return {"the runs agree " + level + " (largest hinge distance)", "the runs agree " + level};
     case PlotKind::Jacobi:
     case PlotKind::Spread:
-      return "";
+      return {};
   }
-  return "";
+  return {};
 }
 
 std::string valueAxisWords(PlotKind kind) {

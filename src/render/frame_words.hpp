@@ -20,6 +20,9 @@ std::string stopMeaningWords(StopReason reason);     // what the reason means, i
 std::string stopReadingWords(const RunFrame& run);   // e.g. "energy drift 2.13 > limit 1"; empty without a reading
 std::string emptyPlotNote(const PlotFrame& plot);    // why the plot stays empty; empty if it does not
 std::string roundoffNote(const PlotFrame& plot);     // e.g. "energy conserved to 3×10⁻¹⁵ over the run"; or empty
+// The same in forms, longest first, down to "energy conserved to 3×10⁻¹⁵" (a small frame cut the longest); empty
+// where there is no note.
+std::vector<std::string> roundoffNotes(const PlotFrame& plot);
 std::string valueAxisWords(PlotKind kind);           // what the y axis shows, in what unit
 
 // Forms, longest first.

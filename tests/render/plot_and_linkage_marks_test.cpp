@@ -94,6 +94,11 @@ TEST(PlotMarks, ARoundoffOnlyPlotSaysSoInOneLineWithoutAnAxis) {
   frame.plots[1].roundoff = PlotFrame::RoundoffOnly{3.2e-15, false, 1};
   ASSERT_EQ(frame.plots[1].kind, PlotKind::EnergyError);
   EXPECT_EQ(roundoffNote(frame.plots[1]), "energy conserved to 3×10⁻¹⁵ over the run");
+  // Shorter forms for small frames, the level kept (at 320x180 the tolerance's note ended "integrator's…").
+  PlotFrame byTolerance = frame.plots[1];
+  byTolerance.roundoff = PlotFrame::RoundoffOnly{2e-9, true, 1};
+  EXPECT_EQ(roundoffNotes(byTolerance).front(), "energy conserved to 2×10⁻⁹ over the run, as its integrator's tolerance allows");
+  EXPECT_EQ(roundoffNotes(byTolerance).back(), "energy conserved to 2×10⁻⁹");
   EXPECT_EQ(typesetPowerOfTen(1e-14), "10⁻¹⁴");
   EXPECT_EQ(typesetPowerOfTen(9.7e-15), "10⁻¹⁴");
   const ShapeBatch noted = composer.compose(frame).panels[0].shapes;
