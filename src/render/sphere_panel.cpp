@@ -514,6 +514,9 @@ std::optional<Box> drawBall(const RunFrame& run, const BallPlace& ball, const Pa
   auto drawChevron = [&] {
     if (run.stopped || !ball.headingKnown || !ball.marksDirection) return;
     const P2 d = ball.heading, n{-d.y, d.x};
+    // In mark units, but never much larger than the ball it belongs to (a small frame's floor made the arrowhead
+    // twice the ball's size at 320x180).
+    const float mark = std::min(markUnit(unit), std::max(unit, 0.15f * radius));
     const float halfWidth = (ball.behind ? 0.8f : 0.9f) * mark;
     const float clear = radius + 3 * mark;
     const float ox = ball.markAt.x - at.x, oy = ball.markAt.y - at.y, b = ox * d.x + oy * d.y;
