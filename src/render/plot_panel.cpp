@@ -200,17 +200,22 @@ void drawStop(const PanelContext& c, const PlotSeries& series, const DrawnSample
   at.y = std::clamp(at.y, area.y0 + arm + 1, std::max(area.y0 + arm + 1, area.y1 - arm - 1));
   batch.capsule({at.x - arm, at.y - arm}, {at.x + arm, at.y + arm}, width, palette::stopRed);
   batch.capsule({at.x - arm, at.y + arm}, {at.x + arm, at.y - arm}, width, palette::stopRed);
-  // The time above the cross (below it at the area's top), ending at its right arm: beside it, on the line's own
-  // height, it lay over the line coming in (comparison.json, frame 593).
+  // The time above the cross, ending at its right arm; at the area's top, right of the cross (the line has ended
+  // there), else below it; never on its left, where the line comes in (comparison.json, frame 593, had it there on
+  // the line). No room: no label (a second run stopping at the same place and time says the same).
   const std::string text = "stop " + timeWords(series.stopTime);
   const float textWidth = c.font.width(text, TextSize::Small), ascent = c.font.ascent(TextSize::Small);
-  const float gap = 0.4f * ascent;
-  const float left = std::max(area.x0, at.x + arm - textWidth);
-  float baseline = at.y - arm - gap;
-  if (baseline - ascent < area.y0) baseline = at.y + arm + gap + ascent;
-  if (baseline > area.y1 || !placed.free(left, baseline - ascent, left + textWidth, baseline + 0.2f * ascent)) return;
-  placed.add(left, baseline - ascent, left + textWidth, baseline + 0.2f * ascent);
-  c.font.draw(batch, text, TextSize::Small, left, baseline, palette::stopRed);
+  const float gap = 0.4f * ascent, middle = at.y + 0.4f * ascent;
+  const std::array<P2, 3> places{P2{at.x + arm - textWidth, at.y - arm - gap},           // above
+                                 P2{at.x + arm + gap, middle},                           // right
+                                 P2{at.x + arm - textWidth, at.y + arm + gap + ascent}};  // below
+  for (const P2& p : places) {  // p: the text's left end on its baseline
+    if (p.x < area.x0 || p.x + textWidth > area.x1 || p.y - ascent < area.y0 || p.y > area.y1) continue;
+    if (!placed.free(p.x, p.y - ascent, p.x + textWidth, p.y + 0.2f * ascent)) continue;
+    placed.add(p.x, p.y - ascent, p.x + textWidth, p.y + 0.2f * ascent);
+    c.font.draw(batch, text, TextSize::Small, p.x, p.y, palette::stopRed);
+    return;
+  }
 }
 
 // `halfWidth`: this line's (nested, runStyleWidth); `stopHalfWidth`: the stop cross's, the same for every line.

@@ -158,6 +158,32 @@ TEST(PlotMarks, TheStopCrossSitsOnTheLastValue) {
     EXPECT_FALSE(sameColour(v, palette::stopRed) && v.kind == 0) << "a cross at a value the run never had";
 }
 
+// The stop's time is written by its cross, never on the left at the cross's height, where the line comes in (it lay
+// over the line there: comparison.json frame 593).
+TEST(PlotMarks, TheStopTimeIsWrittenClearOfTheIncomingLine) {
+  SyntheticOptions stopping;
+  stopping.stopSecondRun = true;
+  const ViewSettings view = onePlot(1);
+  const FrameComposer composer(view, {1280, 720});
+  FrameState frame = syntheticFrame(7.0, 210, stopping);
+  // The stop at the time axis' right end, where the label cannot go on the right.
+  frame.plots[1].timeMax = frame.plots[1].series[1].stopTime * 1.005;
+  float crossX0 = INFINITY, crossX1 = -INFINITY, crossY0 = INFINITY, crossY1 = -INFINITY;
+  std::vector<ShapeVertex> glyphs;
+  for (const ShapeVertex& v : firstPanelVertices(composer.compose(frame))) {
+    if (!sameColour(v, palette::stopRed)) continue;
+    if (v.kind == 0) crossX0 = std::min(crossX0, v.x), crossX1 = std::max(crossX1, v.x), crossY0 = std::min(crossY0, v.y), crossY1 = std::max(crossY1, v.y);
+    if (v.kind == 3) glyphs.push_back(v);
+  }
+  ASSERT_LT(crossX0, crossX1);
+  ASSERT_FALSE(glyphs.empty()) << "the stop's time is not written";
+  // The line's last section ends at the cross's centre from the left: a point of it just left of the cross.
+  const float cx = 0.5f * (crossX0 + crossX1), cy = 0.5f * (crossY0 + crossY1), incoming = cx - (crossX1 - crossX0);
+  float x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+  for (const ShapeVertex& v : glyphs) x0 = std::min(x0, v.x), x1 = std::max(x1, v.x), y0 = std::min(y0, v.y), y1 = std::max(y1, v.y);
+  EXPECT_FALSE(x0 < incoming && x1 > incoming && y0 < cy && y1 > cy) << "the stop time lies on the line coming in";
+}
+
 // A marked time (a conjugate point) is written beside its mark: more glyphs with the mark than without.
 TEST(PlotMarks, MarkedTimesAreWritten) {
   FrameState frame = syntheticFrame(7.0, 210);
