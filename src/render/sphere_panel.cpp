@@ -719,9 +719,11 @@ void drawEllipses(const std::vector<SphereEllipse>& ellipses, const SphereCamera
   const V3 eye = camera.eye();
   const double eyeDistance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
   for (const SphereEllipse& e : ellipses) {
-    // Seen edge-on near the outline an ellipse is a meaningless dash: fade it out there.
+    // Seen edge-on near the outline an ellipse is a meaningless dash: fade it out there. The outline is where the
+    // sight line grazes the sphere, facing = 1 / eyeDistance in perspective (not 0): measured from there, so that
+    // no ellipse just behind the outline hangs past it (stiffness.json frame 300 at 4K had faint ones outside).
     const double facing = (e.centre.x * eye.x + e.centre.y * eye.y + e.centre.z * eye.z) / eyeDistance;
-    const float alpha = float(0.85 * std::clamp((facing - 0.2) / 0.25, 0.0, 1.0));
+    const float alpha = float(0.85 * std::clamp((facing - 1.0 / eyeDistance - 0.12) / 0.25, 0.0, 1.0));
     if (alpha <= 0) continue;
     const Rgba color{1, 1, 1, alpha};
     const Rgba halo = palette::withAlpha(palette::ink, 0.25f * alpha);

@@ -235,6 +235,24 @@ TEST_F(PixelProbe, NothingOnTheSphereHangsPastItsOutline) {
   EXPECT_GT(probedStart, 500);
   EXPECT_EQ(drawnStart, 0) << drawnStart << " of " << probedStart
                            << " pixels just outside the outline by the path's start are drawn on";
+
+  // A stiffness ellipse centred 2 deg in front of the limb (half axes 0.08): edge-on there, it is not drawn, so none
+  // of it hangs past the outline (faded from facing 0.2, which in perspective is behind the limb, it was).
+  // Where the path above starts (its probe found nothing drawn outside), on the same frame.
+  FrameState glyph = start;
+  auto decoration = std::make_shared<SphereDecoration>();
+  const double s = std::sin(polar), z = std::cos(polar), a = -20 * kDeg;
+  const V3 out{std::cos(a) * v.x + std::sin(a) * u.x, std::cos(a) * v.y + std::sin(a) * u.y, std::cos(a) * v.z + std::sin(a) * u.z};
+  const V3 side{-std::sin(a) * v.x + std::cos(a) * u.x, -std::sin(a) * v.y + std::cos(a) * u.y, -std::sin(a) * v.z + std::cos(a) * u.z};
+  const Vec3 centre{z * w.x + s * out.x, z * w.y + s * out.y, z * w.z + s * out.z};
+  const Vec3 along{0.08 * side.x, 0.08 * side.y, 0.08 * side.z};
+  const Vec3 across{0.08 * (-s * w.x + z * out.x), 0.08 * (-s * w.y + z * out.y), 0.08 * (-s * w.z + z * out.z)};
+  decoration->ellipses.push_back({centre, along, across});
+  glyph.sphereDecoration = decoration;
+  int probedGlyph = 0;
+  const int drawnGlyph = drawnOutside(large.render(glyph), view.project({centre.x, centre.y, centre.z}), probedGlyph);
+  EXPECT_GT(probedGlyph, 500);
+  EXPECT_EQ(drawnGlyph, 0) << drawnGlyph << " of " << probedGlyph << " pixels just outside the outline by an ellipse";
 }
 
 // Time on the sphere: the current state carries a direction mark, a dark chevron just past the ball on the side it
