@@ -98,8 +98,11 @@ SphereCover sphereCoverNear(const SphereCamera& camera, const V3& p, double reac
 // The far side's look: the colour at a fraction of its opacity, drawn flat over the sphere.
 constexpr float kGhostAlpha = 0.55f;
 Rgba ghost(Rgba c) { return palette::withAlpha(c, c.a * kGhostAlpha); }
-// Dashes and gaps of hidden paths, in frame units; their width at most this share of the path's in front.
-constexpr float kGhostDash = 5.0f, kGhostGap = 3.5f, kGhostWidthShare = 0.6f;
+// Dashes and gaps of hidden paths, in frame units.
+constexpr float kGhostDash = 5.0f, kGhostGap = 3.5f;
+// A hidden line's half width: its own, but never bolder than the line in front would be there (a small frame's floor
+// of a mark unit made hidden dashes bolder than the paths in front).
+float hiddenHalfWidth(float own, float inFront) { return std::min(own, 0.6f * inFront); }
 
 // Over a sequential colour map the far side's faint lines would vanish on its dark end (viridis' purple): there
 // they are drawn on a light halo, faint with them. The plain sphere and the diverging map (light in the middle, its
@@ -341,12 +344,11 @@ void drawPath(const SharedSpan<Vec3>& path, const SharedSamples& times, const Pa
     const P2 at = camera.project(p);
     const Rgba color = palette::withAlpha(look.color, look.color.a * alpha);
     const float halfWidth = widthScale * std::max(look.minHalfWidth, float(look.radius * camera.pixelsPerUnitAt(p)));
-    // Hidden dashes are never bolder than the path in front (a small frame's floor of a mark unit made them so).
-    const float hiddenHalfWidth = std::min(ghostHalfWidth, kGhostWidthShare * halfWidth);
+    const float dashHalfWidth = hiddenHalfWidth(ghostHalfWidth, halfWidth);
     if (behind) {
-      hiddenPoints.push_back({at, hiddenHalfWidth, ghost(color), {}});
+      hiddenPoints.push_back({at, dashHalfWidth, ghost(color), {}});
     } else if (!hiddenPoints.empty()) {  // out from behind: the dashes reach the limb
-      hiddenPoints.push_back({at, hiddenHalfWidth, ghost(color), {}});
+      hiddenPoints.push_back({at, dashHalfWidth, ghost(color), {}});
       flushHidden();
     }
     const bool last = i + 1 == path.size();
@@ -391,7 +393,7 @@ void drawFamily(const RunFrame& run, const PanelContext& context, const SphereCa
     const float halfWidth = std::max(context.unit, float(0.45 * kTubeRadius * camera.pixelsPerUnitAt(p)));
     if (placement.onSphere && surfaceBehind(camera, p))
       hiddenWavefront.push_back(
-          {camera.project(p), std::min(0.7f * markUnit(context.unit), kGhostWidthShare * halfWidth), ghost(waveInk), {}});
+          {camera.project(p), hiddenHalfWidth(0.7f * markUnit(context.unit), halfWidth), ghost(waveInk), {}});
     const P2 on = placement.onSphere ? withinOutline(camera, camera.project(p), halfWidth) : camera.project(p);
     wavefront.push_back({on, halfWidth, waveInk, placement.world(p)});
   }
@@ -466,7 +468,7 @@ BallPlace placeBall(const RunFrame& run, float unit, const SphereCamera& camera,
 
 // Balls whose places coincide on the screen (runs in the same state) are spread across their heading, side by side
 // in run order, as their paths are: each stays visible and none looks larger or ranked. The group's direction mark
-// is one chevron from the group's centre, drawn by its first moving member (a chevron per ball read as a double one).
+// is one arrowhead from the group's centre, drawn by its first moving member (one per ball read as a double mark).
 void spreadCoincidingBalls(const std::vector<RunFrame>& runs, std::vector<BallPlace>& balls) {
   std::vector<bool> done(balls.size(), false);
   for (std::size_t i = 0; i < balls.size(); ++i) {
@@ -495,36 +497,37 @@ void spreadCoincidingBalls(const std::vector<RunFrame>& runs, std::vector<BallPl
 // The current state of a run. In front: a shaded ball on a thin dark rim (a stopped run's on a red halo), hidden
 // per pixel where the sphere's outline passes in front of it. Behind the sphere: a hollow ring in its colour (a red
 // one around it when stopped), nothing inside, so it never reads as a spot on the front. The direction mark: a
-// chevron just past the ball pointing along the last section of the path (a moving run only; one for a group of
+// filled arrowhead just past the ball pointing along the last section of the path (a moving run only; one for a group of
 // coinciding balls, past the group's centre), dark on a light halo in front (it reads on a dark path or colour map),
-// faint alone behind. The chevron and the hidden rings are kept within the sphere's outline (a ball in front,
-// standing on the surface, may stand out past it at the limb). Returns the box of a chevron drawn in front, for
+// faint alone behind. The arrowhead and the hidden rings are kept within the sphere's outline (a ball in front,
+// standing on the surface, may stand out past it at the limb). Returns the box of an arrowhead drawn in front, for
 // labels to keep clear of.
 std::optional<Box> drawBall(const RunFrame& run, const BallPlace& ball, const PanelContext& context,
                             const SphereCamera& camera, const Placement& placement, ShapeBatch& back, ShapeBatch& front) {
-  std::optional<Box> chevron;
-  if (!ball.shown) return chevron;
+  std::optional<Box> arrowhead;
+  if (!ball.shown) return arrowhead;
   const float unit = context.unit;
   const ColorRGB& background = context.settings.background;
   const float radius = ball.radius;
   const P2 at = ball.at;
   const float mark = markUnit(unit);
-  // The chevron starts clear of the ball: measured from the path (markAt) it could fall under the ball, which is
-  // lifted off the surface and so shifted outwards on the screen near the limb.
-  auto drawChevron = [&] {
+  // The arrowhead starts clear of the ball: measured from the path (markAt) it could fall under the ball, which is
+  // lifted off the surface and so shifted outwards on the screen near the limb. A filled arrowhead (a ribbon
+  // tapering from its base to a point) reads as a direction at any angle, where two strokes pointing up and to the
+  // right read as the digit 7.
+  auto drawArrowhead = [&] {
     if (run.stopped || !ball.headingKnown || !ball.marksDirection) return;
     const P2 d = ball.heading, n{-d.y, d.x};
     // In mark units, but never much larger than the ball it belongs to (a small frame's floor made the arrowhead
     // twice the ball's size at 320x180).
-    const float mark = std::min(markUnit(unit), std::max(unit, 0.15f * radius));
-    const float halfWidth = (ball.behind ? 0.8f : 0.9f) * mark;
-    const float clear = radius + 3 * mark;
+    const float size = std::min(mark, std::max(unit, 0.15f * radius));
+    const float halfWidth = (ball.behind ? 0.8f : 0.9f) * size;
+    const float clear = radius + 3 * size;
     const float ox = ball.markAt.x - at.x, oy = ball.markAt.y - at.y, b = ox * d.x + oy * d.y;
     const float exit = -b + std::sqrt(std::max(b * b - (ox * ox + oy * oy - clear * clear), 0.0f));
     const float from = std::max(clear, exit);
-    P2 tip = plus(ball.markAt, d, from + 10 * mark);
     const P2 base = plus(ball.markAt, d, from);
-    P2 left = plus(base, n, 4.5f * mark), right = plus(base, n, -4.5f * mark);
+    P2 tip = plus(ball.markAt, d, from + 10 * size), left = plus(base, n, 4.5f * size), right = plus(base, n, -4.5f * size);
     if (placement.onSphere) {  // moved within the outline as one piece, so it keeps its shape
       P2 shift{0, 0};
       for (const P2& point : {tip, left, right}) {
@@ -533,23 +536,21 @@ std::optional<Box> drawBall(const RunFrame& run, const BallPlace& ball, const Pa
       }
       for (P2* point : {&tip, &left, &right}) *point = withinOutline(camera, plus(*point, shift), halfWidth);
     }
-    // A filled arrowhead (a ribbon tapering from the base's width to a point): it reads as a direction at any
-    // angle, where two strokes pointing up and to the right read as the digit 7.
     const P2 middle{0.5f * (left.x + right.x), 0.5f * (left.y + right.y)};
     const float baseHalf = 0.5f * std::hypot(left.x - right.x, left.y - right.y);
-    const auto arrowhead = [&](ShapeBatch& into, float grow, Rgba color) {
+    const auto draw = [&](ShapeBatch& into, float grow, Rgba color) {
       const P2 dir = unitDirection(middle, tip);
-      into.polyline({{plus(middle, dir, -grow), baseHalf + grow, color, {}}, {plus(tip, dir, grow), 0.35f * mark + grow, color, {}}});
+      into.polyline({{plus(middle, dir, -grow), baseHalf + grow, color, {}}, {plus(tip, dir, grow), 0.35f * size + grow, color, {}}});
     };
     if (ball.behind) {
-      arrowhead(back, 0, ghost(palette::ink));
+      draw(back, 0, ghost(palette::ink));
     } else {
       const Rgba halo{background.r, background.g, background.b, 0.75f};
-      arrowhead(front, 0.9f * mark, halo);
-      arrowhead(front, 0, palette::ink);
-      const float w = halfWidth + 0.9f * mark;
-      chevron = Box{std::min({tip.x, left.x, right.x}) - w, std::min({tip.y, left.y, right.y}) - w,
-                    std::max({tip.x, left.x, right.x}) + w, std::max({tip.y, left.y, right.y}) + w};
+      draw(front, 0.9f * size, halo);
+      draw(front, 0, palette::ink);
+      const float w = halfWidth + 0.9f * size;
+      arrowhead = Box{std::min({tip.x, left.x, right.x}) - w, std::min({tip.y, left.y, right.y}) - w,
+                      std::max({tip.x, left.x, right.x}) + w, std::max({tip.y, left.y, right.y}) + w};
     }
   };
   if (ball.behind) {
@@ -557,8 +558,8 @@ std::optional<Box> drawBall(const RunFrame& run, const BallPlace& ball, const Pa
     const P2 ring = placement.onSphere ? withinOutline(camera, at, outer) : at;
     ringBehind(context, ring, 0.8f * radius, 0.9f * mark, ghost(toRgba(run.color)), back);
     if (run.stopped) ringBehind(context, ring, 0.8f * radius + 2.5f * mark, 0.8f * mark, ghost(palette::stopRed), back);
-    drawChevron();
-    return chevron;
+    drawArrowhead();
+    return arrowhead;
   }
   Placement ballPlacement = placement;
   ballPlacement.lift = kBallRadius;
@@ -569,8 +570,8 @@ std::optional<Box> drawBall(const RunFrame& run, const BallPlace& ball, const Pa
   // A thin dark rim sets the ball off from its own path, which has its colour (small frames lost it in the tube).
   else front.disc(at, radius + unit, palette::withAlpha(palette::ink, 0.75f), false, 0, world, (radius + unit) / pixelsPerUnit);
   front.disc(at, radius, toRgba(run.color), true, 0.55f, world, radius / pixelsPerUnit);
-  drawChevron();  // over the ball: where the outline pushes it back, it is never hidden by its own ball
-  return chevron;
+  drawArrowhead();  // over the ball: where the outline pushes it back, it is never hidden by its own ball
+  return arrowhead;
 }
 
 // The start of a run's path: a short dark bar across its first section (faint where the sphere hides it), kept
@@ -1035,7 +1036,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   spreadCoincidingBalls(runs, balls);
   std::vector<PixelRect> ballBoxes;
   for (std::size_t k = 0; k < runs.size(); ++k) {
-    if (const auto chevron = drawBall(runs[k], balls[k], context, camera, placement, back, front)) placer.avoid(*chevron);
+    if (const auto arrowhead = drawBall(runs[k], balls[k], context, camera, placement, back, front)) placer.avoid(*arrowhead);
     if (!balls[k].shown) continue;
     const float r = balls[k].radius + 2.5f * context.unit;
     placer.avoidBall(balls[k].at, r);
