@@ -2,6 +2,7 @@
 // the size may be overridden; --frames A:B renders a shard, --resume skips frames already complete.
 
 #include <algorithm>
+#include <deque>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -27,7 +28,8 @@
 #include "output/sha256.hpp"
 #include "output/temporary_file.hpp"
 #include "output/video_sink.hpp"
-#include "render/renderer.hpp"
+#include "render/renderer_pool.hpp"
+#include "contracts/parallel_for.hpp"
 #include "scene/output_folder.hpp"
 #include "scene/scene_overrides.hpp"
 
@@ -41,6 +43,7 @@ struct RenderArguments {
   std::vector<std::string> overrides;  // --set KEY=VALUE
   std::string scene, out, frames, video, size, videoQuality;
   bool png = false, noPng = false, quiet = false, resume = false, replace = false, preview = false;
+  int threads = 0;  // --threads; 0: the cores this process may use
 };
 
 // What a render will do, after the scene's choices and the options are combined and checked.
@@ -51,6 +54,9 @@ struct RenderPlan {
   bool png = true;
   std::string video;
   bool quiet = false, resume = false;
+  // Threads: renderers drawing frames side by side, and PNG encoders. As many as the cores the process may use
+  // (at least two encoders: they overlap with the drawing even on one core), no more renderers than frames.
+  int renderers = 1, encoders = 2;
 };
 
 // The folder a video goes into ("." for a bare file name).
@@ -115,6 +121,12 @@ RenderPlan planRender(const RenderArguments& args) {
     problems.push_back(problem);
   }
   failOnProblems(args.scene, problems);
+  const int cores = args.threads > 0 ? args.threads : static_cast<int>(defaultThreadCount());
+  // A video encoder (x264) takes the cores itself: one renderer keeps up with it. PNG frames are encoded here,
+  // by as many encoders as renderers.
+  const int renderers = plan.video.empty() ? std::min(cores, limits::kMaxRenderers) : 1;
+  plan.renderers = std::clamp(static_cast<int>(plan.range.count()), 1, renderers);
+  plan.encoders = std::max(2, std::min(cores, limits::kMaxRenderers));
   return plan;
 }
 
@@ -142,10 +154,11 @@ bool sampleUpTo(FrameBuilder& builder, int k) {
 
 // Before anything is written or created: do the PNG frames still to write fit? The range's first frame is drawn
 // and encoded to measure one (the render loop draws it again: a few milliseconds).
-void checkSpaceForFrames(const RenderPlan& plan, Renderer& renderer, FrameBuilder& builder) {
+void checkSpaceForFrames(const RenderPlan& plan, RendererPool& renderers, FrameBuilder& builder) {
   if (!plan.png) return;  // x264's output size depends on the motion; a full disk shows up as ffmpeg's error
   const int first = plan.range.first;
-  const Image image = renderer.render(builder.frame(first));
+  renderers.submit(builder.frame(first));
+  const Image image = renderers.takeOldest();
   FrameSpaceNeed need{plan.folder, 0, first, PngEncoder(plan.scene.output.pngCompression).encode(image).size(),
                       image.width, image.height};
   for (int frame = first; frame < plan.range.end; frame += plan.range.step)
@@ -153,13 +166,25 @@ void checkSpaceForFrames(const RenderPlan& plan, Renderer& renderer, FrameBuilde
   refuseIfFramesCannotFit(need);
 }
 
-// The frames of the plan's range into the sinks; returns false if interrupted. Counts what it drew and what
-// --resume found complete.
+// The frames of the plan's range into the sinks, in order; returns false if interrupted (the frames being drawn
+// are still handed to the sinks). Counts what it drew and what --resume found complete. The builder runs on this
+// thread, the renderers on theirs: frame k + 1 is built while frame k is drawn.
 bool renderFrames(const RenderPlan& plan, FrameManifest* pngManifest,
-                  const std::vector<FrameSink*>& sinks, Renderer& renderer, FrameBuilder& builder,
+                  const std::vector<FrameSink*>& sinks, RendererPool& renderers, FrameBuilder& builder,
                   ImageRecycler& buffers, int& drawn, int& skipped) {
   Progress progress(plan.range.count(), plan.quiet, "render", "frame");
   long done = 0;
+  std::deque<int> inFlight;  // the frames the renderers hold, oldest first
+  auto handOver = [&] {      // the oldest frame drawn, to every sink
+    Image image = renderers.takeOldest();
+    const int k = inFlight.front();
+    inFlight.pop_front();
+    for (size_t i = 0; i + 1 < sinks.size(); ++i) sinks[i]->consume(k, image);
+    sinks.back()->consume(k, std::move(image));
+    ++drawn;
+    progress.update(++done);
+  };
+  bool finished = true;
   for (int k = plan.range.first; k < plan.range.end; k += plan.range.step) {
     const bool complete = plan.resume && pngManifest && pngManifest->isFrameComplete(k);
     if (complete) {
@@ -168,15 +193,16 @@ bool renderFrames(const RenderPlan& plan, FrameManifest* pngManifest,
       continue;
     }
     // Frames before k are sampled (not rendered) for the path and plot history.
-    if (!sampleUpTo(builder, k)) return false;
-    Image image = buffers.take();
-    renderer.render(builder.frame(k), image);
-    for (size_t i = 0; i + 1 < sinks.size(); ++i) sinks[i]->consume(k, image);
-    sinks.back()->consume(k, std::move(image));
-    ++drawn;
-    progress.update(++done);
+    if (!sampleUpTo(builder, k)) {
+      finished = false;
+      break;
+    }
+    if (renderers.inFlight() == renderers.capacity()) handOver();
+    inFlight.push_back(k);
+    renderers.submit(builder.frame(k), buffers.take());
   }
-  return true;
+  while (!inFlight.empty()) handOver();
+  return finished;
 }
 
 // Temporaries a killed render left in the output folders (its frames in flight, its video) go first.
@@ -208,7 +234,7 @@ void runRender(const RenderArguments& args) {
   const CommandSummary summary("render", args.quiet);
   const RenderPlan plan = planRender(args);
   const Scene& scene = plan.scene;
-  Renderer renderer(scene.view, scene.output.size, environment().shaderFolder);
+  RendererPool renderers(scene.view, scene.output.size, environment().shaderFolder, plan.renderers);
   const nlohmann::json info = manifestInfo(plan);
   sweepOutputFolders(plan);  // first: a killed render's leftovers must not count against the free space
   std::vector<std::string> notes;
@@ -227,7 +253,7 @@ void runRender(const RenderArguments& args) {
   } catch (const RunCancelled&) {
     stopIfInterrupted("nothing was written yet");
   }
-  checkSpaceForFrames(plan, renderer, builder);
+  checkSpaceForFrames(plan, renderers, builder);
 
   ImageRecycler buffers;  // before the sinks: they give buffers back until they are finished or destroyed
   std::unique_ptr<FrameManifest> pngManifest, videoManifest;
@@ -241,7 +267,7 @@ void runRender(const RenderArguments& args) {
                                                             FrameManifest::Existing::replace,
                                                             FrameManifest::Claim::join, nullptr,
                                                             environment().lockWaitSeconds);
-    videoManifest->addRenderer(renderer.glRenderer(), renderer.glVersion());
+    videoManifest->addRenderer(renderers.glRenderer(), renderers.glVersion());
     VideoSettings settings{plan.video, *videoFormatOfPath(plan.video), scene.output.videoQuality,
                                    scene.output.size.width, scene.output.size.height, double(scene.output.fps)};
     settings.cancelled = interruptRequested;
@@ -266,8 +292,8 @@ void runRender(const RenderArguments& args) {
                 << earlier->value("scene", std::string("unknown scene")) << ", " << pngManifest->supersededFrames()
                 << " frames removed)\n";
     }
-    pngManifest->addRenderer(renderer.glRenderer(), renderer.glVersion());
-    pngSink = std::make_unique<PngSequenceSink>(plan.folder, *pngManifest, 2, scene.output.pngCompression);
+    pngManifest->addRenderer(renderers.glRenderer(), renderers.glVersion());
+    pngSink = std::make_unique<PngSequenceSink>(plan.folder, *pngManifest, plan.encoders, scene.output.pngCompression);
     sinks.push_back(pngSink.get());
   }
   if (videoSink) sinks.push_back(videoSink.get());
@@ -276,7 +302,7 @@ void runRender(const RenderArguments& args) {
   int drawn = 0, skipped = 0;
   bool finished = false;
   try {
-    finished = renderFrames(plan, pngManifest.get(), sinks, renderer, builder, buffers, drawn, skipped);
+    finished = renderFrames(plan, pngManifest.get(), sinks, renderers, builder, buffers, drawn, skipped);
   } catch (const RunCancelled&) {  // a signal in the middle of a long frame: handled like one between frames
   } catch (const EncodingCancelled&) {  // a signal while the encoder was not reading
   }
@@ -325,6 +351,10 @@ void addRenderCommand(CLI::App& app) {
   command->add_flag("--preview", args->preview,
                     "a quick look: a quarter of the size, every second frame (unless --frames gives a step), into "
                     "output.folder-preview");
+  command->add_option("--threads", args->threads,
+                      "threads drawing and encoding frames side by side (default: the cores this process may use, "
+                      "up to " + std::to_string(limits::kMaxRenderers) + " renderers); the files do not depend on it")
+      ->check(CLI::Range(1, 1024));
   command->add_flag("--quiet", args->quiet, "errors only: no progress, run reports or summary line");
   command->add_flag("--resume", args->resume, "skip frames whose file and manifest entry are complete (PNG only)");
   command->add_flag("--replace", args->replace,

@@ -4,13 +4,25 @@
 #include <cerrno>
 #include <system_error>
 
+#ifdef __linux__
+#include <sched.h>
+#endif
+
 namespace sl {
 
 namespace {
 std::atomic<long> startsLeft{-1};  // -1: no failure injected
 }
 
-std::size_t defaultThreadCount() { return std::max(1u, std::thread::hardware_concurrency()); }
+// The cores this process may run on: a cluster's scheduler (Slurm's --cpus-per-task) or taskset pins a process to
+// some of the machine's cores, which std::thread::hardware_concurrency() does not see.
+std::size_t defaultThreadCount() {
+#ifdef __linux__
+  cpu_set_t cores;
+  if (::sched_getaffinity(0, sizeof cores, &cores) == 0) return std::max(1, CPU_COUNT(&cores));
+#endif
+  return std::max(1u, std::thread::hardware_concurrency());
+}
 
 std::thread startThread(std::function<void()> work) {
   long left = startsLeft.load();

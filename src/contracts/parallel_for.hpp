@@ -23,7 +23,7 @@
 
 namespace sl {
 
-// The number of threads meant by "0: as many as the machine has" (at least 1).
+// The number of threads meant by "0: as many as the machine has" (at least 1): the cores this process may use.
 std::size_t defaultThreadCount();
 
 // Starts a thread running `work`, or throws what std::thread throws. Tests make it fail through

@@ -185,6 +185,25 @@ TEST(RenderCli, ShardsKOfNCoverTheAnimationOnceAndEqualAWholeRender) {
   }
 }
 
+// The frames drawn side by side (--threads: renderers on their own threads, frames handed to the encoders in order)
+// are the frames one renderer draws, byte for byte, manifest included.
+TEST(RenderCli, TheNumberOfThreadsDrawingChangesNoByte) {
+  TempFolder folder;
+  const std::string scene = shippedScene("default.json");
+  for (const char* threads : {"1", "2", "3"}) {
+    const ProcessResult render = runLinkage({"render", scene, "--size", "160x90", "--frames", "100:160", "--threads",
+                                             threads, "--out", std::string("t") + threads, "--quiet"},
+                                            folder.path());
+    ASSERT_EQ(render.code, 0) << threads << ": " << render.err;
+  }
+  const auto one = folderContents(folder.path() / "t1");
+  EXPECT_EQ(one.size(), 60u + 3u);
+  EXPECT_TRUE(one == folderContents(folder.path() / "t2"));
+  EXPECT_TRUE(one == folderContents(folder.path() / "t3"));
+  const ProcessResult refused = runLinkage({"render", scene, "--threads", "0", "--out", "x"}, folder.path());
+  EXPECT_EQ(refused.code, 2) << refused.err;
+}
+
 // Starts `linkage arguments...` in folder, sends SIGTERM once `started` says so (polled for at most 15 s), and
 // waits for it to end.
 ProcessResult renderUntilTerminated(const std::vector<std::string>& arguments, const fs::path& folder,
