@@ -235,11 +235,9 @@ std::string fittedWrappedForm(const FontAtlas& font, const std::vector<std::stri
 
 std::string timeWords(double t) {
   std::string text = typesetNumber("%.2f", t);
-  while (text.find('.') != std::string::npos && (text.back() == '0' || text.back() == '.')) {
-    const bool dot = text.back() == '.';
-    text.pop_back();
-    if (dot) break;
-  }
+  // Hundredths without trailing zeros: 3.50 -> 3.5, 3.00 -> 3 (typesetNumber always writes the two decimals).
+  while (text.back() == '0') text.pop_back();
+  if (text.back() == '.') text.pop_back();
   return text == "\u22120" ? "0" : text;
 }
 

@@ -197,7 +197,7 @@ bool JacobiSystem::settleBetweenSteps(State& y) {
   return true;
 }
 
-void JacobiSystem::gramAt(const State& y, Eigen::MatrixXd& gram, Eigen::MatrixXd& rate) const {
+void JacobiSystem::gramAt(const State& y, Eigen::MatrixXd& gram, Eigen::MatrixXd* rate) const {
   const Eigen::Index h = hinges_;
   const std::size_t block = static_cast<std::size_t>(4 * h);
   const ConstHinges v(y.data() + 2 * h, 2, h);
@@ -210,19 +210,20 @@ void JacobiSystem::gramAt(const State& y, Eigen::MatrixXd& gram, Eigen::MatrixXd
     rates.push_back(ConstHinges(y.data() + offset + 2 * h, 2, h));
   }
   gram.resize(fields_, fields_);
-  rate.resize(fields_, fields_);
+  if (rate) rate->resize(fields_, fields_);
   for (int i = 0; i < fields_; ++i)
     for (int j = 0; j < fields_; ++j) {
       const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
       gram(i, j) = mass_.innerProduct(fields[ui], fields[uj]);
       // <J_i, J_j>' = <dv_i, J_j> + <J_i, dv_j>: dv's normal part is M-orthogonal to the tangent J's.
-      rate(i, j) = mass_.innerProduct(rates[ui], fields[uj]) + mass_.innerProduct(fields[ui], rates[uj]);
+      if (rate)
+        (*rate)(i, j) = mass_.innerProduct(rates[ui], fields[uj]) + mass_.innerProduct(fields[ui], rates[uj]);
     }
 }
 
 JacobiState JacobiSystem::jacobiAt(const State& y) const {
   Eigen::MatrixXd gram, rate;
-  gramAt(y, gram, rate);
+  gramAt(y, gram, &rate);
   JacobiState out;
   out.gramDeterminant = determinant(gram);
   out.gramRate = determinantRate(gram, rate);
@@ -232,8 +233,8 @@ JacobiState JacobiSystem::jacobiAt(const State& y) const {
 }
 
 double JacobiSystem::smallestGramEigenvalue(const State& y) const {
-  Eigen::MatrixXd gram, rate;
-  gramAt(y, gram, rate);
+  Eigen::MatrixXd gram;
+  gramAt(y, gram);
   return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(gram, Eigen::EigenvaluesOnly).eigenvalues()(0);
 }
 

@@ -66,8 +66,8 @@ class JacobiSystem : public GeodesicSystem {
 
  private:
   void inverseMassTimes(const Eigen::Matrix2Xd& f, Eigen::Matrix2Xd& out) const;
-  // G = (<J_i, J_j>) of the fields' parts across the motion, and G' = (<J_i, J_j>)'.
-  void gramAt(const State& y, Eigen::MatrixXd& gram, Eigen::MatrixXd& rate) const;
+  // G = (<J_i, J_j>) of the fields' parts across the motion, and G' = (<J_i, J_j>)' where `rate` is given.
+  void gramAt(const State& y, Eigen::MatrixXd& gram, Eigen::MatrixXd* rate = nullptr) const;
 
   AmbientSystem motion_;  // the geodesic: the first 4(n-1) numbers of the state
   Chain chain_;
