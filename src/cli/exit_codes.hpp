@@ -25,6 +25,18 @@ class CommandExit : public std::runtime_error {
   int code_;
 };
 
+// What ends a command with `error`: its exit status and the line printed (empty: nothing). A CommandExit says both;
+// std::invalid_argument is bad input (2), any other exception a failure of the work (3).
+struct ExitReport {
+  int code = kExitFailure;
+  std::string message;
+};
+inline ExitReport exitReportOf(const std::exception& error) {
+  if (const auto* exit = dynamic_cast<const CommandExit*>(&error)) return {exit->code(), exit->what()};
+  if (dynamic_cast<const std::invalid_argument*>(&error)) return {kExitBadInput, std::string("linkage: ") + error.what()};
+  return {kExitFailure, std::string("linkage: ") + error.what()};
+}
+
 // The footer of `linkage --help`.
 inline const char* exitCodeHelp() {
   return "Exit status: 0 ok; 1 diff found differences; 2 bad scene, options or input files (nothing written);\n"

@@ -112,15 +112,10 @@ int runCommand(int argc, char** argv) {
     app.exit(error);  // prints the message
     std::cerr << sl::typoHints(app, argc, argv);
     return sl::kExitBadInput;
-  } catch (const sl::CommandExit& exit) {
-    if (std::string(exit.what()).size() > 0) std::cerr << exit.what() << '\n';
-    return exit.code();
-  } catch (const std::invalid_argument& error) {
-    std::cerr << "linkage: " << error.what() << '\n';
-    return sl::kExitBadInput;
   } catch (const std::exception& error) {
-    std::cerr << "linkage: " << error.what() << '\n';
-    return sl::kExitFailure;
+    const sl::ExitReport report = sl::exitReportOf(error);
+    if (!report.message.empty()) std::cerr << report.message << '\n';
+    return report.code;
   }
   return sl::kExitOk;
 }

@@ -2,8 +2,12 @@
 // the size may be overridden; --frames A:B renders a shard, --resume skips frames already complete.
 
 #include <algorithm>
+#include <csignal>
+#include <cstdlib>
 #include <deque>
 #include <filesystem>
+#include <functional>
+#include <system_error>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -12,6 +16,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/environment.hpp"
+#include "cli/forked_workers.hpp"
 #include "cli/disk_space.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/frame_range.hpp"
@@ -31,6 +36,7 @@
 #include "render/renderer_pool.hpp"
 #include "contracts/parallel_for.hpp"
 #include "scene/output_folder.hpp"
+#include "scene/scene_cost.hpp"
 #include "scene/scene_overrides.hpp"
 
 namespace sl {
@@ -54,10 +60,16 @@ struct RenderPlan {
   bool png = true;
   std::string video;
   bool quiet = false, resume = false;
-  // Threads: renderers drawing frames side by side, and PNG encoders. As many as the cores the process may use
-  // (at least two encoders: they overlap with the drawing even on one core), no more renderers than frames.
-  int renderers = 1, encoders = 2;
+  // Renderers drawing frames side by side, and PNG encoders: as many as the cores the process may use (at least
+  // two encoders: they overlap with the drawing even on one core), no more renderers than frames. `processes` > 1:
+  // that many processes draw, each with `renderers` and `encoders` of its own.
+  int renderers = 1, encoders = 2, processes = 1;
 };
+
+// Processes of their own for the renderers where each may repeat the runs' integration (every process samples
+// every frame up to its own) at no more than this many work units (scene_cost.hpp) per frame: a few hundredths of
+// drawing a frame. Beyond, the renderers share this process's integration as threads.
+constexpr double kMaxRepeatedWorkPerFrame = 1e4;
 
 // The folder a video goes into ("." for a bare file name).
 std::string videoFolder(const std::string& video) {
@@ -127,6 +139,15 @@ RenderPlan planRender(const RenderArguments& args) {
   const int renderers = plan.video.empty() ? std::min(cores, limits::kMaxRenderers) : 1;
   plan.renderers = std::clamp(static_cast<int>(plan.range.count()), 1, renderers);
   plan.encoders = std::max(2, std::min(cores, limits::kMaxRenderers));
+  // Renderers on threads of one process take turns at llvmpipe's shading (its lock is the process's): in processes
+  // of their own they do not (docs/rendering.md, "Frames drawn by several processes"). PNG frames only: a video
+  // takes its frames in order from one process.
+  if (plan.renderers > 1 && plan.video.empty() && plan.range.count() >= 2 * plan.renderers &&
+      sceneWork(scene) / scene.frameCount() <= kMaxRepeatedWorkPerFrame) {
+    plan.processes = plan.renderers;
+    plan.renderers = 1;
+    plan.encoders = std::max(1, plan.encoders / plan.processes);
+  }
   return plan;
 }
 
@@ -166,14 +187,12 @@ void checkSpaceForFrames(const RenderPlan& plan, RendererPool& renderers, FrameB
   refuseIfFramesCannotFit(need);
 }
 
-// The frames of the plan's range into the sinks, in order; returns false if interrupted (the frames being drawn
-// are still handed to the sinks). Counts what it drew and what --resume found complete. The builder runs on this
-// thread, the renderers on theirs: frame k + 1 is built while frame k is drawn.
-bool renderFrames(const RenderPlan& plan, FrameManifest* pngManifest,
+// The frames of `range` into the sinks, in order; returns false if interrupted (the frames being drawn are still
+// handed to the sinks). Tells `onFrame` of every frame drawn (true) or found complete by --resume (false). The
+// builder runs on this thread, the renderers on theirs: frame k + 1 is built while frame k is drawn.
+bool renderFrames(const RenderPlan& plan, const FrameRange& range, FrameManifest* pngManifest,
                   const std::vector<FrameSink*>& sinks, RendererPool& renderers, FrameBuilder& builder,
-                  ImageRecycler& buffers, int& drawn, int& skipped) {
-  Progress progress(plan.range.count(), plan.quiet, "render", "frame");
-  long done = 0;
+                  ImageRecycler& buffers, const std::function<void(bool drawn)>& onFrame) {
   std::deque<int> inFlight;  // the frames the renderers hold, oldest first
   auto handOver = [&] {      // the oldest frame drawn, to every sink
     Image image = renderers.takeOldest();
@@ -181,15 +200,12 @@ bool renderFrames(const RenderPlan& plan, FrameManifest* pngManifest,
     inFlight.pop_front();
     for (size_t i = 0; i + 1 < sinks.size(); ++i) sinks[i]->consume(k, image);
     sinks.back()->consume(k, std::move(image));
-    ++drawn;
-    progress.update(++done);
+    onFrame(true);
   };
   bool finished = true;
-  for (int k = plan.range.first; k < plan.range.end; k += plan.range.step) {
-    const bool complete = plan.resume && pngManifest && pngManifest->isFrameComplete(k);
-    if (complete) {
-      ++skipped;
-      progress.update(++done);
+  for (int k = range.first; k < range.end; k += range.step) {
+    if (plan.resume && pngManifest && pngManifest->isFrameComplete(k)) {
+      onFrame(false);
       continue;
     }
     // Frames before k are sampled (not rendered) for the path and plot history.
@@ -229,30 +245,41 @@ std::string renderSummary(const RenderPlan& plan, int drawn, int skipped) {
   return what;
 }
 
-void runRender(const RenderArguments& args) {
-  installInterruptHandlers();  // first: a signal during planning still ends the render cleanly
-  const CommandSummary summary("render", args.quiet);
-  const RenderPlan plan = planRender(args);
+// What a render did, for its summary line.
+struct RenderCounts {
+  int drawn = 0, skipped = 0;
+  std::string outcomes;  // runOutcomes up to the range's last frame
+};
+
+double lastFrameTime(const RenderPlan& plan) {
+  return plan.scene.frameTime(plan.range.first + (plan.range.count() - 1) * plan.range.step);
+}
+
+// The PNG folder's manifest: a whole render takes the folder over (what it held goes first), shards and --resume
+// join the render there.
+std::unique_ptr<FrameManifest> openFrameManifest(const RenderPlan& plan, const nlohmann::json& info, bool whole) {
+  if (!whole) refuseJoiningAnotherRender(plan.folder, info);  // naming what differs, before anything is written
+  std::unique_ptr<FrameManifest> manifest;
+  try {
+    manifest = std::make_unique<FrameManifest>(plan.folder, info, "manifest.json", FrameManifest::Existing::merge,
+                                               whole ? FrameManifest::Claim::supersede : FrameManifest::Claim::join,
+                                               interruptRequested, environment().lockWaitSeconds);
+  } catch (const LockWaitCancelled&) {  // a signal while another render held the folder
+    stopIfInterrupted("nothing was written yet");
+    throw;
+  }
+  if (const auto earlier = manifest->supersededInfo(); earlier && !plan.quiet) {
+    std::cerr << "replacing the earlier render in " << plan.folder << " ("
+              << earlier->value("scene", std::string("unknown scene")) << ", " << manifest->supersededFrames()
+              << " frames removed)\n";
+  }
+  return manifest;
+}
+
+// Every frame drawn in this process, by plan.renderers renderers on threads.
+RenderCounts renderHere(const RenderPlan& plan, const nlohmann::json& info, bool whole, FrameBuilder& builder) {
   const Scene& scene = plan.scene;
   RendererPool renderers(scene.view, scene.output.size, environment().shaderFolder, plan.renderers);
-  const nlohmann::json info = manifestInfo(plan);
-  sweepOutputFolders(plan);  // first: a killed render's leftovers must not count against the free space
-  std::vector<std::string> notes;
-  const std::vector<InitialState> starts = runStarts(scene, &notes);
-  if (!args.quiet)
-    for (const std::string& note : notes) std::cerr << "linkage render: note: " << note << "\n";
-  std::optional<FrameBuilder> built;
-  try {
-    built.emplace(scene, starts, startRuns(scene, starts), startFamilies(scene, starts), interruptRequested);
-  } catch (const RunCancelled&) {
-    stopIfInterrupted("nothing was written yet");
-  }
-  FrameBuilder& builder = *built;
-  try {
-    if (!sampleUpTo(builder, plan.range.first)) stopIfInterrupted("nothing was written yet");
-  } catch (const RunCancelled&) {
-    stopIfInterrupted("nothing was written yet");
-  }
   checkSpaceForFrames(plan, renderers, builder);
 
   ImageRecycler buffers;  // before the sinks: they give buffers back until they are finished or destroyed
@@ -263,35 +290,18 @@ void runRender(const RenderArguments& args) {
   // The encoder starts first: if it cannot, nothing of an earlier render has been replaced yet.
   if (!plan.video.empty()) {
     videoManifest = std::make_unique<FrameManifest>(videoFolder(plan.video), info,
-                                                            fs::path(plan.video).filename().string() + ".manifest.json",
-                                                            FrameManifest::Existing::replace,
-                                                            FrameManifest::Claim::join, nullptr,
-                                                            environment().lockWaitSeconds);
+                                                    fs::path(plan.video).filename().string() + ".manifest.json",
+                                                    FrameManifest::Existing::replace, FrameManifest::Claim::join,
+                                                    nullptr, environment().lockWaitSeconds);
     videoManifest->addRenderer(renderers.glRenderer(), renderers.glVersion());
     VideoSettings settings{plan.video, *videoFormatOfPath(plan.video), scene.output.videoQuality,
-                                   scene.output.size.width, scene.output.size.height, double(scene.output.fps)};
+                           scene.output.size.width, scene.output.size.height, double(scene.output.fps)};
     settings.cancelled = interruptRequested;
     settings.maxStallSeconds = environment().encoderWaitSeconds;
     videoSink = std::make_unique<VideoSink>(settings, *videoManifest);
   }
   if (plan.png) {
-    // A whole render replaces what the folder held (the edit-render loop); shards and --resume only join.
-    const bool whole = (args.frames.empty() && !plan.resume) || args.replace;
-    if (!whole) refuseJoiningAnotherRender(plan.folder, info);  // naming what differs, before anything is written
-    try {
-      pngManifest = std::make_unique<FrameManifest>(
-          plan.folder, info, "manifest.json", FrameManifest::Existing::merge,
-          whole ? FrameManifest::Claim::supersede : FrameManifest::Claim::join, interruptRequested,
-          environment().lockWaitSeconds);
-    } catch (const LockWaitCancelled&) {  // a signal while another render held the folder
-      stopIfInterrupted("nothing was written yet");
-      throw;
-    }
-    if (const auto earlier = pngManifest->supersededInfo(); earlier && !plan.quiet) {
-      std::cerr << "replacing the earlier render in " << plan.folder << " ("
-                << earlier->value("scene", std::string("unknown scene")) << ", " << pngManifest->supersededFrames()
-                << " frames removed)\n";
-    }
+    pngManifest = openFrameManifest(plan, info, whole);
     pngManifest->addRenderer(renderers.glRenderer(), renderers.glVersion());
     pngSink = std::make_unique<PngSequenceSink>(plan.folder, *pngManifest, plan.encoders, scene.output.pngCompression);
     sinks.push_back(pngSink.get());
@@ -299,10 +309,14 @@ void runRender(const RenderArguments& args) {
   if (videoSink) sinks.push_back(videoSink.get());
   if (!sinks.empty()) sinks.back()->recycleInto(buffers);  // the last sink gets each frame's own buffer
 
-  int drawn = 0, skipped = 0;
+  RenderCounts counts;
+  Progress progress(plan.range.count(), plan.quiet, "render", "frame");
   bool finished = false;
   try {
-    finished = renderFrames(plan, pngManifest.get(), sinks, renderers, builder, buffers, drawn, skipped);
+    finished = renderFrames(plan, plan.range, pngManifest.get(), sinks, renderers, builder, buffers, [&](bool drawn) {
+      ++(drawn ? counts.drawn : counts.skipped);
+      progress.update(counts.drawn + counts.skipped);
+    });
   } catch (const RunCancelled&) {  // a signal in the middle of a long frame: handled like one between frames
   } catch (const EncodingCancelled&) {  // a signal while the encoder was not reading
   }
@@ -320,11 +334,160 @@ void runRender(const RenderArguments& args) {
                           : "the unfinished video was discarded (an earlier video of that name is untouched); rerun to "
                             "encode it");
   }
+  counts.outcomes = runOutcomes(scene, builder.runs(), lastFrameTime(plan));
+  return counts;
+}
+
+// The messages of a process drawing frames to the render (ForkedWorkers): ready to write, a frame drawn or found
+// complete, what it knows of the runs at its end, an error.
+enum WorkerNews : char { kReady = 'r', kDrawn = 'd', kSkipped = 's', kRunsKnown = 'k', kFailed = 'e' };
+
+// Worker `worker` of plan.processes: every plan.processes-th frame of the range from its own offset, with one
+// renderer rasterising on its own thread and PNG encoders; worker 0 first checks that the whole range fits on the
+// disk. Its exit status is what it returns; its errors go to the parent as messages (kFailed: "code message").
+int drawFramesInWorker(const RenderPlan& plan, const nlohmann::json& info, FrameBuilder& builder, int worker,
+                       const WorkerChannel& channel) {
+  try {
+    ::setenv("LP_NUM_THREADS", "0", /*overwrite=*/0);  // the other workers use the other cores
+    const FrameRange& range = plan.range;
+    const FrameRange mine{range.first + worker * range.step, range.end, range.step * plan.processes};
+    RendererPool renderers(plan.scene.view, plan.scene.output.size, environment().shaderFolder, 1);
+    if (!sampleUpTo(builder, std::min(mine.first, range.end))) return kExitInterrupted;
+    if (worker == 0) checkSpaceForFrames(plan, renderers, builder);
+    channel.send(kReady);
+    if (!channel.waitForGo()) return kExitOk;  // the render was refused: nothing to write
+    FrameManifest manifest(plan.folder, info, "manifest.json", FrameManifest::Existing::merge,
+                           FrameManifest::Claim::join, interruptRequested, environment().lockWaitSeconds);
+    manifest.addRenderer(renderers.glRenderer(), renderers.glVersion());
+    ImageRecycler buffers;
+    PngSequenceSink sink(plan.folder, manifest, plan.encoders, plan.scene.output.pngCompression);
+    sink.recycleInto(buffers);
+    bool finished = false;
+    try {
+      finished = renderFrames(plan, mine, &manifest, {&sink}, renderers, builder, buffers,
+                              [&](bool drawn) { channel.send(drawn ? kDrawn : kSkipped); });
+    } catch (const RunCancelled&) {
+    }
+    sink.finish();
+    channel.send(kRunsKnown, std::to_string(builder.lastSampledFrame()) + "\n" +
+                                 runOutcomes(plan.scene, builder.runs(), lastFrameTime(plan)) + "\n" +
+                                 stopReports(plan.scene, builder.runs()));
+    return finished ? kExitOk : kExitInterrupted;
+  } catch (const RunCancelled&) {
+    return kExitInterrupted;
+  } catch (const LockWaitCancelled&) {
+    return kExitInterrupted;
+  } catch (const std::exception& error) {
+    const ExitReport report = exitReportOf(error);
+    channel.send(kFailed, std::to_string(report.code) + " " + report.message);
+    return report.code;
+  }
+}
+
+ExitReport failureOf(const std::string& text) {
+  const std::size_t space = text.find(' ');
+  return {std::atoi(text.substr(0, space).c_str()), space == std::string::npos ? "" : text.substr(space + 1)};
+}
+
+// Every frame drawn by plan.processes processes forked from this one (each with the builder as it is now, so the
+// runs are not started again), this one collecting their news. PNG frames only. Nothing if the processes cannot be
+// started (a process limit): nothing is written then.
+std::optional<RenderCounts> renderInProcesses(const RenderPlan& plan, const nlohmann::json& info, bool whole,
+                                              FrameBuilder& builder) {
+  std::optional<ForkedWorkers> started;
+  try {
+    started.emplace(plan.processes, [&](int worker, const WorkerChannel& channel) {
+      return drawFramesInWorker(plan, info, builder, worker, channel);
+    });
+  } catch (const std::system_error&) {
+    return std::nullopt;
+  }
+  ForkedWorkers& workers = *started;
+  std::optional<ExitReport> failure;
+  int ready = 0;
+  while (ready < workers.count() && !failure) {
+    const auto news = workers.next(interruptRequested);
+    if (!news) break;
+    if (news->kind == kReady) ++ready;
+    if (news->kind == kFailed) failure = failureOf(news->text);
+  }
+  if (failure) throw CommandExit(failure->code, failure->message);  // the others are stopped, nothing was written
+  stopIfInterrupted("nothing was written yet");
+  if (ready < workers.count()) throw CommandExit(kExitFailure, "linkage: a process drawing frames ended at its start");
+
+  const std::unique_ptr<FrameManifest> manifest = openFrameManifest(plan, info, whole);
+  workers.go();
+  RenderCounts counts;
+  Progress progress(plan.range.count(), plan.quiet, "render", "frame");
+  int furthest = -1;
+  std::string reports;
+  while (const auto news = workers.next(interruptRequested)) {
+    if (news->kind == kDrawn || news->kind == kSkipped) {
+      ++(news->kind == kDrawn ? counts.drawn : counts.skipped);
+      progress.update(counts.drawn + counts.skipped);
+    } else if (news->kind == kRunsKnown) {
+      // The worker that sampled furthest knows the runs up to the range's end (or as far as any got).
+      const std::size_t line = news->text.find('\n'), second = news->text.find('\n', line + 1);
+      const int sampled = std::atoi(news->text.substr(0, line).c_str());
+      if (sampled > furthest) {
+        furthest = sampled;
+        counts.outcomes = news->text.substr(line + 1, second - line - 1);
+        reports = news->text.substr(second + 1);
+      }
+    } else if (news->kind == kFailed && !failure) {
+      failure = failureOf(news->text);
+      workers.signalAll(SIGTERM);  // the others stop after their frames in flight: the render has failed
+    }
+  }
+  const std::vector<int> statuses = workers.exitStatuses();
+  if (!plan.quiet) std::cerr << reports;
+  if (failure) throw CommandExit(failure->code, failure->message);
+  const char* const toFinish = "frames written so far are complete; rerun the same command with --resume to finish";
+  for (int status : statuses) {  // a signal after every frame was written ends the render as done, as in renderHere
+    if (status == kExitInterrupted) {
+      stopIfInterrupted(toFinish);
+      throw CommandExit(kExitInterrupted, std::string("linkage: a process drawing frames was stopped; ") + toFinish);
+    }
+    if (status != kExitOk)
+      throw CommandExit(kExitFailure, "linkage: a process drawing frames ended with status " + std::to_string(status) +
+                                          "; frames written so far are complete; rerun with --resume to finish");
+  }
+  return counts;
+}
+
+void runRender(const RenderArguments& args) {
+  installInterruptHandlers();  // first: a signal during planning still ends the render cleanly
+  const CommandSummary summary("render", args.quiet);
+  const RenderPlan plan = planRender(args);
+  const Scene& scene = plan.scene;
+  const nlohmann::json info = manifestInfo(plan);
+  sweepOutputFolders(plan);  // first: a killed render's leftovers must not count against the free space
+  std::vector<std::string> notes;
+  const std::vector<InitialState> starts = runStarts(scene, &notes);
+  if (!args.quiet)
+    for (const std::string& note : notes) std::cerr << "linkage render: note: " << note << "\n";
+  std::optional<FrameBuilder> built;
+  try {
+    built.emplace(scene, starts, startRuns(scene, starts), startFamilies(scene, starts), interruptRequested);
+    if (!sampleUpTo(*built, plan.range.first)) stopIfInterrupted("nothing was written yet");
+  } catch (const RunCancelled&) {
+    stopIfInterrupted("nothing was written yet");
+  }
+  // A whole render replaces what the folder held (the edit-render loop); shards and --resume only join.
+  const bool whole = (args.frames.empty() && !plan.resume) || args.replace;
+  std::optional<RenderCounts> counts;
+  if (plan.processes > 1) counts = renderInProcesses(plan, info, whole, *built);
+  if (!counts) {  // one process (or none more could be started): the renderers on threads
+    RenderPlan here = plan;
+    here.renderers = std::max(plan.renderers, plan.processes);
+    here.encoders = std::max(2, plan.encoders * plan.processes);
+    here.processes = 1;
+    counts = renderHere(here, info, whole, *built);
+  }
   const double seconds = summary.seconds();
   char rate[48];
-  std::snprintf(rate, sizeof rate, " (%.1f frames/s); ", seconds > 0 ? drawn / seconds : 0.0);
-  summary.print(renderSummary(plan, drawn, skipped),
-                rate + runOutcomes(scene, builder.runs(), scene.frameTime(plan.range.first + (plan.range.count() - 1) * plan.range.step)));
+  std::snprintf(rate, sizeof rate, " (%.1f frames/s); ", seconds > 0 ? counts->drawn / seconds : 0.0);
+  summary.print(renderSummary(plan, counts->drawn, counts->skipped), rate + counts->outcomes);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cerrno>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
 namespace sl {
@@ -42,7 +43,16 @@ bool isNumber(const std::string& text) {
   return !text.empty() && text.size() < 12 && text.find_first_not_of("0123456789") == std::string::npos;
 }
 
-bool processExists(pid_t pid) { return ::kill(pid, 0) == 0 || errno == EPERM; }
+// A process that has ended but was not yet reaped (a zombie: its parent died first and nobody waits for it, as
+// happens to a render's worker processes killed with it under an init that does not reap) writes nothing any more.
+bool processExists(pid_t pid) {
+  if (::kill(pid, 0) != 0 && errno != EPERM) return false;
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  if (!std::getline(stat, line)) return true;  // no /proc: alive, as kill said
+  const auto name = line.rfind(')');          // "pid (command) state ...": the command may hold spaces
+  return name == std::string::npos || name + 2 >= line.size() || (line[name + 2] != 'Z' && line[name + 2] != 'X');
+}
 
 // The writer's pid if `name` is a temporary written on this host, else 0.
 pid_t localWriter(const std::string& name) {

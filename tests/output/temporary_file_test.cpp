@@ -67,5 +67,21 @@ TEST(TemporaryFile, SweepRemovesOnlyLeftoversOfEndedLocalWriters) {
   EXPECT_TRUE(removeStaleTemporaries((folder / "missing").string()).empty());
 }
 
+// A writer that has ended but is not reaped yet (a zombie: a render's worker killed with it, under an init that does
+// not reap) writes nothing: its temporaries are swept like a dead writer's.
+TEST(TemporaryFile, SweepRemovesAZombieWritersLeftovers) {
+  const testing::TempFolder temp;
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  siginfo_t ended = {};
+  ASSERT_EQ(::waitid(P_PID, static_cast<id_t>(child), &ended, WEXITED | WNOWAIT), 0);  // ended, not reaped
+  const std::string zombie = withWriter(temporaryPathFor((temp.path() / "frame_00005.png").string()), child);
+  touch(temp.path() / zombie);
+  const std::vector<std::string> removed = removeStaleTemporaries(temp.path().string());
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  EXPECT_EQ(removed, std::vector<std::string>{zombie});
+}
+
 }  // namespace
 }  // namespace sl
