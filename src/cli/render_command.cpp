@@ -515,8 +515,9 @@ void addRenderCommand(CLI::App& app) {
                     "a quick look: a quarter of the size, every second frame (unless --frames gives a step), into "
                     "output.folder-preview");
   command->add_option("--threads", args->threads,
-                      "threads drawing and encoding frames side by side (default: the cores this process may use, "
-                      "up to " + std::to_string(limits::kMaxRenderers) + " renderers); the files do not depend on it")
+                      "how many frames are drawn side by side: PNG frames by that many worker processes, otherwise "
+                      "renderers on threads (default: the cores this process may use, up to " +
+                          std::to_string(limits::kMaxRenderers) + "); the files do not depend on it")
       ->check(CLI::Range(1, 1024));
   command->add_flag("--quiet", args->quiet, "errors only: no progress, run reports or summary line");
   command->add_flag("--resume", args->resume, "skip frames whose file and manifest entry are complete (PNG only)");

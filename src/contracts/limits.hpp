@@ -9,8 +9,8 @@ namespace sl::limits {
 inline constexpr int kMinImageSide = 16;
 // llvmpipe allows 16384; 8192 keeps one RGBA frame under 256 MiB.
 inline constexpr int kMaxImageSide = 8192;
-// Renderers drawing frames side by side in one render (one per core up to this): each holds an OpenGL context with
-// its framebuffers and cached layers (about 20 bytes a pixel), and two frames in flight.
+// Renderers drawing frames side by side in one render, in worker processes or on threads (one per core up to this):
+// each holds an OpenGL context with its framebuffers and cached layers (about 20 bytes a pixel), and frames in flight.
 inline constexpr int kMaxRenderers = 4;
 // About 9 hours at 30 fps: anything longer is a typo.
 inline constexpr long kMaxFrames = 1'000'000;
