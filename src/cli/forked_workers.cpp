@@ -154,7 +154,6 @@ std::optional<ForkedWorkers::Message> ForkedWorkers::takeMessage(Worker& worker,
 }
 
 std::optional<ForkedWorkers::Message> ForkedWorkers::next(const std::function<bool()>& signalled) {
-  bool forwarded = false;
   while (true) {
     for (std::size_t i = 0; i < workers_.size(); ++i)
       if (auto message = takeMessage(workers_[i], static_cast<int>(i))) return message;
@@ -170,9 +169,9 @@ std::optional<ForkedWorkers::Message> ForkedWorkers::next(const std::function<bo
     sigaddset(&interrupts, SIGINT);
     sigaddset(&interrupts, SIGTERM);
     ::sigprocmask(SIG_BLOCK, &interrupts, &previous);
-    if (signalled() && !forwarded) {
+    if (signalled() && !forwarded_) {
       signalAll(SIGTERM);
-      forwarded = true;
+      forwarded_ = true;
     }
     const int ready = ::ppoll(fds.data(), fds.size(), nullptr, &previous);
     const int error = errno;

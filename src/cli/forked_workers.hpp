@@ -54,9 +54,9 @@ class ForkedWorkers {
   void go();
   // Every worker waiting for the go stops without it (the job was refused before anything was written).
   void refuse();
-  // The next message of any worker, waiting for it; nullopt once every worker has closed its end (ended). While it
-  // waits, SIGINT and SIGTERM end the wait (their handlers run, and `signalled` is asked): the caller then sends
-  // the signal on with signalAll, so a signal sent to the parent alone stops the workers too.
+  // The next message of any worker, waiting for it; nullopt once every worker has closed its end (ended). A SIGINT
+  // or SIGTERM ends the wait (its handler runs); once `signalled` says one came, SIGTERM is sent on to the workers
+  // (once), so a signal sent to the parent alone stops them too, and the wait goes on until they end.
   std::optional<Message> next(const std::function<bool()>& signalled);
   void signalAll(int signal) const;
   // Waits for every worker to end; its exit status (128 + the signal for a worker killed by one).
@@ -73,6 +73,7 @@ class ForkedWorkers {
   std::optional<Message> takeMessage(Worker& worker, int index);
   void stopAll();
   std::vector<Worker> workers_;
+  bool forwarded_ = false;  // a signal the parent got was sent on (once)
 };
 
 }  // namespace sl
