@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <csignal>
 #include <cstdlib>
+#include <cstring>
 #include <deque>
 #include <filesystem>
 #include <functional>
@@ -448,9 +449,11 @@ std::optional<RenderCounts> renderInProcesses(const RenderPlan& plan, const nloh
       stopIfInterrupted(toFinish);
       throw CommandExit(kExitInterrupted, std::string("linkage: a process drawing frames was stopped; ") + toFinish);
     }
-    if (status != kExitOk)
-      throw CommandExit(kExitFailure, "linkage: a process drawing frames ended with status " + std::to_string(status) +
-                                          "; frames written so far are complete; rerun with --resume to finish");
+    if (status != kExitOk) {  // a worker that sent no error: it crashed or was killed (128 + the signal)
+      const std::string how = status > 128 ? std::string("was killed by ") + ::strsignal(status - 128)
+                                           : "ended with status " + std::to_string(status);
+      throw CommandExit(kExitFailure, "linkage: a process drawing frames " + how + "; " + toFinish);
+    }
   }
   return counts;
 }

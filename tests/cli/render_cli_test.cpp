@@ -244,6 +244,44 @@ TEST(RenderCli, ResumeAfterSigtermEqualsAnUninterruptedRender) {
   EXPECT_TRUE(folderContents(out) == folderContents(folder.path() / "whole"));
 }
 
+// The processes of a render (their pids, from /proc: the kernel lists a task's children).
+std::vector<pid_t> childrenOf(pid_t pid) {
+  std::ifstream list("/proc/" + std::to_string(pid) + "/task/" + std::to_string(pid) + "/children");
+  std::vector<pid_t> children;
+  for (pid_t child = 0; list >> child;) children.push_back(child);
+  return children;
+}
+
+// A worker process that dies (here SIGKILL, as the OOM killer would) fails the render with a message saying so; the
+// frames written are complete, and --resume finishes the render to the same bytes as one run.
+TEST(RenderCli, AWorkerThatDiesFailsTheRenderAndResumeFinishesIt) {
+  TempFolder folder;
+  const std::string scene = shippedScene("default.json");
+  const std::string out = folder / "killed";
+  ChildProcess render(linkageBinary(), {"render", scene, "--size", "160x90", "--threads", "2", "--out", out},
+                      folder.path());
+  for (int i = 0; i < 3000 && render.running() && !fs::exists(fs::path(out) / "frame_00020.png"); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  // Everything held still while one worker is picked and killed, so the render cannot finish first.
+  render.sendSignal(SIGSTOP);
+  const std::vector<pid_t> workers = childrenOf(render.pid());
+  ASSERT_EQ(workers.size(), 2u) << "the render's worker processes";
+  for (pid_t worker : workers) ::kill(worker, SIGSTOP);
+  ::kill(workers[1], SIGKILL);
+  ::kill(workers[0], SIGCONT);
+  render.sendSignal(SIGCONT);
+  const ProcessResult failed = render.wait();
+  EXPECT_EQ(failed.code, 3) << failed.err;
+  EXPECT_NE(failed.err.find("a process drawing frames was killed by"), std::string::npos) << failed.err;
+  const ProcessResult resumed =
+      runLinkage({"render", scene, "--size", "160x90", "--quiet", "--resume", "--out", out}, folder.path());
+  ASSERT_EQ(resumed.code, 0) << resumed.err;
+  const ProcessResult whole =
+      runLinkage({"render", scene, "--size", "160x90", "--quiet", "--out", "whole"}, folder.path());
+  ASSERT_EQ(whole.code, 0) << whole.err;
+  EXPECT_TRUE(folderContents(out) == folderContents(folder.path() / "whole"));
+}
+
 // A video interrupted while ffmpeg encodes it: the earlier video of that name and its manifest stay as they
 // were, and nothing else is left (ffmpeg writes a temporary that only a finished render renames).
 TEST(RenderCli, InterruptedVideoLeavesTheEarlierVideoUntouched) {
