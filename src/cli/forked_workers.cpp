@@ -66,11 +66,11 @@ void WorkerChannel::send(char kind, const std::string& text) const {
   writeAll(up_, message.data(), message.size());
 }
 
-bool WorkerChannel::waitForGo() const {
+bool WorkerChannel::waitForGo(const std::function<bool()>& cancelled) const {
   char go = 0;
   while (true) {
     const ssize_t got = ::read(down_, &go, 1);
-    if (got < 0 && errno == EINTR) continue;
+    if (got < 0 && errno == EINTR && !cancelled()) continue;
     return got == 1 && go == 'g';
   }
 }
@@ -157,6 +157,11 @@ std::optional<ForkedWorkers::Message> ForkedWorkers::next(const std::function<bo
   while (true) {
     for (std::size_t i = 0; i < workers_.size(); ++i)
       if (auto message = takeMessage(workers_[i], static_cast<int>(i))) return message;
+    if (!ended_.empty()) {  // after the worker's last messages
+      const int worker = ended_.front();
+      ended_.pop_front();
+      return Message{worker, kEnded, ""};
+    }
     std::vector<pollfd> fds;
     std::vector<std::size_t> owners;
     for (std::size_t i = 0; i < workers_.size(); ++i)
@@ -189,6 +194,7 @@ std::optional<ForkedWorkers::Message> ForkedWorkers::next(const std::function<bo
         worker.received.append(buffer, static_cast<std::size_t>(got));
       } else if (got == 0 || errno != EINTR) {
         worker.open = false;  // ended (or its pipe failed, which ends it as far as messages go)
+        ended_.push_back(static_cast<int>(owners[k]));
       }
     }
   }

@@ -12,6 +12,7 @@
 // parent's objects runs twice and no buffered output is written twice). A worker dies with its parent (SIGKILL), as
 // a thread would: its temporaries are then a dead writer's, swept by the next render.
 
+#include <deque>
 #include <functional>
 #include <optional>
 #include <string>
@@ -26,8 +27,9 @@ class WorkerChannel {
   WorkerChannel(int up, int down) : up_(up), down_(down) {}
   // One message: a kind (a letter the caller chooses) and a text. Never throws: a parent gone is noticed later.
   void send(char kind, const std::string& text = "") const;
-  // Waits for the parent: true to go on, false to stop without writing (the job was refused, or the parent is gone).
-  bool waitForGo() const;
+  // Waits for the parent: true to go on, false to stop without writing (the job was refused, the parent is gone,
+  // or `cancelled` says so after a signal interrupted the wait).
+  bool waitForGo(const std::function<bool()>& cancelled) const;
 
  private:
   int up_, down_;
@@ -37,13 +39,14 @@ class ForkedWorkers {
  public:
   struct Message {
     int worker = 0;
-    char kind = 0;
+    char kind = 0;  // kEnded: the worker has closed its end (it ended, however)
     std::string text;
   };
+  static constexpr char kEnded = '\0';
 
   // Forks `count` workers; worker i runs body(i, channel) and exits with what it returns. Call with no other thread
-  // running in the process (a fork copies only the calling thread). Throws std::system_error if no worker can be
-  // forked; fewer workers than asked are never started (all or none).
+  // running in the process (a fork copies only the calling thread). Throws std::system_error if a worker cannot be
+  // forked (those already forked are refused and waited for: all or none).
   ForkedWorkers(int count, const std::function<int(int worker, const WorkerChannel&)>& body);
   ~ForkedWorkers();  // workers still waiting for the go are told to stop; every worker is waited for
   ForkedWorkers(const ForkedWorkers&) = delete;
@@ -54,7 +57,8 @@ class ForkedWorkers {
   void go();
   // Every worker waiting for the go stops without it (the job was refused before anything was written).
   void refuse();
-  // The next message of any worker, waiting for it; nullopt once every worker has closed its end (ended). A SIGINT
+  // The next message of any worker, waiting for it, and a kEnded message when a worker closes its end; nullopt once
+  // every worker has (so a caller waiting for news from all sees one that ended without any). A SIGINT
   // or SIGTERM ends the wait (its handler runs); once `signalled` says one came, SIGTERM is sent on to the workers
   // (once), so a signal sent to the parent alone stops them too, and the wait goes on until they end.
   std::optional<Message> next(const std::function<bool()>& signalled);
@@ -74,6 +78,7 @@ class ForkedWorkers {
   void stopAll();
   std::vector<Worker> workers_;
   bool forwarded_ = false;  // a signal the parent got was sent on (once)
+  std::deque<int> ended_;   // workers whose end was found closed, not yet told (kEnded)
 };
 
 }  // namespace sl

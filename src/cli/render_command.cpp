@@ -8,6 +8,7 @@
 #include <deque>
 #include <filesystem>
 #include <functional>
+#include <sstream>
 #include <system_error>
 #include <iostream>
 #include <memory>
@@ -193,7 +194,7 @@ void checkSpaceForFrames(const RenderPlan& plan, RendererPool& renderers, FrameB
 // builder runs on this thread, the renderers on theirs: frame k + 1 is built while frame k is drawn.
 bool renderFrames(const RenderPlan& plan, const FrameRange& range, FrameManifest* pngManifest,
                   const std::vector<FrameSink*>& sinks, RendererPool& renderers, FrameBuilder& builder,
-                  ImageRecycler& buffers, const std::function<void(bool drawn)>& onFrame) {
+                  ImageRecycler& buffers, const std::function<void(int frame, bool drawn)>& onFrame) {
   std::deque<int> inFlight;  // the frames the renderers hold, oldest first
   auto handOver = [&] {      // the oldest frame drawn, to every sink
     Image image = renderers.takeOldest();
@@ -201,12 +202,12 @@ bool renderFrames(const RenderPlan& plan, const FrameRange& range, FrameManifest
     inFlight.pop_front();
     for (size_t i = 0; i + 1 < sinks.size(); ++i) sinks[i]->consume(k, image);
     sinks.back()->consume(k, std::move(image));
-    onFrame(true);
+    onFrame(k, true);
   };
   bool finished = true;
   for (int k = range.first; k < range.end; k += range.step) {
     if (plan.resume && pngManifest && pngManifest->isFrameComplete(k)) {
-      onFrame(false);
+      onFrame(k, false);
       continue;
     }
     // Frames before k are sampled (not rendered) for the path and plot history.
@@ -314,7 +315,7 @@ RenderCounts renderHere(const RenderPlan& plan, const nlohmann::json& info, bool
   Progress progress(plan.range.count(), plan.quiet, "render", "frame");
   bool finished = false;
   try {
-    finished = renderFrames(plan, plan.range, pngManifest.get(), sinks, renderers, builder, buffers, [&](bool drawn) {
+    finished = renderFrames(plan, plan.range, pngManifest.get(), sinks, renderers, builder, buffers, [&](int, bool drawn) {
       ++(drawn ? counts.drawn : counts.skipped);
       progress.update(counts.drawn + counts.skipped);
     });
@@ -356,7 +357,8 @@ int drawFramesInWorker(const RenderPlan& plan, const nlohmann::json& info, Frame
     if (!sampleUpTo(builder, std::min(mine.first, range.end))) return kExitInterrupted;
     if (worker == 0) checkSpaceForFrames(plan, renderers, builder);
     channel.send(kReady);
-    if (!channel.waitForGo()) return kExitOk;  // the render was refused: nothing to write
+    if (!channel.waitForGo(interruptRequested))  // the render was refused, or stopped: nothing to write
+      return interruptRequested() ? kExitInterrupted : kExitOk;
     FrameManifest manifest(plan.folder, info, "manifest.json", FrameManifest::Existing::merge,
                            FrameManifest::Claim::join, interruptRequested, environment().lockWaitSeconds);
     manifest.addRenderer(renderers.glRenderer(), renderers.glVersion());
@@ -364,14 +366,19 @@ int drawFramesInWorker(const RenderPlan& plan, const nlohmann::json& info, Frame
     PngSequenceSink sink(plan.folder, manifest, plan.encoders, plan.scene.output.pngCompression);
     sink.recycleInto(buffers);
     bool finished = false;
+    int lastDrawn = worker == 0 ? range.first - 1 : -1;  // worker 0 sampled range.first (the space check) anyway
     try {
-      finished = renderFrames(plan, mine, &manifest, {&sink}, renderers, builder, buffers,
-                              [&](bool drawn) { channel.send(drawn ? kDrawn : kSkipped); });
+      finished = renderFrames(plan, mine, &manifest, {&sink}, renderers, builder, buffers, [&](int frame, bool drawn) {
+        if (drawn) lastDrawn = frame;
+        channel.send(drawn ? kDrawn : kSkipped);
+      });
     } catch (const RunCancelled&) {
     }
     sink.finish();
-    channel.send(kRunsKnown, std::to_string(builder.lastSampledFrame()) + "\n" +
-                                 runOutcomes(plan.scene, builder.runs(), lastFrameTime(plan)) + "\n" +
+    // What the runs are, as far as this worker's last frame drawn: "<last drawn> <outcomes' length>\n" + outcomes +
+    // the stop reports (both may hold any character a run's name holds).
+    const std::string outcomes = runOutcomes(plan.scene, builder.runs(), lastFrameTime(plan));
+    channel.send(kRunsKnown, std::to_string(lastDrawn) + " " + std::to_string(outcomes.size()) + "\n" + outcomes +
                                  stopReports(plan.scene, builder.runs()));
     return finished ? kExitOk : kExitInterrupted;
   } catch (const RunCancelled&) {
@@ -383,6 +390,12 @@ int drawFramesInWorker(const RenderPlan& plan, const nlohmann::json& info, Frame
     channel.send(kFailed, std::to_string(report.code) + " " + report.message);
     return report.code;
   }
+}
+
+// "was killed by Segmentation fault", "ended with status 3": a worker's exit status (128 + the signal if killed).
+std::string howWorkerEnded(int status) {
+  return status > 128 ? std::string("was killed by ") + ::strsignal(status - 128)
+                      : "ended with status " + std::to_string(status);
 }
 
 ExitReport failureOf(const std::string& text) {
@@ -406,34 +419,45 @@ std::optional<RenderCounts> renderInProcesses(const RenderPlan& plan, const nloh
   ForkedWorkers& workers = *started;
   std::optional<ExitReport> failure;
   int ready = 0;
-  while (ready < workers.count() && !failure) {
+  // Every worker ready, or the first that failed or ended without being ready, or a signal: then the others are
+  // refused (by the destructor) and nothing is written.
+  while (ready < workers.count() && !failure && !interruptRequested()) {
     const auto news = workers.next(interruptRequested);
-    if (!news) break;
+    if (!news || news->kind == ForkedWorkers::kEnded) break;
     if (news->kind == kReady) ++ready;
     if (news->kind == kFailed) failure = failureOf(news->text);
   }
   if (failure) throw CommandExit(failure->code, failure->message);  // the others are stopped, nothing was written
   stopIfInterrupted("nothing was written yet");
-  if (ready < workers.count()) throw CommandExit(kExitFailure, "linkage: a process drawing frames ended at its start");
+  if (ready < workers.count()) {
+    workers.refuse();
+    std::string how = "ended";
+    for (int status : workers.exitStatuses())
+      if (status != kExitOk) how = howWorkerEnded(status);
+    throw CommandExit(kExitFailure, "linkage: a process drawing frames " + how + " before it was ready; nothing was written");
+  }
 
   const std::unique_ptr<FrameManifest> manifest = openFrameManifest(plan, info, whole);
   workers.go();
   RenderCounts counts;
   Progress progress(plan.range.count(), plan.quiet, "render", "frame");
-  int furthest = -1;
+  int furthest = -2;  // below any worker's "last drawn" (-1: none; worker 0: at least range.first - 1)
   std::string reports;
   while (const auto news = workers.next(interruptRequested)) {
     if (news->kind == kDrawn || news->kind == kSkipped) {
       ++(news->kind == kDrawn ? counts.drawn : counts.skipped);
       progress.update(counts.drawn + counts.skipped);
     } else if (news->kind == kRunsKnown) {
-      // The worker that sampled furthest knows the runs up to the range's end (or as far as any got).
-      const std::size_t line = news->text.find('\n'), second = news->text.find('\n', line + 1);
-      const int sampled = std::atoi(news->text.substr(0, line).c_str());
-      if (sampled > furthest) {
-        furthest = sampled;
-        counts.outcomes = news->text.substr(line + 1, second - line - 1);
-        reports = news->text.substr(second + 1);
+      // The worker that drew the last frame drawn knows the runs as one process drawing them all would.
+      const std::size_t line = news->text.find('\n');
+      std::istringstream head(news->text.substr(0, line));
+      int drawnUpTo = -1;
+      std::size_t length = 0;
+      head >> drawnUpTo >> length;
+      if (drawnUpTo > furthest) {
+        furthest = drawnUpTo;
+        counts.outcomes = news->text.substr(line + 1, length);
+        reports = news->text.substr(line + 1 + length);
       }
     } else if (news->kind == kFailed && !failure) {
       failure = failureOf(news->text);
@@ -449,11 +473,8 @@ std::optional<RenderCounts> renderInProcesses(const RenderPlan& plan, const nloh
       stopIfInterrupted(toFinish);
       throw CommandExit(kExitInterrupted, std::string("linkage: a process drawing frames was stopped; ") + toFinish);
     }
-    if (status != kExitOk) {  // a worker that sent no error: it crashed or was killed (128 + the signal)
-      const std::string how = status > 128 ? std::string("was killed by ") + ::strsignal(status - 128)
-                                           : "ended with status " + std::to_string(status);
-      throw CommandExit(kExitFailure, "linkage: a process drawing frames " + how + "; " + toFinish);
-    }
+    if (status != kExitOk)  // a worker that sent no error: it crashed or was killed
+      throw CommandExit(kExitFailure, "linkage: a process drawing frames " + howWorkerEnded(status) + "; " + toFinish);
   }
   return counts;
 }
@@ -518,9 +539,10 @@ void addRenderCommand(CLI::App& app) {
                     "a quick look: a quarter of the size, every second frame (unless --frames gives a step), into "
                     "output.folder-preview");
   command->add_option("--threads", args->threads,
-                      "how many frames are drawn side by side: PNG frames by that many worker processes, otherwise "
-                      "renderers on threads (default: the cores this process may use, up to " +
-                          std::to_string(limits::kMaxRenderers) + "); the files do not depend on it")
+                      "how many frames are drawn side by side, at most " + std::to_string(limits::kMaxRenderers) +
+                          ": PNG frames by that many worker processes (by renderers on threads for short ranges or "
+                          "costly runs; one renderer with --video). Default: the cores this process may use. The "
+                          "files do not depend on it")
       ->check(CLI::Range(1, 1024));
   command->add_flag("--quiet", args->quiet, "errors only: no progress, run reports or summary line");
   command->add_flag("--resume", args->resume, "skip frames whose file and manifest entry are complete (PNG only)");

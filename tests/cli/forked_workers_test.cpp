@@ -21,7 +21,7 @@ namespace {
 TEST(ForkedWorkers, MessagesArriveWholeFromTheirWorkerAndExitStatusesComeBack) {
   const std::string longText(100000, 'x');  // more than a pipe holds at once: read in pieces, put together again
   ForkedWorkers workers(3, [&](int worker, const WorkerChannel& channel) {
-    if (!channel.waitForGo()) return 99;
+    if (!channel.waitForGo([] { return false; })) return 99;
     for (int k = 0; k < 50; ++k) channel.send('d', std::to_string(worker) + ":" + std::to_string(k));
     channel.send('t', longText + std::to_string(worker));
     return 10 + worker;
@@ -45,12 +45,33 @@ TEST(ForkedWorkers, MessagesArriveWholeFromTheirWorkerAndExitStatusesComeBack) {
 TEST(ForkedWorkers, AJobRefusedBeforeTheGoStopsEveryWorkerWithoutGoingOn) {
   ForkedWorkers workers(2, [](int, const WorkerChannel& channel) {
     channel.send('r');
-    return channel.waitForGo() ? 1 : 0;  // 1: it went on
+    return channel.waitForGo([] { return false; }) ? 1 : 0;  // 1: it went on
   });
   int ready = 0;
   while (ready < 2) ready += workers.next([] { return false; })->kind == 'r';
   workers.refuse();
   EXPECT_EQ(workers.exitStatuses(), (std::vector<int>{0, 0}));
+}
+
+// A worker that ends before it is ready (a crash, a signal) is told to the parent, which would otherwise wait for
+// ever for its news while another worker waits for the go.
+TEST(ForkedWorkers, AWorkerEndingBeforeItIsReadyIsToldToTheParent) {
+  ForkedWorkers workers(2, [](int worker, const WorkerChannel& channel) {
+    if (worker == 1) return 5;  // ends at once, without a word
+    channel.send('r');
+    return channel.waitForGo([] { return false; }) ? 1 : 0;
+  });
+  std::vector<int> ended;
+  int ready = 0;
+  while (ended.empty()) {
+    const auto message = workers.next([] { return false; });
+    ASSERT_TRUE(message.has_value());
+    if (message->kind == ForkedWorkers::kEnded) ended.push_back(message->worker);
+    ready += message->kind == 'r';
+  }
+  EXPECT_EQ(ended, std::vector<int>{1});
+  workers.refuse();
+  EXPECT_EQ(workers.exitStatuses(), (std::vector<int>{0, 5}));
 }
 
 std::atomic<bool> gTerminated{false};
@@ -67,7 +88,7 @@ TEST(ForkedWorkers, ASigtermToTheParentAloneReachesTheWorkers) {
     ForkedWorkers workers(2, [](int, const WorkerChannel& channel) {
       ::signal(SIGTERM, SIG_DFL);  // a worker that ignored it would wait for the go for ever
       channel.send('r');
-      channel.waitForGo();
+      channel.waitForGo([] { return false; });
       return 0;
     });
     int ready = 0;

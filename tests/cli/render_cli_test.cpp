@@ -224,7 +224,7 @@ TEST(RenderCli, ResumeAfterSigtermEqualsAnUninterruptedRender) {
   const std::string scene = shippedScene("default.json");
   const std::string out = folder / "resumed";
   const ProcessResult terminated =
-      renderUntilTerminated({"render", scene, "--size", "160x90", "--quiet", "--out", out}, folder.path(),
+      renderUntilTerminated({"render", scene, "--size", "320x180", "--quiet", "--out", out}, folder.path(),
                             [&] { return fs::exists(fs::path(out) / "frame_00020.png"); });
   EXPECT_EQ(terminated.code, 130) << terminated.err;
   std::size_t partial = 0, frames = 0;
@@ -236,10 +236,10 @@ TEST(RenderCli, ResumeAfterSigtermEqualsAnUninterruptedRender) {
   EXPECT_EQ(partial, 0u) << "a partial file was left behind";
   EXPECT_LT(frames, 601u) << "the render finished before it could be interrupted";
   const ProcessResult resume =
-      runLinkage({"render", scene, "--size", "160x90", "--quiet", "--resume", "--out", "resumed"}, folder.path());
+      runLinkage({"render", scene, "--size", "320x180", "--quiet", "--resume", "--out", "resumed"}, folder.path());
   ASSERT_EQ(resume.code, 0) << resume.err;
   const ProcessResult whole =
-      runLinkage({"render", scene, "--size", "160x90", "--quiet", "--out", "whole"}, folder.path());
+      runLinkage({"render", scene, "--size", "320x180", "--quiet", "--out", "whole"}, folder.path());
   ASSERT_EQ(whole.code, 0) << whole.err;
   EXPECT_TRUE(folderContents(out) == folderContents(folder.path() / "whole"));
 }

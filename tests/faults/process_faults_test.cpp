@@ -135,8 +135,8 @@ TEST_F(ProcessFaults, SignalsAtRandomFramesThenResumeGivesIdenticalBytes) {
         EXPECT_TRUE(status.code == 130 || status.code == 0) << "exit " << status.code << ", signal " << status.signal;
         // (A SIGKILLed predecessor's temporaries may remain: never listed, never renamed into place.)
         EXPECT_TRUE(temporaries(folder_.path() / out, pid).empty()) << "SIGTERM left a temporary file";
-      } else {
-        EXPECT_EQ(status.signal, SIGKILL);
+      } else {  // (a render that finished before the signal came, its last frames drawn side by side, exits 0)
+        EXPECT_TRUE(status.signal == SIGKILL || status.code == 0) << "exit " << status.code << ", signal " << status.signal;
       }
       expectOnlyCompleteFrames(out);
     }
