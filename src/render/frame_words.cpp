@@ -99,11 +99,6 @@ std::string emptyPlotNote(const PlotFrame& plot) {
   return "";
 }
 
-std::string roundoffNote(const PlotFrame& plot) {
-  const std::vector<std::string> forms = roundoffNotes(plot);
-  return forms.empty() ? "" : forms.front();
-}
-
 std::vector<std::string> roundoffNotes(const PlotFrame& plot) {
   if (!plot.roundoff) return {};
   const PlotFrame::RoundoffOnly& r = *plot.roundoff;
@@ -231,6 +226,13 @@ std::string fittedWrappedForm(const FontAtlas& font, const std::vector<std::stri
     if (wrapped.size() <= lines && !cut && kept == wordsIn(form)) return form;
   }
   return "";
+}
+
+std::vector<std::string> wrappedFittedForm(const FontAtlas& font, const std::vector<std::string>& forms, TextSize size,
+                                           float width, std::size_t lines) {
+  std::string shown = fittedWrappedForm(font, forms, size, width, lines);
+  if (shown.empty() && !forms.empty()) shown = forms.back();
+  return font.wrapped(shown, size, width, lines);
 }
 
 std::string timeWords(double t) {

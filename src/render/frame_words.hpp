@@ -19,9 +19,8 @@ std::string stopReasonWords(StopReason reason);      // e.g. "pole-fold-back"
 std::string stopMeaningWords(StopReason reason);     // what the reason means, in a sentence
 std::string stopReadingWords(const RunFrame& run);   // e.g. "energy drift 2.13 > limit 1"; empty without a reading
 std::string emptyPlotNote(const PlotFrame& plot);    // why the plot stays empty; empty if it does not
-std::string roundoffNote(const PlotFrame& plot);     // e.g. "energy conserved to 3×10⁻¹⁵ over the run"; or empty
-// The same in forms, longest first, down to "energy conserved to 3×10⁻¹⁵" (a small frame cut the longest); empty
-// where there is no note.
+// What a plot whose values lie within roundoff says, in forms, longest first ("energy conserved to 3×10⁻¹⁵ over the
+// run" down to "energy conserved to 3×10⁻¹⁵": a small frame cut the longest); empty where there is no note.
 std::vector<std::string> roundoffNotes(const PlotFrame& plot);
 std::string valueAxisWords(PlotKind kind);           // what the y axis shows, in what unit
 
@@ -50,6 +49,9 @@ std::string shownTitle(const FontAtlas& font, const FrameState& frame, TextSize 
 // The longest form that word-wraps into at most `lines` lines of that width without cutting a word; "" if none.
 std::string fittedWrappedForm(const FontAtlas& font, const std::vector<std::string>& forms, TextSize size, float width,
                               std::size_t lines);
+// The lines of that form, wrapped; where no form fits whole, the shortest, wrapped and cut.
+std::vector<std::string> wrappedFittedForm(const FontAtlas& font, const std::vector<std::string>& forms, TextSize size,
+                                           float width, std::size_t lines);
 
 // A number as printf's `pattern` writes it, with a true minus sign (U+2212) for the sign and the exponent's.
 std::string typesetNumber(const char* pattern, double value);

@@ -296,10 +296,7 @@ void drawRoundoffNote(const PanelContext& c, const PlotFrame& plot, const PlotLa
   const float top = layout.legendBottom + 0.3f * line, bottom = c.rect.y + c.rect.height;
   // The longest form that wraps into the lines there is room for, every word whole; the shortest, cut, if none does.
   const std::size_t lines = std::size_t(std::clamp((bottom - top) / line, 1.0f, 2.0f));
-  const std::vector<std::string> forms = roundoffNotes(plot);
-  std::string shown = fittedWrappedForm(c.font, forms, TextSize::Small, right - left, lines);
-  if (shown.empty() && !forms.empty()) shown = forms.back();
-  const std::vector<std::string> note = c.font.wrapped(shown, TextSize::Small, right - left, lines);
+  const std::vector<std::string> note = wrappedFittedForm(c.font, roundoffNotes(plot), TextSize::Small, right - left, lines);
   float y = 0.5f * (top + bottom) - 0.5f * line * (float(note.size()) - 1) + 0.4f * ascent;
   for (const std::string& text : note) {
     c.font.draw(batch, text, TextSize::Small, 0.5f * (left + right - c.font.width(text, TextSize::Small)), y,

@@ -940,9 +940,8 @@ void captionFamilies(const PanelContext& context, float width, ShapeBatch& batch
   if (members == 0) return;
   const float pad = 0.02f * context.rect.height, line = context.font.lineHeight(TextSize::Small);
   // The longest form that wraps into two lines with every word whole; the shortest, cut, where none does.
-  std::string text = fittedWrappedForm(context.font, familyCaptions(members), TextSize::Small, width - 2 * pad, 2);
-  if (text.empty()) text = familyCaptions(members).back();
-  const std::vector<std::string> lines = context.font.wrapped(text, TextSize::Small, width - 2 * pad, 2);
+  const std::vector<std::string> lines =
+      wrappedFittedForm(context.font, familyCaptions(members), TextSize::Small, width - 2 * pad, 2);
   float y = context.rect.y + context.rect.height - pad - line * float(lines.size() - 1);
   for (const std::string& caption : lines) {
     context.font.draw(batch, caption, TextSize::Small, context.rect.x + pad, y, palette::softInk);

@@ -93,7 +93,7 @@ TEST(PlotMarks, ARoundoffOnlyPlotSaysSoInOneLineWithoutAnAxis) {
   const ShapeBatch plotted = composer.compose(frame).panels[0].shapes;
   frame.plots[1].roundoff = PlotFrame::RoundoffOnly{3.2e-15, false, 1};
   ASSERT_EQ(frame.plots[1].kind, PlotKind::EnergyError);
-  EXPECT_EQ(roundoffNote(frame.plots[1]), "energy conserved to 3×10⁻¹⁵ over the run");
+  EXPECT_EQ(roundoffNotes(frame.plots[1]).front(), "energy conserved to 3×10⁻¹⁵ over the run");
   // Shorter forms for small frames, the level kept (at 320x180 the tolerance's note ended "integrator's…").
   PlotFrame byTolerance = frame.plots[1];
   byTolerance.roundoff = PlotFrame::RoundoffOnly{2e-9, true, 1};
