@@ -65,6 +65,16 @@ void sparseNodeEntries(const ConstrainedModel& model, const Eigen::SparseMatrix<
   for (int k = 0; k < m; ++k) entries.emplace_back(row + n + k, row + n + k, 0.0);
 }
 
+// The discrete Euler-Lagrange residual of interior node q between its neighbours (row block `row`) from the sparse
+// M and G: M (next - 2 q + previous) + G^T mu, then the constraints' values.
+void sparseNodeResidual(const ConstrainedModel& model, const Eigen::SparseMatrix<double>& g, const Eigen::VectorXd& mui,
+                        const Eigen::VectorXd& previous, const Eigen::VectorXd& q, const Eigen::VectorXd& next, int row,
+                        Eigen::VectorXd& residual) {
+  const int n = model.dimension(), m = model.constraintCount();
+  residual.segment(row, n) = model.sparseMass() * (next - 2 * q + previous) + Eigen::VectorXd(g.transpose() * mui);
+  residual.segment(row + n, m) = model.values(q);
+}
+
 // The node system from its entries, factorised by `lu`, its pattern analysed on the first call only (the grid's
 // pattern never changes); false if the factorisation fails.
 bool factorNodeSystem(const std::vector<Eigen::Triplet<double>>& entries, int size,
@@ -113,9 +123,7 @@ bool solveDiscrete(const ConstrainedModel& model, std::vector<Eigen::VectorXd>& 
       const Eigen::VectorXd& mui = mu[static_cast<std::size_t>(i)];
       if (sparse) {
         const Eigen::SparseMatrix<double> g = model.sparseJacobian(q);
-        residual.segment(row, n) =
-            model.sparseMass() * (node(i + 1) - 2 * q + node(i - 1)) + Eigen::VectorXd(g.transpose() * mui);
-        residual.segment(row + n, m) = model.values(q);
+        sparseNodeResidual(model, g, mui, node(i - 1), q, node(i + 1), row, residual);
         if (!factor) continue;
         sparseNodeEntries(model, g, mui, i, first, last, block, periodic ? count : 0, 0.0, entries);
         continue;
@@ -200,14 +208,11 @@ bool descendDiscrete(const ConstrainedModel& model, std::vector<Eigen::VectorXd>
     Eigen::VectorXd residual(unknowns * block);
     for (int i = first; i <= last; ++i) {
       const int row = (i - first) * block;
-      const Eigen::VectorXd& q = nodes[static_cast<std::size_t>(i)];
-      const Eigen::VectorXd mui =
-          nodeMultipliers(model, nodes[static_cast<std::size_t>(i - 1)], q, nodes[static_cast<std::size_t>(i + 1)]);
+      const Eigen::VectorXd &previous = nodes[static_cast<std::size_t>(i - 1)], &q = nodes[static_cast<std::size_t>(i)],
+                            &next = nodes[static_cast<std::size_t>(i + 1)];
+      const Eigen::VectorXd mui = nodeMultipliers(model, previous, q, next);
       const Eigen::SparseMatrix<double> g = model.sparseJacobian(q);
-      residual.segment(row, n) = model.sparseMass() * (nodes[static_cast<std::size_t>(i + 1)] - 2 * q +
-                                                       nodes[static_cast<std::size_t>(i - 1)]) +
-                                 Eigen::VectorXd(g.transpose() * mui);
-      residual.segment(row + n, m) = model.values(q);
+      sparseNodeResidual(model, g, mui, previous, q, next, row, residual);
       sparseNodeEntries(model, g, mui, i, first, last, block, 0, shift, entries);
     }
     if (!factorNodeSystem(entries, unknowns * block, lu, analysed)) return false;
