@@ -1,5 +1,7 @@
 #include "cli/forked_workers.hpp"
 
+#include "cli/exit_codes.hpp"
+
 #include <fcntl.h>
 #include <poll.h>
 #include <sys/prctl.h>
@@ -93,7 +95,7 @@ ForkedWorkers::ForkedWorkers(int count, const std::function<int(int, const Worke
       for (Worker& earlier : workers_) closeIfOpen(earlier.up), closeIfOpen(earlier.down);
       ::close(up[0]), ::close(down[1]);
       ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-      int status = 3;
+      int status = kExitFailure;
       if (::getppid() == parent) {
         try {
           status = body(i, WorkerChannel(up[1], down[0]));
@@ -212,7 +214,7 @@ std::vector<int> ForkedWorkers::exitStatuses() {
       int raw = 0;
       if (::waitpid(worker.pid, &raw, 0) < 0) {
         if (errno == EINTR) continue;
-        worker.status = 3;  // not ours to wait for any more: count it as failed
+        worker.status = kExitFailure;  // not ours to wait for any more: count it as failed
         break;
       }
       worker.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);

@@ -63,9 +63,10 @@ struct RenderPlan {
   std::string video;
   bool quiet = false, resume = false;
   // Renderers drawing frames side by side, and PNG encoders: as many as the cores the process may use (at least
-  // two encoders: they overlap with the drawing even on one core), no more renderers than frames. `processes` > 1:
-  // that many processes draw, each with `renderers` and `encoders` of its own.
-  int renderers = 1, encoders = 2, processes = 1;
+  // two encoders: they overlap with the drawing even on one core), no more renderers than frames. With
+  // `workerProcesses`, each renderer is a worker process of its own, the encoders shared out among them.
+  int renderers = 1, encoders = 2;
+  bool workerProcesses = false;
 };
 
 // Processes of their own for the renderers where each may repeat the runs' integration (every process samples
@@ -144,12 +145,8 @@ RenderPlan planRender(const RenderArguments& args) {
   // Renderers on threads of one process take turns at llvmpipe's shading (its lock is the process's): in processes
   // of their own they do not (docs/rendering.md, "Frames drawn by several processes"). PNG frames only: a video
   // takes its frames in order from one process.
-  if (plan.renderers > 1 && plan.video.empty() && plan.range.count() >= 2 * plan.renderers &&
-      sceneWork(scene) / scene.frameCount() <= kMaxRepeatedWorkPerFrame) {
-    plan.processes = plan.renderers;
-    plan.renderers = 1;
-    plan.encoders = std::max(1, plan.encoders / plan.processes);
-  }
+  plan.workerProcesses = plan.renderers > 1 && plan.video.empty() && plan.range.count() >= 2 * plan.renderers &&
+                         sceneWork(scene) / scene.frameCount() <= kMaxRepeatedWorkPerFrame;
   return plan;
 }
 
@@ -344,15 +341,15 @@ RenderCounts renderHere(const RenderPlan& plan, const nlohmann::json& info, bool
 // complete, what it knows of the runs at its end, an error.
 enum WorkerNews : char { kReady = 'r', kDrawn = 'd', kSkipped = 's', kRunsKnown = 'k', kFailed = 'e' };
 
-// Worker `worker` of plan.processes: every plan.processes-th frame of the range from its own offset, with one
-// renderer rasterising on its own thread and PNG encoders; worker 0 first checks that the whole range fits on the
-// disk. Its exit status is what it returns; its errors go to the parent as messages (kFailed: "code message").
+// Worker `worker` of plan.renderers: every plan.renderers-th frame of the range from its own offset, with one
+// renderer rasterising on its own thread and its share of the PNG encoders; worker 0 first checks that the whole
+// range fits on the disk. Its exit status is what it returns; its errors go to the parent as messages (kFailed: "code message").
 int drawFramesInWorker(const RenderPlan& plan, const nlohmann::json& info, FrameBuilder& builder, int worker,
                        const WorkerChannel& channel) {
   try {
     ::setenv("LP_NUM_THREADS", "0", /*overwrite=*/0);  // the other workers use the other cores
     const FrameRange& range = plan.range;
-    const FrameRange mine{range.first + worker * range.step, range.end, range.step * plan.processes};
+    const FrameRange mine{range.first + worker * range.step, range.end, range.step * plan.renderers};
     RendererPool renderers(plan.scene.view, plan.scene.output.size, environment().shaderFolder, 1);
     if (!sampleUpTo(builder, std::min(mine.first, range.end))) return kExitInterrupted;
     if (worker == 0) checkSpaceForFrames(plan, renderers, builder);
@@ -363,7 +360,8 @@ int drawFramesInWorker(const RenderPlan& plan, const nlohmann::json& info, Frame
                            FrameManifest::Claim::join, interruptRequested, environment().lockWaitSeconds);
     manifest.addRenderer(renderers.glRenderer(), renderers.glVersion());
     ImageRecycler buffers;
-    PngSequenceSink sink(plan.folder, manifest, plan.encoders, plan.scene.output.pngCompression);
+    PngSequenceSink sink(plan.folder, manifest, std::max(1, plan.encoders / plan.renderers),
+                         plan.scene.output.pngCompression);
     sink.recycleInto(buffers);
     bool finished = false;
     int lastDrawn = worker == 0 ? range.first - 1 : -1;  // worker 0 sampled range.first (the space check) anyway
@@ -403,14 +401,14 @@ ExitReport failureOf(const std::string& text) {
   return {std::atoi(text.substr(0, space).c_str()), space == std::string::npos ? "" : text.substr(space + 1)};
 }
 
-// Every frame drawn by plan.processes processes forked from this one (each with the builder as it is now, so the
+// Every frame drawn by plan.renderers worker processes forked from this one (each with the builder as it is now, so the
 // runs are not started again), this one collecting their news. PNG frames only. Nothing if the processes cannot be
 // started (a process limit): nothing is written then.
 std::optional<RenderCounts> renderInProcesses(const RenderPlan& plan, const nlohmann::json& info, bool whole,
                                               FrameBuilder& builder) {
   std::optional<ForkedWorkers> started;
   try {
-    started.emplace(plan.processes, [&](int worker, const WorkerChannel& channel) {
+    started.emplace(plan.renderers, [&](int worker, const WorkerChannel& channel) {
       return drawFramesInWorker(plan, info, builder, worker, channel);
     });
   } catch (const std::system_error&) {
@@ -500,14 +498,8 @@ void runRender(const RenderArguments& args) {
   // A whole render replaces what the folder held (the edit-render loop); shards and --resume only join.
   const bool whole = (args.frames.empty() && !plan.resume) || args.replace;
   std::optional<RenderCounts> counts;
-  if (plan.processes > 1) counts = renderInProcesses(plan, info, whole, *built);
-  if (!counts) {  // one process (or none more could be started): the renderers on threads
-    RenderPlan here = plan;
-    here.renderers = std::max(plan.renderers, plan.processes);
-    here.encoders = std::max(2, plan.encoders * plan.processes);
-    here.processes = 1;
-    counts = renderHere(here, info, whole, *built);
-  }
+  if (plan.workerProcesses) counts = renderInProcesses(plan, info, whole, *built);
+  if (!counts) counts = renderHere(plan, info, whole, *built);  // (or no worker could be started): on threads
   const double seconds = summary.seconds();
   char rate[48];
   std::snprintf(rate, sizeof rate, " (%.1f frames/s); ", seconds > 0 ? counts->drawn / seconds : 0.0);
