@@ -347,7 +347,7 @@ enum WorkerNews : char { kReady = 'r', kDrawn = 'd', kSkipped = 's', kRunsKnown 
 int drawFramesInWorker(const RenderPlan& plan, const nlohmann::json& info, FrameBuilder& builder, int worker,
                        const WorkerChannel& channel) {
   try {
-    ::setenv("LP_NUM_THREADS", "0", /*overwrite=*/0);  // the other workers use the other cores
+    rasteriseOnTheDrawingThread();  // the other workers use the other cores
     const FrameRange& range = plan.range;
     const FrameRange mine{range.first + worker * range.step, range.end, range.step * plan.renderers};
     RendererPool renderers(plan.scene.view, plan.scene.output.size, environment().shaderFolder, 1);

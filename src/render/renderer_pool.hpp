@@ -29,6 +29,11 @@
 
 namespace sl {
 
+// llvmpipe rasterises on the thread that draws (its own rasteriser threads would contend with other renderers, on
+// threads here or in other processes, for the same cores), unless the environment already says how. Call before the
+// process makes its first renderer; a pool of several renderers calls it itself.
+void rasteriseOnTheDrawingThread();
+
 class RendererPool {
  public:
   // `renderers` threads (at least 1; fewer if threads cannot start, at least one always does). Every renderer is

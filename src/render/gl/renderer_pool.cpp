@@ -9,13 +9,9 @@
 
 namespace sl {
 
-namespace {
-
 // Mesa reads LP_NUM_THREADS once, when the process's first context is made: set before any renderer exists, it
 // applies to all of them (set after one, it changes nothing, which costs speed, never bytes).
 void rasteriseOnTheDrawingThread() { ::setenv("LP_NUM_THREADS", "0", /*overwrite=*/0); }
-
-}  // namespace
 
 RendererPool::RendererPool(const ViewSettings& view, ImageSize size, const std::string& shaderFolder,
                            int renderers) {
