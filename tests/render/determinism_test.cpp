@@ -98,9 +98,10 @@ TEST(Determinism, OrbitingCameraMovesTheSphere) {
   EXPECT_NE(Renderer(orbiting, testing::kSmallSize).render(frame).rgb, still.rgb);
 }
 
-// A directed camera (FrameState::cameraDirection): the renderer keeps its cached sphere layer only while the
-// direction stays, so a frame gives the same bytes whichever directions came before it, and the direction does move
-// the sphere (the frame's direction wins over the scene's, orbit included).
+// A directed camera (FrameState::cameraDirection): the renderer draws the sphere straight into a frame whose
+// direction differs from its last frame's, caches it in a layer once the direction stays and keeps that layer only
+// while the direction stays, so a frame gives the same bytes whichever directions came before it and whichever way
+// it was drawn, and the direction does move the sphere (the frame's direction wins over the scene's, orbit included).
 TEST(Determinism, DirectedCameraRedrawsTheCachedSphereWhenItTurns) {
   ViewSettings settings = testing::smallSettings();
   settings.camera.orbitDegreesPerSecond = 30;  // ignored: the frame carries its camera
@@ -112,8 +113,9 @@ TEST(Determinism, DirectedCameraRedrawsTheCachedSphereWhenItTurns) {
     other.cameraDirection = direction;
     sequence.render(other);
   }
-  const Image inSequence = sequence.render(target);
-  EXPECT_EQ(sequence.render(target).rgb, inSequence.rgb);  // from the layer cached just now
+  const Image inSequence = sequence.render(target);        // straight into the frame: the camera turned
+  EXPECT_EQ(sequence.render(target).rgb, inSequence.rgb);  // at rest: drawn into the layer, then copied
+  EXPECT_EQ(sequence.render(target).rgb, inSequence.rgb);  // the cached layer copied
   EXPECT_EQ(Renderer(settings, testing::kSmallSize).render(target).rgb, inSequence.rgb);
   FrameState turned = target;
   turned.cameraDirection = Vec3{-0.2, 0.9, 0.4};

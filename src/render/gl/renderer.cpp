@@ -57,8 +57,9 @@ struct Renderer::Impl {
   std::optional<SphereGridLines> gridLines;  // the opaque sphere's grid on the unit sphere, for the last step
   ViewSpace cachedSpace = ViewSpace::Sphere;
   V3 cachedEye;  // the camera the cached sphere layer was drawn by
-  const SphereDecoration* uploadedDecoration = nullptr;
-  const SphereDecoration* cachedDecoration = nullptr;  // the decoration the cached sphere layer shows  // the field in fieldTexture (and in the cached layer)
+  V3 lastEye{std::nan(""), 0, 0};  // the camera of this renderer's last frame (none yet: equal to no eye)
+  const SphereDecoration* uploadedDecoration = nullptr;  // the field in fieldTexture
+  const SphereDecoration* cachedDecoration = nullptr;    // the decoration the cached sphere layer shows
 
   Impl(const ViewSettings& view, ImageSize frameSize, const std::string& shaderFolder)
       : composer(view, frameSize),
@@ -273,12 +274,18 @@ struct Renderer::Impl {
   }
 
   // The sphere of a camera at rest does not change between frames: draw it once into `sphereLayer`
-  // (on the background colour, as in the frame) and copy that rectangle into every frame.
+  // (on the background colour, as in the frame) and copy that rectangle into every frame. A camera that moved
+  // since this renderer's last frame draws straight into the frame: a layer would be cleared, drawn and copied
+  // for one use (a whole-frame fill and a panel's copy more per turning frame, same pixels).
   void drawSphereCached(const DrawList& list, const SphereImpostor& view, const PixelRect& rect) {
     if (!list.sphereIsStatic) return drawSphere(list, view);
     const V3 eye = view.camera.eye();
-    const bool sameEye = eye.x == cachedEye.x && eye.y == cachedEye.y && eye.z == cachedEye.z;
-    if (!sphereLayer || !sameEye || cachedSpace != list.viewSpace || cachedDecoration != list.sphereDecoration.get()) {
+    auto same = [](const V3& a, const V3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; };
+    const bool atRest = same(eye, lastEye);
+    lastEye = eye;
+    if (!sphereLayer || !same(eye, cachedEye) || cachedSpace != list.viewSpace ||
+        cachedDecoration != list.sphereDecoration.get()) {
+      if (!atRest) return drawSphere(list, view);
       if (!sphereLayer) sphereLayer = std::make_unique<GlLayer>(size.width, size.height);
       sphereLayer->bind();
       clearToBackground(list);
