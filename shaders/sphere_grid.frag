@@ -4,6 +4,9 @@
 // the sphere's anti-aliased outline. vColor: the line's colour, and in alpha how much of it covers the ball (0.75 for
 // the grid, faded where the meridians crowd at the poles; 1 for the caps). Camera uniforms as sphere.frag's (the
 // camera's own frame, uWorld* its basis in the world).
+// GRID_PART (defined by the file before this one: sphere_grid_lines.glsl or sphere_grid_poles.glsl) selects the
+// ribbons (0) or the caps (1): one program each, because llvmpipe shades both sides of a branch on vKind, and the
+// caps' surface measure would cost every ribbon pixel as much again.
 in vec2 vLocal;
 flat in int vKind;
 in vec3 vParams;
@@ -25,7 +28,11 @@ float poleCap(vec3 hit) {
 void main() {
   vec3 hit;
   float cover = sphereHit(gl_FragCoord.xy, hit);
-  float line = vKind == 0 ? bandCoverage(vParams.x, abs(vLocal.y)) : poleCap(hit);
+#if GRID_PART == 0
+  float line = bandCoverage(vParams.x, abs(vLocal.y));
+#else
+  float line = poleCap(hit);
+#endif
   float alpha = vColor.a * line * cover;
   if (alpha <= 0.0) discard;
   fragColor = vec4(lit(vColor.rgb, vec3(hit.x, -hit.y, hit.z), 0.18) * alpha, alpha);

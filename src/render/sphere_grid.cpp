@@ -60,7 +60,8 @@ SphereGridLines::SphereGridLines(double step, double piece) : step_(step), piece
     add([&](double phi) { return chartPoint(phi, j * step); }, -reach, reach, j == 0 ? 0.9f : 0.55f, fade);
 }
 
-void SphereGridLines::draw(ShapeBatch& batch, const SphereCamera& camera, float unit) const {
+std::size_t SphereGridLines::draw(ShapeBatch& batch, const SphereCamera& camera, float unit) const {
+  const std::size_t first = batch.vertices().size();
   const V3 eye = camera.eye();
   const double distance = camera.distance();
   const V3 towardsEye{eye.x / distance, eye.y / distance, eye.z / distance};
@@ -85,6 +86,7 @@ void SphereGridLines::draw(ShapeBatch& batch, const SphereCamera& camera, float 
     }
     flush();
   }
+  const std::size_t ribbons = batch.vertices().size() - first;
   // The chart's poles: squares about the caps (0.035 of the radius on the surface, at most about 10 frame units;
   // sphere_grid.frag measures them), with room for their anti-aliased edge where the limb foreshortens them.
   for (const double z : {-1.0, 1.0}) {
@@ -92,6 +94,7 @@ void SphereGridLines::draw(ShapeBatch& batch, const SphereCamera& camera, float 
     if (dot(pole, towardsEye) < past - 0.05) continue;
     batch.disc(camera.project(pole), float(0.035 * camera.pixelsPerUnitAt(pole)) + 8.0f, palette::poleMark);
   }
+  return ribbons;
 }
 
 void drawSphereGrid(ShapeBatch& batch, const SphereCamera& camera, float unit, double step) {

@@ -35,8 +35,9 @@ double sphereGridPiece(double radiusPixels);
 class SphereGridLines {
  public:
   SphereGridLines(double step, double piece);
-  // Ribbons along the visible parts of the lines, then squares about the visible poles (drawSphereGrid).
-  void draw(ShapeBatch& batch, const SphereCamera& camera, float unit) const;
+  // Ribbons along the visible parts of the lines, then squares about the visible poles (drawSphereGrid). Returns
+  // how many of the vertices added are the ribbons' (the renderer shades the two parts with two programs).
+  std::size_t draw(ShapeBatch& batch, const SphereCamera& camera, float unit) const;
   double step() const { return step_; }
   double piece() const { return piece_; }
 

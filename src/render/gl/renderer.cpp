@@ -32,6 +32,8 @@ namespace {
 std::vector<std::string> stage(const char* file) { return {"common.glsl", file}; }
 // The sphere: one program per look (the file before sphere.frag defines SPHERE_LOOK).
 std::vector<std::string> sphereStage(const char* look) { return {"common.glsl", look, "sphere.frag"}; }
+// The opaque sphere's grid: one program for its lines, one for its pole caps (the file before sphere_grid.frag).
+std::vector<std::string> gridStage(const char* part) { return {"common.glsl", part, "sphere_grid.frag"}; }
 
 }  // namespace
 
@@ -39,7 +41,7 @@ struct Renderer::Impl {
   FrameComposer composer;
   ImageSize size;
   GlContext context;
-  ShaderProgram flat, glyph, lit, sphereOpaque, sphereGlass, sphereColored, sphereGrid;
+  ShaderProgram flat, glyph, lit, sphereOpaque, sphereGlass, sphereColored, gridRibbons, poleCaps;
   GLuint vertexArray = 0, vertexBuffer = 0, glyphTexture = 0, fieldTexture = 0;
   mutable std::size_t vertexCapacity = 0;  // bytes of vertexBuffer's storage
   std::unique_ptr<GlLayer> sphereLayer;
@@ -71,7 +73,8 @@ struct Renderer::Impl {
         sphereOpaque(stage("shapes.vert"), sphereStage("sphere_opaque.glsl"), shaderFolder),
         sphereGlass(stage("shapes.vert"), sphereStage("sphere_glass.glsl"), shaderFolder),
         sphereColored(stage("shapes.vert"), sphereStage("sphere_colored.glsl"), shaderFolder),
-        sphereGrid(stage("shapes.vert"), stage("sphere_grid.frag"), shaderFolder) {
+        gridRibbons(stage("shapes.vert"), gridStage("sphere_grid_lines.glsl"), shaderFolder),
+        poleCaps(stage("shapes.vert"), gridStage("sphere_grid_poles.glsl"), shaderFolder) {
     createVertexArray();
     createGlyphTexture();
   }
@@ -262,11 +265,17 @@ struct Renderer::Impl {
     const double step = gridStep(camera), piece = sphereGridPiece(outline);
     if (!gridLines || gridLines->step() != step || gridLines->piece() != piece) gridLines.emplace(step, piece);
     ShapeBatch grid;
-    gridLines->draw(grid, camera, frameUnit(size));
+    const std::size_t ribbons = gridLines->draw(grid, camera, frameUnit(size)), caps = grid.vertices().size() - ribbons;
     if (grid.vertices().empty()) return;
-    setSphereUniforms(sphereGrid, list, view);
     upload(grid);
-    glDrawArrays(GL_TRIANGLES, 0, GLsizei(grid.vertices().size()));
+    if (ribbons > 0) {
+      setSphereUniforms(gridRibbons, list, view);
+      glDrawArrays(GL_TRIANGLES, 0, GLsizei(ribbons));
+    }
+    if (caps > 0) {
+      setSphereUniforms(poleCaps, list, view);
+      glDrawArrays(GL_TRIANGLES, GLint(ribbons), GLsizei(caps));
+    }
   }
 
   double gridStep(const SphereCamera& camera) const {
