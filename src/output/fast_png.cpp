@@ -22,28 +22,29 @@ void filterUpPortable(std::uint8_t* out, const std::uint8_t* row, const std::uin
   for (std::size_t i = 0; i < n; ++i) out[i] = static_cast<std::uint8_t>(row[i] - above[i]);
 }
 
-// Bit i of the mask (word i / 64, bit i % 64) says whether byte i repeats byte i - 1; bit 0 and the bits from n on
-// are zero. `words` = n / 64 + 2 (one spare word, so that 64 bits can be read from any position below n).
-void equalMaskPortable(const std::uint8_t* p, std::size_t n, std::uint64_t* mask, std::size_t words) {
-  std::fill(mask, mask + words, 0);
-  std::size_t i = 1;
+// Bit j of words (word j / 64, bit j % 64) says whether p[j] repeats p[j - 1], for j in [0, count): p[-1] must be
+// readable. Whole words are assigned; the bits of a last partial word are or-ed into it (the caller zeroes it).
+void equalMaskPortable(const std::uint8_t* p, std::size_t count, std::uint64_t* words) {
+  std::size_t j = 0;
   if constexpr (std::endian::native == std::endian::little) {
     // Eight bytes at a time: a byte of x is zero where the two loads agree.
     constexpr std::uint64_t low7 = 0x7F7F7F7F7F7F7F7Full, high = 0x8080808080808080ull;
-    for (; i + 8 <= n; i += 8) {
-      std::uint64_t a, b;
-      std::memcpy(&a, p + i, 8);
-      std::memcpy(&b, p + i - 1, 8);
-      const std::uint64_t x = a ^ b;
-      const std::uint64_t nonzero = (((x & low7) + low7) | x) & high;  // exact: no carries between bytes
-      const std::uint64_t equal = (~nonzero & high) >> 7;               // 1 in the lowest bit of each equal byte
-      const std::uint64_t bits = (equal * 0x0102040810204080ull) >> 56;  // gathers them: bit k for byte k
-      mask[i / 64] |= bits << (i % 64);
-      if (i % 64 > 56) mask[i / 64 + 1] |= bits >> (64 - i % 64);
+    for (; j + 64 <= count; j += 64) {
+      std::uint64_t word = 0;
+      for (std::size_t k = 0; k < 64; k += 8) {
+        std::uint64_t a, b;
+        std::memcpy(&a, p + j + k, 8);
+        std::memcpy(&b, p + j + k - 1, 8);
+        const std::uint64_t x = a ^ b;
+        const std::uint64_t nonzero = (((x & low7) + low7) | x) & high;  // exact: no carries between bytes
+        const std::uint64_t equal = (~nonzero & high) >> 7;               // 1 in the lowest bit of each equal byte
+        word |= ((equal * 0x0102040810204080ull) >> 56) << k;             // gathers them: bit k + m for byte m
+      }
+      words[j / 64] = word;
     }
   }
-  for (; i < n; ++i)
-    if (p[i] == p[i - 1]) mask[i / 64] |= std::uint64_t{1} << (i % 64);
+  for (; j < count; ++j)
+    if (p[j] == p[j - 1]) words[j / 64] |= std::uint64_t{1} << (j % 64);
 }
 
 #ifdef SL_FAST_PNG_X86
@@ -58,30 +59,25 @@ __attribute__((target("avx2"))) void filterUpAvx2(std::uint8_t* out, const std::
   filterUpPortable(out + i, row + i, above + i, n - i);
 }
 
-__attribute__((target("avx2"))) void equalMaskAvx2(const std::uint8_t* p, std::size_t n, std::uint64_t* mask,
-                                                    std::size_t words) {
-  std::fill(mask, mask + words, 0);
-  // Words of 64 bytes from byte 64 on (byte 64k - 1 exists); the first word and the tail byte by byte.
-  std::size_t i = 64;
-  for (; i + 64 <= n; i += 64) {
-    const auto* a = reinterpret_cast<const __m256i*>(p + i);
-    const auto* b = reinterpret_cast<const __m256i*>(p + i - 1);
+__attribute__((target("avx2"))) void equalMaskAvx2(const std::uint8_t* p, std::size_t count, std::uint64_t* words) {
+  std::size_t j = 0;
+  for (; j + 64 <= count; j += 64) {
+    const auto* a = reinterpret_cast<const __m256i*>(p + j);
+    const auto* b = reinterpret_cast<const __m256i*>(p + j - 1);
     const auto lowBits = static_cast<std::uint32_t>(
         _mm256_movemask_epi8(_mm256_cmpeq_epi8(_mm256_loadu_si256(a), _mm256_loadu_si256(b))));
     const auto highBits = static_cast<std::uint32_t>(
         _mm256_movemask_epi8(_mm256_cmpeq_epi8(_mm256_loadu_si256(a + 1), _mm256_loadu_si256(b + 1))));
-    mask[i / 64] = (std::uint64_t{highBits} << 32) | lowBits;
+    words[j / 64] = (std::uint64_t{highBits} << 32) | lowBits;
   }
-  for (std::size_t k = 1; k < std::min<std::size_t>(n, 64); ++k)
-    if (p[k] == p[k - 1]) mask[0] |= std::uint64_t{1} << k;
-  for (i = std::max<std::size_t>(i, 64); i < n; ++i)
-    if (p[i] == p[i - 1]) mask[i / 64] |= std::uint64_t{1} << (i % 64);
+  for (; j < count; ++j)
+    if (p[j] == p[j - 1]) words[j / 64] |= std::uint64_t{1} << (j % 64);
 }
 #endif
 
 struct Kernels {
   void (*filterUp)(std::uint8_t*, const std::uint8_t*, const std::uint8_t*, std::size_t);
-  void (*equalMask)(const std::uint8_t*, std::size_t, std::uint64_t*, std::size_t);
+  void (*equalMask)(const std::uint8_t*, std::size_t, std::uint64_t*);
 };
 
 Kernels kernelsFor(FastPngPath path) {
@@ -209,64 +205,139 @@ class BitWriter {
   int filled_ = 0;
 };
 
-// 64 bits of the mask from bit i on (i < n).
-std::uint64_t maskFrom(const std::uint64_t* mask, std::size_t i) {
-  const std::size_t word = i / 64, shift = i % 64;
-  return shift == 0 ? mask[word] : (mask[word] >> shift) | (mask[word + 1] << (64 - shift));
-}
+// === The filtered stream: every row "up"-filtered behind its filter byte, rowBytes = 1 + 3 * width bytes a row.
 
-// Cuts bytes [begin, end) of the filtered stream into literals and runs, greedily: a byte that starts kRunStart or
-// more repeats of the one before starts a run as long as the repeats go, cut into runs of 258, a rest of 1 or 2
-// given as literals; any other byte is a literal. literals(pointer, count) and run(length) receive them in order; either may return
-// false to stop the walk.
-template <class Literals, class Run>
-void walk(const std::uint8_t* p, std::size_t begin, std::size_t end, const std::uint64_t* mask, Literals literals,
-          Run run) {
-  std::size_t i = begin;
-  if (i == 0 && !literals(p, 1)) return;
-  i = std::max<std::size_t>(i, 1);
-  while (i < end) {
-    // Bit j of `starts`: a run of kRunStart or more begins at i + j (for j <= 64 - kRunStart; the last bits lack
-    // the bytes after). Shorter repeats are literals: fewer, longer stretches of literals are faster to write.
-    const std::uint64_t repeats = maskFrom(mask, i);
-    std::uint64_t starts = repeats;
-    for (int shift = 1; shift < kRunStart; ++shift) starts &= repeats >> shift;
-    if (!(starts & 1)) {  // literals up to the next run worth a match
-      const std::size_t k = std::min<std::size_t>(std::min(std::countr_zero(starts), 65 - kRunStart), end - i);
-      if (!literals(p + i, k)) return;
-      i += k;
-      continue;
-    }
-    std::size_t length = 0;
-    for (int ones = 64; ones == 64 && i + length < end; length += static_cast<std::size_t>(ones))
-      ones = std::countr_one(maskFrom(mask, i + length));
-    length = std::min(length, end - i);
-    i += length;
-    for (; length >= kMaxRun; length -= kMaxRun)
-      if (!run(kMaxRun)) return;
-    if (length >= kMinRun ? !run(static_cast<int>(length)) : (length > 0 && !literals(p + i - length, length))) return;
+// Bytes [from, to) of the filtered stream into dest, straight from the image (each row needs only itself and the
+// row above, so any stretch can be filtered on its own).
+void filterStream(const Image& image, const Kernels& kernels, std::size_t from, std::size_t to, std::uint8_t* dest) {
+  const std::size_t stride = static_cast<std::size_t>(image.width) * 3, rowBytes = stride + 1;
+  while (from < to) {
+    const std::size_t y = from / rowBytes, rowEnd = std::min(to, (y + 1) * rowBytes);
+    if (from % rowBytes == 0) *dest++ = 2, ++from;  // "up"; on the first row the bytes above count as zero
+    const std::size_t count = rowEnd - from;
+    const std::uint8_t* pixels = image.rgb.data() + y * stride + (from % rowBytes - 1);
+    if (count > 0 && y == 0) std::memcpy(dest, pixels, count);
+    if (count > 0 && y > 0) kernels.filterUp(dest, pixels, pixels - stride, count);
+    dest += count;
+    from = rowEnd;
   }
 }
 
+// Part of the filtered stream in memory: `bytes` holds stream position `first` (and the bytes before it that the
+// holder kept).
+struct StreamWindow {
+  const std::uint8_t* bytes;
+  std::size_t first;
+  const std::uint8_t* at(std::size_t i) const {
+    return bytes + (static_cast<std::ptrdiff_t>(i) - static_cast<std::ptrdiff_t>(first));
+  }
+};
+
+// The repeat bits of part of the stream (bit i: byte i repeats byte i - 1): `words` holds word firstWord.
+struct MaskWindow {
+  const std::uint64_t* words;
+  std::size_t firstWord;
+  std::uint64_t from(std::size_t i) const {  // 64 bits from bit i on
+    const std::uint64_t* word = words + (i / 64 - firstWord);
+    const std::size_t shift = i % 64;
+    return shift == 0 ? word[0] : (word[0] >> shift) | (word[1] << (64 - shift));
+  }
+};
+
+// Cuts bytes [begin, end) of the filtered stream (n bytes) into literals and runs, greedily: a byte that starts
+// kRunStart or more repeats of the one before starts a run as long as the repeats go, cut into runs of 258, a rest
+// of 1 or 2 given as literals; any other byte is a literal. literals(pointer, count) and run(length) receive them in
+// order; either may return false to end the walk.
+// In steps: advance() goes as far as the repeat bits known (those of bytes below `known`; known >= n: all, the
+// bits from n on zero) decide, and the next step goes on from there. A run that reaches past what is known sends its
+// runs of 258 so far and the rest once its end is known: the same symbols however the stream is cut into steps.
+// A step stops at most 63 bytes before `known`, or inside a run, and reads no byte before where it stopped.
+class StreamWalker {
+ public:
+  StreamWalker(std::size_t begin, std::size_t end, std::size_t n) : i_(begin), end_(end), n_(n) {}
+
+  // False once a receiver has ended the walk.
+  template <class Literals, class Run>
+  bool advance(const StreamWindow& bytes, const MaskWindow& mask, std::size_t known, Literals literals, Run run) {
+    const bool all = known >= n_;
+    if (i_ == 0) {
+      if (!literals(bytes.at(0), 1)) return false;
+      i_ = 1;
+    }
+    while (i_ < end_) {
+      if (!inRun_) {
+        if (!all && i_ + 64 > known) return true;
+        // Bit j of `starts`: a run of kRunStart or more begins at i + j (for j <= 64 - kRunStart; the last bits
+        // lack the bytes after). Shorter repeats are literals: fewer, longer stretches of literals are faster.
+        const std::uint64_t repeats = mask.from(i_);
+        std::uint64_t starts = repeats;
+        for (int shift = 1; shift < kRunStart; ++shift) starts &= repeats >> shift;
+        if (!(starts & 1)) {  // literals up to the next run worth a match
+          const std::size_t k = std::min<std::size_t>(std::min(std::countr_zero(starts), 65 - kRunStart), end_ - i_);
+          if (!literals(bytes.at(i_), k)) return false;
+          i_ += k;
+          continue;
+        }
+        inRun_ = true;
+      }
+      const std::size_t limit = all ? end_ : std::min(end_, known);
+      std::size_t length = 0;
+      for (int ones = 64; ones == 64 && i_ + length < limit; length += static_cast<std::size_t>(ones))
+        ones = std::countr_one(mask.from(i_ + length));
+      if (i_ + length >= limit && limit < end_) {  // goes on past what is known: its runs of 258 so far
+        for (length = limit - i_; length >= kMaxRun; length -= kMaxRun, i_ += kMaxRun)
+          if (!run(kMaxRun)) return false;
+        return true;
+      }
+      length = std::min(length, end_ - i_);
+      i_ += length;
+      inRun_ = false;
+      for (; length >= kMaxRun; length -= kMaxRun)
+        if (!run(kMaxRun)) return false;
+      if (length >= kMinRun ? !run(static_cast<int>(length))
+                            : (length > 0 && !literals(bytes.at(i_ - length), length)))
+        return false;
+    }
+    return true;
+  }
+
+ private:
+  std::size_t i_, end_, n_;
+  bool inRun_ = false;  // i_ is inside a run whose end was not yet known
+};
+
 // Symbol counts for the Huffman code, from every eighth row (rendered frames change slowly down the image), plus
-// one for every symbol, so that every literal and every run length has a code whatever the other rows hold.
-std::array<std::uint32_t, kLitLenSymbols> sampleCounts(const std::uint8_t* p, std::size_t rowBytes, int rows,
-                                                       const std::uint64_t* mask) {
+// one for every symbol, so that every literal and every run length has a code whatever the other rows hold. Each
+// row is filtered with the 64 bytes after it (their repeat bits decide the row's last symbols) into `sample`.
+std::array<std::uint32_t, kLitLenSymbols> sampleCounts(const Image& image, const Kernels& kernels,
+                                                       FastPngScratch& scratch) {
+  const std::size_t rowBytes = static_cast<std::size_t>(image.width) * 3 + 1;
+  const std::size_t n = rowBytes * static_cast<std::size_t>(image.height);
   std::array<std::array<std::uint32_t, 256>, 2> literal{};  // two tables: repeated bytes do not wait on one counter
   std::array<std::uint32_t, kLitLenSymbols> counts{};
-  for (int y = 0; y < rows; y += 8) {
-    const std::size_t begin = static_cast<std::size_t>(y) * rowBytes;
-    walk(p, begin, begin + rowBytes, mask,
-         [&](const std::uint8_t* bytes, std::size_t k) {
-           std::size_t j = 0;
-           for (; j + 2 <= k; j += 2) ++literal[0][bytes[j]], ++literal[1][bytes[j + 1]];
-           if (j < k) ++literal[0][bytes[j]];
-           return true;
-         },
-         [&](int length) {
-           ++counts[kLengthCodes[length].symbol];
-           return true;
-         });
+  for (int y = 0; y < image.height; y += 8) {
+    const std::size_t begin = static_cast<std::size_t>(y) * rowBytes, end = begin + rowBytes;
+    const std::size_t from = begin / 64 * 64, to = std::min(n, end + 64);  // the bytes whose repeat bits are read
+    scratch.sample.resize(to - from + 1);  // and the byte before them
+    if (from > 0)
+      filterStream(image, kernels, from - 1, to, scratch.sample.data());
+    else
+      scratch.sample[0] = 0, filterStream(image, kernels, 0, to, scratch.sample.data() + 1);
+    scratch.sampleEqual.assign((to - from) / 64 + 2, 0);
+    kernels.equalMask(scratch.sample.data() + 1, to - from, scratch.sampleEqual.data());
+    if (from == 0) scratch.sampleEqual[0] &= ~std::uint64_t{1};  // the stream's first byte repeats nothing
+    StreamWalker(begin, end, n).advance(
+        StreamWindow{scratch.sample.data() + 1, from}, MaskWindow{scratch.sampleEqual.data(), from / 64}, to,
+        [&](const std::uint8_t* bytes, std::size_t k) {
+          std::size_t j = 0;
+          for (; j + 2 <= k; j += 2) ++literal[0][bytes[j]], ++literal[1][bytes[j + 1]];
+          if (j < k) ++literal[0][bytes[j]];
+          return true;
+        },
+        [&](int length) {
+          ++counts[kLengthCodes[length].symbol];
+          return true;
+        });
   }
   for (int b = 0; b < 256; ++b) counts[b] += literal[0][b] + literal[1][b];
   for (auto& c : counts) ++c;
@@ -313,10 +384,16 @@ DynamicBlock planBlock(const std::array<std::uint32_t, kLitLenSymbols>& counts) 
   return block;
 }
 
-// The block into out; nullptr if it would pass `limit` (then stored blocks are smaller: the caller writes those).
-// `out` has room up to limit + 512.
-std::uint8_t* writeDynamicBlock(const DynamicBlock& block, const std::uint8_t* p, std::size_t n,
-                                const std::uint64_t* mask, std::uint8_t* out, const std::uint8_t* limit) {
+// Each band (kFastPngBandBytes) comes after kBandLookback bytes of the band before, which the walk may still read
+// (it stops at most 127 bytes before the end of a band: 63 before the repeat bits known, which end at most 63 before
+// the band's end).
+constexpr std::size_t kBandLookback = 256;
+
+// The block into out, and the zlib checksum of the stream into `adler`; nullptr if it would pass `limit` (then
+// stored blocks are smaller: the caller writes those). `out` has room up to limit + 512.
+std::uint8_t* writeDynamicBlock(const DynamicBlock& block, const Image& image, const Kernels& kernels,
+                                std::size_t bandBytesWanted, FastPngScratch& scratch, std::uint8_t* out,
+                                const std::uint8_t* limit, std::uint32_t& adler) {
   BitWriter writer(out);
   writer.put(1, 1);  // final block
   writer.put(2, 2);  // dynamic Huffman
@@ -330,24 +407,47 @@ std::uint8_t* writeDynamicBlock(const DynamicBlock& block, const std::uint8_t* p
   }
   for (int d = 0; d < kDistanceCodes; ++d) writer.put(block.clCodes[1], block.clLengths[1]);
   if (writer.position() > limit) return nullptr;
-  bool fits = true;
   const auto* codes = block.litCodes.data();
   const auto* lengths = block.litLengths.data();
-  walk(p, 0, n, mask,
-       [&](const std::uint8_t* bytes, std::size_t k) {  // at most 62 literals of at most 15 bits: < 117 bytes
-         std::size_t j = 0;
-         for (; j + 2 <= k; j += 2) {
-           const std::uint8_t a = bytes[j], b = bytes[j + 1];
-           writer.put(codes[a] | (std::uint64_t(codes[b]) << lengths[a]), lengths[a] + lengths[b]);
-         }
-         if (j < k) writer.put(codes[bytes[j]], lengths[bytes[j]]);
-         return fits = writer.position() <= limit;
-       },
-       [&](int length) {
-         writer.put(block.runBits[length], block.runBitCount[length]);
-         return fits = writer.position() <= limit;
-       });
-  if (!fits) return nullptr;
+  const auto literals = [&](const std::uint8_t* bytes, std::size_t k) {  // at most 57 literals of at most 15 bits
+    std::size_t j = 0;
+    for (; j + 2 <= k; j += 2) {
+      const std::uint8_t a = bytes[j], b = bytes[j + 1];
+      writer.put(codes[a] | (std::uint64_t(codes[b]) << lengths[a]), lengths[a] + lengths[b]);
+    }
+    if (j < k) writer.put(codes[bytes[j]], lengths[bytes[j]]);
+    return writer.position() <= limit;
+  };
+  const auto run = [&](int length) {
+    writer.put(block.runBits[length], block.runBitCount[length]);
+    return writer.position() <= limit;
+  };
+
+  const std::size_t rowBytes = static_cast<std::size_t>(image.width) * 3 + 1;
+  const std::size_t n = rowBytes * static_cast<std::size_t>(image.height);
+  const std::size_t bandBytes = std::max<std::size_t>(1, bandBytesWanted / rowBytes) * rowBytes;
+  scratch.band.resize(kBandLookback + std::min(bandBytes, n));
+  std::fill(scratch.band.begin(), scratch.band.begin() + kBandLookback, 0);
+  scratch.equal.resize(n / 64 + 2);
+  std::uint64_t* mask = scratch.equal.data();
+  mask[n / 64] = mask[n / 64 + 1] = 0;  // the bits from n on stay zero (the last word's are or-ed in)
+  std::uint8_t* band = scratch.band.data() + kBandLookback;  // stream position `start`
+  StreamWalker walker(0, n, n);
+  std::size_t known = 0;  // repeat bits set below this (a multiple of 64, or n)
+  for (std::size_t start = 0, previous = 0; start < n; start += previous) {
+    const std::size_t size = std::min(bandBytes, n - start), end = start + size;
+    std::memmove(band - kBandLookback, band - kBandLookback + previous, kBandLookback);
+    filterStream(image, kernels, start, end, band);
+    adler = libdeflate_adler32(adler, band, size);
+    const std::size_t markedTo = end == n ? n : end / 64 * 64;
+    if (markedTo > known) {
+      kernels.equalMask(band - (start - known), markedTo - known, mask + known / 64);  // known >= start - 63
+      if (known == 0) mask[0] &= ~std::uint64_t{1};  // the stream's first byte repeats nothing
+      known = markedTo;
+    }
+    if (!walker.advance(StreamWindow{band, start}, MaskWindow{mask, 0}, known, literals, run)) return nullptr;
+    previous = size;
+  }
   writer.put(block.litCodes[kEndOfBlock], block.litLengths[kEndOfBlock]);
   return writer.finish();
 }
@@ -397,33 +497,25 @@ bool fastPngHasAvx2() {
 #endif
 }
 
-std::vector<std::uint8_t> encodeFastPng(const Image& image, FastPngScratch& scratch, FastPngPath path) {
+std::vector<std::uint8_t> encodeFastPng(const Image& image, FastPngScratch& scratch, FastPngPath path,
+                                        std::size_t bandBytes) {
   const Kernels kernels = kernelsFor(path);
-  const std::size_t stride = static_cast<std::size_t>(image.width) * 3, rowBytes = stride + 1;
-  const std::size_t n = rowBytes * static_cast<std::size_t>(image.height);
-  scratch.filtered.resize(n);
-  std::uint8_t* filtered = scratch.filtered.data();
-  for (int y = 0; y < image.height; ++y) {
-    std::uint8_t* row = filtered + static_cast<std::size_t>(y) * rowBytes;
-    const std::uint8_t* pixels = image.rgb.data() + static_cast<std::size_t>(y) * stride;
-    row[0] = 2;  // "up"; on the first row the bytes above count as zero
-    if (y == 0)
-      std::memcpy(row + 1, pixels, stride);
-    else
-      kernels.filterUp(row + 1, pixels, pixels - stride, stride);
-  }
-  const std::size_t words = n / 64 + 2;
-  scratch.equal.resize(words);
-  kernels.equalMask(filtered, n, scratch.equal.data(), words);
-  const std::uint64_t* mask = scratch.equal.data();
-  const DynamicBlock block = planBlock(sampleCounts(filtered, rowBytes, image.height, mask));
+  const std::size_t n = (static_cast<std::size_t>(image.width) * 3 + 1) * static_cast<std::size_t>(image.height);
+  const DynamicBlock block = planBlock(sampleCounts(image, kernels, scratch));
   // Huffman-coded unless that is no smaller than stored blocks (noise).
   const std::size_t storedBytes = storedSize(n);
   scratch.deflated.resize(storedBytes + 512);  // room for the header (< 270 bytes) and one step past the limit
-  const std::uint8_t* huffmanEnd = writeDynamicBlock(block, filtered, n, mask, scratch.deflated.data(),
-                                                     scratch.deflated.data() + storedBytes);
+  std::uint32_t adler = 1;
+  const std::uint8_t* huffmanEnd = writeDynamicBlock(block, image, kernels, bandBytes, scratch,
+                                                     scratch.deflated.data(), scratch.deflated.data() + storedBytes,
+                                                     adler);
   const bool stored = huffmanEnd == nullptr || std::size_t(huffmanEnd - scratch.deflated.data()) >= storedBytes;
   const std::size_t deflateBytes = stored ? storedBytes : std::size_t(huffmanEnd - scratch.deflated.data());
+  if (stored) {  // the whole stream at once, and its checksum again (the bands may have stopped early)
+    scratch.filtered.resize(n);
+    filterStream(image, kernels, 0, n, scratch.filtered.data());
+    adler = libdeflate_adler32(1, scratch.filtered.data(), n);
+  }
 
   constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
   constexpr std::size_t kHeaderChunk = 12 + 13, kEndChunk = 12;
@@ -442,12 +534,12 @@ std::vector<std::uint8_t> encodeFastPng(const Image& image, FastPngScratch& scra
   data = idat;
   *data++ = 0x78, *data++ = 0x01;  // zlib: deflate, 32 KiB window, "fastest" (RFC 1950)
   if (stored) {
-    data = writeStoredBlocks(filtered, n, data);
+    data = writeStoredBlocks(scratch.filtered.data(), n, data);
   } else {
     std::memcpy(data, scratch.deflated.data(), deflateBytes);
     data += deflateBytes;
   }
-  data = put32(data, libdeflate_adler32(1, filtered, n));
+  data = put32(data, adler);
   out = closeChunk(out, "IDAT", static_cast<std::size_t>(data - idat));
   out = closeChunk(out, "IEND", 0);
   png.resize(static_cast<std::size_t>(out - png.data()));

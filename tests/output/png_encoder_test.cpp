@@ -13,6 +13,7 @@
 #include <cstring>
 #include <random>
 #include <string>
+#include <utility>
 
 #include "output/fast_png.hpp"
 #include "output/png_encoder.hpp"
@@ -170,6 +171,22 @@ TEST(PngEncoder, PortableAndAvx2PathsGiveTheSameBytes) {
   }
 }
 
+TEST(PngEncoder, TheBandsTheStreamIsCutIntoChangeNoByte) {
+  // One row a band puts band ends at every residue of the runs of 258 that cross them (a run that reaches past a
+  // band is sent in whole runs of 258 as far as known, its rest later); rows of every width from 1 to 40 pixels.
+  FastPngScratch scratch;
+  std::vector<Case> all = cases();
+  for (int w = 1; w <= 40; ++w) all.push_back({"scene " + std::to_string(w) + "x301", scene(w, 301)});
+  // Rows of 259 bytes: each row's run of zeros is 257 bytes long, and the one of row 63 ends where a band's repeat
+  // bits end (64 * 259 is a multiple of 64): its end is not known there, and no run of 258 may be sent for it.
+  all.push_back({"flat 86x70", flat(86, 70, 9, 9, 9)});
+  for (const Case& c : all) {
+    const auto whole = encodeFastPng(c.image, scratch, FastPngPath::automatic, std::size_t{1} << 40);
+    for (std::size_t band : {std::size_t(1), std::size_t(200), std::size_t(5000), kFastPngBandBytes})
+      ASSERT_TRUE(encodeFastPng(c.image, scratch, FastPngPath::automatic, band) == whole) << c.name << ", " << band;
+  }
+}
+
 TEST(PngEncoder, SameImageSameBytes) {
   for (PngCompression compression : {PngCompression::Fast, PngCompression::Small}) {
     const Image image = scene(64, 40);
@@ -186,6 +203,25 @@ TEST(PngEncoder, PinnedBytes) {
   // purpose (a new PngEncoder::identity, so that older folders are not joined).
   const auto png = PngEncoder(PngCompression::Fast).encode(scene(97, 61));
   EXPECT_EQ(sha256Hex(png), "b454327ea8f55b90b134ba33885f9837b393507d3308f2bf56eb3b02b9c7efef") << "size " << png.size();
+}
+
+TEST(PngEncoder, PinnedBytesAcrossBands) {
+  // Larger images are filtered and deflated in bands of rows: runs that cross bands (a flat frame is one run), rows
+  // longer than a band, bands of thousands of one-pixel rows, noise (stored blocks). These are the bytes the writer
+  // gave when it filtered the whole frame before deflating it (sphere-linkages fast 1).
+  const std::pair<Image, const char*> pinned[] = {
+      {scene(1281, 721), "4eb4b20620487ee4980b200ea13b11f0a739a6a6c1c2991e22a4d5c59f0313a0"},
+      {flat(1281, 721, 200, 201, 202), "31dc5e044039a083292c74d205e0bb96713445f56f8561487135505fb93c0a29"},
+      {gradientWithNoise(1281, 721), "f008986a267ea529b19daaecad71a7cab51de6e7b3b29f990f862f2aca4a95bd"},
+      {noise(640, 360, 5), "6ef669e39631f4592feb04bedefb07b3830e7eb906d19aabf2dd08f2e8407c51"},
+      {scene(1, 3001), "18e84221e4b03cf165138cda9abc2ee09165e3893c43a9cff5e8385685bdd885"},
+      {scene(4001, 9), "71435dd0cc9651dff5bef1c2807af5db3d5cceafdaf0bfd289ef6c831f1d4132"},
+      {scene(3840, 2160), "1f829c1b9cbd97e39d83cd7a4e44c60edf0beee6b35f8c151bc8639e8ea06a37"}};
+  PngEncoder encoder(PngCompression::Fast);
+  for (const auto& [image, digest] : pinned) {
+    const auto png = encoder.encode(image);
+    EXPECT_EQ(sha256Hex(png), digest) << image.width << "x" << image.height << ", " << png.size() << " bytes";
+  }
 }
 
 TEST(PngEncoder, RejectsMismatchedBuffer) {
