@@ -62,6 +62,8 @@ struct ShapeSegment {
   std::size_t first, count;
 };
 
+// Every shape is drawn as quads: six vertices a quad, its corners 0 1 2 0 2 3 (two triangles), which the renderer
+// turns into four indexed corners (and a polyline's sections into shared ones).
 class ShapeBatch {
  public:
   // A segment with round ends; `shaded` lights it as a cylinder.

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 
 #include "fixtures/synthetic_frame.hpp"
@@ -51,6 +52,21 @@ TEST(DrawList, OnePanelDrawingPerPanelInLayoutOrder) {
 
 // Without a text panel, the title and the time go across the top of the frame, glyphs in its top
 // line only; a text panel, or view.title_line false, leaves them out.
+// The renderer draws batches as indexed quads (render/gl/renderer.cpp, upload): every six vertices are the corners
+// 0 1 2 0 2 3 of one quad, in every panel's batch, segments included.
+TEST(DrawList, EveryShapeIsQuadsOfSixVerticesInCornerOrder) {
+  auto same = [](const ShapeVertex& a, const ShapeVertex& b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  const DrawList list = FrameComposer(fourPanels(), {640, 360}).compose(syntheticFrame(2.0, 120));
+  for (const PanelDrawing& panel : list.panels) {
+    const auto& v = panel.shapes.vertices();
+    ASSERT_EQ(v.size() % 6, 0u);
+    for (std::size_t q = 0; q < v.size(); q += 6)
+      ASSERT_TRUE(same(v[q + 3], v[q]) && same(v[q + 4], v[q + 2])) << "quad " << q / 6;
+    for (const ShapeSegment& segment : panel.shapes.segments())
+      EXPECT_TRUE(segment.first % 6 == 0 && segment.count % 6 == 0);
+  }
+}
+
 TEST(DrawList, ATitleLineWhenThereIsNoTextPanel) {
   ViewSettings noText = fourPanels();
   noText.panels.erase(noText.panels.begin());

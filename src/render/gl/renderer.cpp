@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <cstddef>
 #include <optional>
 #include <stdexcept>
@@ -42,8 +44,10 @@ struct Renderer::Impl {
   ImageSize size;
   GlContext context;
   ShaderProgram flat, glyph, lit, sphereOpaque, sphereGlass, sphereColored, gridRibbons, poleCaps;
-  GLuint vertexArray = 0, vertexBuffer = 0, glyphTexture = 0, fieldTexture = 0;
-  mutable std::size_t vertexCapacity = 0;  // bytes of vertexBuffer's storage
+  GLuint vertexArray = 0, vertexBuffer = 0, indexBuffer = 0, glyphTexture = 0, fieldTexture = 0;
+  mutable std::size_t vertexCapacity = 0, indexCapacity = 0;  // bytes of the buffers' storage
+  mutable std::vector<ShapeVertex> corners;        // upload(): the batch's quad corners, each once
+  mutable std::vector<std::uint32_t> cornerIndices;  // and its triangles' corners, one per vertex of the batch
   std::unique_ptr<GlLayer> sphereLayer;
   // The plain balls (opaque without grid, glass) of the panels, each drawn once: the same for every direction.
   struct BallLayer {
@@ -83,14 +87,17 @@ struct Renderer::Impl {
     glDeleteTextures(1, &glyphTexture);
     if (fieldTexture) glDeleteTextures(1, &fieldTexture);
     glDeleteBuffers(1, &vertexBuffer);
+    glDeleteBuffers(1, &indexBuffer);
     glDeleteVertexArrays(1, &vertexArray);
   }
 
   void createVertexArray() {
     glGenVertexArrays(1, &vertexArray);
     glGenBuffers(1, &vertexBuffer);
+    glGenBuffers(1, &indexBuffer);
     glBindVertexArray(vertexArray);
     glBindBuffer(GL_ARRAY_BUFFER, vertexBuffer);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer);  // part of the vertex array's state
     const GLsizei stride = sizeof(ShapeVertex);
     auto attribute = [&](GLuint index, GLint count, std::size_t offset) {
       glEnableVertexAttribArray(index);
@@ -148,17 +155,50 @@ struct Renderer::Impl {
     glUniform2f(program.uniform("uCentre"), camera->centre().x, camera->centre().y);
   }
 
+  // The batch's triangles as indexed quads: each quad's four corners once, and a quad that starts on the edge the
+  // one before ended on (a polyline's sections) reuses those two corners. The same triangles, corners in the same
+  // order (0 1 2, 0 2 3); a third of the vertices to copy and shade for a polyline, two thirds for the rest.
   void upload(const ShapeBatch& shapes) const {
-    const auto& vertices = shapes.vertices();
+    const auto& list = shapes.vertices();  // six a quad: corners 0 1 2 0 2 3 (ShapeBatch::quad)
+    corners.clear();
+    cornerIndices.resize(list.size());
+    auto same = [](const ShapeVertex& a, const ShapeVertex& b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+    for (std::size_t q = 0; q + 6 <= list.size(); q += 6) {
+      const ShapeVertex* quad = &list[q];
+      std::uint32_t c[4];
+      const bool joined = q > 0 && same(quad[0], corners[cornerIndices[q - 5]]) &&
+                          same(quad[5], corners[cornerIndices[q - 4]]);  // the last quad's corners 1 and 2
+      if (joined) {
+        c[0] = cornerIndices[q - 5], c[3] = cornerIndices[q - 4];
+      } else {
+        c[0] = std::uint32_t(corners.size()), corners.push_back(quad[0]);
+        c[3] = std::uint32_t(corners.size() + 2);
+      }
+      c[1] = std::uint32_t(corners.size()), corners.push_back(quad[1]);
+      c[2] = std::uint32_t(corners.size()), corners.push_back(quad[2]);
+      if (!joined) corners.push_back(quad[5]);
+      const std::uint32_t order[6] = {c[0], c[1], c[2], c[0], c[2], c[3]};
+      std::copy(order, order + 6, cornerIndices.begin() + std::ptrdiff_t(q));
+    }
     glBindVertexArray(vertexArray);
     glBindBuffer(GL_ARRAY_BUFFER, vertexBuffer);
-    // The buffer only grows: storage allocated afresh for every batch cost page faults worth a tenth of a fan frame.
-    const std::size_t bytes = vertices.size() * sizeof(ShapeVertex);
+    // The buffers only grow: storage allocated afresh for every batch cost page faults worth a tenth of a fan frame.
+    const std::size_t bytes = corners.size() * sizeof(ShapeVertex), indexBytes = cornerIndices.size() * 4;
     if (bytes > vertexCapacity) {
       vertexCapacity = std::max(bytes, vertexCapacity + vertexCapacity / 2);
       glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertexCapacity), nullptr, GL_STREAM_DRAW);
     }
-    glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(bytes), vertices.data());
+    glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(bytes), corners.data());
+    if (indexBytes > indexCapacity) {
+      indexCapacity = std::max(indexBytes, indexCapacity + indexCapacity / 2);
+      glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indexCapacity), nullptr, GL_STREAM_DRAW);
+    }
+    glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, 0, GLsizeiptr(indexBytes), cornerIndices.data());
+  }
+
+  // Vertices [first, first + count) of the batch uploaded last, as triangles.
+  static void drawTriangles(std::size_t first, std::size_t count) {
+    glDrawElements(GL_TRIANGLES, GLsizei(count), GL_UNSIGNED_INT, reinterpret_cast<const void*>(first * 4));
   }
 
   void drawShapes(const DrawList& list, const ShapeBatch& shapes, const SphereCamera* camera) {
@@ -173,7 +213,7 @@ struct Renderer::Impl {
                                      : segment.program == ShapeProgram::Glyph ? glyph
                                                                               : lit;
       program.use();
-      glDrawArrays(GL_TRIANGLES, GLint(segment.first), GLsizei(segment.count));
+      drawTriangles(segment.first, segment.count);
     }
   }
 
@@ -204,7 +244,7 @@ struct Renderer::Impl {
     ShapeBatch quad;
     quad.rect(float(x0), float(y0), float(x1), float(y1), {});
     upload(quad);
-    glDrawArrays(GL_TRIANGLES, 0, GLsizei(quad.vertices().size()));
+    drawTriangles(0, quad.vertices().size());
   }
 
   // The plain ball of a look (opaque without grid, or glass) for this panel and camera distance: drawn once on the
@@ -270,11 +310,11 @@ struct Renderer::Impl {
     upload(grid);
     if (ribbons > 0) {
       setSphereUniforms(gridRibbons, list, view);
-      glDrawArrays(GL_TRIANGLES, 0, GLsizei(ribbons));
+      drawTriangles(0, ribbons);
     }
     if (caps > 0) {
       setSphereUniforms(poleCaps, list, view);
-      glDrawArrays(GL_TRIANGLES, GLint(ribbons), GLsizei(caps));
+      drawTriangles(ribbons, caps);
     }
   }
 
