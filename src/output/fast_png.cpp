@@ -205,12 +205,15 @@ class BitWriter {
   int filled_ = 0;
 };
 
-// === The filtered stream: every row "up"-filtered behind its filter byte, rowBytes = 1 + 3 * width bytes a row.
+// === The filtered stream: every row "up"-filtered behind its filter byte.
+
+std::size_t streamRowBytes(const Image& image) { return static_cast<std::size_t>(image.width) * 3 + 1; }
+std::size_t streamBytes(const Image& image) { return streamRowBytes(image) * static_cast<std::size_t>(image.height); }
 
 // Bytes [from, to) of the filtered stream into dest, straight from the image (each row needs only itself and the
 // row above, so any stretch can be filtered on its own).
 void filterStream(const Image& image, const Kernels& kernels, std::size_t from, std::size_t to, std::uint8_t* dest) {
-  const std::size_t stride = static_cast<std::size_t>(image.width) * 3, rowBytes = stride + 1;
+  const std::size_t rowBytes = streamRowBytes(image), stride = rowBytes - 1;
   while (from < to) {
     const std::size_t y = from / rowBytes, rowEnd = std::min(to, (y + 1) * rowBytes);
     if (from % rowBytes == 0) *dest++ = 2, ++from;  // "up"; on the first row the bytes above count as zero
@@ -232,6 +235,14 @@ struct StreamWindow {
     return bytes + (static_cast<std::ptrdiff_t>(i) - static_cast<std::ptrdiff_t>(first));
   }
 };
+
+// The repeat bits of stream bytes [from, from + count), held at p (p[-1] readable), into words: byte `from` (a
+// multiple of 64) at bit 0 of words[0]. The stream's first byte repeats nothing.
+void markRepeats(const Kernels& kernels, const std::uint8_t* p, std::size_t from, std::size_t count,
+                 std::uint64_t* words) {
+  kernels.equalMask(p, count, words);
+  if (from == 0) words[0] &= ~std::uint64_t{1};
+}
 
 // The repeat bits of part of the stream (bit i: byte i repeats byte i - 1): `words` holds word firstWord.
 struct MaskWindow {
@@ -311,8 +322,7 @@ class StreamWalker {
 // row is filtered with the 64 bytes after it (their repeat bits decide the row's last symbols) into `sample`.
 std::array<std::uint32_t, kLitLenSymbols> sampleCounts(const Image& image, const Kernels& kernels,
                                                        FastPngScratch& scratch) {
-  const std::size_t rowBytes = static_cast<std::size_t>(image.width) * 3 + 1;
-  const std::size_t n = rowBytes * static_cast<std::size_t>(image.height);
+  const std::size_t rowBytes = streamRowBytes(image), n = streamBytes(image);
   std::array<std::array<std::uint32_t, 256>, 2> literal{};  // two tables: repeated bytes do not wait on one counter
   std::array<std::uint32_t, kLitLenSymbols> counts{};
   for (int y = 0; y < image.height; y += 8) {
@@ -324,8 +334,7 @@ std::array<std::uint32_t, kLitLenSymbols> sampleCounts(const Image& image, const
     else
       scratch.sample[0] = 0, filterStream(image, kernels, 0, to, scratch.sample.data() + 1);
     scratch.sampleEqual.assign((to - from) / 64 + 2, 0);
-    kernels.equalMask(scratch.sample.data() + 1, to - from, scratch.sampleEqual.data());
-    if (from == 0) scratch.sampleEqual[0] &= ~std::uint64_t{1};  // the stream's first byte repeats nothing
+    markRepeats(kernels, scratch.sample.data() + 1, from, to - from, scratch.sampleEqual.data());
     StreamWalker(begin, end, n).advance(
         StreamWindow{scratch.sample.data() + 1, from}, MaskWindow{scratch.sampleEqual.data(), from / 64}, to,
         [&](const std::uint8_t* bytes, std::size_t k) {
@@ -423,8 +432,7 @@ std::uint8_t* writeDynamicBlock(const DynamicBlock& block, const Image& image, c
     return writer.position() <= limit;
   };
 
-  const std::size_t rowBytes = static_cast<std::size_t>(image.width) * 3 + 1;
-  const std::size_t n = rowBytes * static_cast<std::size_t>(image.height);
+  const std::size_t rowBytes = streamRowBytes(image), n = streamBytes(image);
   const std::size_t bandBytes = std::max<std::size_t>(1, bandBytesWanted / rowBytes) * rowBytes;
   scratch.band.resize(kBandLookback + std::min(bandBytes, n));
   std::fill(scratch.band.begin(), scratch.band.begin() + kBandLookback, 0);
@@ -441,8 +449,8 @@ std::uint8_t* writeDynamicBlock(const DynamicBlock& block, const Image& image, c
     adler = libdeflate_adler32(adler, band, size);
     const std::size_t markedTo = end == n ? n : end / 64 * 64;
     if (markedTo > known) {
-      kernels.equalMask(band - (start - known), markedTo - known, mask + known / 64);  // known >= start - 63
-      if (known == 0) mask[0] &= ~std::uint64_t{1};  // the stream's first byte repeats nothing
+      // Byte known - 1 is in the band or its lookback: known >= start - 63.
+      markRepeats(kernels, band - (start - known), known, markedTo - known, mask + known / 64);
       known = markedTo;
     }
     if (!walker.advance(StreamWindow{band, start}, MaskWindow{mask, 0}, known, literals, run)) return nullptr;
@@ -500,7 +508,7 @@ bool fastPngHasAvx2() {
 std::vector<std::uint8_t> encodeFastPng(const Image& image, FastPngScratch& scratch, FastPngPath path,
                                         std::size_t bandBytes) {
   const Kernels kernels = kernelsFor(path);
-  const std::size_t n = (static_cast<std::size_t>(image.width) * 3 + 1) * static_cast<std::size_t>(image.height);
+  const std::size_t n = streamBytes(image);
   const DynamicBlock block = planBlock(sampleCounts(image, kernels, scratch));
   // Huffman-coded unless that is no smaller than stored blocks (noise).
   const std::size_t storedBytes = storedSize(n);

@@ -35,7 +35,7 @@ struct FastPngScratch {
   std::vector<std::uint8_t> band;      // a band of the filtered stream, after the end of the band before
   std::vector<std::uint64_t> equal;    // bit i: filtered byte i repeats byte i - 1
   std::vector<std::uint8_t> sample;    // a row sampled for the symbol counts, filtered
-  std::vector<std::uint64_t> sampleEqual;
+  std::vector<std::uint64_t> sampleEqual;  // its repeat bits
   std::vector<std::uint8_t> deflated;  // the Huffman-coded block, before it is known to beat stored blocks
   std::vector<std::uint8_t> filtered;  // the whole stream, for stored blocks (noise)
 };
