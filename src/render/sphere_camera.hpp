@@ -15,6 +15,7 @@ struct PixelRect {
 
 struct V3 {
   double x = 0, y = 0, z = 0;
+  friend bool operator==(const V3&, const V3&) = default;  // exact (a NaN equals nothing)
 };
 
 class SphereCamera {

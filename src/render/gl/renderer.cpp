@@ -163,20 +163,20 @@ struct Renderer::Impl {
     corners.clear();
     cornerIndices.resize(list.size());
     auto same = [](const ShapeVertex& a, const ShapeVertex& b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+    auto add = [&](const ShapeVertex& corner) {
+      corners.push_back(corner);
+      return std::uint32_t(corners.size() - 1);
+    };
     for (std::size_t q = 0; q + 6 <= list.size(); q += 6) {
       const ShapeVertex* quad = &list[q];
       std::uint32_t c[4];
       const bool joined = q > 0 && same(quad[0], corners[cornerIndices[q - 5]]) &&
                           same(quad[5], corners[cornerIndices[q - 4]]);  // the last quad's corners 1 and 2
-      if (joined) {
-        c[0] = cornerIndices[q - 5], c[3] = cornerIndices[q - 4];
-      } else {
-        c[0] = std::uint32_t(corners.size()), corners.push_back(quad[0]);
-        c[3] = std::uint32_t(corners.size() + 2);
-      }
-      c[1] = std::uint32_t(corners.size()), corners.push_back(quad[1]);
-      c[2] = std::uint32_t(corners.size()), corners.push_back(quad[2]);
-      if (!joined) corners.push_back(quad[5]);
+      if (joined) c[0] = cornerIndices[q - 5], c[3] = cornerIndices[q - 4];
+      if (!joined) c[0] = add(quad[0]);
+      c[1] = add(quad[1]);
+      c[2] = add(quad[2]);
+      if (!joined) c[3] = add(quad[5]);
       const std::uint32_t order[6] = {c[0], c[1], c[2], c[0], c[2], c[3]};
       std::copy(order, order + 6, cornerIndices.begin() + std::ptrdiff_t(q));
     }
@@ -329,10 +329,9 @@ struct Renderer::Impl {
   void drawSphereCached(const DrawList& list, const SphereImpostor& view, const PixelRect& rect) {
     if (!list.sphereIsStatic) return drawSphere(list, view);
     const V3 eye = view.camera.eye();
-    auto same = [](const V3& a, const V3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; };
-    const bool atRest = same(eye, lastEye);
+    const bool atRest = eye == lastEye;
     lastEye = eye;
-    if (!sphereLayer || !same(eye, cachedEye) || cachedSpace != list.viewSpace ||
+    if (!sphereLayer || eye != cachedEye || cachedSpace != list.viewSpace ||
         cachedDecoration != list.sphereDecoration.get()) {
       if (!atRest) return drawSphere(list, view);
       if (!sphereLayer) sphereLayer = std::make_unique<GlLayer>(size.width, size.height);
