@@ -125,5 +125,33 @@ TEST(Determinism, DirectedCameraRedrawsTheCachedSphereWhenItTurns) {
   EXPECT_EQ(Renderer(fixed, testing::kSmallSize).render(target).rgb, inSequence.rgb);
 }
 
+// A frame whose first panel is the sphere gets its background from the sphere's layer copied whole, not from a
+// clear (renderer.cpp, copyLayer): the same bytes as the same panels drawn after another panel cleared the frame,
+// for a turning camera (the ball's layer, the grid over it), one at rest (the cached sphere) and the glass ball.
+TEST(Determinism, ASpherePanelDrawnFirstGivesTheBytesOfTheClearedFrame) {
+  for (double orbit : {0.0, 20.0}) {
+    for (ViewSpace space : {ViewSpace::Sphere, ViewSpace::Ball}) {
+      ViewSettings textFirst = testing::smallSettings();
+      textFirst.camera.orbitDegreesPerSecond = orbit;
+      ViewSettings sphereFirst = textFirst;
+      ASSERT_EQ(sphereFirst.panels[1].kind, PanelKind::Sphere);
+      std::swap(sphereFirst.panels[0], sphereFirst.panels[1]);
+      SyntheticOptions options;
+      options.viewSpace = space;
+      // Turning (a renderer's first frame), at rest, and a later frame. A renderer's context is current on its
+      // thread only while it is the newest: one renderer after the other.
+      const auto frames = [&](const ViewSettings& settings) {
+        Renderer renderer(settings, testing::kSmallSize);
+        std::vector<Image> images;
+        for (double t : {2.0, 2.0, 3.0}) images.push_back(renderer.render(syntheticFrame(t, int(t * 60), options)));
+        return images;
+      };
+      const std::vector<Image> layered = frames(sphereFirst), cleared = frames(textFirst);
+      for (std::size_t k = 0; k < cleared.size(); ++k)
+        EXPECT_EQ(layered[k].rgb, cleared[k].rgb) << "orbit " << orbit << ", frame " << k;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace sl

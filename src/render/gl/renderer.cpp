@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include "render/color_map.hpp"
 #include "render/draw_list.hpp"
@@ -62,10 +63,12 @@ struct Renderer::Impl {
   std::vector<BallLayer> ballLayers;
   std::optional<SphereGridLines> gridLines;  // the opaque sphere's grid on the unit sphere, for the last step
   ViewSpace cachedSpace = ViewSpace::Sphere;
+  ColorRGB cachedBackground;  // the background the cached sphere layer was cleared to
   V3 cachedEye;  // the camera the cached sphere layer was drawn by
   V3 lastEye{std::nan(""), 0, 0};  // the camera of this renderer's last frame (none yet: equal to no eye)
   const SphereDecoration* uploadedDecoration = nullptr;  // the field in fieldTexture
   const SphereDecoration* cachedDecoration = nullptr;    // the decoration the cached sphere layer shows
+  bool frameBlank = false;  // the frame being drawn has no background yet (fillBackground, copyLayer)
 
   Impl(const ViewSettings& view, ImageSize frameSize, const std::string& shaderFolder)
       : composer(view, frameSize),
@@ -295,12 +298,10 @@ struct Renderer::Impl {
         glUniform1i(sphereColored.uniform("uField"), 1);
         glActiveTexture(GL_TEXTURE0);
       }
+      fillBackground(list);
       return drawQuad(x0, y0, x1, y1);
     }
-    GLint target = 0;
-    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &target);
-    ballLayer(list, view, x0, y0, x1, y1).copyTo(GLuint(target), PixelRect{float(x0), float(y0), float(x1 - x0),
-                                                                          float(y1 - y0)});
+    copyLayer(ballLayer(list, view, x0, y0, x1, y1), PixelRect{float(x0), float(y0), float(x1 - x0), float(y1 - y0)});
     if (view.look != SphereLook::Opaque) return;
     const double step = gridStep(camera), piece = sphereGridPiece(outline);
     if (!gridLines || gridLines->step() != step || gridLines->piece() != piece) gridLines.emplace(step, piece);
@@ -331,25 +332,43 @@ struct Renderer::Impl {
     const V3 eye = view.camera.eye();
     const bool atRest = eye == lastEye;
     lastEye = eye;
+    const ColorRGB& bg = list.background;
     if (!sphereLayer || eye != cachedEye || cachedSpace != list.viewSpace ||
-        cachedDecoration != list.sphereDecoration.get()) {
+        cachedDecoration != list.sphereDecoration.get() || cachedBackground.r != bg.r ||
+        cachedBackground.g != bg.g || cachedBackground.b != bg.b) {
       if (!atRest) return drawSphere(list, view);
       if (!sphereLayer) sphereLayer = std::make_unique<GlLayer>(size.width, size.height);
+      const bool frameWaits = std::exchange(frameBlank, false);  // the layer gets its background; the frame waits
       sphereLayer->bind();
       clearToBackground(list);
       drawSphere(list, view);
       cachedSpace = list.viewSpace;
       cachedDecoration = list.sphereDecoration.get();
+      cachedBackground = bg;
       cachedEye = eye;
       context.bindFramebuffer();
+      frameBlank = frameWaits;
     }
-    sphereLayer->copyTo(context.framebuffer(), rect);
+    copyLayer(*sphereLayer, rect);
+  }
+
+  // A layer's rectangle (within the scissor) into the bound framebuffer. A layer is the background outside what
+  // it shows there, so into a frame that has no background yet it goes whole instead of the clear: one copy of
+  // the frame where the clear filled it and the copy overwrote the rectangle again (the same bytes).
+  void copyLayer(const GlLayer& layer, const PixelRect& rect) {
+    GLint target = 0;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &target);
+    if (!std::exchange(frameBlank, false)) return layer.copyTo(GLuint(target), rect);
+    glDisable(GL_SCISSOR_TEST);
+    layer.copyTo(GLuint(target), PixelRect{0, 0, float(size.width), float(size.height)});
+    glEnable(GL_SCISSOR_TEST);
   }
 
   void drawPanel(const DrawList& list, const PanelDrawing& panel) {
     const PixelRect& rect = panel.rect;
     glScissor(GLint(rect.x), GLint(rect.y), GLsizei(rect.width), GLsizei(rect.height));
     if (panel.sphere) drawSphereCached(list, *panel.sphere, rect);
+    if (!panel.shapes.vertices().empty()) fillBackground(list);
     drawShapes(list, panel.shapes, panel.sphere ? &panel.sphere->camera : nullptr);
   }
 
@@ -360,13 +379,19 @@ struct Renderer::Impl {
     glEnable(GL_SCISSOR_TEST);
   }
 
+  // The frame's background, unless something already gave it (copyLayer).
+  void fillBackground(const DrawList& list) {
+    if (std::exchange(frameBlank, false)) clearToBackground(list);
+  }
+
   void draw(const DrawList& list, Image& image) {
     context.bindFramebuffer();
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied alpha
-    clearToBackground(list);
+    frameBlank = true;
     for (const PanelDrawing& panel : list.panels) drawPanel(list, panel);
+    fillBackground(list);
     image.width = size.width;
     image.height = size.height;
     context.readRgb(image.rgb);
