@@ -177,11 +177,11 @@ void canonicalCodes(const std::uint8_t* lengths, int symbols, std::uint32_t* cod
 }
 
 // Least-significant-bit-first writer into memory sized in advance plus 8 bytes of slack: every put stores eight
-// bytes and moves on by the whole bytes filled, so there is no branch (at most 7 + 32 bits are ever pending).
+// bytes and moves on by the whole bytes filled, so there is no branch (at most 7 + 57 bits are ever pending).
 class BitWriter {
  public:
   explicit BitWriter(std::uint8_t* out) : out_(out) {}
-  void put(std::uint64_t bits, int count) {  // count <= 32
+  void put(std::uint64_t bits, int count) {  // count <= 57: the 7 bits still pending and these fit the buffer
     buffer_ |= bits << filled_;
     filled_ += count;
     if constexpr (std::endian::native == std::endian::little) {
@@ -418,13 +418,16 @@ std::uint8_t* writeDynamicBlock(const DynamicBlock& block, const Image& image, c
   if (writer.position() > limit) return nullptr;
   const auto* codes = block.litCodes.data();
   const auto* lengths = block.litLengths.data();
-  const auto literals = [&](const std::uint8_t* bytes, std::size_t k) {  // at most 57 literals of at most 15 bits
+  // At most 57 literals of at most 15 bits, three to a put (45 bits): a third fewer trips through the writer's
+  // chain of dependent shifts than pairs.
+  const auto literals = [&](const std::uint8_t* bytes, std::size_t k) {
     std::size_t j = 0;
-    for (; j + 2 <= k; j += 2) {
-      const std::uint8_t a = bytes[j], b = bytes[j + 1];
-      writer.put(codes[a] | (std::uint64_t(codes[b]) << lengths[a]), lengths[a] + lengths[b]);
+    for (; j + 3 <= k; j += 3) {
+      const std::uint8_t a = bytes[j], b = bytes[j + 1], c = bytes[j + 2];
+      const int la = lengths[a], lab = la + lengths[b];
+      writer.put(codes[a] | (std::uint64_t(codes[b]) << la) | (std::uint64_t(codes[c]) << lab), lab + lengths[c]);
     }
-    if (j < k) writer.put(codes[bytes[j]], lengths[bytes[j]]);
+    for (; j < k; ++j) writer.put(codes[bytes[j]], lengths[bytes[j]]);
     return writer.position() <= limit;
   };
   const auto run = [&](int length) {
