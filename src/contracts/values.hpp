@@ -11,6 +11,7 @@ struct Vec3 {
 };
 struct ColorRGB {
   float r = 0, g = 0, b = 0;  // each 0..1
+  friend bool operator==(const ColorRGB&, const ColorRGB&) = default;  // exact
 };
 
 }  // namespace sl

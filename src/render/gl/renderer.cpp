@@ -259,8 +259,7 @@ struct Renderer::Impl {
     for (const BallLayer& cached : ballLayers)
       if (cached.look == view.look && cached.x0 == x0 && cached.y0 == y0 && cached.x1 == x1 && cached.y1 == y1 &&
           cached.distance == camera.distance() && cached.focal == camera.focal() && cached.centre.x == centre.x &&
-          cached.centre.y == centre.y && cached.antialias == list.antialias && cached.background.r == bg.r &&
-          cached.background.g == bg.g && cached.background.b == bg.b)
+          cached.centre.y == centre.y && cached.antialias == list.antialias && cached.background == bg)
         return *cached.layer;
     if (ballLayers.size() >= 4) ballLayers.clear();  // more sphere panels than any layout has: start over
     GLint previous = 0;
@@ -332,10 +331,8 @@ struct Renderer::Impl {
     const V3 eye = view.camera.eye();
     const bool atRest = eye == lastEye;
     lastEye = eye;
-    const ColorRGB& bg = list.background;
     if (!sphereLayer || eye != cachedEye || cachedSpace != list.viewSpace ||
-        cachedDecoration != list.sphereDecoration.get() || cachedBackground.r != bg.r ||
-        cachedBackground.g != bg.g || cachedBackground.b != bg.b) {
+        cachedDecoration != list.sphereDecoration.get() || cachedBackground != list.background) {
       if (!atRest) return drawSphere(list, view);
       if (!sphereLayer) sphereLayer = std::make_unique<GlLayer>(size.width, size.height);
       const bool frameWaits = std::exchange(frameBlank, false);  // the layer gets its background; the frame waits
@@ -344,7 +341,7 @@ struct Renderer::Impl {
       drawSphere(list, view);
       cachedSpace = list.viewSpace;
       cachedDecoration = list.sphereDecoration.get();
-      cachedBackground = bg;
+      cachedBackground = list.background;
       cachedEye = eye;
       context.bindFramebuffer();
       frameBlank = frameWaits;
