@@ -28,11 +28,12 @@ std::string fillTitlePlaceholders(const std::string& title, const Scene& scene,
     values.push_back({"{method}", std::string(nameOf(scene.runs.front().config.method))});
     values.push_back({"{integrator}", std::string(nameOf(scene.runs.front().config.integrator))});
   }
-  // A found motion's length and stability, once the commands have resolved it.
+  // A family's number of members; a found motion's length and stability, once the commands have resolved it.
   for (std::size_t i = 0; i < scene.runs.size(); ++i) {
+    const std::string run = "{runs[" + std::to_string(i) + "].";
+    if (scene.runs[i].family) values.push_back({run + "family.count}", std::to_string(scene.runs[i].family->count)});
     const std::optional<FoundMotion>& motion = scene.runs[i].initial.motion;
     if (!motion) continue;
-    const std::string run = "{runs[" + std::to_string(i) + "].";
     char length[32];
     std::snprintf(length, sizeof length, "%.4f", motion->length);
     values.push_back({run + "length}", length});
