@@ -90,11 +90,10 @@ std::vector<SceneKey> describeKeys() {
        .summary = "shown in the frames",
        .target = "Scene::title",
        .meaning = "shown in the frames; `{L}`, `{n}`, `{name}`, `{method}` and `{integrator}` (the first run's) are "
-                  "filled in from the scene, so `--set linkage.L=3.2` shows; `{runs[i].family.count}` a run's number of "
-                  "family members; `{runs[i].length}` and "
-                  "`{runs[i].stability}` give a found motion's length and stability (`initial.connect`, "
-                  "`initial.periodic`); `{injectivity_radius}` the injectivity radius of the distance colouring's "
-                  "point (`view.sphere.distance_from`)",
+                  "filled in from the scene, so `--set linkage.L=3.2` shows; `{runs[i].family.count}` a run's "
+                  "number of family members; `{runs[i].length}` and `{runs[i].stability}` give a found motion's "
+                  "length and stability (`initial.connect`, `initial.periodic`); `{injectivity_radius}` the "
+                  "injectivity radius of the distance colouring's point (`view.sphere.distance_from`)",
        .allowed = "any string",
        .defaultText = "`name`"},
       {.path = "short_title",
