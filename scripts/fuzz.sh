@@ -24,7 +24,7 @@ done
 
 flags="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
 CC=clang CXX=clang++ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" -DCMAKE_CXX_FLAGS="$flags" \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DCMAKE_CXX_FLAGS="$flags" \
   -DCMAKE_PROJECT_INCLUDE="$PWD/fuzz/fuzz.cmake" -DSL_BUILD_TESTS=OFF -DSL_BUILD_BENCH=OFF >/dev/null
 cmake --build "$build" -j 2 --target scene_fuzzer
 
