@@ -8,7 +8,7 @@
 #   analysis    work-precision and stability sweeps
 #   inverse     two-point motions and closed geodesics (shooting and discrete action)
 #   frames      scene + runs -> FrameState per frame
-#   render      FrameState -> pixels (draw lists on the CPU; gl: OpenGL through OSMesa)
+#   render      FrameState -> pixels (draw lists on the CPU; gl: OpenGL through EGL or OSMesa)
 #   output      pixels -> PNG files + manifest, video
 #   cli         the `linkage` command: wires the stages together
 #

@@ -7,7 +7,9 @@ packages=(
   build-essential cmake ninja-build pkg-config          # toolchain
   libeigen3-dev libboost-dev                            # linear algebra, AutoDiff, Boost.Odeint
   nlohmann-json3-dev libcli11-dev                       # scene files, command line
-  libosmesa6-dev libstb-dev libdeflate-dev libssl-dev   # headless GL, fonts/images, PNG deflate, SHA-256
+  libegl-dev libegl-mesa0 libgl1-mesa-dri python3-glad  # headless GL: EGL on Mesa's llvmpipe, the GL loader
+  libosmesa6-dev                                        # headless GL: OSMesa (optional; gone from Mesa 25.1)
+  libstb-dev libdeflate-dev libssl-dev                  # fonts/images, PNG deflate, SHA-256
   fonts-dejavu-core ffmpeg                              # the font the frames use, video encoding
   libgtest-dev libbenchmark-dev parallel gnuplot-nox    # tests, benchmarks, sharded renders, charts
   libpng-dev                                            # a second PNG decoder for the tests

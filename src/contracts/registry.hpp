@@ -182,6 +182,23 @@ inline constexpr std::array<Named<PngCompression>, 2> kPngCompressions{{
     {PngCompression::Small, "small"},  // libdeflate level 1
 }};
 
+// === How frames are drawn: the OpenGL backend (docs/rendering.md, "GL backends"). Chosen per process (--gl,
+// LINKAGE_GL); the software ones draw on Mesa's llvmpipe and give the same bytes.
+
+enum class GlBackend { Auto, Egl, EglGpu, OsMesa };
+struct GlBackendTraits {
+  GlBackend kind;
+  std::string_view name;
+  bool software;  // llvmpipe: its pixels are this program's reference (a GPU's differ)
+  std::string_view description;  // one line, for --help
+};
+inline constexpr std::array<GlBackendTraits, 4> kGlBackends{{
+    {GlBackend::Auto, "auto", true, "EGL on Mesa's software device, OSMesa where EGL cannot start (the default)"},
+    {GlBackend::Egl, "egl", true, "EGL without a display on Mesa's software device (llvmpipe)"},
+    {GlBackend::EglGpu, "egl-gpu", false, "EGL on the first GPU device: faster, but its pixels differ from llvmpipe's"},
+    {GlBackend::OsMesa, "osmesa", true, "OSMesa (llvmpipe); Mesa 25.1 and later no longer ship it"},
+}};
+
 // === Look-ups, the same for every table
 
 template <class Table>
@@ -218,6 +235,7 @@ inline const IntegratorTraits& traits(Integrator i) { return traitsOf(kIntegrato
 inline const StopReasonTraits& traits(StopReason r) { return traitsOf(kStopReasons, r); }
 
 inline const VideoFormatTraits& traits(VideoFormat f) { return traitsOf(kVideoFormats, f); }
+inline const GlBackendTraits& traits(GlBackend b) { return traitsOf(kGlBackends, b); }
 
 // The format a video path asks for by its extension (".mp4", ".webm", ".gif"; case-insensitive), if any.
 inline std::optional<VideoFormat> videoFormatOfPath(std::string_view path) {
@@ -232,5 +250,6 @@ inline std::optional<VideoFormat> videoFormatOfPath(std::string_view path) {
 inline std::string nameOf(Method m) { return std::string(traits(m).name); }
 inline std::string nameOf(Integrator i) { return std::string(traits(i).name); }
 inline std::string nameOf(StopReason r) { return std::string(traits(r).name); }
+inline std::string nameOf(GlBackend b) { return std::string(traits(b).name); }
 
 }  // namespace sl

@@ -1,5 +1,5 @@
 #pragma once
-// The renderer: FrameState in, RGB pixels out. Knows panels, shaders and OpenGL (OSMesa); knows
+// The renderer: FrameState in, RGB pixels out. Knows panels, shaders and OpenGL (EGL or OSMesa); knows
 // nothing of integrators or scenes: it sees only the contracts (frame state, view settings, image).
 
 #include <cstdint>

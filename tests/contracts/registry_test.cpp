@@ -38,6 +38,14 @@ TEST(Registry, TablesAreComplete) {
   expectComplete(kFamilyKinds, static_cast<int>(FamilyKind::Cloud) + 1);
   expectComplete(kLinkageLayouts, static_cast<int>(LinkageLayout::Overlay) + 1);
   expectComplete(kCameraModes, static_cast<int>(CameraMode::Orbit) + 1);
+  expectComplete(kGlBackends, static_cast<int>(GlBackend::OsMesa) + 1);
+}
+
+// Only a GPU is not llvmpipe: the software backends are the ones whose bytes the reference frames pin.
+TEST(Registry, GlBackendProperties) {
+  for (const GlBackendTraits& b : kGlBackends) EXPECT_EQ(b.software, b.kind != GlBackend::EglGpu) << b.name;
+  EXPECT_EQ(parseKind(kGlBackends, "egl-gpu"), GlBackend::EglGpu);
+  EXPECT_EQ(nameOf(GlBackend::OsMesa), "osmesa");
 }
 
 // The properties the rest of the program relies on (docs/methods.md).

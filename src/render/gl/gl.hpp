@@ -1,8 +1,4 @@
 #pragma once
-// The one place that includes OpenGL: core-profile prototypes straight from OSMesa (no loader).
-#ifndef GL_GLEXT_PROTOTYPES
-#define GL_GLEXT_PROTOTYPES
-#endif
-#include <GL/gl.h>
-#include <GL/glext.h>
-#include <GL/osmesa.h>
+// The one place that includes OpenGL: glad's 3.3 core loader, generated at build time (src/render/CMakeLists.txt)
+// and filled from the process's backend (gl_backend.cpp), so that EGL and OSMesa can live in one binary.
+#include <glad/gl.h>

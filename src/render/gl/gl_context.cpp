@@ -5,6 +5,7 @@
 
 #include "render/gl/drop_alpha.hpp"
 #include "render/gl/gl.hpp"
+#include "render/gl/gl_platform.hpp"
 #include "render/sphere_camera.hpp"
 
 namespace sl {
@@ -12,48 +13,17 @@ namespace {
 constexpr std::size_t kReadBackBandBytes = 256 * 1024;  // well inside a core's L2 (1-2 MiB on current x86)
 }
 
-GlContext::GlContext(int width, int height) : width_(width), height_(height) {
-  // Asking for 3.3 core; llvmpipe answers with its newest core profile (4.5 on Debian 12).
-  const int attributes[] = {OSMESA_FORMAT,
-                            OSMESA_RGBA,
-                            OSMESA_DEPTH_BITS,
-                            0,
-                            OSMESA_STENCIL_BITS,
-                            0,
-                            OSMESA_PROFILE,
-                            OSMESA_CORE_PROFILE,
-                            OSMESA_CONTEXT_MAJOR_VERSION,
-                            3,
-                            OSMESA_CONTEXT_MINOR_VERSION,
-                            3,
-                            0};
-  OSMesaContext context = OSMesaCreateContextAttribs(attributes, nullptr);
-  if (!context) throw std::runtime_error("OSMesa: could not create an OpenGL 3.3 core context");
-  context_ = context;
-  clientBuffer_.assign(4, 0);
-  if (!OSMesaMakeCurrent(context, clientBuffer_.data(), GL_UNSIGNED_BYTE, 1, 1)) {
-    OSMesaDestroyContext(context);
-    throw std::runtime_error("OSMesa: could not make the context current");
-  }
-  if (!glGetString(GL_VERSION)) {
-    OSMesaDestroyContext(context);
-    throw std::runtime_error("OpenGL: GL_VERSION is NULL (is libGL linked next to OSMesa?)");
-  }
-  try {
-    frame_ = std::make_unique<GlLayer>(width, height);
-  } catch (...) {
-    OSMesaDestroyContext(context);
-    throw;
-  }
+GlContext::GlContext(int width, int height)
+    : width_(width), height_(height), context_(makeCurrentGlContext()), backend_(*glBackendInUse()) {
+  frame_ = std::make_unique<GlLayer>(width, height);
 }
 
 GlContext::~GlContext() {
   frame_.reset();  // GL objects go before their context
-  OSMesaDestroyContext(static_cast<OSMesaContext>(context_));
 }
 
 void GlContext::bindFramebuffer() const {
-  if (OSMesaGetCurrentContext() != static_cast<OSMesaContext>(context_))
+  if (!context_->isCurrent())
     throw std::logic_error("Renderer used from a thread other than the one that created it");
   frame_->bind();
 }

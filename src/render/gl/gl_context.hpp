@@ -1,5 +1,6 @@
 #pragma once
-// A headless OpenGL core context (OSMesa on llvmpipe) with an offscreen RGBA framebuffer object.
+// A headless OpenGL core context (of the process's backend: gl_platform.hpp) with an offscreen RGBA framebuffer
+// object.
 // The context is current on the thread that created it; draw and read back on that thread only.
 
 #include <cstdint>
@@ -7,9 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "contracts/registry.hpp"
+
 namespace sl {
 
 struct PixelRect;
+class GlPlatformContext;
 
 // An offscreen RGBA8 framebuffer of the frame's size: the frame, and cached layers.
 class GlLayer {
@@ -47,11 +51,12 @@ class GlContext {
   int height() const { return height_; }
   std::string rendererName() const;
   std::string version() const;
+  GlBackend backend() const { return backend_; }
 
  private:
   int width_, height_;
-  void* context_ = nullptr;                 // OSMesaContext
-  std::vector<std::uint8_t> clientBuffer_;  // OSMesaMakeCurrent needs one; 1x1 is enough
+  std::unique_ptr<GlPlatformContext> context_;
+  GlBackend backend_;
   std::unique_ptr<GlLayer> frame_;          // the frame itself
   mutable std::vector<std::uint8_t> rgba_;  // readRgb: the framebuffer as read, before its alpha is dropped
 };

@@ -395,13 +395,15 @@ struct Renderer::Impl {
   }
 };
 
-// Mesa (libOSMesa, its llvmpipe/gallium driver and the LLVM it JITs with) keeps allocations alive for the life
+// Mesa (libOSMesa or EGL's libEGL_mesa, the llvmpipe/gallium driver and the LLVM it JITs with; libglvnd's
+// dispatch for EGL) keeps allocations alive for the life
 // of the process (driver singletons, compiled shader caches), which LeakSanitizer reports in every sanitizer
 // build of a program that renders. Not ours to fix: suppress exactly those libraries, never our own code. The
 // one list of suppressions: every binary that links the renderer gets it, without LSAN_OPTIONS.
 #if defined(__SANITIZE_ADDRESS__)
 extern "C" const char* __lsan_default_suppressions() {
-  return "leak:libOSMesa.so\nleak:libgallium\nleak:libLLVM\nleak:swrast_dri\nleak:libglapi.so\n";
+  return "leak:libOSMesa.so\nleak:libgallium\nleak:libLLVM\nleak:swrast_dri\nleak:libglapi.so\n"
+         "leak:libEGL_mesa.so\nleak:libEGL.so\nleak:libGLdispatch.so\nleak:libgbm.so\nleak:libdrm\n";
 }
 #endif
 

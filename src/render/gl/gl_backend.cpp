@@ -1,0 +1,155 @@
+// The process's GL backend: what was asked for, what was built, and the one that made the first context. glad's
+// entry points are process-wide, so the first context decides and every later one must be of the same backend.
+
+#include <mutex>
+#include <string>
+
+#include "render/gl/gl.hpp"
+#include "render/gl/gl_platform.hpp"
+
+namespace sl {
+namespace {
+
+struct Selection {
+  std::mutex mutex;
+  GlBackend requested = GlBackend::Auto;
+  std::optional<GlBackend> inUse;  // set with the first context, which loaded glad's entry points
+  std::string fallbackReason;
+};
+Selection& selection() {
+  static Selection s;
+  return s;
+}
+
+constexpr bool kBuilt[] = {
+    true,  // Auto
+#ifdef SL_HAVE_EGL
+    true, true,  // Egl, EglGpu
+#else
+    false, false,
+#endif
+#ifdef SL_HAVE_OSMESA
+    true,
+#else
+    false,
+#endif
+};
+bool built(GlBackend backend) { return kBuilt[static_cast<int>(backend)]; }
+
+std::unique_ptr<GlPlatformContext> makeContextOf(GlBackend backend) {
+  if (!built(backend)) throw GlUnavailable("this linkage was built without " + nameOf(backend));
+  switch (backend) {
+    case GlBackend::Egl:
+      return makeEglContext(false);
+    case GlBackend::EglGpu:
+      return makeEglContext(true);
+    case GlBackend::OsMesa:
+      return makeOsMesaContext();
+    case GlBackend::Auto:
+      break;
+  }
+  throw std::logic_error("makeContextOf: Auto is resolved by the caller");
+}
+
+// glad asks the current context's backend for each entry point.
+thread_local const GlPlatformContext* loading = nullptr;
+GLADapiproc loadProc(const char* name) { return loading->procAddress(name); }
+
+}  // namespace
+
+std::vector<GlBackend> builtGlBackends() {
+  std::vector<GlBackend> backends;
+  for (const auto& b : kGlBackends)
+    if (built(b.kind) && (b.kind != GlBackend::Auto || built(GlBackend::Egl) || built(GlBackend::OsMesa)))
+      backends.push_back(b.kind);
+  return backends;
+}
+
+void requestGlBackend(GlBackend backend) {
+  Selection& s = selection();
+  const std::lock_guard lock(s.mutex);
+  if (!built(backend)) throw GlUnavailable("this linkage was built without " + nameOf(backend));
+  if (s.inUse && backend != GlBackend::Auto && backend != *s.inUse)
+    throw std::logic_error("this process already draws through " + nameOf(*s.inUse) + "; cannot switch to " +
+                           nameOf(backend));
+  s.requested = backend;
+}
+
+std::optional<GlBackend> glBackendInUse() {
+  Selection& s = selection();
+  const std::lock_guard lock(s.mutex);
+  return s.inUse;
+}
+
+std::string glFallbackReason() {
+  Selection& s = selection();
+  const std::lock_guard lock(s.mutex);
+  return s.fallbackReason;
+}
+
+std::unique_ptr<GlPlatformContext> makeCurrentGlContext() {
+  Selection& s = selection();
+  const std::lock_guard lock(s.mutex);
+  if (s.inUse) return makeContextOf(*s.inUse);
+
+  GlBackend backend = s.requested;
+  std::unique_ptr<GlPlatformContext> context;
+  if (backend == GlBackend::Auto) {
+    // EGL's software device first (the same llvmpipe as OSMesa, and the backend that outlives OSMesa), OSMesa
+    // where EGL cannot start (no libegl-mesa0, an EGL without device enumeration). Never a GPU: see kGlBackends.
+    std::string eglError = "this linkage was built without egl";
+    if (built(GlBackend::Egl)) {
+      try {
+        context = makeEglContext(false);
+        backend = GlBackend::Egl;
+      } catch (const GlUnavailable& error) {
+        eglError = error.what();
+      }
+    }
+    if (!context) {
+      if (!built(GlBackend::OsMesa)) throw GlUnavailable(eglError + "; and this linkage was built without osmesa");
+      try {
+        context = makeOsMesaContext();
+      } catch (const GlUnavailable& error) {
+        throw GlUnavailable(eglError + "; " + error.what());
+      }
+      backend = GlBackend::OsMesa;
+      s.fallbackReason = eglError;
+    }
+  } else {
+    context = makeContextOf(backend);
+  }
+  loading = context.get();
+  const int version = gladLoadGL(loadProc);
+  loading = nullptr;
+  if (version == 0 || glGetString == nullptr || glGetString(GL_VERSION) == nullptr)
+    throw GlUnavailable(nameOf(backend) + ": the OpenGL entry points could not be loaded");
+  if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < 33)
+    throw GlUnavailable(nameOf(backend) + ": OpenGL " + std::to_string(GLAD_VERSION_MAJOR(version)) + "." +
+                        std::to_string(GLAD_VERSION_MINOR(version)) + "; the renderer needs 3.3 core");
+  s.inUse = backend;
+  return context;
+}
+
+std::string llvmpipeCpuFeatures() {
+#if defined(__x86_64__) || defined(__i386__)
+  std::string features = "x86-64";
+  // The extensions llvmpipe (Mesa 22.3, gallivm) hands to LLVM's code generator and that can change results:
+  // the vector width (AVX: 256 bits) and fused multiply-adds.
+  __builtin_cpu_init();
+  const std::pair<const char*, bool> flags[] = {
+      {"sse4.1", __builtin_cpu_supports("sse4.1")}, {"sse4.2", __builtin_cpu_supports("sse4.2")},
+      {"avx", __builtin_cpu_supports("avx")},       {"fma", __builtin_cpu_supports("fma")},
+      {"avx2", __builtin_cpu_supports("avx2")},     {"avx512f", __builtin_cpu_supports("avx512f")},
+  };
+  for (const auto& [name, present] : flags)
+    if (present) features += std::string(" ") + name;
+  return features;
+#elif defined(__aarch64__)
+  return "aarch64";
+#else
+  return "unknown architecture";
+#endif
+}
+
+}  // namespace sl
