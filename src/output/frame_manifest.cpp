@@ -184,6 +184,15 @@ ManifestContents parseManifest(const nlohmann::json& manifest, const std::string
       invalid(path, "renderers[" + std::to_string(i) + "]", "found " + shown((*renderers)[i]) + "; expected a string");
     contents.renderers.push_back((*renderers)[i].get<std::string>());
   }
+  if (manifest.contains("backends")) {  // since 0.5; older manifests have none
+    const nlohmann::json& backends = manifest.at("backends");
+    if (!backends.is_array()) invalid(path, "backends", "found " + shown(backends) + "; expected an array of strings");
+    for (std::size_t i = 0; i < backends.size(); ++i) {
+      if (!backends[i].is_string())
+        invalid(path, "backends[" + std::to_string(i) + "]", "found " + shown(backends[i]) + "; expected a string");
+      contents.backends.push_back(backends[i].get<std::string>());
+    }
+  }
   const nlohmann::json* frames = manifest.contains("frames") ? &manifest.at("frames") : nullptr;
   if (!frames || !frames->is_array()) invalid(path, "frames", "expected an array of frame entries");
   for (std::size_t i = 0; i < frames->size(); ++i) {
@@ -268,6 +277,7 @@ nlohmann::json FrameManifest::emptyManifest() const {
   return {{"format", kFormat},
           {"info", info_},
           {"renderers", nlohmann::json::array()},
+          {"backends", nlohmann::json::array()},
           {"frames", nlohmann::json::array()}};
 }
 
@@ -283,7 +293,27 @@ nlohmann::json FrameManifest::readLocked() const {
                              info_.dump() +
                              ". Shards (--frames) and --resume only join the same render; a whole render (without "
                              "--frames or --resume) replaces it, or use another --out");
+  checkSameRenderer(manifest);
   return manifest;
+}
+
+void FrameManifest::checkSameRenderer(const nlohmann::json& manifest) const {
+  if (manifest.at("frames").empty()) return;
+  std::set<std::string> mine;
+  {
+    std::lock_guard guard(renderersMutex_);
+    mine = renderers_;
+  }
+  if (mine.empty()) return;  // not drawing (yet): nothing to compare
+  for (const auto& theirs : manifest.at("renderers")) {
+    if (mine.count(theirs.get<std::string>())) continue;
+    throw std::runtime_error(
+        "the folder " + folder_ + " holds frames drawn by " + theirs.get<std::string>() + "; this process draws with " +
+        *mine.begin() +
+        ". Their bytes may differ (llvmpipe generates code for the CPU it runs on: docs/rendering.md, \"Across "
+        "machines\"), so they are not joined: draw the rest on a machine like the first, render it again whole here "
+        "(without --frames or --resume), or use another --out");
+  }
 }
 
 nlohmann::json FrameManifest::readAnyLocked() const {
@@ -293,6 +323,7 @@ nlohmann::json FrameManifest::readAnyLocked() const {
   manifest["format"] = contents.format == 1 ? kFormat1 : kFormat;
   manifest["info"] = std::move(contents.info);
   manifest["renderers"] = contents.renderers;
+  manifest["backends"] = contents.backends;
   for (const auto& [frame, e] : contents.frames) manifest["frames"].push_back(toJson(e));
   return manifest;
 }
@@ -311,9 +342,15 @@ void FrameManifest::reload() {
   }
 }
 
-void FrameManifest::addRenderer(const std::string& glRenderer, const std::string& glVersion) {
-  std::lock_guard guard(mutex_);
-  renderers_.insert(glRenderer + " | " + glVersion);
+void FrameManifest::addRenderer(const std::string& renderer, const std::string& backend) {
+  {
+    std::lock_guard guard(renderersMutex_);
+    renderers_.insert(renderer);
+    backends_.insert(backend);
+  }
+  if (existing_ != Existing::merge) return;
+  ManifestLock lock(folder_, fileName_, lockWaitSeconds_);
+  readLocked();  // refuses a folder of another renderer's frames before this process draws any
 }
 
 void FrameManifest::record(const FrameEntry& entry) {
@@ -342,9 +379,15 @@ void FrameManifest::flushLocked() {
   std::map<int, FrameEntry> merged = lock ? std::map<int, FrameEntry>{} : known_;
   for (const auto& j : manifest.at("frames")) merged[j.at("frame").get<int>()] = fromJson(j);
   for (const auto& [frame, e] : pending_) merged[frame] = e;
-  std::set<std::string> renderers = renderers_;
+  std::set<std::string> renderers, backends;
+  {
+    std::lock_guard guard(renderersMutex_);
+    renderers = renderers_, backends = backends_;
+  }
   for (const auto& r : manifest.at("renderers")) renderers.insert(r.get<std::string>());
+  for (const auto& b : manifest.at("backends")) backends.insert(b.get<std::string>());
   manifest["renderers"] = renderers;
+  manifest["backends"] = backends;
   manifest["frames"] = nlohmann::json::array();
   for (const auto& [frame, e] : merged) manifest["frames"].push_back(toJson(e));
   const std::string text = manifest.dump(1) + "\n";

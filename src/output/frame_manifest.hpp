@@ -7,7 +7,7 @@
 //   FrameManifest manifest(folder, info);      // info: a JSON object identifying the render (scene
 //                                              // hash, size, ...); throws if the folder's manifest
 //                                              // was written for a different info
-//   manifest.addRenderer(glRenderer, glVersion);
+//   manifest.addRenderer(renderer, backend);   // what draws the frames (docs/rendering.md, "Across machines")
 //   if (resume && manifest.isFrameComplete(k)) skip;   // entry present, file present, file SHA-256 matches
 //   ... write frame_0000k.png atomically, then:
 //   manifest.record({k, "frame_0000k.png", pixelSha, fileSha});  // buffered; thread-safe
@@ -82,7 +82,10 @@ inline constexpr int kCurrentManifestFormat = 2;
 struct ManifestContents {
   int format = kCurrentManifestFormat;
   nlohmann::json info;
+  // What drew the frames, each as "GL_RENDERER | GL_VERSION[ | cpu FEATURES]": what their bytes depend on
+  // (docs/rendering.md, "Across machines"). Shards and --resume join only frames of one such renderer.
   std::vector<std::string> renderers;
+  std::vector<std::string> backends;  // the GL backends ("egl", "osmesa", ...): for the reader, not compared
   std::map<int, FrameEntry> frames;
 };
 // `path` names the file in messages. Throws ManifestInvalid.
@@ -109,7 +112,10 @@ class FrameManifest {
   FrameManifest(const FrameManifest&) = delete;
   FrameManifest& operator=(const FrameManifest&) = delete;
 
-  void addRenderer(const std::string& glRenderer, const std::string& glVersion);
+  // What draws this process's frames (ManifestContents::renderers) and through which backend. In merge mode,
+  // throws std::runtime_error if the folder already lists frames drawn by another renderer; so does a flush that
+  // finds them (a shard on another kind of machine that started at the same time).
+  void addRenderer(const std::string& renderer, const std::string& backend);
   void record(const FrameEntry& entry);
   void flush();
   void setFlushInterval(std::chrono::milliseconds interval) { flushInterval_ = interval; }
@@ -129,6 +135,7 @@ class FrameManifest {
   nlohmann::json emptyManifest() const;
   nlohmann::json readLocked() const;  // the manifest on disk, or an empty one; throws if malformed or another's
   nlohmann::json readAnyLocked() const;  // the same, whoever's render it is
+  void checkSameRenderer(const nlohmann::json& manifest) const;  // readLocked(): frames of another renderer
   void supersedeLocked(const nlohmann::json& other);  // caller holds the manifest lock and the shared claim
   void flushLocked();                 // caller holds mutex_
 
@@ -138,7 +145,8 @@ class FrameManifest {
   Existing existing_;
   mutable std::mutex mutex_;
   std::map<int, FrameEntry> known_, pending_;
-  std::set<std::string> renderers_;
+  mutable std::mutex renderersMutex_;  // renderers_ and backends_ (read while mutex_ is held, and without it)
+  std::set<std::string> renderers_, backends_;
   std::chrono::steady_clock::time_point lastFlush_;
   std::chrono::milliseconds flushInterval_{500};
   int activeFd_ = -1;  // the shared claim on .<name>.active (merge mode)

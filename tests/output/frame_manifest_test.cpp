@@ -41,7 +41,7 @@ TEST(FrameManifest, EntriesSortedAndCheckedAgainstFiles) {
   const std::string folder = temp.path();
   {
     FrameManifest manifest(folder, kInfo);
-    manifest.addRenderer("llvmpipe", "4.5");
+    manifest.addRenderer("llvmpipe | 4.5", "egl");
     for (int k : {7, 2, 5}) writeFrame(manifest, folder, k);
     manifest.flush();
   }
@@ -50,6 +50,7 @@ TEST(FrameManifest, EntriesSortedAndCheckedAgainstFiles) {
   EXPECT_EQ(json["frames"][0]["frame"], 2);
   EXPECT_EQ(json["frames"][2]["frame"], 7);
   EXPECT_EQ(json["renderers"][0], "llvmpipe | 4.5");
+  EXPECT_EQ(json["backends"][0], "egl");
   EXPECT_EQ(json["info"], kInfo);
 
   FrameManifest resumed(folder, kInfo);
@@ -74,6 +75,50 @@ TEST(FrameManifest, RefusesAFolderOfAnotherRender) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("not of this one"), std::string::npos) << e.what();
   }
+}
+
+// Frames of one render drawn by another renderer (llvmpipe generating code for another CPU: docs/rendering.md,
+// "Across machines") are not joined: refused before this process draws, and at a flush that finds them (a shard
+// that started at the same time). The backend alone is not compared: EGL and OSMesa are the same llvmpipe.
+TEST(FrameManifest, RefusesFramesOfAnotherRenderer) {
+  const TempFolder temp;
+  const std::string folder = temp.path();
+  {
+    FrameManifest first(folder, kInfo);
+    first.addRenderer("llvmpipe | 4.5 | cpu x86-64 avx2", "egl");
+    writeFrame(first, folder, 0);
+  }
+  {
+    FrameManifest sameRendererOtherBackend(folder, kInfo);
+    sameRendererOtherBackend.addRenderer("llvmpipe | 4.5 | cpu x86-64 avx2", "osmesa");
+    writeFrame(sameRendererOtherBackend, folder, 1);
+    sameRendererOtherBackend.flush();
+  }
+  FrameManifest other(folder, kInfo);
+  try {
+    other.addRenderer("llvmpipe | 4.5 | cpu x86-64 sse4.1", "egl");
+    FAIL() << "joined frames of another renderer";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("holds frames drawn by llvmpipe | 4.5 | cpu x86-64 avx2"), std::string::npos)
+        << e.what();
+  }
+  // A shard of another renderer that checked an empty folder, then flushes after the first one wrote: refused.
+  const TempFolder race;
+  FrameManifest late(race.path(), kInfo);
+  late.addRenderer("llvmpipe | 4.5 | cpu x86-64 sse4.1", "egl");
+  {
+    FrameManifest early(race.path(), kInfo);
+    early.addRenderer("llvmpipe | 4.5 | cpu x86-64 avx2", "egl");
+    writeFrame(early, race.path(), 0);
+  }
+  writeFrame(late, race.path(), 1);
+  EXPECT_THROW(late.flush(), std::runtime_error);
+  const auto json = nlohmann::json::parse(readFile(race.path() / "manifest.json"));
+  EXPECT_EQ(json.at("frames").size(), 1u);
+  EXPECT_EQ(json.at("renderers").size(), 1u);
+  const auto joined = nlohmann::json::parse(readFile(temp.path() / "manifest.json"));
+  EXPECT_EQ(joined.at("frames").size(), 2u);
+  EXPECT_EQ(joined.at("backends"), nlohmann::json::array({"egl", "osmesa"}));
 }
 
 // The edit-render loop: a whole render of another scene takes the folder over, deleting the frames the old
