@@ -87,19 +87,24 @@ std::string pixelLine(int frame, const PixelDifference& pixels, const PixelToler
 
 bool diffFolders(const DiffArguments& args, std::string& summary) {
   std::map<int, std::string> before, after;
-  std::vector<std::string> renderersBefore, renderersAfter;
+  DrawnBy drawnBefore, drawnAfter;
   try {
     std::tie(before, after) = comparableHashes(readFolderFrames(args.before), readFolderFrames(args.after));
-    renderersBefore = readRenderers(args.before);
-    renderersAfter = readRenderers(args.after);
+    drawnBefore = readDrawnBy(args.before);
+    drawnAfter = readDrawnBy(args.after);
   } catch (const std::invalid_argument& error) {
     throw CommandExit(kExitBadInput, error.what());
   }
-  std::cout << "GL renderer: " << args.before << ": " << joined(renderersBefore) << "; " << args.after << ": "
-            << joined(renderersAfter) << '\n';
-  if (renderersBefore != renderersAfter && !args.quiet)
-    std::cerr << "linkage diff: warning: the two renders name different GL renderers, so their pixels may differ "
-                 "slightly; compare them with --pixel-tol LEVELS --max-differing PERCENT\n";
+  const auto shown = [](const DrawnBy& drawn) {
+    return joined(drawn.renderers) + (drawn.backends.empty() ? "" : " (through " + joined(drawn.backends) + ")");
+  };
+  std::cout << "GL renderer: " << args.before << ": " << shown(drawnBefore) << "; " << args.after << ": "
+            << shown(drawnAfter) << '\n';
+  // The backend alone changes nothing (EGL's software device and OSMesa are the same llvmpipe); the renderer, its
+  // version or the CPU llvmpipe generated code for may (docs/rendering.md, "Across machines").
+  if (drawnBefore.renderers != drawnAfter.renderers && !args.quiet)
+    std::cerr << "linkage diff: warning: the two renders name different GL renderers (or CPUs), so their pixels may "
+                 "differ slightly; compare them with --pixel-tol LEVELS --max-differing PERCENT\n";
   const FolderDifference byHash = compareFolders(before, after);
   const bool tolerant = args.pixels.levels > 0 || args.pixels.maxDifferingPercent > 0;
   const bool decode = args.images || tolerant || !args.imageFolder.empty();

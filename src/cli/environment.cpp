@@ -20,10 +20,19 @@ double secondsFrom(const char* name, double fallback) {
   return seconds;
 }
 
+std::string textOf(const char* name) {
+  const char* text = std::getenv(name);
+  return text ? text : "";
+}
+
 Environment readEnvironment() {
-  const char* shaders = std::getenv("SL_SHADER_DIR");
+  std::string switches;
+  for (const char* name : {"GALLIUM_OVERRIDE_CPU_CAPS", "LP_NATIVE_VECTOR_WIDTH"})
+    if (const std::string value = textOf(name); !value.empty())
+      switches += (switches.empty() ? "" : " ") + std::string(name) + "=" + value;
   return {secondsFrom("LINKAGE_LOCK_WAIT", limits::kMaxLockWaitSeconds),
-          secondsFrom("LINKAGE_ENCODER_WAIT", limits::kMaxEncoderStallSeconds), shaders ? shaders : ""};
+          secondsFrom("LINKAGE_ENCODER_WAIT", limits::kMaxEncoderStallSeconds), textOf("SL_SHADER_DIR"),
+          textOf("LINKAGE_GL"), switches};
 }
 
 }  // namespace

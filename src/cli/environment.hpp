@@ -16,6 +16,11 @@ struct Environment {
   // SL_SHADER_DIR: a folder to read the shaders from instead of the ones built into the program (work on the
   // shaders without rebuilding); empty if unset.
   std::string shaderFolder;
+  // LINKAGE_GL: the GL backend of commands that draw when --gl does not say (cli/gl_choice.hpp); empty if unset.
+  std::string glBackend;
+  // The switches of Mesa's llvmpipe that change the code it generates, and so the pixels, as "NAME=value" joined by
+  // spaces (GALLIUM_OVERRIDE_CPU_CAPS, LP_NATIVE_VECTOR_WIDTH); empty if none is set. Recorded with the renderer.
+  std::string llvmpipeSwitches;
 };
 
 // Read once, at the first call. Throws CommandExit (exit 2) naming the variable when a value is unusable.

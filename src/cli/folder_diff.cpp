@@ -44,10 +44,11 @@ FolderFrames readFolderFrames(const std::string& folder) {
   return result;
 }
 
-std::vector<std::string> readRenderers(const std::string& folder) {
+DrawnBy readDrawnBy(const std::string& folder) {
   const std::string path = folder + "/manifest.json";
   if (!std::filesystem::exists(path)) throw std::invalid_argument(path + ": cannot read (is " + folder + " a render folder?)");
-  return readManifestFile(path).renderers;
+  ManifestContents contents = readManifestFile(path);
+  return {std::move(contents.renderers), std::move(contents.backends)};
 }
 
 namespace {

@@ -34,8 +34,12 @@ FolderFrames readFolderFrames(const std::string& folder);
 std::pair<std::map<int, std::string>, std::map<int, std::string>> comparableHashes(const FolderFrames& before,
                                                                                    const FolderFrames& after);
 
-// The GL renderers ("renderer | version") DIR/manifest.json records, in its order; empty if it names none.
-std::vector<std::string> readRenderers(const std::string& folder);
+// What drew DIR's frames as DIR/manifest.json records it: "renderer | version | cpu ..." and the GL backends, in
+// its order; empty where it names none (backends: manifests before 0.5).
+struct DrawnBy {
+  std::vector<std::string> renderers, backends;
+};
+DrawnBy readDrawnBy(const std::string& folder);
 
 FolderDifference compareFolders(const std::map<int, std::string>& before, const std::map<int, std::string>& after);
 

@@ -10,8 +10,10 @@
 #include "cli/commands.hpp"
 #include "cli/environment.hpp"
 #include "cli/exit_codes.hpp"
+#include "cli/gl_choice.hpp"
 #include "cli/help_format.hpp"
 #include "cli/typo_hints.hpp"
+#include "render/gl_backend.hpp"
 #include "render/renderer.hpp"
 
 namespace sl {
@@ -23,15 +25,18 @@ namespace {
 // `linkage --version`: what a bug report needs. The GL renderer is asked for (a tiny offscreen context), since
 // frames depend on it (llvmpipe's version is recorded in every manifest too).
 void printVersion() {
-  std::string gl;
+  std::string gl, backends;
+  for (sl::GlBackend b : sl::builtGlBackends()) backends += (backends.empty() ? "" : ", ") + sl::nameOf(b);
   try {
+    sl::chooseGlBackend("");  // LINKAGE_GL, if set
     const sl::Renderer renderer(sl::ViewSettings{}, {16, 16}, sl::environment().shaderFolder);
-    gl = renderer.glRenderer() + ", OpenGL " + renderer.glVersion();
+    gl = renderer.glRenderer() + ", OpenGL " + renderer.glVersion() + ", through " + sl::glBackendWords();
   } catch (const std::exception& error) {
     gl = std::string("unavailable (") + error.what() + ")";
   }
   std::cout << "linkage " << SL_VERSION << " (commit " << sl::buildCommit() << ")\n"
             << "compiler: " << SL_COMPILER << "\n"
+            << "GL backends: " << backends << "\n"
             << "GL renderer: " << gl << "\n";
 }
 

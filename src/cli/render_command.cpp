@@ -27,6 +27,7 @@
 #include "cli/render_folder.hpp"
 #include "cli/run_report.hpp"
 #include "cli/scene_input.hpp"
+#include "cli/gl_choice.hpp"
 #include "cli/summary.hpp"
 #include "frames/frame_builder.hpp"
 #include "output/distinct_files.hpp"
@@ -35,6 +36,7 @@
 #include "output/sha256.hpp"
 #include "output/temporary_file.hpp"
 #include "output/video_sink.hpp"
+#include "render/gl_backend.hpp"
 #include "render/renderer_pool.hpp"
 #include "contracts/parallel_for.hpp"
 #include "scene/output_folder.hpp"
@@ -49,7 +51,7 @@ namespace fs = std::filesystem;
 
 struct RenderArguments {
   std::vector<std::string> overrides;  // --set KEY=VALUE
-  std::string scene, out, frames, video, size, videoQuality;
+  std::string scene, out, frames, video, size, videoQuality, gl;
   bool png = false, noPng = false, quiet = false, resume = false, replace = false, preview = false;
   int threads = 0;  // --threads; 0: the cores this process may use
 };
@@ -248,7 +250,14 @@ std::string renderSummary(const RenderPlan& plan, int drawn, int skipped) {
 struct RenderCounts {
   int drawn = 0, skipped = 0;
   std::string outcomes;  // runOutcomes up to the range's last frame
+  std::string backend;   // the GL backend that drew the frames (glBackendWords)
 };
+
+// What draws this process's frames, in a manifest: the renderer's identity (what the bytes depend on: a folder of
+// another's frames is refused) and its backend.
+void recordRenderer(FrameManifest& manifest, const RendererPool& renderers) {
+  manifest.addRenderer(rendererIdentity(renderers.glRenderer(), renderers.glVersion()), nameOf(*glBackendInUse()));
+}
 
 double lastFrameTime(const RenderPlan& plan) {
   return plan.scene.frameTime(plan.range.first + (plan.range.count() - 1) * plan.range.step);
@@ -292,7 +301,7 @@ RenderCounts renderHere(const RenderPlan& plan, const nlohmann::json& info, bool
                                                     fs::path(plan.video).filename().string() + ".manifest.json",
                                                     FrameManifest::Existing::replace, FrameManifest::Claim::join,
                                                     nullptr, environment().lockWaitSeconds);
-    videoManifest->addRenderer(renderers.glRenderer(), renderers.glVersion());
+    recordRenderer(*videoManifest, renderers);
     VideoSettings settings{plan.video, *videoFormatOfPath(plan.video), scene.output.videoQuality,
                            scene.output.size.width, scene.output.size.height, double(scene.output.fps)};
     settings.cancelled = interruptRequested;
@@ -301,7 +310,7 @@ RenderCounts renderHere(const RenderPlan& plan, const nlohmann::json& info, bool
   }
   if (plan.png) {
     pngManifest = openFrameManifest(plan, info, whole);
-    pngManifest->addRenderer(renderers.glRenderer(), renderers.glVersion());
+    recordRenderer(*pngManifest, renderers);
     pngSink = std::make_unique<PngSequenceSink>(plan.folder, *pngManifest, plan.encoders, scene.output.pngCompression);
     sinks.push_back(pngSink.get());
   }
@@ -334,6 +343,7 @@ RenderCounts renderHere(const RenderPlan& plan, const nlohmann::json& info, bool
                             "encode it");
   }
   counts.outcomes = runOutcomes(scene, builder.runs(), lastFrameTime(plan));
+  counts.backend = glBackendWords();
   return counts;
 }
 
@@ -358,7 +368,7 @@ int drawFramesInWorker(const RenderPlan& plan, const nlohmann::json& info, Frame
       return interruptRequested() ? kExitInterrupted : kExitOk;
     FrameManifest manifest(plan.folder, info, "manifest.json", FrameManifest::Existing::merge,
                            FrameManifest::Claim::join, interruptRequested, environment().lockWaitSeconds);
-    manifest.addRenderer(renderers.glRenderer(), renderers.glVersion());
+    recordRenderer(manifest, renderers);
     ImageRecycler buffers;
     PngSequenceSink sink(plan.folder, manifest, std::max(1, plan.encoders / plan.renderers),
                          plan.scene.output.pngCompression);
@@ -474,6 +484,8 @@ std::optional<RenderCounts> renderInProcesses(const RenderPlan& plan, const nloh
     if (status != kExitOk)  // a worker that sent no error: it crashed or was killed
       throw CommandExit(kExitFailure, "linkage: a process drawing frames " + howWorkerEnded(status) + "; " + toFinish);
   }
+  for (const std::string& backend : readManifestFile(manifest->path()).backends)  // the workers drew
+    counts.backend += (counts.backend.empty() ? "" : ", ") + backend;
   return counts;
 }
 
@@ -481,6 +493,7 @@ void runRender(const RenderArguments& args) {
   installInterruptHandlers();  // first: a signal during planning still ends the render cleanly
   const CommandSummary summary("render", args.quiet);
   const RenderPlan plan = planRender(args);
+  chooseGlBackend(args.gl);
   const Scene& scene = plan.scene;
   const nlohmann::json info = manifestInfo(plan);
   sweepOutputFolders(plan);  // first: a killed render's leftovers must not count against the free space
@@ -502,8 +515,8 @@ void runRender(const RenderArguments& args) {
   if (!counts) counts = renderHere(plan, info, whole, *built);  // (or no worker could be started): on threads
   const double seconds = summary.seconds();
   char rate[48];
-  std::snprintf(rate, sizeof rate, " (%.1f frames/s); ", seconds > 0 ? counts->drawn / seconds : 0.0);
-  summary.print(renderSummary(plan, counts->drawn, counts->skipped), rate + counts->outcomes);
+  std::snprintf(rate, sizeof rate, " (%.1f frames/s, ", seconds > 0 ? counts->drawn / seconds : 0.0);
+  summary.print(renderSummary(plan, counts->drawn, counts->skipped), rate + counts->backend + "); " + counts->outcomes);
 }
 
 }  // namespace
@@ -536,6 +549,7 @@ void addRenderCommand(CLI::App& app) {
                           "costly runs; one renderer with --video). Default: the cores this process may use. The "
                           "files do not depend on it")
       ->check(CLI::Range(1, 1024));
+  addGlOption(*command, args->gl);
   command->add_flag("--quiet", args->quiet, "errors only: no progress, run reports or summary line");
   command->add_flag("--resume", args->resume, "skip frames whose file and manifest entry are complete (PNG only)");
   command->add_flag("--replace", args->replace,

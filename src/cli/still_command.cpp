@@ -17,6 +17,7 @@
 #include "cli/environment.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/frame_range.hpp"
+#include "cli/gl_choice.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/number_options.hpp"
 #include "cli/scene_input.hpp"
@@ -33,7 +34,7 @@ namespace sl {
 namespace {
 
 struct StillArguments {
-  std::string scene, out, size;
+  std::string scene, out, size, gl;
   std::vector<std::string> overrides;
   double time = 0;
   bool transparent = false, quiet = false;
@@ -89,6 +90,7 @@ void runStill(const StillArguments& args) {
     problems.push_back({"--time", "expected a time that is a frame time at some multiple (up to 1000) of the frame "
                                   "rate, such as a decimal with at most three places"});
   failOnProblems(args.scene, problems);
+  chooseGlBackend(args.gl);
   // The history between frame times, as dense as a render's.
   scene.output.fps *= multiple;
   scene.view.pathSamplesPerFrame = std::max(1, (scene.view.pathSamplesPerFrame + multiple - 1) / multiple);
@@ -126,7 +128,7 @@ void runStill(const StillArguments& args) {
   summary.print("\"" + scene.name + "\" at t = " + time + ", " + std::to_string(scene.output.size.width) + "x" +
                     std::to_string(scene.output.size.height) + (args.transparent ? " (transparent)" : "") + " -> " +
                     args.out,
-                "; " + runOutcomes(scene, builder->runs(), scene.frameTime(frame)));
+                " (" + glBackendWords() + "); " + runOutcomes(scene, builder->runs(), scene.frameTime(frame)));
 }
 
 }  // namespace
@@ -144,6 +146,7 @@ void addStillCommand(CLI::App& app) {
   command->add_option("--size", args->size, "override the frame size, WIDTHxHEIGHT, e.g. 1920x1080");
   command->add_flag("--transparent", args->transparent,
                     "a transparent background (RGBA PNG, for compositing): drawn on black and on white and unblended");
+  addGlOption(*command, args->gl);
   command->add_flag("--quiet", args->quiet, "no run reports or summary line");
   command->footer(
       "At a frame time (k / fps) the still is frame k of `linkage render`, pixel for pixel.\n"
