@@ -1,6 +1,6 @@
 # Install rules and the Debian package. `linkage` is one file that runs anywhere: its shaders are compiled in
 # (src/render/CMakeLists.txt) and its only run-time files are Debian packages (the DejaVu font, ffmpeg for video,
-# gnuplot for charts, OSMesa). Installed beside it: the shipped scenes and the scene documentation.
+# gnuplot for charts, the GL backends built: EGL with Mesa's EGL vendor and llvmpipe, OSMesa). Installed beside it: the shipped scenes and the scene documentation.
 #
 #   cmake --install build --prefix ~/.local          # ~/.local/bin/linkage, ~/.local/share/sphere-linkages/scenes
 #   (cd build && cpack -G DEB)                        # build/linkage_<version>_<arch>.deb
@@ -33,6 +33,12 @@ set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)  # linkage_<version>_<arch>.deb
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)   # the shared libraries, found by dpkg-shlibdeps
 # Run-time programs and data that are not linked: the font the frames use, video encoding, charts.
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "fonts-dejavu-core, ffmpeg, gnuplot-nox | gnuplot")
+# EGL: libEGL (libglvnd) is linked and found by dpkg-shlibdeps; Mesa's EGL vendor and its llvmpipe driver are
+# loaded by it at run time, so they are named here.
+set(sl_depends "fonts-dejavu-core, ffmpeg, gnuplot-nox | gnuplot")
+if("egl" IN_LIST SL_GL_BACKENDS)
+  string(APPEND sl_depends ", libegl-mesa0, libgl1-mesa-dri")
+endif()
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "${sl_depends}")
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "parallel")
 include(CPack)

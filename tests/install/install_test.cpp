@@ -3,6 +3,7 @@
 // frames byte-identical to the build tree's. The Debian package builds and names its run-time dependencies.
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -64,7 +65,14 @@ TEST(Install, DebianPackageCarriesTheProgramScenesAndRunTimeDependencies) {
   EXPECT_EQ(fs::path(deb).filename().string().rfind("linkage_", 0), 0u) << deb;
   const ProcessResult depends = runShell("dpkg-deb -f " + shellQuoted(deb) + " Depends", temp.path());
   ASSERT_EQ(depends.code, 0) << depends.err;
-  for (const char* package : {"libosmesa6", "ffmpeg", "fonts-dejavu-core", "gnuplot", "libdeflate0", "libc6"})
+  std::vector<std::string> packages{"ffmpeg", "fonts-dejavu-core", "gnuplot", "libdeflate0", "libc6"};
+  // The GL backends built (SL_GL_BACKENDS: "egl,osmesa"): the libraries linked and, for EGL, Mesa's vendor and
+  // driver that libEGL loads at run time.
+  const std::string backends = SL_GL_BACKENDS;
+  if (backends.find("egl") != std::string::npos) packages.insert(packages.end(), {"libegl1", "libegl-mesa0", "libgl1-mesa-dri"});
+  if (backends.find("osmesa") != std::string::npos) packages.push_back("libosmesa6");
+  else EXPECT_EQ(depends.out.find("libosmesa6"), std::string::npos) << "a build without OSMesa depends on it";
+  for (const std::string& package : packages)
     EXPECT_NE(depends.out.find(package), std::string::npos) << package << " missing from Depends: " << depends.out;
   const ProcessResult contents = runShell("dpkg-deb -c " + shellQuoted(deb), temp.path());
   ASSERT_EQ(contents.code, 0) << contents.err;
