@@ -20,6 +20,7 @@
 #include "cli/progress.hpp"
 #include "cli/summary.hpp"
 #include "cli/number_options.hpp"
+#include "contracts/limits.hpp"
 #include "contracts/time_grid.hpp"
 #include "contracts/registry.hpp"
 #include "output/atomic_file.hpp"
@@ -128,9 +129,13 @@ void addBenchCommand(CLI::App& app) {
                     "L-near-2, L-near-4)");
   bench->add_option("--methods", args->methods, "methods (default all)")->delimiter(',');
   bench->add_option("--integrators", args->integrators, "integrators (default all)")->delimiter(',');
-  bench->add_option("--steps", args->options.steps, "rk4 steps to sweep")->delimiter(',');
-  bench->add_option("--tolerances", args->options.tolerances, "adaptive tolerances to sweep")->delimiter(',');
-  bench->add_option("--targets", args->targets, "errors for the cheapest-setting table")->delimiter(',');
+  bench->add_option("--steps", args->options.steps, "rk4 steps to sweep")->delimiter(',')->check(finitePositive());
+  bench->add_option("--tolerances", args->options.tolerances, "adaptive tolerances to sweep")
+      ->delimiter(',')
+      ->check(finiteRange(limits::kMinTolerance, limits::kMaxTolerance));
+  bench->add_option("--targets", args->targets, "errors for the cheapest-setting table")
+      ->delimiter(',')
+      ->check(finitePositive());
   bench->add_option("--repeats", args->options.repeats, "runs per point; wall time is their median")
       ->check(CLI::Range(1, 1000));
   bench->add_option("--interval", args->options.sampleInterval, "error grid spacing in time units")

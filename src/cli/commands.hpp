@@ -8,6 +8,10 @@ class App;
 
 namespace sl {
 
+// Every command below, in the order `linkage --help` lists them (commands.cpp): main() and the tests that walk
+// every command's options use this one list.
+void addCommands(CLI::App& app);
+
 void addValidateCommand(CLI::App& app);
 void addSimulateCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);

@@ -17,6 +17,7 @@
 #include "cli/configuration_json.hpp"
 #include "cli/configuration_point.hpp"
 #include "cli/exit_codes.hpp"
+#include "cli/number_options.hpp"
 #include "cli/scene_input.hpp"
 #include "contracts/limits.hpp"
 #include "inverse/connect.hpp"
@@ -166,7 +167,7 @@ void addConnectCommand(CLI::App& app) {
                    "target: {\"coords\": [...]} (chart 0) or {\"hinges\": [[x, y], ...]}, or a file holding it")
       ->required();
   command->add_option("--max-length", args->maxLength, "longest geodesic wanted (default: 2.5 times the shortest)")
-      ->check(CLI::Range(0.0, limits::kMaxConnectLength));
+      ->check(finiteRange(0.0, limits::kMaxConnectLength));
   command
       ->add_option("--method", args->methods,
                    "also shoot every motion found with this method (repeatable), e.g. christoffel or embedded: a "

@@ -194,7 +194,7 @@ void addDiffCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--max-differing", args->pixels.maxDifferingPercent,
                       "folders: a frame matches when at most PERCENT of its pixels differ (implies --images)")
-      ->check(CLI::Range(0.0, 100.0))
+      ->check(finiteRange(0.0, 100.0))
       ->capture_default_str();
   command->add_option("--image-dir", args->imageFolder,
                       "write diff_frame_NNNNN.png (differing pixels red) into this folder; none without it");

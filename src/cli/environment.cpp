@@ -15,8 +15,10 @@ double secondsFrom(const char* name, double fallback) {
   if (text == nullptr || *text == '\0') return fallback;
   char* end = nullptr;
   const double seconds = std::strtod(text, &end);
-  if (end == text || *end != '\0' || !std::isfinite(seconds) || seconds < 0)
-    throw CommandExit(kExitBadInput, std::string(name) + ": found \"" + text + "\"; expected seconds, a number >= 0");
+  if (end == text || *end != '\0' || !std::isfinite(seconds) || seconds < 0 ||
+      seconds > limits::kMaxEnvironmentWaitSeconds)
+    throw CommandExit(kExitBadInput, std::string(name) + ": found \"" + text + "\"; expected seconds, a number from 0 to " +
+                                         std::to_string(static_cast<long>(limits::kMaxEnvironmentWaitSeconds)));
   return seconds;
 }
 

@@ -84,20 +84,7 @@ int runCommand(int argc, char** argv) {
                          "  linkage numbers scenes/jacobi.json\n"
                          "A guide by task: docs/guide.md (installed: share/doc/linkage/docs/guide.md).\n\n") +
              sl::exitCodeHelp());
-  sl::addRenderCommand(app);
-  sl::addStillCommand(app);
-  sl::addContactSheetCommand(app);
-  sl::addSimulateCommand(app);
-  sl::addValidateCommand(app);
-  sl::addDiffCommand(app);
-  sl::addListMethodsCommand(app);
-  sl::addBenchCommand(app);
-  sl::addStabilityCommand(app);
-  sl::addGeometryCommand(app);
-  sl::addNumbersCommand(app);
-  sl::addConnectCommand(app);
-  sl::addPeriodicCommand(app);
-  sl::addSchemaCommand(app);
+  sl::addCommands(app);
   try {
     app.parse(argc, argv);
     if (version) {

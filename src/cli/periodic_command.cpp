@@ -14,6 +14,7 @@
 #include "cli/summary.hpp"
 #include "cli/configuration_json.hpp"
 #include "cli/exit_codes.hpp"
+#include "cli/number_options.hpp"
 #include "cli/scene_input.hpp"
 #include "contracts/limits.hpp"
 #include "inverse/periodic.hpp"
@@ -108,7 +109,7 @@ void addPeriodicCommand(CLI::App& app) {
   addSceneOverrideOption(*command, args->overrides);
   command
       ->add_option("--max-length", args->maxLength, "longest closed geodesic wanted (default: about 2.5x the shortest)")
-      ->check(CLI::Range(0.0, limits::kMaxPeriodicLength));
+      ->check(finiteRange(0.0, limits::kMaxPeriodicLength));
   command->add_flag("--json", args->json,
                     "a JSON list of objects (length, simple, symmetry, stability, eigenvalues, start, ...)");
   command->footer(

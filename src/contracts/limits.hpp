@@ -66,6 +66,9 @@ inline constexpr double kMaxLockWaitSeconds = 60;
 // How long the video encoder may read nothing of a frame before the render gives up on it (an encoder stopped
 // or hung); it says what it waits for after the first second. LINKAGE_ENCODER_WAIT (seconds) overrides it.
 inline constexpr double kMaxEncoderStallSeconds = 60;
+// The longest of those two waits the environment may ask for (LINKAGE_LOCK_WAIT, LINKAGE_ENCODER_WAIT): a week.
+// Beyond, a deadline of steady_clock overflows, and a wait that long is a typo, not a choice.
+inline constexpr double kMaxEnvironmentWaitSeconds = 7 * 24 * 3600;
 // `connect` (src/inverse): sparse KKT systems, one exact shooting derivative per Newton solve then Broyden's
 // updates, route 2 and the Morse index O(n) per node but the dense d x d blocks of the index O(n^3). Measured
 // (bench/README.md, "Inverse problems"): 100 rods in about 15 s, 200 rods in about 2 minutes, growing like

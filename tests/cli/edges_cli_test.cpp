@@ -89,10 +89,15 @@ TEST(EdgesCli, UnusableEnvironmentValuesAreNamed) {
   const std::string render = shellQuoted(linkageBinary()) + " render " + shellQuoted(shippedScene("seam.json")) +
                              " --size 160x90 --frames 0:1 --out r --quiet";
   for (const std::string variable : {"LINKAGE_LOCK_WAIT", "LINKAGE_ENCODER_WAIT"}) {
-    const ProcessResult refused = runShell(variable + "=soon " + render, folder.path());
-    EXPECT_EQ(refused.code, 2) << refused.err;
-    EXPECT_NE(refused.err.find(variable + ": found \"soon\"; expected seconds"), std::string::npos) << refused.err;
-    EXPECT_FALSE(fs::exists(folder.path() / "r"));
+    // A word, and a number too large for a deadline (the steady clock would overflow: a wait of no time at all).
+    for (const std::string value : {"soon", "1e300", "nan"}) {
+      const ProcessResult refused = runShell(variable + "=" + value + " " + render, folder.path());
+      EXPECT_EQ(refused.code, 2) << refused.err;
+      EXPECT_NE(refused.err.find(variable + ": found \"" + value + "\"; expected seconds, a number from 0 to 604800"),
+                std::string::npos)
+          << refused.err;
+      EXPECT_FALSE(fs::exists(folder.path() / "r"));
+    }
   }
   EXPECT_EQ(runShell("LINKAGE_LOCK_WAIT=2.5 " + render, folder.path()).code, 0);
 }
