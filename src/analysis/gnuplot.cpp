@@ -57,8 +57,18 @@ void pipeToGnuplot(const std::string& script, const std::string& scriptPath) {
 
 }  // namespace
 
+std::string chartCompanion(const std::string& pngPath, const std::string& extension) {
+  return std::filesystem::path(pngPath).replace_extension(extension).string();
+}
+
+std::vector<std::string> chartFiles(const std::string& pngPath, const std::vector<std::string>& formats) {
+  std::vector<std::string> files{pngPath, chartCompanion(pngPath, ".gp")};
+  for (const std::string& format : formats) files.push_back(chartCompanion(pngPath, "." + format));
+  return files;
+}
+
 void renderGnuplotChart(const std::string& script, const std::string& pngPath) {
-  const std::string scriptPath = std::filesystem::path(pngPath).replace_extension(".gp").string();
+  const std::string scriptPath = chartCompanion(pngPath, ".gp");
   {
     std::ofstream out(scriptPath, std::ios::trunc);
     if (!out) throw std::runtime_error(scriptPath + ": cannot open for writing");
@@ -86,7 +96,7 @@ std::vector<std::string> parseChartFormats(const std::string& list) {
 }
 
 std::vector<std::string> renderChartAs(const std::string& pngPath, const std::vector<std::string>& formats) {
-  const std::string scriptPath = std::filesystem::path(pngPath).replace_extension(".gp").string();
+  const std::string scriptPath = chartCompanion(pngPath, ".gp");
   std::ifstream in(scriptPath);
   if (!in) throw std::runtime_error(scriptPath + ": cannot read the chart's script");
   const std::string script((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -102,7 +112,7 @@ std::vector<std::string> renderChartAs(const std::string& pngPath, const std::ve
     throw std::runtime_error(scriptPath + ": cannot read the chart's size");
   std::vector<std::string> written;
   for (const std::string& format : formats) {
-    const std::string path = std::filesystem::path(pngPath).replace_extension("." + format).string();
+    const std::string path = chartCompanion(pngPath, "." + format);
     char size[64];
     if (format == "pdf")
       std::snprintf(size, sizeof size, "%gin,%gin", width / 100.0, height / 100.0);

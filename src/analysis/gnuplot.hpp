@@ -32,6 +32,11 @@ void renderGnuplotChart(const std::string& script, const std::string& pngPath);
 // size (100 pixels an inch for PDF). Parses "svg,pdf"; throws std::invalid_argument naming what is allowed.
 std::vector<std::string> parseChartFormats(const std::string& list);
 
+// The file of a chart in another format or its script: pngPath with the extension ".gp", ".svg", ".pdf".
+std::string chartCompanion(const std::string& pngPath, const std::string& extension);
+// Every file a chart writes: the PNG, its script and each of `formats` (for the output checks before any work).
+std::vector<std::string> chartFiles(const std::string& pngPath, const std::vector<std::string>& formats);
+
 // Renders the chart pngPath was made from (its script, pngPath with .gp) again in each format, beside it
 // (pngPath with .svg / .pdf); returns the files written. Throws std::runtime_error as renderGnuplotChart.
 std::vector<std::string> renderChartAs(const std::string& pngPath, const std::vector<std::string>& formats);

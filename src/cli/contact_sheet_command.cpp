@@ -2,8 +2,12 @@
 // small copies each labelled with its frame number and time, to see a whole animation at a glance.
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <iterator>
 #include <memory>
 #include <vector>
 
@@ -17,7 +21,11 @@
 #include "cli/exit_codes.hpp"
 #include "cli/summary.hpp"
 #include "contracts/time_grid.hpp"
+#include "cli/scene_input.hpp"
+#include "contracts/limits.hpp"
 #include "output/atomic_file.hpp"
+#include "output/frame_manifest.hpp"
+#include "output/sha256.hpp"
 #include "output/png_encoder.hpp"
 
 namespace sl {
@@ -30,10 +38,11 @@ struct SheetArguments {
   bool quiet = false;
 };
 
-struct RenderedFrame {
-  int frame;
-  std::string file;
-};
+std::string readWholeFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw CommandExit(kExitBadInput, path + ": cannot read (listed in manifest.json)");
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
 
 constexpr int kLabelScale = 2;                  // stb_easy_font's 7-pixel letters, doubled
 constexpr int kLabelHeight = 12 * kLabelScale;  // the strip under each tile
@@ -58,46 +67,79 @@ void drawLabel(Image& sheet, int x, int y, const std::string& text) {
 
 void runContactSheet(const SheetArguments& args) {
   const CommandSummary summary("contact-sheet", args.quiet);
+  // The manifest through the one validated reader (as --resume and diff read it): entries well formed, frame numbers
+  // in range, file names inside the folder.
   const std::string path = args.folder + "/manifest.json";
-  std::ifstream in(path);
-  if (!in) throw CommandExit(kExitBadInput, path + ": cannot read (is " + args.folder + " a render folder?)");
-  std::vector<RenderedFrame> frames;
-  int fps = 0;
+  if (!std::filesystem::exists(path))
+    throw CommandExit(kExitBadInput, path + ": cannot read (is " + args.folder + " a render folder?)");
+  ManifestContents manifest;
   try {
-    const nlohmann::json manifest = nlohmann::json::parse(in);
-    fps = manifest.at("info").at("fps").get<int>();
-    for (const auto& entry : manifest.at("frames"))
-      if (!entry.value("file", "").empty())
-        frames.push_back({entry.at("frame").get<int>(), entry.at("file").get<std::string>()});
-  } catch (const nlohmann::json::exception& error) {
-    throw CommandExit(kExitBadInput, path + ": not a frame manifest: " + error.what());
+    manifest = readManifestFile(path);
+  } catch (const ManifestInvalid& error) {
+    throw CommandExit(kExitBadInput, error.what());
   }
-  if (frames.empty() || fps <= 0) throw CommandExit(kExitBadInput, path + ": lists no PNG frames");
+  const auto infoNumber = [&](const char* key) {
+    const nlohmann::json* value = manifest.info.is_object() && manifest.info.contains(key) ? &manifest.info.at(key) : nullptr;
+    if (!value || !value->is_number_integer() || value->get<long>() < 1 || value->get<long>() > limits::kMaxFrames)
+      throw CommandExit(kExitBadInput, path + ": info." + key + ": expected a positive integer (a render's manifest)");
+    return int(value->get<long>());
+  };
+  const int fps = infoNumber("fps"), width = infoNumber("width"), height = infoNumber("height");
+  const int frameCount = infoNumber("frames");
+  std::vector<FrameEntry> frames;
+  std::vector<NamedFile> inputs{{"the manifest", path}};
+  for (const auto& [frame, entry] : manifest.frames)
+    if (!entry.file.empty()) frames.push_back(entry), inputs.push_back({"frame " + std::to_string(frame), args.folder + "/" + entry.file});
+  if (frames.empty()) throw CommandExit(kExitBadInput, path + ": lists no PNG frames");
   if (args.out.size() < 5 || args.out.substr(args.out.size() - 4) != ".png")
     throw CommandExit(kExitBadInput, "--out: found \"" + args.out + "\"; expected a file name ending in .png");
-  std::sort(frames.begin(), frames.end(), [](const auto& a, const auto& b) { return a.frame < b.frame; });
+  requireOutputsBeforeWork("contact-sheet", inputs, {{"--out", args.out}});
+
   const int count = std::min<int>(args.count, int(frames.size()));
-  std::vector<RenderedFrame> chosen;  // evenly spaced, the first and the last included
+  const int columns = std::min(args.columns, count), rows = (count + columns - 1) / columns;
+  const int tileHeight = std::max(1, int(std::lround(double(args.tileWidth) * height / width)));
+  const long sheetWidth = kGap + long(columns) * (args.tileWidth + kGap);
+  const long sheetHeight = kGap + long(rows) * (tileHeight + kLabelHeight + kGap);
+  if (sheetWidth > limits::kMaxImageSide || sheetHeight > limits::kMaxImageSide)
+    throw CommandExit(kExitBadInput, "linkage contact-sheet: the sheet would be " + std::to_string(sheetWidth) + "x" +
+                                         std::to_string(sheetHeight) + " pixels; expected at most " +
+                                         std::to_string(limits::kMaxImageSide) +
+                                         " on a side: fewer frames (--count), other --columns or a smaller --tile-width");
+  // An unfinished render (a shard set with a shard missing, an interrupted render) is said, not passed off as
+  // whole. A render of every k-th frame (--frames ::k) is whole: its frames are 0, k, 2k, ... to the end.
+  const int step = frames.size() > 1 ? frames[1].frame - frames[0].frame : frameCount;
+  bool whole = frames.front().frame < step && frames.back().frame + step >= frameCount;
+  for (std::size_t i = 1; i < frames.size() && whole; ++i) whole = frames[i].frame - frames[i - 1].frame == step;
+  if (!whole && !args.quiet)
+    std::cerr << "linkage contact-sheet: warning: " << args.folder << " holds " << frames.size() << " of the render's "
+              << frameCount << " frames, with gaps (an unfinished render or shard set); the sheet shows those it holds\n";
+  std::vector<FrameEntry> chosen;  // evenly spaced, the first and the last included
   for (int i = 0; i < count; ++i)
     chosen.push_back(frames[count == 1 ? 0 : size_t(i) * (frames.size() - 1) / size_t(count - 1)]);
 
-  const int columns = std::min(args.columns, count), rows = (count + columns - 1) / columns;
-  int tileHeight = 0;
   Image sheet;
+  sheet.width = int(sheetWidth);
+  sheet.height = int(sheetHeight);
+  sheet.rgb.assign(size_t(sheet.width) * sheet.height * 3, kPaper);
   for (int i = 0; i < count; ++i) {
+    // Each frame is the one the manifest lists: a file replaced since is refused, not shown as the original.
     const std::string file = args.folder + "/" + chosen[size_t(i)].file;
-    int width = 0, height = 0, channels = 0;
-    std::unique_ptr<unsigned char, void (*)(void*)> pixels(stbi_load(file.c_str(), &width, &height, &channels, 3),
-                                                           stbi_image_free);
+    const std::string bytes = readWholeFile(file);
+    if (sha256Hex(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()) != chosen[size_t(i)].fileSha256)
+      throw CommandExit(kExitBadInput, file + ": is not the frame manifest.json lists (changed since the render wrote it); "
+                                              "render it again (--resume redraws it)");
+    int frameWidth = 0, frameHeight = 0, channels = 0;
+    std::unique_ptr<unsigned char, void (*)(void*)> pixels(
+        stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &frameWidth,
+                              &frameHeight, &channels, 3),
+        stbi_image_free);
     if (!pixels) throw CommandExit(kExitBadInput, file + ": cannot decode PNG: " + stbi_failure_reason());
-    if (i == 0) {
-      tileHeight = std::max(1, int(std::lround(double(args.tileWidth) * height / width)));
-      sheet.width = kGap + columns * (args.tileWidth + kGap);
-      sheet.height = kGap + rows * (tileHeight + kLabelHeight + kGap);
-      sheet.rgb.assign(size_t(sheet.width) * sheet.height * 3, kPaper);
-    }
+    if (frameWidth != width || frameHeight != height)
+      throw CommandExit(kExitBadInput, file + ": " + std::to_string(frameWidth) + "x" + std::to_string(frameHeight) +
+                                           "; manifest.json says the render is " + std::to_string(width) + "x" +
+                                           std::to_string(height));
     std::vector<unsigned char> tile(size_t(args.tileWidth) * tileHeight * 3);
-    stbir_resize_uint8(pixels.get(), width, height, 0, tile.data(), args.tileWidth, tileHeight, 0, 3);
+    stbir_resize_uint8(pixels.get(), frameWidth, frameHeight, 0, tile.data(), args.tileWidth, tileHeight, 0, 3);
     const int x = kGap + (i % columns) * (args.tileWidth + kGap);
     const int y = kGap + (i / columns) * (tileHeight + kLabelHeight + kGap);
     for (int row = 0; row < tileHeight; ++row)
@@ -110,6 +152,7 @@ void runContactSheet(const SheetArguments& args) {
   }
   writeFileAtomically(args.out, PngEncoder().encode(sheet));
   summary.print(std::to_string(count) + " of " + std::to_string(frames.size()) + " frames of " + args.folder +
+                (whole ? "" : " (frames missing)") +
                 " in " + std::to_string(rows) + " x " + std::to_string(columns) + " -> " + args.out);
 }
 

@@ -264,11 +264,17 @@ void runGeometry(const GeometryArguments& args) {
   if (!args.chart.empty() && args.sweep.empty())
     throw CommandExit(kExitBadInput, "--chart: draws the L sweep; expected --sweep-L A:B:N with it");
   const std::vector<std::string> formats = chartFormats(args.chartFormats);
-  std::vector<NamedFile> outputs = {{"--csv", args.csv}, {"--chart", args.chart}};
-  if (!args.maps.empty() && distance) outputs.push_back({"--maps", args.maps + "/distance.png"});
-  if (!args.maps.empty() && !distance)
-    for (const char* map : {"/curvature.png", "/bending.png", "/stiffness.png"})
-      outputs.push_back({"--maps", args.maps + map});
+  // Every file written, each chart with its script and other formats: the CSV and the chart where they are named,
+  // the maps in a folder this command creates.
+  std::vector<NamedFile> outputs = {{"--csv", args.csv}};
+  if (!args.chart.empty())
+    for (const std::string& file : chartFiles(args.chart, formats)) outputs.push_back({"--chart", file});
+  requireOutputsBeforeWork("geometry", {{"the scene", args.scene}, {"--points", args.points}}, outputs);
+  std::vector<std::string> maps;
+  if (!args.maps.empty() && distance) maps.push_back("/distance.png");
+  if (!args.maps.empty() && !distance) maps = {"/curvature.png", "/bending.png", "/stiffness.png"};
+  for (const std::string& map : maps)
+    for (const std::string& file : chartFiles(args.maps + map, formats)) outputs.push_back({"--maps", file});
   try {
     requireDistinctFiles({{"the scene", args.scene}, {"--points", args.points}}, outputs);
   } catch (const std::invalid_argument& error) {

@@ -60,6 +60,7 @@ nlohmann::json runNumbers(const RunSpec& spec, Trajectory& run, double duration,
 void runNumbersCommand(const NumbersArguments& args) {
   installInterruptHandlers();
   const CommandSummary summary("numbers", args.quiet);
+  requireOutputsBeforeWork("numbers", {{"the scene", args.scene}}, {{"--out", args.out}});
   const Scene scene = loadSceneForCommand(args.scene, args.overrides);
   const std::vector<InitialState> starts = runStarts(scene);
   std::vector<Trajectory> runs = startRuns(scene, starts);

@@ -134,4 +134,13 @@ std::vector<std::vector<Trajectory>> startFamilies(const Scene& scene, const std
   return families;
 }
 
+void requireOutputsBeforeWork(const std::string& command, const std::vector<NamedFile>& inputs,
+                              const std::vector<NamedFile>& outputs) {
+  try {
+    requireWritableOutputs(inputs, outputs);
+  } catch (const std::invalid_argument& error) {
+    throw CommandExit(kExitBadInput, "linkage " + command + ": " + error.what());
+  }
+}
+
 }  // namespace sl

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "contracts/run_config.hpp"
+#include "output/distinct_files.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_loader.hpp"
 #include "simulation/trajectory.hpp"
@@ -28,6 +29,11 @@ void addSceneOverrideOption(CLI::App& command, std::vector<std::string>& overrid
 
 // Throws CommandExit(kExitBadInput) listing the problems, if any.
 void failOnProblems(const std::string& file, const std::vector<SceneProblem>& problems);
+
+// A command's outputs checked before any work (requireWritableOutputs): a clash or an unwritable place ends the
+// command with exit 2, "linkage COMMAND: ROLE PATH ...", before anything is computed or written.
+void requireOutputsBeforeWork(const std::string& command, const std::vector<NamedFile>& inputs,
+                              const std::vector<NamedFile>& outputs);
 
 // Each run's start as an InitialState (the scene's "initial", or the run's own, on the run's own linkage), and
 // one Trajectory per run from it. A start or run the simulation refuses is a problem of the scene:

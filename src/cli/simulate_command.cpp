@@ -106,11 +106,7 @@ void runSimulate(const SimulateArguments& args) {
   }
   // Checked before any work, like render's outputs: a writable place that is not a folder or a device, and not
   // the scene or the other output.
-  try {
-    requireDistinctFiles({{"the scene", args.scene}}, {{"--csv", args.csv}, {"--events", args.events}});
-  } catch (const std::invalid_argument& error) {
-    throw CommandExit(kExitBadInput, "linkage simulate: " + std::string(error.what()));
-  }
+  requireOutputsBeforeWork("simulate", {{"the scene", args.scene}}, {{"--csv", args.csv}, {"--events", args.events}});
   for (const auto& [option, path] : {std::pair{"--csv", args.csv}, std::pair{"--events", args.events}}) {
     if (path.empty()) continue;
     std::vector<SceneProblem> problems;

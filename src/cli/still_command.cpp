@@ -73,6 +73,7 @@ void appendBytes(void* context, void* data, int size) {
 void runStill(const StillArguments& args) {
   installInterruptHandlers();
   const CommandSummary summary("still", args.quiet);
+  requireOutputsBeforeWork("still", {{"the scene", args.scene}}, {{"--out", args.out}});
   Scene scene = loadSceneForCommand(args.scene, args.overrides);
   if (!args.size.empty()) {
     const auto [width, height] = parseImageSize(args.size);

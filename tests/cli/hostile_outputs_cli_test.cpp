@@ -1,0 +1,148 @@
+// The fourth round of hostile inputs (docs/hardening.md), outputs and the contact sheet: every output of every
+// command checked against its inputs and its other outputs and for a writable place before any work; the
+// contact sheet reads the manifest through the validated reader, refuses frames changed behind its back, bounds
+// its size up front and says when frames are missing.
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "support/child_process.hpp"
+#include "support/files.hpp"
+#include "support/linkage_binary.hpp"
+#include "support/scene_files.hpp"
+#include "support/temp_folder.hpp"
+
+namespace sl::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+void copyScene(const std::string& name, const fs::path& to) { fs::copy_file(shippedScene(name), to); }
+
+// An output that is an input, or another output, is refused before any work, and the input is left as it was.
+TEST(HostileOutputsCli, OutputsNeverReplaceInputsOrEachOther) {
+  TempFolder folder;
+  copyScene("seam.json", folder.path() / "S.json");
+  copyScene("seam.json", folder.path() / "S.png");  // a scene file of any name: still must not write over it
+  const std::string scene = readFile(folder.path() / "S.json");
+  const ProcessResult numbers = runLinkage({"numbers", "S.json", "--out", "S.json"}, folder.path());
+  EXPECT_EQ(numbers.code, 2) << numbers.err;
+  EXPECT_NE(numbers.err.find("--out S.json is the same file as the scene"), std::string::npos) << numbers.err;
+  EXPECT_EQ(readFile(folder.path() / "S.json"), scene);
+  const ProcessResult still = runLinkage({"still", "S.png", "--time", "1", "--out", "./S.png"}, folder.path());
+  EXPECT_EQ(still.code, 2) << still.err;
+  EXPECT_EQ(readFile(folder.path() / "S.png"), scene);
+
+  ASSERT_EQ(runLinkage({"render", "S.json", "--size", "160x90", "--frames", "0:4", "--out", "F", "--quiet"},
+                       folder.path())
+                .code,
+            0);
+  const std::string frame = readFile(folder.path() / "F" / "frame_00002.png");
+  const ProcessResult sheet = runLinkage({"contact-sheet", "F", "--out", "F/frame_00002.png"}, folder.path());
+  EXPECT_EQ(sheet.code, 2) << sheet.err;
+  EXPECT_NE(sheet.err.find("is the same file as frame 2"), std::string::npos) << sheet.err;
+  EXPECT_EQ(readFile(folder.path() / "F" / "frame_00002.png"), frame);
+
+  // geometry --maps M writes M/curvature.png with its script M/curvature.gp: --csv there is refused.
+  fs::create_directories(folder.path() / "M");
+  const ProcessResult maps = runLinkage({"geometry", shippedScene("default.json"), "--grid", "16", "--maps", "M",
+                                         "--csv", "M/curvature.gp"},
+                                        folder.path());
+  EXPECT_EQ(maps.code, 2) << maps.err;
+  EXPECT_NE(maps.err.find("--maps M/curvature.gp is the same file as --csv"), std::string::npos) << maps.err;
+  EXPECT_FALSE(fs::exists(folder.path() / "M" / "curvature.png"));
+}
+
+// An output in a folder that does not exist is refused before the work, naming the option, not a temporary file
+// after it.
+TEST(HostileOutputsCli, OutputPlacesAreCheckedBeforeTheWork) {
+  TempFolder folder;
+  const std::string seam = shippedScene("seam.json");
+  ASSERT_EQ(runLinkage({"render", seam, "--size", "160x90", "--frames", "0:2", "--out", "F", "--quiet"}, folder.path())
+                .code,
+            0);
+  const std::vector<std::vector<std::string>> commands{
+      {"numbers", seam, "--out", "missing/n.json"},
+      {"still", seam, "--time", "1", "--size", "160x90", "--out", "missing/s.png"},
+      {"contact-sheet", "F", "--out", "missing/sheet.png"},
+      {"simulate", seam, "--csv", "missing/t.csv"},
+  };
+  for (const auto& command : commands) {
+    const ProcessResult refused = runLinkage(command, folder.path());
+    EXPECT_EQ(refused.code, 2) << command[0] << ": " << refused.err;
+    EXPECT_NE(refused.err.find("the folder missing does not exist"), std::string::npos) << command[0] << ": " << refused.err;
+    EXPECT_EQ(refused.err.find("tmp"), std::string::npos) << refused.err;
+  }
+  const ProcessResult folderAsFile = runLinkage({"numbers", seam, "--out", "F"}, folder.path());
+  EXPECT_EQ(folderAsFile.code, 2);
+  EXPECT_NE(folderAsFile.err.find("--out F: is a folder"), std::string::npos) << folderAsFile.err;
+}
+
+nlohmann::json readJson(const fs::path& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+void writeJson(const fs::path& path, const nlohmann::json& json) { std::ofstream(path) << json.dump(1); }
+
+// The contact sheet trusts nothing in the folder it is not given by the render: entries outside the folder, frame
+// numbers beyond range, files replaced since, sizes beyond the bound; and it says when frames are missing.
+TEST(HostileOutputsCli, ContactSheetTrustsOnlyWhatTheRenderWrote) {
+  TempFolder folder;
+  ASSERT_EQ(runLinkage({"render", shippedScene("seam.json"), "--size", "160x90", "--frames", "0:6", "--out", "F",
+                        "--quiet"},
+                       folder.path())
+                .code,
+            0);
+  const fs::path manifestPath = folder.path() / "F" / "manifest.json";
+  const nlohmann::json manifest = readJson(manifestPath);
+  fs::copy_file(folder.path() / "F" / "frame_00000.png", folder.path() / "other.png");
+
+  nlohmann::json outside = manifest;
+  outside["frames"][1]["file"] = "../other.png";
+  writeJson(manifestPath, outside);
+  ProcessResult sheet = runLinkage({"contact-sheet", "F", "--out", "a.png"}, folder.path());
+  EXPECT_EQ(sheet.code, 2) << sheet.err;
+  EXPECT_NE(sheet.err.find("frames[1].file"), std::string::npos) << sheet.err;
+
+  nlohmann::json wrapped = manifest;
+  wrapped["frames"][1]["frame"] = 2147483648LL;
+  writeJson(manifestPath, wrapped);
+  sheet = runLinkage({"contact-sheet", "F", "--out", "b.png"}, folder.path());
+  EXPECT_EQ(sheet.code, 2) << sheet.err;
+  EXPECT_NE(sheet.err.find("frames[1].frame"), std::string::npos) << sheet.err;
+
+  writeJson(manifestPath, manifest);
+  fs::copy_file(folder.path() / "F" / "frame_00005.png", folder.path() / "F" / "frame_00003.png",
+                fs::copy_options::overwrite_existing);  // replaced behind the manifest's back
+  sheet = runLinkage({"contact-sheet", "F", "--out", "c.png"}, folder.path());
+  EXPECT_EQ(sheet.code, 2) << sheet.err;
+  EXPECT_NE(sheet.err.find("frame_00003.png: is not the frame manifest.json lists"), std::string::npos) << sheet.err;
+
+  // 16 frames of 8192 pixels' width each: a sheet beyond the image bound, refused before anything is decoded.
+  sheet = runLinkage({"contact-sheet", "F", "--count", "6", "--columns", "1", "--tile-width", "4096", "--out", "d.png"},
+                     folder.path());
+  EXPECT_EQ(sheet.code, 2) << sheet.err;
+  EXPECT_NE(sheet.err.find("expected at most 8192 on a side"), std::string::npos) << sheet.err;
+  for (const char* name : {"a.png", "b.png", "c.png", "d.png"}) EXPECT_FALSE(fs::exists(folder.path() / name)) << name;
+
+  // Frames 0-5 of 301: an unfinished render, said in a warning and the summary; the sheet is still made.
+  fs::copy_file(folder.path() / "F" / "frame_00005.png", folder.path() / "F" / "frame_00003.png",
+                fs::copy_options::overwrite_existing);
+  ASSERT_EQ(runLinkage({"render", shippedScene("seam.json"), "--size", "160x90", "--frames", "3", "--out", "F",
+                        "--quiet"},
+                       folder.path())
+                .code,
+            0);  // frame 3 drawn again: the folder is as the render left it
+  sheet = runLinkage({"contact-sheet", "F", "--out", "e.png"}, folder.path());
+  EXPECT_EQ(sheet.code, 0) << sheet.err;
+  EXPECT_NE(sheet.err.find("holds 6 of the render's 301 frames, with gaps"), std::string::npos) << sheet.err;
+  EXPECT_NE(sheet.err.find("(frames missing)"), std::string::npos) << sheet.err;
+}
+
+}  // namespace
+}  // namespace sl::testing
