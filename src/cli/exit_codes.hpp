@@ -2,6 +2,7 @@
 // Exit statuses of `linkage` (also listed in `linkage --help`), and the exception commands throw to
 // end with one of them.
 
+#include <new>
 #include <stdexcept>
 #include <string>
 
@@ -33,6 +34,9 @@ struct ExitReport {
 };
 inline ExitReport exitReportOf(const std::exception& error) {
   if (const auto* exit = dynamic_cast<const CommandExit*>(&error)) return {exit->code(), exit->what()};
+  if (dynamic_cast<const std::bad_alloc*>(&error))
+    return {kExitFailure, "linkage: out of memory (a smaller frame size or fewer runs need less; a batch system's "
+                          "memory request or ulimit -v may be too small)"};
   if (dynamic_cast<const std::invalid_argument*>(&error)) return {kExitBadInput, std::string("linkage: ") + error.what()};
   return {kExitFailure, std::string("linkage: ") + error.what()};
 }

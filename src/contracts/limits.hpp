@@ -9,6 +9,13 @@ namespace sl::limits {
 inline constexpr int kMinImageSide = 16;
 // llvmpipe allows 16384; 8192 keeps one RGBA frame under 256 MiB.
 inline constexpr int kMaxImageSide = 8192;
+// The least address space (ulimit -v, a batch system's memory request) a process must be allowed before it makes
+// a GL context: under it Mesa's llvmpipe crashes (SIGSEGV) compiling its shaders or fails its allocations
+// (measured on Debian 12: crashes from 250 to 550 MB, failed allocations to 650 MB, 720p and 4K frames drawn
+// from 700 MB), so the renderer refuses with the limit named instead. Plus kGlAddressSpaceBytesPerPixel for the
+// frame's own buffers.
+inline constexpr double kMinGlAddressSpaceBytes = 768.0 * (1 << 20);
+inline constexpr double kGlAddressSpaceBytesPerPixel = 16;
 // Renderers drawing frames side by side in one render, in worker processes or on threads (one per core up to this):
 // each holds an OpenGL context with its framebuffers and cached layers (about 20 bytes a pixel), and frames in flight.
 inline constexpr int kMaxRenderers = 4;

@@ -146,5 +146,27 @@ TEST(GlBackendCli, ShardsOfAnotherRendererAreNotJoined) {
   EXPECT_EQ(resumed.code, 3) << resumed.err;
 }
 
+// GL set-up failures are reported, never a signal: under an address-space limit (ulimit -v, as batch systems set)
+// llvmpipe's shader compiler crashed (SIGSEGV) in still, render --threads 1 and render --video.
+TEST(GlBackendCli, AnAddressSpaceLimitIsNamedNotACrash) {
+  TempFolder folder;
+  const std::string seam = shellQuoted(shippedScene("seam.json"));
+  const std::string linkage = shellQuoted(linkageBinary());
+  for (const std::string& command :
+       {linkage + " still " + seam + " --time 1 --size 160x90 --out s.png",
+        linkage + " render " + seam + " --size 160x90 --frames 0:2 --threads 1 --out r",
+        linkage + " render " + seam + " --size 160x90 --frames 0:2 --video v.mp4 --no-png"}) {
+    for (const char* kilobytes : {"300000", "450000"}) {
+      const ProcessResult limited = runShell(std::string("ulimit -v ") + kilobytes + " && " + command, folder.path());
+      EXPECT_EQ(limited.signal, 0) << command;
+      EXPECT_EQ(limited.code, 3) << command << ": " << limited.err;
+      EXPECT_NE(limited.err.find("the address-space limit (ulimit -v"), std::string::npos) << limited.err;
+    }
+  }
+  EXPECT_FALSE(fs::exists(folder.path() / "s.png"));
+  EXPECT_FALSE(fs::exists(folder.path() / "v.mp4"));
+  EXPECT_FALSE(fs::exists(folder.path() / "r" / "frame_00000.png"));
+}
+
 }  // namespace
 }  // namespace sl::testing

@@ -1,7 +1,12 @@
 #include "render/gl/gl_context.hpp"
 
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <stdexcept>
+#include <string>
+
+#include "contracts/limits.hpp"
 
 #include "render/gl/drop_alpha.hpp"
 #include "render/gl/gl.hpp"
@@ -11,10 +16,28 @@
 namespace sl {
 namespace {
 constexpr std::size_t kReadBackBandBytes = 256 * 1024;  // well inside a core's L2 (1-2 MiB on current x86)
+
+// A GL context's set-up fails with the reason, never with a signal: under too small an address-space limit
+// llvmpipe's shader compiler crashes, so the limit is checked first (limits::kMinGlAddressSpaceBytes).
+void requireAddressSpace(int width, int height) {
+  rlimit limit{};
+  if (::getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return;
+  const double needed = limits::kMinGlAddressSpaceBytes + limits::kGlAddressSpaceBytesPerPixel * width * height;
+  if (double(limit.rlim_cur) >= needed) return;
+  const auto megabytes = [](double bytes) { return std::to_string(long(bytes / (1 << 20))); };
+  throw GlUnavailable("the address-space limit (ulimit -v, or a batch system's memory request) is " +
+                      megabytes(double(limit.rlim_cur)) + " MB; drawing " + std::to_string(width) + "x" +
+                      std::to_string(height) + " frames needs at least " + megabytes(needed) +
+                      " MB (Mesa's shader compiler fails below it): raise the limit");
 }
 
+}  // namespace
+
 GlContext::GlContext(int width, int height)
-    : width_(width), height_(height), context_(makeCurrentGlContext()), backend_(*glBackendInUse()) {
+    : width_(width),
+      height_(height),
+      context_((requireAddressSpace(width, height), makeCurrentGlContext())),
+      backend_(*glBackendInUse()) {
   frame_ = std::make_unique<GlLayer>(width, height);
 }
 
