@@ -1,10 +1,10 @@
 #include "render/font_atlas.hpp"
 
-#include <sstream>
-
 #include <algorithm>
 #include <fstream>
 #include <iterator>
+#include <map>
+#include <sstream>
 #include <stdexcept>
 
 #define STB_TRUETYPE_IMPLEMENTATION
@@ -97,6 +97,47 @@ std::vector<std::uint32_t> decodeUtf8(const std::string& text) {
   return out;
 }
 
+namespace {
+
+// stb_truetype trusts the file it is given (a cut-short or zeroed font file crashed the renderer): the table
+// directory, the tables the atlas reads and every glyph's place in `glyf` are checked to lie inside the file first.
+// Returns what is wrong, or empty.
+std::string damageOf(const std::vector<unsigned char>& font) {
+  const auto u16 = [&](std::size_t at) { return std::uint32_t(font[at]) << 8 | font[at + 1]; };
+  const auto u32 = [&](std::size_t at) { return u16(at) << 16 | u16(at + 2); };
+  if (font.size() < 12) return "shorter than a font's header";
+  const std::uint32_t version = u32(0);
+  if (version != 0x00010000 && version != 0x74727565 /* 'true' */) return "not a TrueType font (no sfnt header)";
+  const std::size_t tables = u16(4);
+  if (12 + 16 * tables > font.size()) return "its table directory runs past the end of the file";
+  std::map<std::string, std::pair<std::size_t, std::size_t>> found;  // tag -> offset, length
+  for (std::size_t t = 0; t < tables; ++t) {
+    const std::size_t record = 12 + 16 * t;
+    const std::size_t offset = u32(record + 8), length = u32(record + 12);
+    if (offset > font.size() || length > font.size() - offset)
+      return "table " + std::string(font.begin() + long(record), font.begin() + long(record) + 4) +
+             " runs past the end of the file (cut short?)";
+    found[std::string(font.begin() + long(record), font.begin() + long(record) + 4)] = {offset, length};
+  }
+  for (const char* tag : {"cmap", "head", "hhea", "hmtx", "loca", "glyf", "maxp"})
+    if (!found.count(tag)) return std::string("no ") + tag + " table";
+  const auto [head, headLength] = found["head"];
+  const auto [maxp, maxpLength] = found["maxp"];
+  const auto [loca, locaLength] = found["loca"];
+  const std::size_t glyfLength = found["glyf"].second;
+  if (headLength < 54 || maxpLength < 6) return "head or maxp table too short";
+  const bool longOffsets = u16(head + 50) != 0;
+  const std::size_t glyphs = u16(maxp + 4);
+  if ((glyphs + 1) * (longOffsets ? 4 : 2) > locaLength) return "its glyph index (loca) is too short";
+  for (std::size_t g = 0; g <= glyphs; ++g) {
+    const std::size_t at = longOffsets ? u32(loca + 4 * g) : 2 * std::size_t(u16(loca + 2 * g));
+    if (at > glyfLength) return "glyph " + std::to_string(g) + " lies past the end of its table";
+  }
+  return "";
+}
+
+}  // namespace
+
 FontAtlas::FontAtlas(const std::string& ttfPath, const std::array<float, 3>& pixelHeights, int baselineGrain)
     : baselineGrain_(float(std::max(1, baselineGrain))), packed_(new Packed) {
   std::ifstream in(ttfPath, std::ios::binary);
@@ -105,6 +146,11 @@ FontAtlas::FontAtlas(const std::string& ttfPath, const std::array<float, 3>& pix
     throw std::runtime_error("cannot read font " + ttfPath + " (install fonts-dejavu-core)");
   }
   fontData_.assign(std::istreambuf_iterator<char>(in), {});
+  if (const std::string damage = damageOf(fontData_); !damage.empty()) {
+    delete packed_;
+    throw std::runtime_error("font " + ttfPath + " is damaged: " + damage +
+                             " (reinstall fonts-dejavu-core: apt-get install --reinstall fonts-dejavu-core)");
+  }
   if (!stbtt_InitFont(&packed_->info, fontData_.data(), stbtt_GetFontOffsetForIndex(fontData_.data(), 0))) {
     delete packed_;
     throw std::runtime_error("not a TrueType font: " + ttfPath);

@@ -14,11 +14,14 @@ namespace sl {
 
 enum class TextSize { Small = 0, Normal = 1, Title = 2 };
 
+// The font every frame's text is set in: DejaVu Sans, from Debian's fonts-dejavu-core.
+inline constexpr const char* kFramesFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+
 class FontAtlas {
  public:
   // Pixel heights for Small, Normal, Title. Baselines are put on whole multiples of `baselineGrain` pixels (a whole
   // number: the frame's pixels per 720p pixel, so that text sits at the same place of the picture at 720p and at
-  // 4K). Throws naming the file if the font cannot be read.
+  // 4K). Throws std::runtime_error naming the file if the font cannot be read or is damaged (cut short, zeroed).
   FontAtlas(const std::string& ttfPath, const std::array<float, 3>& pixelHeights, int baselineGrain = 1);
   ~FontAtlas();
   FontAtlas(const FontAtlas&) = delete;

@@ -13,7 +13,6 @@
 namespace sl {
 namespace {
 
-constexpr const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";  // Debian's fonts-dejavu-core
 
 ImageSize checkedSize(ImageSize size) {
   const auto inside = [](int side) { return side >= limits::kMinImageSide && side <= limits::kMaxImageSide; };
@@ -37,7 +36,7 @@ FrameComposer::FrameComposer(const ViewSettings& view, ImageSize size)
     : view_(view),
       size_(checkedSize(size)),
       panels_(effectivePanels(view)),
-      font_(kFontPath, textHeights(size_), int(std::floor(markUnit(frameUnit(size_))))),
+      font_(kFramesFontPath, textHeights(size_), int(std::floor(markUnit(frameUnit(size_))))),
       rects_(layoutPanels(panels_, size_.width, size_.height, titleLineShown() ? titleLineHeight(font_) : 0)) {}
 
 bool FrameComposer::titleLineShown() const {

@@ -2,9 +2,15 @@
 // typeset, and a small frame given a shorter form rather than a word cut in the middle.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
 
 #include "fixtures/synthetic_frame.hpp"
+#include "render/font_atlas.hpp"
 #include "render/frame_composer.hpp"
 #include "render/frame_words.hpp"
 #include "render/panels.hpp"
@@ -149,6 +155,32 @@ TEST(FrameWords, PlotTitlesAreWholeFormsAtEverySize) {
     }
   }
   EXPECT_TRUE(shortened) << "no title needed a shorter form: the test cannot tell";
+}
+
+// A damaged font file (cut short, zeroed, its glyph index pointing past its glyphs) is refused with the reason, where
+// stb_truetype read past the end of the file and crashed the renderer.
+TEST(FontAtlas, DamagedFontFilesAreRefusedNotRead) {
+  std::ifstream in(kFramesFontPath, std::ios::binary);
+  ASSERT_TRUE(in) << kFramesFontPath;
+  const std::string font((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::array<float, 3> heights{12, 16, 24};
+  EXPECT_NO_THROW(FontAtlas(kFramesFontPath, heights));
+  const auto damaged = [&](const std::string& bytes) {
+    const std::string path = (std::filesystem::temp_directory_path() / "sl-damaged-font.ttf").string();
+    std::ofstream(path, std::ios::binary) << bytes;
+    std::string message;
+    try {
+      FontAtlas atlas(path, heights);
+    } catch (const std::runtime_error& error) {
+      message = error.what();
+    }
+    std::filesystem::remove(path);
+    return message;
+  };
+  EXPECT_NE(damaged(font.substr(0, font.size() / 2)).find("is damaged"), std::string::npos);   // cut short
+  EXPECT_NE(damaged(std::string(font.size(), '\0')).find("is damaged"), std::string::npos);  // zeroed
+  EXPECT_NE(damaged(font.substr(0, 7)).find("is damaged"), std::string::npos);                // a header's start
+  EXPECT_NE(damaged("").find("is damaged"), std::string::npos);
 }
 
 }  // namespace
