@@ -36,6 +36,18 @@ constexpr bool kBuilt[] = {
 };
 bool built(GlBackend backend) { return kBuilt[static_cast<int>(backend)]; }
 
+}  // namespace
+
+// A backend not built has a maker that says so (never called: built() is asked first).
+#ifndef SL_HAVE_EGL
+std::unique_ptr<GlPlatformContext> makeEglContext(bool) { throw GlUnavailable("this linkage was built without egl"); }
+#endif
+#ifndef SL_HAVE_OSMESA
+std::unique_ptr<GlPlatformContext> makeOsMesaContext() { throw GlUnavailable("this linkage was built without osmesa"); }
+#endif
+
+namespace {
+
 std::unique_ptr<GlPlatformContext> makeContextOf(GlBackend backend) {
   if (!built(backend)) throw GlUnavailable("this linkage was built without " + nameOf(backend));
   switch (backend) {
