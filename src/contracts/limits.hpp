@@ -23,6 +23,9 @@ inline constexpr int kMaxRenderers = 4;
 inline constexpr long kMaxFrames = 1'000'000;
 // A scene file is a few kilobytes; anything near this is not a scene (and is not read whole into memory).
 inline constexpr std::size_t kMaxSceneBytes = 16u << 20;
+// A title (and a short title) is one line of a frame, laid out on every frame: a few hundred characters at most,
+// counted in code points, also once its placeholders are filled in (a 20,000-word title cost 46 s a frame).
+inline constexpr int kMaxTitleCharacters = 300;
 // Hinge and rod masses (relative units): beyond this the kinetic energy and the constraint solve overflow.
 inline constexpr double kMaxMass = 1e6;
 // The camera's orbit: 10 turns a second is already a blur.

@@ -87,6 +87,7 @@ std::vector<SceneKey> describeKeys() {
        .schema = {{"pattern", "^[A-Za-z0-9._-]+$"}}},
       {.path = "title",
        .type = KeyType::String,
+       .maximum = double(limits::kMaxTitleCharacters),
        .summary = "shown in the frames",
        .target = "Scene::title",
        .meaning = "shown in the frames; `{L}`, `{n}`, `{name}`, `{method}` and `{integrator}` (the first run's) are "
@@ -94,16 +95,17 @@ std::vector<SceneKey> describeKeys() {
                   "number of family members; `{runs[i].length}` and `{runs[i].stability}` give a found motion's "
                   "length and stability (`initial.connect`, `initial.periodic`); `{injectivity_radius}` the "
                   "injectivity radius of the distance colouring's point (`view.sphere.distance_from`)",
-       .allowed = "any string",
+       .allowed = "any text of at most {max} characters, also with its placeholders filled in",
        .defaultText = "`name`"},
       {.path = "short_title",
        .type = KeyType::String,
+       .maximum = double(limits::kMaxTitleCharacters),
        .summary = "the title for frames too narrow for it",
        .target = "Scene::shortTitle",
        .meaning = "shown instead of `title` where a frame is too narrow for the whole title (small sizes, previews), "
                   "so the title keeps what it promises instead of losing its end to an ellipsis; the same "
                   "placeholders as `title`",
-       .allowed = "any string",
+       .allowed = "any text of at most {max} characters, also with its placeholders filled in",
        .defaultText = "none: the title, shortened at a word"},
       {.path = "linkage",
        .type = KeyType::Object,

@@ -21,6 +21,14 @@
 #include "scene/scene_sections.hpp"
 
 namespace sl {
+namespace {
+
+// Characters of UTF-8 text: the bytes that do not continue a code point.
+std::size_t codePoints(const std::string& text) {
+  return std::size_t(std::count_if(text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
+}
+
+}  // namespace
 
 using nlohmann::json;
 
@@ -653,6 +661,10 @@ Scene parseScene(const std::string& text, const std::string& file, const std::ve
   }
   scene.title = top.string("title").value_or(scene.name);
   scene.shortTitle = top.string("short_title").value_or("");
+  for (const auto& [key, text] : {std::pair{"title", &scene.title}, std::pair{"short_title", &scene.shortTitle}})
+    if (const std::size_t characters = codePoints(*text); characters > std::size_t(limits::kMaxTitleCharacters))
+      top.report(key, "found " + std::to_string(characters) + " characters; expected at most " +
+                          std::to_string(limits::kMaxTitleCharacters) + " (a title is one line of a frame)");
   // Left out, the duration is the longest found motion's (when every run starts from one: checked below).
   scene.durationFromMotions = !top.has("duration");
   if (const auto duration = top.number("duration"); duration && top.checkPositive("duration", *duration)) {
@@ -685,6 +697,11 @@ Scene parseScene(const std::string& text, const std::string& file, const std::ve
   if (!problems.empty()) throw SceneError(file, std::move(problems));
   scene.title = fillTitlePlaceholders(scene.title, scene);
   scene.shortTitle = fillTitlePlaceholders(scene.shortTitle, scene);
+  for (const auto& [key, text] : {std::pair{"title", &scene.title}, std::pair{"short_title", &scene.shortTitle}})
+    if (const std::size_t characters = codePoints(*text); characters > std::size_t(limits::kMaxTitleCharacters))
+      problems.push_back({key, "with its placeholders filled in, found " + std::to_string(characters) +
+                                   " characters; expected at most " + std::to_string(limits::kMaxTitleCharacters)});
+  if (!problems.empty()) throw SceneError(file, std::move(problems));
   return scene;
 }
 
