@@ -78,6 +78,16 @@ void applyUnset(json& document, const std::string& key, std::vector<SceneProblem
   }
 }
 
+// Whether `text` is well-formed UTF-8 (nlohmann's serializer checks it as a scene file's parser does).
+bool isUtf8(const std::string& text) {
+  try {
+    (void)json(text).dump();
+    return true;
+  } catch (const json::type_error&) {
+    return false;
+  }
+}
+
 }  // namespace
 
 void applySceneOverrides(json& document, const std::vector<std::string>& overrides,
@@ -86,6 +96,11 @@ void applySceneOverrides(json& document, const std::vector<std::string>& overrid
     if (!document.is_object()) return;  // the file itself is reported by the loader
     if (assignment.rfind(kUnsetPrefix, 0) == 0) {
       applyUnset(document, assignment.substr(std::string(kUnsetPrefix).size()), problems);
+      continue;
+    }
+    if (!isUtf8(assignment)) {  // a scene is UTF-8 JSON: bytes that are not would reach the scene, or an exception
+      problems.push_back({"--set", "found " + json(assignment).dump(-1, ' ', false, json::error_handler_t::replace) +
+                                       ", which is not UTF-8 text; expected KEY=VALUE in UTF-8"});
       continue;
     }
     const std::size_t equals = assignment.find('=');

@@ -144,5 +144,25 @@ TEST(HostileOutputsCli, ContactSheetTrustsOnlyWhatTheRenderWrote) {
   EXPECT_NE(sheet.err.find("(frames missing)"), std::string::npos) << sheet.err;
 }
 
+// --set values that are not UTF-8 (class 3) are a bad input named as such, exit 2, in validate as in render: they
+// ended in an exception's text (exit 3, no option named) or entered the scene.
+TEST(HostileOutputsCli, SetValuesThatAreNotUtf8AreRefused) {
+  TempFolder folder;
+  const std::string seam = shippedScene("seam.json");
+  for (const std::string& assignment : {std::string("title=caf\xe9"), std::string("name=\xff\xfe"),
+                                       std::string("t\xc3itle=x"), std::string("runs[0].name=\"\xed\xa0\x80\"")}) {
+    for (const std::string command : {"validate", "render"}) {
+      std::vector<std::string> args{command, seam, "--set", assignment};
+      if (command == "render") args.insert(args.end(), {"--size", "160x90", "--frames", "0:1", "--out", "r"});
+      const ProcessResult refused = runLinkage(args, folder.path());
+      EXPECT_EQ(refused.code, 2) << command << " " << refused.err;
+      EXPECT_NE(refused.err.find("--set: found"), std::string::npos) << refused.err;
+      EXPECT_NE(refused.err.find("which is not UTF-8 text"), std::string::npos) << refused.err;
+    }
+  }
+  EXPECT_FALSE(fs::exists(folder.path() / "r"));
+  EXPECT_EQ(runLinkage({"validate", seam, "--set", "title=café"}, folder.path()).code, 0);
+}
+
 }  // namespace
 }  // namespace sl::testing
