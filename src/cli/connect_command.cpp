@@ -58,6 +58,9 @@ std::string runConnect(const ConnectArguments& args) {
   const Eigen::VectorXd from =
       ConstrainedModel::stack(start.byHinges() ? start.hinges : hingePositionsAt(chain, start.spherePoint));
   const Eigen::VectorXd to = readConfigurationPoint(chain, model, args.target, "--to");
+  if (sameShape(model, from, to))
+    throw CommandExit(kExitBadInput, "--to: is the start's own shape; expected another shape (a motion back to the "
+                                     "start is a closed geodesic: linkage periodic)");
   // Route 3's methods, refused before any work when they cannot move this chain.
   std::vector<Method> methods;
   for (const std::string& name : args.methods) {

@@ -80,6 +80,12 @@ Found connections(const Chain& chain, const FoundMotionSpec& request, const std:
     found.failed = true;
     return found;
   }
+  if (sameShape(model, *from, *to)) {
+    problems.push_back({path + ".to", "is the start's own shape; expected another shape (a motion back to the start is "
+                                      "a closed geodesic: initial.periodic)"});
+    found.failed = true;
+    return found;
+  }
   ConnectOptions options;
   options.maxLength = request.maxLength;
   options.discreteRoute = false;

@@ -525,11 +525,16 @@ std::optional<Connection> directConnection(const ConstrainedModel& model, const 
   return c;
 }
 
+bool sameShape(const ConstrainedModel& model, const Eigen::VectorXd& from, const Eigen::VectorXd& to) {
+  return model.norm(from - to) < kSameShapeDistance;
+}
+
 std::vector<Connection> findConnections(const ConstrainedModel& model, const Chain* chain, const Eigen::VectorXd& from,
                                         const Eigen::VectorXd& to, const ConnectOptions& options) {
   std::vector<Connection> found;
   auto add = [&](std::optional<Connection> c) {
-    if (!c) return;
+    // The motion of no length (staying put) is no motion: its direction would be rounding noise.
+    if (!c || c->length < kSameShapeDistance) return;
     for (const Connection& known : found)
       if (model.norm(known.velocity - c->velocity) < 1e-6 * std::max(1.0, c->length)) return;
     found.push_back(*c);

@@ -68,6 +68,11 @@ std::optional<Connection> shootConnection(const ConstrainedModel& model, const E
 std::optional<DiscreteGeodesic> discreteGeodesic(const ConstrainedModel& model, std::vector<Eigen::VectorXd> seed,
                                                  const std::string& seedName, bool descend = false);
 
+// Shapes closer than this (the mass-weighted norm of their hinge difference) are one shape: a motion between them
+// would leave in a direction made of rounding noise. A motion back to the start is a closed geodesic (periodic).
+inline constexpr double kSameShapeDistance = 1e-9;
+bool sameShape(const ConstrainedModel& model, const Eigen::VectorXd& from, const Eigen::VectorXd& to);
+
 // Both routes. For a chain (`chain` given) route 2 is also seeded from the great-circle arcs between the two
 // sphere points (independent of route 1), and the Morse index is counted. Sorted by length.
 std::vector<Connection> findConnections(const ConstrainedModel& model, const Chain* chain, const Eigen::VectorXd& from,

@@ -164,5 +164,19 @@ TEST(HostileOutputsCli, SetValuesThatAreNotUtf8AreRefused) {
   EXPECT_EQ(runLinkage({"validate", seam, "--set", "title=café"}, folder.path()).code, 0);
 }
 
+// A connect from a shape to itself (class 13) is refused: the shortest "motion" had a length of 1e-14 and left in a
+// direction made of rounding noise. Also in `linkage connect --to` and `initial.connect` (the bad scene
+// connect_to_itself.json).
+TEST(HostileOutputsCli, ConnectFromAShapeToItselfIsRefused) {
+  TempFolder folder;
+  writeFile(folder.path() / "s.json", R"({"name": "s", "linkage": {"rods": 4, "L": 3.0},
+    "initial": {"coords": [0.3, 0.2], "velocity": [0.5, 0.7]}, "duration": 1,
+    "runs": [{"name": "a", "method": "ambient", "integrator": "dopri5", "tolerance": 1e-10}]})");
+  const ProcessResult itself = runLinkage({"connect", "s.json", "--to", R"({"coords": [0.3, 0.2]})"}, folder.path());
+  EXPECT_EQ(itself.code, 2) << itself.out << itself.err;
+  EXPECT_NE(itself.err.find("--to: is the start's own shape"), std::string::npos) << itself.err;
+  EXPECT_EQ(runLinkage({"connect", "s.json", "--to", R"({"coords": [0.3, 0.25]})", "--quiet"}, folder.path()).code, 0);
+}
+
 }  // namespace
 }  // namespace sl::testing
