@@ -180,12 +180,19 @@ std::optional<ForkedWorkers::Message> ForkedWorkers::next(const std::function<bo
       signalAll(SIGTERM);
       forwarded_ = true;
     }
-    const int ready = ::ppoll(fds.data(), fds.size(), nullptr, &previous);
+    // Woken each second to look for workers that were stopped (SIGSTOP, a debugger, a batch system's suspend):
+    // the render then says what it waits for instead of hanging without a word.
+    const timespec second{1, 0};
+    const int ready = ::ppoll(fds.data(), fds.size(), &second, &previous);
     const int error = errno;
     ::sigprocmask(SIG_SETMASK, &previous, nullptr);
     if (ready < 0) {
       if (error == EINTR) continue;
       throw std::system_error(error, std::generic_category(), "waiting for the processes that draw frames");
+    }
+    if (ready == 0) {
+      noticeStops();
+      continue;
     }
     for (std::size_t k = 0; k < fds.size(); ++k) {
       if (fds[k].revents == 0) continue;
@@ -204,7 +211,26 @@ std::optional<ForkedWorkers::Message> ForkedWorkers::next(const std::function<bo
 
 void ForkedWorkers::signalAll(int signal) const {
   for (const Worker& worker : workers_)
-    if (worker.status < 0) ::kill(worker.pid, signal);
+    if (worker.status < 0) {
+      ::kill(worker.pid, signal);
+      ::kill(worker.pid, SIGCONT);  // a stopped worker acts on the signal only once it runs again
+    }
+}
+
+void ForkedWorkers::noticeStops() {
+  for (Worker& worker : workers_) {
+    if (worker.status >= 0) continue;
+    int raw = 0;
+    const pid_t changed = ::waitpid(worker.pid, &raw, WNOHANG | WUNTRACED | WCONTINUED);
+    if (changed != worker.pid) continue;
+    if (WIFSTOPPED(raw)) {
+      std::cerr << "linkage: a process drawing frames (pid " << worker.pid << ") is stopped ("
+                << ::strsignal(WSTOPSIG(raw)) << "); the render waits for it: continue it (kill -CONT " << worker.pid
+                << ") or stop the render (SIGINT, SIGTERM)\n";
+    } else if (WIFEXITED(raw) || WIFSIGNALED(raw)) {
+      worker.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);  // reaped here: exitStatuses knows
+    }
+  }
 }
 
 std::vector<int> ForkedWorkers::exitStatuses() {

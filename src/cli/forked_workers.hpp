@@ -62,6 +62,7 @@ class ForkedWorkers {
   // or SIGTERM ends the wait (its handler runs); once `signalled` says one came, SIGTERM is sent on to the workers
   // (once), so a signal sent to the parent alone stops them too, and the wait goes on until they end.
   std::optional<Message> next(const std::function<bool()>& signalled);
+  // Sends `signal` to every worker not yet ended, and SIGCONT after it, so that a stopped worker acts on it.
   void signalAll(int signal) const;
   // Waits for every worker to end; its exit status (128 + the signal for a worker killed by one).
   std::vector<int> exitStatuses();
@@ -76,6 +77,7 @@ class ForkedWorkers {
   };
   std::optional<Message> takeMessage(Worker& worker, int index);
   void stopAll();
+  void noticeStops();  // says which workers are stopped (waitpid WUNTRACED), records those that ended
   std::vector<Worker> workers_;
   bool forwarded_ = false;  // a signal the parent got was sent on (once)
   std::deque<int> ended_;   // workers whose end was found closed, not yet told (kEnded)

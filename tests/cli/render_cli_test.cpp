@@ -282,6 +282,33 @@ TEST(RenderCli, AWorkerThatDiesFailsTheRenderAndResumeFinishesIt) {
   EXPECT_TRUE(folderContents(out) == folderContents(folder.path() / "whole"));
 }
 
+// A worker process that is stopped (SIGSTOP, a debugger, a batch system's suspend) is said after a second, and
+// SIGTERM still ends the render (class 7 of the fourth round): the render hung silently, SIGTERM included, since a
+// stopped worker never acted on the SIGTERM sent on to it.
+TEST(RenderCli, AStoppedWorkerIsSaidAndSigtermStillEndsTheRender) {
+  TempFolder folder;
+  const std::string out = folder / "stopped";
+  ChildProcess render(linkageBinary(),
+                      {"render", shippedScene("default.json"), "--size", "160x90", "--threads", "2", "--out", out},
+                      folder.path());
+  while (render.running() && !fs::exists(fs::path(out) / "frame_00010.png"))  // events only: no deadline
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  render.sendSignal(SIGSTOP);  // held still while a worker is picked, so the render cannot finish first
+  const std::vector<pid_t> workers = childrenOf(render.pid());
+  ASSERT_EQ(workers.size(), 2u) << "the render's worker processes";
+  ::kill(workers[0], SIGSTOP);
+  render.sendSignal(SIGCONT);
+  const fs::path log = fs::read_symlink("/proc/" + std::to_string(render.pid()) + "/fd/2");
+  const std::string said = "(pid " + std::to_string(workers[0]) + ") is stopped";
+  while (render.running() && readFile(log).find(said) == std::string::npos)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  render.sendSignal(SIGTERM);
+  const ProcessResult stopped = render.wait();
+  EXPECT_EQ(stopped.code, 130) << stopped.err;
+  EXPECT_NE(stopped.err.find(said), std::string::npos) << stopped.err;
+  EXPECT_NE(stopped.err.find("kill -CONT " + std::to_string(workers[0])), std::string::npos) << stopped.err;
+}
+
 // A video interrupted while ffmpeg encodes it: the earlier video of that name and its manifest stay as they
 // were, and nothing else is left (ffmpeg writes a temporary that only a finished render renames).
 TEST(RenderCli, InterruptedVideoLeavesTheEarlierVideoUntouched) {
