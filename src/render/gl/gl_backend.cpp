@@ -146,13 +146,16 @@ std::unique_ptr<GlPlatformContext> makeCurrentGlContext() {
 std::string llvmpipeCpuFeatures() {
 #if defined(__x86_64__) || defined(__i386__)
   std::string features = "x86-64";
-  // The extensions llvmpipe (Mesa 22.3, gallivm) hands to LLVM's code generator and that can change results:
-  // the vector width (AVX: 256 bits) and fused multiply-adds.
+  // The extensions gallivm (Mesa 22.3) hands to LLVM's code generator whose absence changes llvmpipe's pixels:
+  // without SSE4.1 up to 18% of a frame's pixels differ by up to 3 levels, without AVX (and so without its FMA,
+  // F16C and AVX2) up to 0.03% by up to 2 (docs/rendering.md, "Across machines"). AVX-512 changes nothing in
+  // this Mesa (its vectors stay 256 bits; the vector width is in GL_RENDERER), so it is left out: nodes with and
+  // without it draw the same bytes and may share a render.
   __builtin_cpu_init();
   const std::pair<const char*, bool> flags[] = {
-      {"sse4.1", __builtin_cpu_supports("sse4.1")}, {"sse4.2", __builtin_cpu_supports("sse4.2")},
-      {"avx", __builtin_cpu_supports("avx")},       {"fma", __builtin_cpu_supports("fma")},
-      {"avx2", __builtin_cpu_supports("avx2")},     {"avx512f", __builtin_cpu_supports("avx512f")},
+      {"sse4.1", __builtin_cpu_supports("sse4.1")}, {"avx", __builtin_cpu_supports("avx")},
+      {"f16c", __builtin_cpu_supports("f16c")},     {"fma", __builtin_cpu_supports("fma")},
+      {"avx2", __builtin_cpu_supports("avx2")},
   };
   for (const auto& [name, present] : flags)
     if (present) features += std::string(" ") + name;
