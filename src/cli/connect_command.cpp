@@ -17,6 +17,7 @@
 #include "cli/configuration_json.hpp"
 #include "cli/configuration_point.hpp"
 #include "cli/exit_codes.hpp"
+#include "cli/interrupt.hpp"
 #include "cli/number_options.hpp"
 #include "cli/scene_input.hpp"
 #include "contracts/limits.hpp"
@@ -73,6 +74,7 @@ std::string runConnect(const ConnectArguments& args) {
   }
   ConnectOptions options;
   options.maxLength = args.maxLength;
+  options.cancelled = interruptRequested;
   const std::vector<Connection> found = findConnections(model, &chain, from, to, options);
   if (found.empty()) throw CommandExit(kExitFailure, args.scene + ": no geodesic to the target was found");
   // Route 3: every motion found, shot again with each method asked for (empty where Newton did not converge).
@@ -186,8 +188,16 @@ void addConnectCommand(CLI::App& app) {
       "Example:\n  linkage connect scenes/default.json --to '{\"coords\": [-0.6, 2.2]}' --max-length 8");
   command->add_flag("--quiet", args->quiet, "errors only: no summary line");
   command->callback([args] {
+    installInterruptHandlers();  // the searches ask between their shots: SIGINT/SIGTERM end them with exit 130
     const CommandSummary summary("connect", args->quiet);
-    summary.print(runConnect(*args));
+    std::string what;
+    try {
+      what = runConnect(*args);
+    } catch (const RunCancelled&) {
+      stopIfInterrupted("nothing was written");
+      throw;
+    }
+    summary.print(what);
   });
 }
 

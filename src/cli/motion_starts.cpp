@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/interrupt.hpp"
 #include "inverse/connect.hpp"
 #include "inverse/periodic.hpp"
 #include "linkage/chart.hpp"
@@ -89,6 +90,7 @@ Found connections(const Chain& chain, const FoundMotionSpec& request, const std:
   ConnectOptions options;
   options.maxLength = request.maxLength;
   options.discreteRoute = false;
+  options.cancelled = interruptRequested;
   const Eigen::VectorXd x = spherePointFromHinges(chain, ConstrainedModel::unstack(*from));
   for (const Connection& c : findConnections(model, &chain, *from, *to, options)) {
     FoundMotion motion;
@@ -103,7 +105,7 @@ Found connections(const Chain& chain, const FoundMotionSpec& request, const std:
 
 // The closed geodesics, in the order `linkage periodic` lists them, each from its unit-speed start.
 Found closedGeodesics(const Chain& chain, const FoundMotionSpec& request) {
-  const std::vector<ClosedGeodesic> geodesics = closedGeodesicsOf(chain, request.maxLength);
+  const std::vector<ClosedGeodesic> geodesics = closedGeodesicsOf(chain, request.maxLength, interruptRequested);
   Found found;
   for (const ClosedGeodesic& g : geodesics) {
     FoundMotion motion;

@@ -14,6 +14,7 @@
 #include "cli/summary.hpp"
 #include "cli/configuration_json.hpp"
 #include "cli/exit_codes.hpp"
+#include "cli/interrupt.hpp"
 #include "cli/number_options.hpp"
 #include "cli/scene_input.hpp"
 #include "contracts/limits.hpp"
@@ -77,7 +78,7 @@ std::string runPeriodic(const PeriodicArguments& args) {
     throw CommandExit(kExitBadInput, args.scene + ": linkage: periodic needs 3 or 4 rods with n - 2 < L < n (got " +
                                          std::to_string(chain.rods) + " rods, L = " + std::to_string(chain.baseLength) +
                                          ")");
-  const std::vector<ClosedGeodesic> found = closedGeodesicsOf(chain, args.maxLength);
+  const std::vector<ClosedGeodesic> found = closedGeodesicsOf(chain, args.maxLength, interruptRequested);
   if (args.json) {
     nlohmann::json list = nlohmann::json::array();
     for (const ClosedGeodesic& g : found) list.push_back(geodesicJson(chain, g));
@@ -119,8 +120,16 @@ void addPeriodicCommand(CLI::App& app) {
       "Example:\n  linkage periodic scenes/default.json --json");
   command->add_flag("--quiet", args->quiet, "errors only: no summary line");
   command->callback([args] {
+    installInterruptHandlers();  // the search asks between its shots: SIGINT/SIGTERM end it with exit 130
     const CommandSummary summary("periodic", args->quiet);
-    summary.print(runPeriodic(*args));
+    std::string what;
+    try {
+      what = runPeriodic(*args);
+    } catch (const RunCancelled&) {
+      stopIfInterrupted("nothing was written");
+      throw;
+    }
+    summary.print(what);
   });
 }
 

@@ -44,8 +44,14 @@ Scene loadSceneForCommand(const std::string& file, const std::vector<std::string
   } catch (const SceneError& error) {
     throw CommandExit(kExitBadInput, error.what());
   }
-  // Found motions are found here, once, before anything runs (every command sees the same starts).
-  failOnProblems(scene.file, resolveMotionStarts(scene));
+  // Found motions are found here, once, before anything runs (every command sees the same starts); the searches
+  // answer SIGINT and SIGTERM between their shots.
+  try {
+    failOnProblems(scene.file, resolveMotionStarts(scene));
+  } catch (const RunCancelled&) {
+    stopIfInterrupted("nothing was written");
+    throw;
+  }
   return scene;
 }
 

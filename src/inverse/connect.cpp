@@ -573,10 +573,12 @@ std::vector<Connection> findConnections(const ConstrainedModel& model, const Cha
   const GeodesicFlow flow(model, 1e-9);
   const int n = model.dimension();
   for (const Eigen::VectorXd& u : directions) {
+    stopIfCancelled(options.cancelled);
     FlowState state{from, u, Eigen::MatrixXd(n, 0), Eigen::MatrixXd(n, 0)};
     double d2 = INFINITY, d1 = INFINITY, t1 = 0;
     try {
       flow.advance(state, maxLength * 1.05, [&](double t, const FlowState& s) {
+        if (options.cancelled && options.cancelled()) return false;  // a long ray answers within a step
         const double d0 = model.norm(s.q - to);
         if (d1 < d2 && d1 <= d0 && d1 < 0.6 && t1 > 0) seeds.push_back({d1, t1 * u});
         d2 = d1;
@@ -592,7 +594,10 @@ std::vector<Connection> findConnections(const ConstrainedModel& model, const Cha
   // back to the same few geodesics, so only the closest are shot (docs/geometry.md, "Long chains").
   const std::size_t shots = d > kExactShootingFreedom ? kLongChainSeeds : 60;
   if (seeds.size() > shots) seeds.resize(shots);
-  for (const Seed& seed : seeds) add(shootConnection(model, from, to, seed.velocity, options.tolerance));
+  for (const Seed& seed : seeds) {
+    stopIfCancelled(options.cancelled);
+    add(shootConnection(model, from, to, seed.velocity, options.tolerance));
+  }
   found.erase(std::remove_if(found.begin(), found.end(),
                              [&](const Connection& c) { return c.length > maxLength * (1 + 1e-12); }),
               found.end());
@@ -608,7 +613,10 @@ std::vector<Connection> findConnections(const ConstrainedModel& model, const Cha
       c.morseIndex = d > kExactShootingFreedom ? discreteMorseIndex(model, from, c.velocity)
                                                : morseIndexOnChain(*chain, from, c.velocity);
   };
-  for (Connection& c : found) describe(c);
+  for (Connection& c : found) {
+    stopIfCancelled(options.cancelled);
+    describe(c);
+  }
   if (!options.discreteRoute) return found;
 
   // Route 2: first from seeds that know nothing of route 1, then from route 1's paths for the rest.

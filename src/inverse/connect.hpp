@@ -55,6 +55,8 @@ struct ConnectOptions {
   int directions = 48;        // the fan (for a 2-dimensional configuration space)
   double tolerance = 1e-12;   // the integrator's
   bool discreteRoute = true;  // run route 2 and compare
+  // Asked between rays and shots: when it answers true the search ends with RunCancelled (SIGINT, SIGTERM).
+  bool (*cancelled)() = nullptr;
 };
 
 // Route 1 from one initial velocity (over time 1): the converged connection, or nothing.

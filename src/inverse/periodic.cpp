@@ -12,6 +12,7 @@
 #include "inverse/geodesic_flow.hpp"
 #include "inverse/richardson.hpp"
 #include "linkage/chart.hpp"
+#include "simulation/trajectory.hpp"
 
 namespace sl {
 
@@ -201,6 +202,7 @@ std::vector<ClosedGeodesic> findClosedGeodesics(const ConstrainedModel& model, c
   }
   {
     for (auto [q, u] : rays) {
+      stopIfCancelled(options.cancelled);
       model.projectPosition(q);
       u = model.projectVelocity(q, u);
       u /= model.norm(u);
@@ -212,6 +214,7 @@ std::vector<ClosedGeodesic> findClosedGeodesics(const ConstrainedModel& model, c
       const Eigen::VectorXd twistedU = twisted ? Eigen::VectorXd(options.twist * u) : u;
       try {
         flow.advance(s, maxLength * 1.02, [&](double t, const FlowState& st) {
+          if (options.cancelled && options.cancelled()) return false;  // a long ray answers within a step
           const double r0 = model.norm(st.q - q) + model.norm(st.v - u);
           if (r0 > 0.5) left = true;
           if (left && r1 < r2 && r1 <= r0 && r1 < 0.5) seeds.push_back({r1, q, u, t1});
@@ -229,6 +232,7 @@ std::vector<ClosedGeodesic> findClosedGeodesics(const ConstrainedModel& model, c
       } catch (const std::runtime_error&) {
       }
     }
+    stopIfCancelled(options.cancelled);
   }
   std::sort(seeds.begin(), seeds.end(), [](const Seed& a, const Seed& b) { return a.residual < b.residual; });
   if (seeds.size() > 48) seeds.resize(48);
@@ -239,6 +243,7 @@ std::vector<ClosedGeodesic> findClosedGeodesics(const ConstrainedModel& model, c
   std::vector<std::vector<Eigen::VectorXd>> orbits;
   const Eigen::MatrixXd u = model.mass().llt().matrixU();
   for (const Seed& seed : seeds) {
+    stopIfCancelled(options.cancelled);
     bool covered = false;  // a seed on a known orbit with a multiple of its period: nothing new
     for (std::size_t i = 0; i < found.size() && !covered; ++i) {
       const double ratio = (seed.twisted ? 2 : 1) * seed.period / found[i].length;
@@ -383,6 +388,7 @@ std::vector<ClosedGeodesic> chainClosedGeodesics(const Chain& chain, const Perio
       connect.maxLength = options.maxLength > 0 ? options.maxLength / 2 : 1.25 * scale;
       connect.discreteRoute = false;
       connect.directions = 24;
+      connect.cancelled = options.cancelled;
       betweenPoles = findConnections(model, nullptr, poles[0], poles[1], connect);
       for (const Connection& between : betweenPoles)
         guesses.push_back({poles[0], between.velocity / between.length, 2 * between.length});
@@ -499,10 +505,11 @@ ClosedGeodesic circleClosedGeodesic(const Chain& chain) {
   return out;
 }
 
-std::vector<ClosedGeodesic> closedGeodesicsOf(const Chain& chain, double maxLength) {
+std::vector<ClosedGeodesic> closedGeodesicsOf(const Chain& chain, double maxLength, bool (*cancelled)()) {
   if (chain.rods == 3) return {circleClosedGeodesic(chain)};
   PeriodicOptions options;
   options.maxLength = maxLength;
+  options.cancelled = cancelled;
   return chainClosedGeodesics(chain, options);
 }
 

@@ -49,6 +49,8 @@ struct PeriodicOptions {
   double maxLength = 0;   // <= 0: 3 times the shortest one found (chains), 30 otherwise
   int directions = 36;    // per seed point, over a half turn
   Eigen::MatrixXd twist;  // if given: also seek returns to the twisted start (see shootClosedGeodesic)
+  // Asked between rays and shots: when it answers true the search ends with RunCancelled (SIGINT, SIGTERM).
+  bool (*cancelled)() = nullptr;
 };
 
 // A start (point, unit velocity) and period to shoot from directly.
@@ -70,7 +72,8 @@ std::vector<ClosedGeodesic> chainClosedGeodesics(const Chain& chain, const Perio
 // The 3-rod chain's configuration space is a circle: itself a closed geodesic.
 ClosedGeodesic circleClosedGeodesic(const Chain& chain);
 // The closed geodesics of a 3- or 4-rod chain, in the order `linkage periodic` lists them (the circle for 3 rods).
-std::vector<ClosedGeodesic> closedGeodesicsOf(const Chain& chain, double maxLength);
+// `cancelled`: as PeriodicOptions::cancelled.
+std::vector<ClosedGeodesic> closedGeodesicsOf(const Chain& chain, double maxLength, bool (*cancelled)() = nullptr);
 
 // Route 2 pieces, exposed for the tests.
 // The length of a closed curve from its polygons on 2^k points, Richardson-extrapolated (periodic, smooth).

@@ -67,6 +67,11 @@ struct InvariantExtremes {
 struct RunCancelled : std::runtime_error {
   RunCancelled() : std::runtime_error("the run was cancelled") {}
 };
+// The check long searches (connect, closed geodesics) ask between their rays and shots: RunCancelled when
+// `cancelled` is given and answers true.
+inline void stopIfCancelled(bool (*cancelled)()) {
+  if (cancelled && cancelled()) throw RunCancelled();
+}
 
 class Trajectory {
  public:
