@@ -188,16 +188,8 @@ void addConnectCommand(CLI::App& app) {
       "Example:\n  linkage connect scenes/default.json --to '{\"coords\": [-0.6, 2.2]}' --max-length 8");
   command->add_flag("--quiet", args->quiet, "errors only: no summary line");
   command->callback([args] {
-    installInterruptHandlers();  // the searches ask between their shots: SIGINT/SIGTERM end them with exit 130
-    const CommandSummary summary("connect", args->quiet);
-    std::string what;
-    try {
-      what = runConnect(*args);
-    } catch (const RunCancelled&) {
-      stopIfInterrupted("nothing was written");
-      throw;
-    }
-    summary.print(what);
+    const CommandSummary summary("connect", args->quiet);  // the search answers SIGINT/SIGTERM: exit 130
+    summary.print(runAnsweringSignals([&] { return runConnect(*args); }));
   });
 }
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "cli/exit_codes.hpp"
+#include "simulation/trajectory.hpp"
 
 namespace sl {
 
@@ -29,6 +30,16 @@ void stopIfInterrupted(const char* whatToDoNext) {
   if (gSignal == 0) return;
   const std::string name = gSignal == SIGINT ? "SIGINT" : "SIGTERM";
   throw CommandExit(kExitInterrupted, "linkage: stopped by " + name + "; " + whatToDoNext);
+}
+
+std::string runAnsweringSignals(const std::function<std::string()>& work) {
+  installInterruptHandlers();
+  try {
+    return work();
+  } catch (const RunCancelled&) {
+    stopIfInterrupted("nothing was written");
+    throw;
+  }
 }
 
 }  // namespace sl

@@ -120,16 +120,8 @@ void addPeriodicCommand(CLI::App& app) {
       "Example:\n  linkage periodic scenes/default.json --json");
   command->add_flag("--quiet", args->quiet, "errors only: no summary line");
   command->callback([args] {
-    installInterruptHandlers();  // the search asks between its shots: SIGINT/SIGTERM end it with exit 130
-    const CommandSummary summary("periodic", args->quiet);
-    std::string what;
-    try {
-      what = runPeriodic(*args);
-    } catch (const RunCancelled&) {
-      stopIfInterrupted("nothing was written");
-      throw;
-    }
-    summary.print(what);
+    const CommandSummary summary("periodic", args->quiet);  // the search answers SIGINT/SIGTERM: exit 130
+    summary.print(runAnsweringSignals([&] { return runPeriodic(*args); }));
   });
 }
 
