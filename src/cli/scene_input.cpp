@@ -1,6 +1,7 @@
 #include "cli/scene_input.hpp"
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <stdexcept>
 
@@ -10,7 +11,9 @@
 #include "cli/interrupt.hpp"
 #include "cli/motion_starts.hpp"
 #include "contracts/limits.hpp"
+#include "output/atomic_file.hpp"
 #include "scene/json_fields.hpp"
+#include "scene/output_folder.hpp"
 #include "scene/scene_overrides.hpp"
 #include "simulation/family.hpp"
 #include "simulation/initial_state.hpp"
@@ -142,11 +145,25 @@ std::vector<std::vector<Trajectory>> startFamilies(const Scene& scene, const std
 
 void requireOutputsBeforeWork(const std::string& command, const std::vector<NamedFile>& inputs,
                               const std::vector<NamedFile>& outputs) {
-  try {
-    requireWritableOutputs(inputs, outputs);
-  } catch (const std::invalid_argument& error) {
-    throw CommandExit(kExitBadInput, "linkage " + command + ": " + error.what());
+  const auto fail = [&](const std::string& message) { throw CommandExit(kExitBadInput, "linkage " + command + ": " + message); };
+  for (const NamedFile& output : outputs) {
+    if (output.path.empty()) continue;
+    try {
+      outputTarget(output.path);
+    } catch (const std::invalid_argument& error) {
+      fail(output.role + ": " + error.what());
+    }
+    for (const SceneProblem& problem : checkOutputFile(output.path, output.role))
+      fail(problem.jsonPath + " " + output.path + ": " + problem.message);
   }
+  try {
+    requireDistinctFiles(inputs, outputs);
+  } catch (const std::invalid_argument& error) {
+    fail(error.what());
+  }
+  for (const NamedFile& output : outputs)
+    if (const auto parent = std::filesystem::path(output.path).parent_path(); !output.path.empty() && !parent.empty())
+      std::filesystem::create_directories(parent);
 }
 
 }  // namespace sl

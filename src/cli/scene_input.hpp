@@ -30,8 +30,10 @@ void addSceneOverrideOption(CLI::App& command, std::vector<std::string>& overrid
 // Throws CommandExit(kExitBadInput) listing the problems, if any.
 void failOnProblems(const std::string& file, const std::vector<SceneProblem>& problems);
 
-// A command's outputs checked before any work (requireWritableOutputs): a clash or an unwritable place ends the
-// command with exit 2, "linkage COMMAND: ROLE PATH ...", before anything is computed or written.
+// A command's outputs checked before any work, the one rule of every command: each a usable file path in a place
+// that can be written (checkOutputFile; not a folder, a device or a link to one), none an input or another output
+// (requireDistinctFiles). A problem ends the command with exit 2 naming the option, before anything is computed
+// or written; then the outputs' folders are created.
 void requireOutputsBeforeWork(const std::string& command, const std::vector<NamedFile>& inputs,
                               const std::vector<NamedFile>& outputs);
 

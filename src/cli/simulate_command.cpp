@@ -107,19 +107,6 @@ void runSimulate(const SimulateArguments& args) {
   // Checked before any work, like render's outputs: a writable place that is not a folder or a device, and not
   // the scene or the other output.
   requireOutputsBeforeWork("simulate", {{"the scene", args.scene}}, {{"--csv", args.csv}, {"--events", args.events}});
-  for (const auto& [option, path] : {std::pair{"--csv", args.csv}, std::pair{"--events", args.events}}) {
-    if (path.empty()) continue;
-    std::vector<SceneProblem> problems;
-    try {
-      outputTarget(path);
-    } catch (const std::invalid_argument& error) {
-      problems.push_back({option, error.what()});
-    }
-    for (SceneProblem& problem : checkOutputFile(path, option)) problems.push_back(problem);
-    failOnProblems(args.scene, problems);
-    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-    if (!parent.empty()) std::filesystem::create_directories(parent);
-  }
   std::vector<std::string> notes;
   const std::vector<InitialState> starts = runStarts(scene, &notes);
   if (!args.quiet)

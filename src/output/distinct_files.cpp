@@ -1,7 +1,6 @@
 #include "output/distinct_files.hpp"
 
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <stdexcept>
@@ -48,25 +47,6 @@ void requireDistinctFiles(const std::vector<NamedFile>& inputs, const std::vecto
     for (std::size_t j = 0; j < k; ++j)
       if (!outputs[j].path.empty() && sameFile(output.path, outputs[j].path))
         clash(outputs[j], ": two outputs of one command need two files");
-  }
-}
-
-void requireWritableOutputs(const std::vector<NamedFile>& inputs, const std::vector<NamedFile>& outputs) {
-  requireDistinctFiles(inputs, outputs);
-  namespace fs = std::filesystem;
-  for (const NamedFile& output : outputs) {
-    if (output.path.empty()) continue;
-    std::error_code error;
-    if (fs::is_directory(output.path, error))
-      throw std::invalid_argument(output.role + " " + output.path + ": is a folder; expected a file name");
-    const fs::path parent = fs::path(output.path).parent_path();
-    const std::string folder = parent.empty() ? "." : parent.string();
-    if (!fs::is_directory(folder, error))
-      throw std::invalid_argument(output.role + " " + output.path + ": the folder " + folder +
-                                  " does not exist; create it first");
-    if (::access(folder.c_str(), W_OK | X_OK) != 0)
-      throw std::invalid_argument(output.role + " " + output.path + ": the folder " + folder +
-                                  " cannot be written to");
   }
 }
 

@@ -16,11 +16,6 @@ struct NamedFile {
 // Throws std::invalid_argument naming both roles and paths if an output is an input or another output.
 void requireDistinctFiles(const std::vector<NamedFile>& inputs, const std::vector<NamedFile>& outputs);
 
-// Every output of a command, checked before any work (docs/hardening.md, "Outputs"): distinct from its inputs and
-// from each other (requireDistinctFiles), and writable where it is named: its folder exists and may be written
-// to, and the output is not itself a folder. Throws std::invalid_argument naming the role and the path.
-void requireWritableOutputs(const std::vector<NamedFile>& inputs, const std::vector<NamedFile>& outputs);
-
 // Whether two paths name the same file once links are followed (the same device and inode if both exist, the
 // same absolute path otherwise).
 bool sameFile(const std::string& a, const std::string& b);

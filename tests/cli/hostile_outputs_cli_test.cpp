@@ -61,29 +61,36 @@ TEST(HostileOutputsCli, OutputsNeverReplaceInputsOrEachOther) {
   EXPECT_FALSE(fs::exists(folder.path() / "M" / "curvature.png"));
 }
 
-// An output in a folder that does not exist is refused before the work, naming the option, not a temporary file
-// after it.
+// An output where nothing can be written (a folder path through a regular file) is refused before the work, naming
+// the option, not a temporary file after it; a folder that does not exist yet is created, as for every command.
 TEST(HostileOutputsCli, OutputPlacesAreCheckedBeforeTheWork) {
   TempFolder folder;
   const std::string seam = shippedScene("seam.json");
   ASSERT_EQ(runLinkage({"render", seam, "--size", "160x90", "--frames", "0:2", "--out", "F", "--quiet"}, folder.path())
                 .code,
             0);
+  writeFile(folder.path() / "plain", "a file, not a folder");
   const std::vector<std::vector<std::string>> commands{
-      {"numbers", seam, "--out", "missing/n.json"},
-      {"still", seam, "--time", "1", "--size", "160x90", "--out", "missing/s.png"},
-      {"contact-sheet", "F", "--out", "missing/sheet.png"},
-      {"simulate", seam, "--csv", "missing/t.csv"},
+      {"numbers", seam, "--out", "plain/n.json"},
+      {"still", seam, "--time", "1", "--size", "160x90", "--out", "plain/s.png"},
+      {"contact-sheet", "F", "--out", "plain/sheet.png"},
+      {"simulate", seam, "--csv", "plain/t.csv"},
   };
   for (const auto& command : commands) {
     const ProcessResult refused = runLinkage(command, folder.path());
     EXPECT_EQ(refused.code, 2) << command[0] << ": " << refused.err;
-    EXPECT_NE(refused.err.find("the folder missing does not exist"), std::string::npos) << command[0] << ": " << refused.err;
-    EXPECT_EQ(refused.err.find("tmp"), std::string::npos) << refused.err;
+    EXPECT_NE(refused.err.find("linkage " + command[0] + ": --"), std::string::npos) << refused.err;
+    EXPECT_NE(refused.err.find(" plain/"), std::string::npos) << refused.err;
+    EXPECT_NE(refused.err.find("is not a directory"), std::string::npos) << command[0] << ": " << refused.err;
+    EXPECT_EQ(refused.err.find(".tmp."), std::string::npos) << refused.err;  // not a temporary's name, after the work
   }
   const ProcessResult folderAsFile = runLinkage({"numbers", seam, "--out", "F"}, folder.path());
   EXPECT_EQ(folderAsFile.code, 2);
-  EXPECT_NE(folderAsFile.err.find("--out F: is a folder"), std::string::npos) << folderAsFile.err;
+  EXPECT_NE(folderAsFile.err.find("--out: F exists and is not a regular file (a folder)"), std::string::npos)
+      << folderAsFile.err;
+  // A folder not there yet is made, as simulate always did.
+  EXPECT_EQ(runLinkage({"numbers", seam, "--out", "new/n.json", "--quiet"}, folder.path()).code, 0);
+  EXPECT_TRUE(fs::exists(folder.path() / "new" / "n.json"));
 }
 
 nlohmann::json readJson(const fs::path& path) {
