@@ -29,7 +29,7 @@ std::string textOf(const char* name) {
 
 Environment readEnvironment() {
   std::string switches;
-  for (const char* name : {"GALLIUM_OVERRIDE_CPU_CAPS", "LP_NATIVE_VECTOR_WIDTH"})
+  for (const char* name : {"GALLIUM_OVERRIDE_CPU_CAPS", "GALLIUM_NOSSE", "LP_NATIVE_VECTOR_WIDTH"})
     if (const std::string value = textOf(name); !value.empty())
       switches += (switches.empty() ? "" : " ") + std::string(name) + "=" + value;
   return {secondsFrom("LINKAGE_LOCK_WAIT", limits::kMaxLockWaitSeconds),

@@ -19,7 +19,8 @@ struct Environment {
   // LINKAGE_GL: the GL backend of commands that draw when --gl does not say (cli/gl_choice.hpp); empty if unset.
   std::string glBackend;
   // The switches of Mesa's llvmpipe that change the code it generates, and so the pixels, as "NAME=value" joined by
-  // spaces (GALLIUM_OVERRIDE_CPU_CAPS, LP_NATIVE_VECTOR_WIDTH); empty if none is set. Recorded with the renderer.
+  // spaces (GALLIUM_OVERRIDE_CPU_CAPS, GALLIUM_NOSSE, LP_NATIVE_VECTOR_WIDTH); empty if none is set. Recorded with
+  // the renderer.
   std::string llvmpipeSwitches;
 };
 

@@ -224,6 +224,7 @@ FrameManifest::FrameManifest(std::string folder, nlohmann::json info, std::strin
       info_(std::move(info)),
       lockWaitSeconds_(lockWaitSeconds),
       existing_(existing),
+      claim_(claim),
       lastFlush_(std::chrono::steady_clock::now()) {
   std::filesystem::create_directories(folder_);
   if (existing_ != Existing::merge) return;
@@ -349,8 +350,23 @@ void FrameManifest::addRenderer(const std::string& renderer, const std::string& 
     backends_.insert(backend);
   }
   if (existing_ != Existing::merge) return;
-  ManifestLock lock(folder_, fileName_, lockWaitSeconds_);
-  readLocked();  // refuses a folder of another renderer's frames before this process draws any
+  bool superseded = false;
+  {
+    ManifestLock lock(folder_, fileName_, lockWaitSeconds_);
+    const nlohmann::json manifest = readAnyLocked();
+    // A render that takes the folder over (--replace) removes frames of another renderer as it removes another
+    // render's; shards and --resume are refused below.
+    superseded = claim_ == Claim::supersede && manifest.at("info") == info_ && !manifest.at("frames").empty() &&
+                 manifest.at("renderers") != nlohmann::json::array({renderer});
+    if (superseded) supersedeLocked(manifest);
+    readLocked();  // refuses a folder of another renderer's frames before this process draws any
+  }
+  if (!superseded) return;
+  {
+    std::lock_guard guard(mutex_);
+    known_.clear();
+  }
+  reload();
 }
 
 void FrameManifest::record(const FrameEntry& entry) {

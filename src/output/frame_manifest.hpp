@@ -113,8 +113,9 @@ class FrameManifest {
   FrameManifest& operator=(const FrameManifest&) = delete;
 
   // What draws this process's frames (ManifestContents::renderers) and through which backend. In merge mode,
-  // throws std::runtime_error if the folder already lists frames drawn by another renderer; so does a flush that
-  // finds them (a shard on another kind of machine that started at the same time).
+  // throws std::runtime_error if the folder already lists frames drawn by another renderer (Claim::supersede:
+  // removes them, as for another render); so does a flush that finds them (a shard on another kind of machine that
+  // started at the same time).
   void addRenderer(const std::string& renderer, const std::string& backend);
   void record(const FrameEntry& entry);
   void flush();
@@ -143,6 +144,7 @@ class FrameManifest {
   nlohmann::json info_;
   double lockWaitSeconds_;  // how long a lock another process holds is waited for (then: an error naming it)
   Existing existing_;
+  Claim claim_;
   mutable std::mutex mutex_;
   std::map<int, FrameEntry> known_, pending_;
   mutable std::mutex renderersMutex_;  // renderers_ and backends_ (read while mutex_ is held, and without it)

@@ -146,6 +146,13 @@ TEST(GlBackendCli, ShardsOfAnotherRendererAreNotJoined) {
   EXPECT_EQ(manifestOf(folder.path() / "r").at("renderers").size(), 1u);
   const ProcessResult resumed = runShell(noAvx + shard + "0:6 --resume", folder.path());
   EXPECT_EQ(resumed.code, 3) << resumed.err;
+  // --replace takes the folder over, as a whole render does: the other renderer's frames go first.
+  const ProcessResult replaced = runShell(noAvx + shard + "0:2 --replace", folder.path());
+  ASSERT_EQ(replaced.code, 0) << replaced.err;
+  EXPECT_EQ(manifestOf(folder.path() / "r").at("frames").size(), 2u);
+  EXPECT_FALSE(fs::exists(folder.path() / "r" / "frame_00005.png"));
+  EXPECT_NE(manifestOf(folder.path() / "r").at("renderers")[0].get<std::string>().find("GALLIUM_OVERRIDE_CPU_CAPS"),
+            std::string::npos);
 }
 
 // GL set-up failures are reported, never a signal: under an address-space limit (ulimit -v, as batch systems set)

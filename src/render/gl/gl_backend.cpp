@@ -146,16 +146,16 @@ std::unique_ptr<GlPlatformContext> makeCurrentGlContext() {
 std::string llvmpipeCpuFeatures() {
 #if defined(__x86_64__) || defined(__i386__)
   std::string features = "x86-64";
-  // The extensions gallivm (Mesa 22.3) hands to LLVM's code generator whose absence changes llvmpipe's pixels:
-  // without SSE4.1 up to 18% of a frame's pixels differ by up to 3 levels, without AVX (and so without its FMA,
-  // F16C and AVX2) up to 0.03% by up to 2 (docs/rendering.md, "Across machines"). AVX-512 changes nothing in
-  // this Mesa (its vectors stay 256 bits; the vector width is in GL_RENDERER), so it is left out: nodes with and
-  // without it draw the same bytes and may share a render.
+  // The extensions gallivm (Mesa 22.3) hands to LLVM's code generator whose absence changes llvmpipe's pixels
+  // (docs/rendering.md, "Across machines"): without SSSE3 (its 8-bit blends round instead of truncating) up to 18%
+  // of a frame's pixels differ, mostly by 1-3 levels; without AVX (and so FMA, F16C, AVX2) up to 0.1%, by a level
+  // (a few edge pixels by up to 20). AVX-512 changes nothing in this Mesa (its vectors stay 256 bits; the vector
+  // width is in GL_RENDERER), so it is left out: nodes with and without it draw the same bytes and may share a render.
   __builtin_cpu_init();
   const std::pair<const char*, bool> flags[] = {
-      {"sse4.1", __builtin_cpu_supports("sse4.1")}, {"avx", __builtin_cpu_supports("avx")},
-      {"f16c", __builtin_cpu_supports("f16c")},     {"fma", __builtin_cpu_supports("fma")},
-      {"avx2", __builtin_cpu_supports("avx2")},
+      {"ssse3", __builtin_cpu_supports("ssse3")}, {"sse4.1", __builtin_cpu_supports("sse4.1")},
+      {"avx", __builtin_cpu_supports("avx")},     {"f16c", __builtin_cpu_supports("f16c")},
+      {"fma", __builtin_cpu_supports("fma")},     {"avx2", __builtin_cpu_supports("avx2")},
   };
   for (const auto& [name, present] : flags)
     if (present) features += std::string(" ") + name;
