@@ -154,7 +154,8 @@ void requireOutputsBeforeWork(const std::string& command, const std::vector<Name
       fail(output.role + ": " + error.what());
     }
     for (const SceneProblem& problem : checkOutputFile(output.path, output.role))
-      fail(problem.jsonPath + " " + output.path + ": " + problem.message);
+      fail(problem.jsonPath + ": " + problem.message +
+           (problem.message.find(output.path) == std::string::npos ? " (writing " + output.path + ")" : ""));
   }
   try {
     requireDistinctFiles(inputs, outputs);
