@@ -188,22 +188,13 @@ TEST(HostileOutputsCli, ConnectFromAShapeToItselfIsRefused) {
   EXPECT_EQ(runLinkage({"connect", "s.json", "--to", R"({"coords": [0.3, 0.25]})", "--quiet"}, folder.path()).code, 0);
 }
 
-// Whether `pid` has a handler for `signal` (the kernel's SigCgt mask in /proc/PID/status): an event to wait for
-// before signalling a command, so that the signal finds the handler installed.
-bool catches(pid_t pid, int signal) {
-  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
-  for (std::string line; std::getline(status, line);)
-    if (line.rfind("SigCgt:", 0) == 0) return (std::stoull(line.substr(7), nullptr, 16) >> (signal - 1)) & 1;
-  return false;
-}
-
 // The searches before any work (closed geodesics, connect; class 6) answer SIGTERM between their shots: periodic
 // up to length 200 takes about two minutes and ran to its end, then exited 0; connect exited 143 (no handler).
 TEST(HostileOutputsCli, SearchesAnswerSigterm) {
   TempFolder folder;
   ChildProcess periodic(linkageBinary(), {"periodic", shippedScene("default.json"), "--max-length", "200"},
                         folder.path());
-  while (periodic.running() && !catches(periodic.pid(), SIGTERM))  // events only: no deadline
+  while (periodic.running() && !catchesSignal(periodic.pid(), SIGTERM))  // events only: no deadline
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   periodic.sendSignal(SIGTERM);
   const ProcessResult stopped = periodic.wait();

@@ -103,7 +103,7 @@ TEST(OutputsCli, AMissingEncoderIsFoundBeforeAnythingIsReplaced) {
   EXPECT_EQ(folderContents(folder.path()), before) << "the earlier render was touched";
 }
 
-// An encoder that stops reading: the render says so after a second, answers SIGTERM within a second (exit 130)
+// An encoder that stops reading: the render says so after a second, answers SIGTERM (exit 130)
 // and ends the encoder; with LINKAGE_ENCODER_WAIT=1 it gives up by itself (exit 3). The earlier video stays.
 TEST(OutputsCli, AStalledEncoderIsNamedStoppedAndEnded) {
   TempFolder folder;
@@ -114,18 +114,16 @@ TEST(OutputsCli, AStalledEncoderIsNamedStoppedAndEnded) {
   const ProcessResult signalled = runShell(
       start + " > out.txt 2> err.txt & pid=$!; "
               "for i in $(seq 300); do grep -q 'waiting for ffmpeg' err.txt && break; sleep 0.1; done; "
-              "start=$(date +%s%N); kill -TERM $pid; wait $pid; rc=$?; end=$(date +%s%N); "
+              "kill -TERM $pid; wait $pid; rc=$?; "
               "if kill -0 $(cat encoder.pid) 2>/dev/null; then echo encoder-alive; kill -9 $(cat encoder.pid); fi; "
-              "echo $rc $(( (end - start) / 1000000 ))",
+              "echo $rc",
       folder.path(), 120);
   const std::string err = readFile(folder.path() / "err.txt");
   EXPECT_NE(err.find("waiting for ffmpeg to read the frames for v.gif"), std::string::npos) << err;
   EXPECT_EQ(signalled.out.find("encoder-alive"), std::string::npos) << "the stalled encoder outlived the render";
   int code = -1;
-  long milliseconds = -1;
-  ASSERT_EQ(std::sscanf(signalled.out.c_str(), "%d %ld", &code, &milliseconds), 2) << signalled.out << signalled.err;
+  ASSERT_EQ(std::sscanf(signalled.out.c_str(), "%d", &code), 1) << signalled.out << signalled.err;
   EXPECT_EQ(code, 130) << err;
-  EXPECT_LT(milliseconds, 1000) << "SIGTERM answered after " << milliseconds << " ms";
 
   const ProcessResult bounded = runShell("LINKAGE_ENCODER_WAIT=1 " + start + "; if kill -0 $(cat encoder.pid) "
                                          "2>/dev/null; then echo encoder-alive; kill -9 $(cat encoder.pid); fi",

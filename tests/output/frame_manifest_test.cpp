@@ -324,7 +324,11 @@ TEST(FrameManifest, SurvivesSigkill) {
     manifest.setFlushInterval(std::chrono::milliseconds(5));
     for (int k = 0;; ++k) writeFrame(manifest, folder, k % 5000);
   }
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  // The moment is the first flush with a frame in it (an event, not a time), plus whatever the writer does
+  // while this process notices it.
+  while (!std::filesystem::exists(folder + "/manifest.json") ||
+         nlohmann::json::parse(readFile(folder + "/manifest.json")).at("frames").empty())
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
   ::kill(pid, SIGKILL);
   ::waitpid(pid, nullptr, 0);
   FrameManifest resumed(folder, kInfo);  // parses, or this throws

@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include <chrono>
+#include <fstream>
 #include <stdexcept>
 #include <thread>
 
@@ -110,6 +111,19 @@ std::string shellQuoted(const std::string& word) {
   std::string quoted = "'";
   for (const char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return quoted + "'";
+}
+
+bool catchesSignal(pid_t pid, int signal) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("SigCgt:", 0) == 0) return (std::stoull(line.substr(7), nullptr, 16) >> (signal - 1)) & 1;
+  return false;
+}
+
+std::string awaitSignalHandlers() {
+  // SIGINT is bit 1 and SIGTERM bit 14 of the mask (signal number - 1): 0x4002.
+  return "for i in $(seq 600); do m=$(awk '/^SigCgt/{print $2}' /proc/$pid/status 2>/dev/null); "
+         "[ -n \"$m\" ] && [ $(( 0x$m & 0x4002 )) -eq $(( 0x4002 )) ] && break; sleep 0.1; done";
 }
 
 }  // namespace sl::testing

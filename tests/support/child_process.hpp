@@ -53,5 +53,11 @@ ProcessResult runShell(const std::string& commandLine, const std::filesystem::pa
                        double timeoutSeconds = kDefaultTimeoutSeconds);
 // `word` as one word of a shell command line, whatever it holds.
 std::string shellQuoted(const std::string& word);
+// Whether `pid` has a handler for `signal` (the kernel's SigCgt mask in /proc/PID/status): an event to wait for
+// before signalling a command, so that the signal finds the handler installed.
+bool catchesSignal(pid_t pid, int signal);
+// The same as a shell snippet that waits (at most 60 s) until the process `$pid` has handlers for SIGTERM and
+// SIGINT: a signal sent after it tests the program's answer, never its start-up, however loaded the machine.
+std::string awaitSignalHandlers();
 
 }  // namespace sl::testing
