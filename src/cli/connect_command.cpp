@@ -20,6 +20,7 @@
 #include "cli/interrupt.hpp"
 #include "cli/number_options.hpp"
 #include "cli/scene_input.hpp"
+#include "cli/self_check_words.hpp"
 #include "contracts/limits.hpp"
 #include "inverse/connect.hpp"
 #include "inverse/method_shooting.hpp"
@@ -41,9 +42,13 @@ struct ConnectArguments {
   bool quiet = false;
 };
 
-std::string foundWords(const std::vector<Connection>& found) {
+// Warns of each unconfirmed motion (exit 3 when none is confirmed); returns what the summary line says.
+std::string foundWords(const std::vector<Connection>& found, bool quiet) {
+  std::vector<SelfCheck> checks;
+  for (const Connection& c : found) checks.push_back(selfCheck(c));
+  const std::string unconfirmed = reportUnconfirmed("connect", "geodesic", checks, quiet);
   return std::to_string(found.size()) + (found.size() == 1 ? " geodesic" : " geodesics") +
-         " to the target, distance " + shortest(found[0].length);
+         " to the target, distance " + shortest(found[0].length) + unconfirmed;
 }
 
 // Prints the motions found; returns what the summary line says of them.
@@ -98,6 +103,7 @@ std::string runConnect(const ConnectArguments& args) {
       }
       o["morse_index"] = c.morseIndex;
       o["end_error"] = c.endError;
+      o["check"] = selfCheckName(selfCheck(c));
       if (c.discrete) {
         o["discrete_length"] = c.discrete->length;
         o["discrete_seed"] = c.discrete->seed;
@@ -121,12 +127,12 @@ std::string runConnect(const ConnectArguments& args) {
       }
       list.push_back(o);
     }
-    std::cout << list.dump(2) << "\n";
-    return foundWords(found);
+    std::cout << list.dump(2) << "\n" << std::flush;
+    return foundWords(found, args.quiet);
   }
   std::printf("distance %.12f (the shortest of %zu geodesics up to the length bound)\n", found[0].length, found.size());
-  std::printf("%3s %16s %16s %6s %10s %10s %10s  %s\n", "#", "length", "discrete", "morse", "end err", "len diff",
-              "path diff", "initial hinge velocities (time 1)");
+  std::printf("%3s %16s %16s %6s %10s %10s %10s  %-15s  %s\n", "#", "length", "discrete", "morse", "end err",
+              "len diff", "path diff", "check", "initial hinge velocities (time 1)");
   for (std::size_t i = 0; i < found.size(); ++i) {
     const Connection& c = found[i];
     std::string velocities;
@@ -135,12 +141,13 @@ std::string runConnect(const ConnectArguments& args) {
       std::snprintf(cell, sizeof cell, "%s(%.6f, %.6f)", k ? " " : "", c.velocity(k), c.velocity(k + 1));
       velocities += cell;
     }
+    const std::string check = selfCheckName(selfCheck(c));
     if (c.discrete)
-      std::printf("%3zu %16.12f %16.12f %6d %10.1e %10.1e %10.1e  %s\n", i, c.length, c.discrete->length, c.morseIndex,
-                  c.endError, c.lengthDifference, c.pathDifference, velocities.c_str());
+      std::printf("%3zu %16.12f %16.12f %6d %10.1e %10.1e %10.1e  %-15s  %s\n", i, c.length, c.discrete->length,
+                  c.morseIndex, c.endError, c.lengthDifference, c.pathDifference, check.c_str(), velocities.c_str());
     else
-      std::printf("%3zu %16.12f %16s %6d %10.1e %10s %10s  %s\n", i, c.length, "-", c.morseIndex, c.endError, "-", "-",
-                  velocities.c_str());
+      std::printf("%3zu %16.12f %16s %6d %10.1e %10s %10s  %-15s  %s\n", i, c.length, "-", c.morseIndex, c.endError,
+                  "-", "-", check.c_str(), velocities.c_str());
   }
   if (!methods.empty()) {
     std::printf("\nroute 3, the same motions shot again by other methods (Newton on the end point, time 1):\n");
@@ -156,7 +163,8 @@ std::string runConnect(const ConnectArguments& args) {
                       nameOf(methods[k]).c_str(), "-", "-", "-");
       }
   }
-  return foundWords(found);
+  std::fflush(stdout);
+  return foundWords(found, args.quiet);
 }
 
 }  // namespace
@@ -184,7 +192,8 @@ void addConnectCommand(CLI::App& app) {
       "route 2 makes a discrete action stationary under the rod constraints. 'discrete' is route 2's length\n"
       "where it found the same geodesic; 'morse' the conjugate points passed. With --method, route 3 shoots\n"
       "each motion again with that method's equations (the published -fd methods' step control collapses at\n"
-      "the tolerance this needs, so they report '-').\n"
+      "the tolerance this needs, so they report '-'). 'check': confirmed when it reaches the target and its\n"
+      "routes agree within the bounds of docs/hardening.md (principle 22); exit 3 when none is.\n"
       "Example:\n  linkage connect scenes/default.json --to '{\"coords\": [-0.6, 2.2]}' --max-length 8");
   command->add_flag("--quiet", args->quiet, "errors only: no summary line");
   command->callback([args] {

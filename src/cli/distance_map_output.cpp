@@ -16,6 +16,7 @@
 #include "cli/exit_codes.hpp"
 #include "cli/progress.hpp"
 #include "cli/scene_input.hpp"
+#include "cli/self_check_words.hpp"
 #include "contracts/csv_format.hpp"
 #include "inverse/distance_map.hpp"
 #include "linkage/chart.hpp"
@@ -155,6 +156,7 @@ std::string runDistanceMap(const Scene& scene, const DistanceMapRequest& request
     j["conjugate_radius"] = map.conjugateRadius;
     j["shortest_loop"] = map.shortestLoop > 0 ? nlohmann::json(map.shortestLoop) : nlohmann::json(nullptr);
     j["klingenberg"] = map.klingenberg();
+    j["check"] = selfCheckName(selfCheck(map));
     nlohmann::json conjugate = nlohmann::json::array(), cut = nlohmann::json::array();
     for (const ConjugatePoint& c : map.conjugateLocus) conjugate.push_back(chartPoint(c.x, c.distance));
     for (const CutEdge& e : map.cutLocus) cut.push_back(chartPoint(e.x, e.distance));
@@ -163,6 +165,8 @@ std::string runDistanceMap(const Scene& scene, const DistanceMapRequest& request
     if (!(std::cout << j.dump(2) << "\n" << std::flush))
       throw CommandExit(kExitFailure, "linkage geometry: cannot write to standard output");
   }
+  // The map is written whole either way; one whose two injectivity radii disagree is reported as failed.
+  reportUnconfirmed("geometry", "distance map", {selfCheck(map)}, request.quiet);
   return "distance map from (phi, t) = (" + shortest(std::round(centre(0) * 1e6) / 1e6) + ", " +
          shortest(std::round(centre(1) * 1e6) / 1e6) + "), " + std::to_string(request.grid) + " x " +
          std::to_string(request.grid) + " grid, " + std::to_string(map.geodesics) +

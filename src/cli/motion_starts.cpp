@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli/interrupt.hpp"
+#include "cli/self_check_words.hpp"
 #include "inverse/connect.hpp"
 #include "inverse/periodic.hpp"
 #include "linkage/chart.hpp"
@@ -66,6 +67,7 @@ std::optional<Eigen::VectorXd> configurationOf(const Chain& chain, const Constra
 // One search's list, shared by the runs that ask for it.
 struct Found {
   std::vector<FoundMotion> motions;
+  std::vector<SelfCheck> checks;  // each motion's own check: a run starts only on a confirmed one
   bool failed = false;  // a problem was recorded: the runs asking for it add none of their own
 };
 
@@ -99,6 +101,7 @@ Found connections(const Chain& chain, const FoundMotionSpec& request, const std:
         sphereVelocityFromHingeVelocities(chain, x, ConstrainedModel::unstack(c.velocity / c.length));
     motion.length = motion.time = c.length;
     found.motions.push_back(motion);
+    found.checks.push_back(selfCheck(c));
   }
   return found;
 }
@@ -115,6 +118,7 @@ Found closedGeodesics(const Chain& chain, const FoundMotionSpec& request) {
     motion.length = motion.time = g.length;
     motion.stability = g.stability == "-" ? "" : g.stability;
     found.motions.push_back(motion);
+    found.checks.push_back(selfCheck(g));
   }
   return found;
 }
@@ -168,6 +172,13 @@ std::vector<SceneProblem> resolveMotionStarts(Scene& scene) {
                                                                 std::to_string(count - 1)
                                                           : std::string(", so there is nothing to start from")) +
                                                (connect ? " (or a larger max_length)" : "")});
+      continue;
+    }
+    if (const SelfCheck check = found.checks[static_cast<std::size_t>(request.index)]; check != SelfCheck::confirmed) {
+      problems.push_back({path + ".index", "found " + std::to_string(request.index) + ", a motion that is unconfirmed: " +
+                                               selfCheckReason(check) + " (linkage " +
+                                               (connect ? "connect" : "periodic") +
+                                               " lists its check); expected the index of a confirmed one"});
       continue;
     }
     FoundMotion motion = found.motions[static_cast<std::size_t>(request.index)];

@@ -17,6 +17,7 @@
 #include "cli/interrupt.hpp"
 #include "cli/number_options.hpp"
 #include "cli/scene_input.hpp"
+#include "cli/self_check_words.hpp"
 #include "contracts/limits.hpp"
 #include "inverse/periodic.hpp"
 #include "linkage/chart.hpp"
@@ -57,6 +58,7 @@ nlohmann::json geodesicJson(const Chain& chain, const ClosedGeodesic& g) {
   o["start_hinge_velocities"] = hingesJson(g.velocity);
   o["closure_position"] = g.positionClosure;
   o["closure_velocity"] = g.velocityClosure;
+  o["check"] = selfCheckName(selfCheck(g));
   if (g.independentLength) {
     o["independent_length"] = *g.independentLength;
     o["independent_route"] = g.independentRoute;
@@ -66,8 +68,12 @@ nlohmann::json geodesicJson(const Chain& chain, const ClosedGeodesic& g) {
   return o;
 }
 
-std::string foundWords(const std::vector<ClosedGeodesic>& found) {
-  return std::to_string(found.size()) + (found.size() == 1 ? " closed geodesic" : " closed geodesics");
+// Warns of each unconfirmed closed geodesic (exit 3 when none is confirmed); returns what the summary line says.
+std::string foundWords(const std::vector<ClosedGeodesic>& found, bool quiet) {
+  std::vector<SelfCheck> checks;
+  for (const ClosedGeodesic& g : found) checks.push_back(selfCheck(g));
+  const std::string unconfirmed = reportUnconfirmed("periodic", "closed geodesic", checks, quiet);
+  return std::to_string(found.size()) + (found.size() == 1 ? " closed geodesic" : " closed geodesics") + unconfirmed;
 }
 
 // Prints the closed geodesics found; returns what the summary line says of them.
@@ -82,22 +88,24 @@ std::string runPeriodic(const PeriodicArguments& args) {
   if (args.json) {
     nlohmann::json list = nlohmann::json::array();
     for (const ClosedGeodesic& g : found) list.push_back(geodesicJson(chain, g));
-    std::cout << list.dump(2) << "\n";
-    return foundWords(found);
+    std::cout << list.dump(2) << "\n" << std::flush;
+    return foundWords(found, args.quiet);
   }
-  std::printf("%3s %16s %16s %6s %-10s %9s %9s %9s  %s\n", "#", "length", "independent", "simple", "stability",
-              "rotation", "trace", "closure", "symmetry");
+  std::printf("%3s %16s %16s %6s %-10s %9s %9s %9s  %-15s  %s\n", "#", "length", "independent", "simple",
+              "stability", "rotation", "trace", "closure", "check", "symmetry");
   for (std::size_t i = 0; i < found.size(); ++i) {
     const ClosedGeodesic& g = found[i];
     char independent[32] = "-", rotation[32] = "-", trace[32] = "-";
     if (g.independentLength) std::snprintf(independent, sizeof independent, "%.12f", *g.independentLength);
     if (g.stability == "elliptic") std::snprintf(rotation, sizeof rotation, "%.6f", g.rotationNumber);
     if (g.stability != "-") std::snprintf(trace, sizeof trace, "%.6f", g.monodromy.trace());
-    std::printf("%3zu %16.12f %16s %6s %-10s %9s %9s %9.1e  %s\n", i, g.length, independent, g.simple ? "yes" : "no",
-                g.stability.c_str(), rotation, trace, std::max(g.positionClosure, g.velocityClosure),
+    std::printf("%3zu %16.12f %16s %6s %-10s %9s %9s %9.1e  %-15s  %s\n", i, g.length, independent,
+                g.simple ? "yes" : "no", g.stability.c_str(), rotation, trace,
+                std::max(g.positionClosure, g.velocityClosure), selfCheckName(selfCheck(g)).c_str(),
                 g.symmetry.empty() ? "-" : g.symmetry.c_str());
   }
-  return foundWords(found);
+  std::fflush(stdout);
+  return foundWords(found, args.quiet);
 }
 
 }  // namespace
@@ -117,6 +125,8 @@ void addPeriodicCommand(CLI::App& app) {
       "Route 1 shoots on the return map (Newton with the monodromy); 'independent' is route 2's length where it\n"
       "applies (the end swap's fixed curve, twice a discrete geodesic between the half turn's fixed points, the\n"
       "3-rod circle). Stability from the linearised return map: elliptic (rotation number) or hyperbolic.\n"
+      "'check': confirmed when it closes and its two routes agree within the bounds of docs/hardening.md\n"
+      "(principle 22); an unconfirmed one is listed with a warning and cannot start a scene; exit 3 when none is.\n"
       "Example:\n  linkage periodic scenes/default.json --json");
   command->add_flag("--quiet", args->quiet, "errors only: no summary line");
   command->callback([args] {

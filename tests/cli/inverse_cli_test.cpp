@@ -96,9 +96,33 @@ TEST(PeriodicCli, ThreeSimpleClosedGeodesicsAsJson) {
     EXPECT_TRUE(g.contains("length"));
     EXPECT_EQ(g["start"]["coords"].size(), 2u);
     EXPECT_LT(g["closure_position"].get<double>(), 1e-10);
+    EXPECT_EQ(g["check"], "confirmed");
   }
   EXPECT_GE(simple, 3);
   EXPECT_NEAR(list[0]["length"].get<double>(), 6.593902692917, 1e-8);
+}
+
+// The headline of the fourth hostile round: on 3 rods at L = 1.5 and 1.9 the circle was listed with closure 1.3 and
+// an independent length 10.769 beside its 6.655. Now both routes agree, the row says "confirmed", and a scene
+// starts on it.
+TEST(PeriodicCli, TheThreeRodCircleBelowLTwoIsConfirmed) {
+  TempFolder folder;
+  writeFile(folder.path() / "three.json", R"({"name": "three", "linkage": {"rods": 3, "L": 1.5},
+    "initial": {"periodic": {"index": 0}},
+    "runs": [{"name": "a", "method": "ambient", "integrator": "dopri5", "tolerance": 1e-10}]})");
+  for (const char* length : {"1.5", "1.9"}) {
+    const ProcessResult result =
+        runLinkage({"periodic", "three.json", "--json", "--set", std::string("linkage.L=") + length}, folder.path());
+    ASSERT_EQ(result.code, 0) << result.err;
+    const nlohmann::json list = nlohmann::json::parse(result.out);
+    ASSERT_EQ(list.size(), 1u);
+    EXPECT_EQ(list[0]["check"], "confirmed") << length;
+    EXPECT_NEAR(list[0]["length"].get<double>(), list[0]["independent_length"].get<double>(), 1e-9) << length;
+    EXPECT_LT(list[0]["closure_position"].get<double>(), 1e-9) << length;
+  }
+  const ProcessResult simulated = runLinkage({"simulate", "three.json", "--quiet"}, folder.path());
+  ASSERT_EQ(simulated.code, 0) << simulated.err;
+  EXPECT_NE(simulated.out.find("run,time"), std::string::npos);
 }
 
 TEST(ConnectCli, RefusesChainsBeyondItsLimit) {

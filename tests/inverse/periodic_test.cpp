@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "inverse/periodic.hpp"
+#include "inverse/self_check.hpp"
+#include "linkage/chart.hpp"
 
 namespace sl {
 namespace {
@@ -66,14 +68,29 @@ TEST(Periodic, TriaxialEllipsoidPrincipalEllipses) {
   }
 }
 
-// The 3-rod chain's circle: the period of its motion at unit speed is the circle's length.
-TEST(Periodic, ThreeRodCircle) {
-  const ClosedGeodesic g = circleClosedGeodesic(Chain::uniform(3, 2.0));
-  EXPECT_LT(g.positionClosure, 1e-10);
-  EXPECT_LT(g.velocityClosure, 1e-10);
-  ASSERT_TRUE(g.independentLength.has_value());
-  EXPECT_NEAR(g.length, *g.independentLength, 1e-8);
-  EXPECT_GT(g.length, 2 * 3.14159);  // longer than the innermost hinge's own unit circle
+// The 3-rod chain's circle, across 1 < L < 3: the period of its motion at unit speed is the circle's length by
+// the exact speed's quadrature, and (away from L = 1, where the polygons converge slowly) by polygons too. At
+// L < 2 route 1 used to stop at a near-approach a third of the way round (L = 1.5: 6.655 against 10.769).
+TEST(Periodic, ThreeRodCircleAcrossTheWholeRange) {
+  for (double length : {1.0001, 1.001, 1.01, 1.1, 1.5, 1.9, 1.99, 2.0, 2.01, 2.5, 2.9, 2.99, 2.9999}) {
+    SCOPED_TRACE(length);
+    const Chain chain = Chain::uniform(3, length);
+    const ClosedGeodesic g = circleClosedGeodesic(chain);
+    EXPECT_LT(g.positionClosure, 1e-10);
+    EXPECT_LT(g.velocityClosure, 1e-10);
+    ASSERT_TRUE(g.independentLength.has_value());
+    EXPECT_NEAR(g.length, *g.independentLength, 1e-9 * g.length);
+    EXPECT_EQ(selfCheck(g), SelfCheck::confirmed);
+    if (length >= 1.1) {
+      const ConstrainedModel model = ConstrainedModel::fromChain(chain);
+      const double polygons = closedCurveLength(model, [&](double w) {
+        return ConstrainedModel::stack(hingePositionsAt(chain, Eigen::Vector2d(std::cos(w), std::sin(w))));
+      });
+      EXPECT_NEAR(g.length, polygons, 1e-9 * g.length);
+    }
+  }
+  EXPECT_NEAR(circleClosedGeodesic(Chain::uniform(3, 1.5)).length, 10.769046335885, 1e-9);
+  EXPECT_GT(circleClosedGeodesic(Chain::uniform(3, 2.0)).length, 2 * 3.14159);  // longer than p1's own unit circle
 }
 
 // The fixed curve of the end swap really is fixed by it, and lies on the rods.

@@ -1,0 +1,35 @@
+#pragma once
+// Results that check themselves (docs/hardening.md, principle 22). A closed geodesic, a connection and a distance
+// map each carry the numbers of their own check (a closure, an end error, a second route); a result is reported as
+// found, or used as a scene's start, only when those numbers are within the bounds written here, once. What fails
+// is listed as unconfirmed with the check that failed, typed: the command line puts it into words.
+
+#include "inverse/connect.hpp"
+#include "inverse/distance_map.hpp"
+#include "inverse/periodic.hpp"
+
+namespace sl {
+
+// A closed geodesic at unit speed: max |q(T) - q0| and max |v(T) - v0| (route 1 reaches about 1e-11).
+inline constexpr double kClosureBound = 1e-8;
+// A connection: max |q(1) - target| over the coordinates (Newton stops at 1e-12).
+inline constexpr double kEndErrorBound = 1e-8;
+// Two routes to one length, relative (they agree to about 1e-11 where both converge).
+inline constexpr double kRouteAgreement = 1e-8;
+// The distance map's injectivity radius (nearest cut point on the grid) against Klingenberg's lemma, in grid cells.
+inline constexpr double kInjectivityAgreementCells = 6;
+
+enum class SelfCheck {
+  confirmed,
+  notFinite,       // a length or an error is NaN or infinite
+  openClosure,     // the closed geodesic does not close within kClosureBound
+  missedTarget,    // the connection ends farther than kEndErrorBound from its target
+  routesDisagree,  // the independent route's length differs by more than kRouteAgreement
+  radiiDisagree,   // the two injectivity radii differ by more than kInjectivityAgreementCells grid cells
+};
+
+SelfCheck selfCheck(const ClosedGeodesic& geodesic);
+SelfCheck selfCheck(const Connection& connection);
+SelfCheck selfCheck(const DistanceMap& map);
+
+}  // namespace sl
