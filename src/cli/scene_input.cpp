@@ -98,6 +98,7 @@ std::vector<InitialState> runStarts(const Scene& scene, std::vector<std::string>
     try {
       StartAdjustment moved;
       starts.push_back(initialStateFromSpec(run.chain, run.initial, &moved));
+      requireCoverableMotion(run.chain, starts.back(), scene.duration);
       if (notes && (moved.positions > 1e-9 || moved.velocities > 1e-9)) {
         char text[200];
         std::snprintf(text, sizeof text,

@@ -69,6 +69,10 @@ inline constexpr double kMaxFieldOfViewDegrees = 120;
 // rods; plain runs on any chain). A scene's whole work counts every run and family member for every sphere-path
 // sample (frames x view.path_samples_per_frame): at most kMaxSceneWork units, about a day of one core.
 inline constexpr double kMaxStepWork = 1.6e7;
+// How far a run's hinges travel in the scene's duration, in rod lengths (mass-weighted RMS; a geodesic keeps its
+// speed): an integrator takes a few steps per rod length of travel at the default tolerances, so well beyond this a
+// run would end on its step watchdog (RunConfig::maxSteps, 5e7) instead of its duration.
+inline constexpr double kMaxHingeTravel = 1e6;
 inline constexpr double kMaxSceneWork = 1e13;
 // How long a render waits for a lock another process holds on its output folder before giving up (a process
 // stopped with SIGSTOP, or hung, holds it for ever); it says what it waits for after the first second.

@@ -227,9 +227,20 @@ FrameManifest::FrameManifest(std::string folder, nlohmann::json info, std::strin
       claim_(claim),
       lastFlush_(std::chrono::steady_clock::now()) {
   std::filesystem::create_directories(folder_);
-  if (existing_ != Existing::merge) return;
   const std::string activePath = folder_ + "/." + fileName_ + ".active";
   activeFd_ = openLockFile(activePath);
+  if (existing_ != Existing::merge) {
+    // One render writes a video at a time: two finishing the same path interleaved their renames and manifests
+    // (one render's video beside the other's manifest). The exclusive claim lasts until this manifest is written.
+    try {
+      lockWithTimeout(activeFd_, LOCK_EX, activePath, lockWaitSeconds_, cancelled);
+    } catch (...) {
+      ::close(activeFd_);
+      activeFd_ = -1;
+      throw;
+    }
+    return;
+  }
   try {
     lockWithTimeout(activeFd_, LOCK_SH, activePath, lockWaitSeconds_, cancelled);  // waits only while a render takes the folder over
     {
@@ -253,7 +264,7 @@ FrameManifest::~FrameManifest() {
   } catch (...) {
     // A destructor must not throw; callers who care call flush() themselves and see the error.
   }
-  if (activeFd_ >= 0) ::close(activeFd_);  // releases the shared claim
+  if (activeFd_ >= 0) ::close(activeFd_);  // releases the claim (shared, or a video's exclusive one)
 }
 
 void FrameManifest::supersedeLocked(const nlohmann::json& other) {

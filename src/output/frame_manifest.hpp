@@ -41,8 +41,9 @@
 // join nor replace it while it runs. Lock waits are bounded (limits::kMaxLockWaitSeconds) and announced.
 //
 // Existing::replace is for a file that is always written whole (a video): the manifest on disk, of any
-// earlier render, is neither read nor merged nor locked but replaced by this render's entries, written only
-// by flush() (record() does not flush part-way). A replaced manifest with no entries recorded is never written;
+// earlier render, is neither read nor merged but replaced by this render's entries, written only by flush()
+// (record() does not flush part-way). Such a manifest holds an exclusive flock(2) on .<name>.active for its
+// lifetime (waited for like the other locks): one render at a time writes a video and its manifest. A replaced manifest with no entries recorded is never written;
 // a merged one exists (empty) from the start, so that it can be rewritten in place when the file system has no
 // inode left for a temporary.
 

@@ -71,6 +71,8 @@ void ConstraintSolver::relativeVelocities(const Eigen::Matrix2Xd& velocities, Ei
 }
 
 void ConstraintSolver::solve(const Eigen::Matrix2Xd& hinges, const Eigen::VectorXd& rhs, Eigen::Matrix2Xd& correction) {
+  if (!hinges.allFinite() || !rhs.allFinite())
+    throw NonFiniteConstraintData("the hinge positions or velocities are no longer finite numbers (the step overflowed)");
   rodVectors(hinges, rods_);
   if (diagonalMass_)
     factorTridiagonal();

@@ -23,6 +23,12 @@ struct ConstraintRankLoss : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The hinges or the right-hand side of a solve are not finite (a step that overflowed): not a loss of rank, which
+// would name a chain folded flat that is nowhere near a line. A run stops there (StopReason::NonFinite).
+struct NonFiniteConstraintData : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 class ConstraintSolver {
  public:
   explicit ConstraintSolver(const Chain& chain);
@@ -30,7 +36,7 @@ class ConstraintSolver {
   ConstraintSolver(ConstraintSolver&&) noexcept;
 
   // hinges: 2 x (n-1); rhs: n entries; correction: 2 x (n-1). Throws ConstraintRankLoss if the system is
-  // singular to working precision (every rod on one line).
+  // singular to working precision (every rod on one line), NonFiniteConstraintData if an input is not finite.
   void solve(const Eigen::Matrix2Xd& hinges, const Eigen::VectorXd& rhs, Eigen::Matrix2Xd& correction);
   // The multipliers mu of the last solve (one per rod): correction = M^-1 G^T mu, where (G^T mu) at hinge p_h is
   // D_(h-1) mu_(h-1) - D_h mu_h. The Jacobi fields' linearisation needs them (simulation/jacobi_system.hpp).

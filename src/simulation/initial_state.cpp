@@ -1,9 +1,11 @@
 #include "simulation/initial_state.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
+#include "contracts/limits.hpp"
 #include "linkage/chart.hpp"
 #include "linkage/sphere_coordinates.hpp"
 #include "simulation/constraint_solver.hpp"
@@ -224,6 +226,10 @@ InitialState initialStateFromSpec(const Chain& chain, const InitialSpec& spec, S
       throw std::invalid_argument("the start names a found motion (connect or periodic) that was not resolved");
     InitialState start(spec.motion->spherePoint, spec.motion->sphereVelocity);
     validateInitialState(chain, start);
+    // `arrival` rescales the found motion's speed (length / arrival): a tiny arrival overflows its energy.
+    if (!std::isfinite(speedSquared(chain, start)))
+      throw std::invalid_argument("the found motion's speed (its length over its arrival time) is so large that the "
+                                  "kinetic energy overflows; expected a later arrival");
     return start;
   }
   if (spec.kind == InitialSpec::Kind::Drag) {
@@ -242,6 +248,21 @@ InitialState initialStateFromSpec(const Chain& chain, const InitialSpec& spec, S
   else
     requireFiniteMotion(chain, start, "the velocity", spec.velocity.cwiseAbs().maxCoeff() > 0);
   return start;
+}
+
+void requireCoverableMotion(const Chain& chain, const InitialState& start, double duration) {
+  // The kinetic metric weighs each hinge by its mass: the speed over the root of the total mass is the hinges'
+  // mass-weighted RMS speed in rod lengths per second, the same measure for 4 rods and for 1000.
+  const double totalMass = chain.hingeMasses.sum() + chain.rodMasses.sum();
+  const double hingeSpeed = std::sqrt(speedSquared(chain, start) / totalMass), travel = hingeSpeed * duration;
+  if (travel <= limits::kMaxHingeTravel) return;
+  char text[360];
+  std::snprintf(text, sizeof text,
+                "the start moves the hinges at %.3g rod lengths per second (mass-weighted root mean square), about "
+                "%.3g rod lengths in the duration %.3g s; expected at most %.0e (a smaller velocity, unit_speed, or "
+                "a shorter duration)",
+                hingeSpeed, travel, duration, limits::kMaxHingeTravel);
+  throw std::invalid_argument(text);
 }
 
 }  // namespace sl

@@ -50,4 +50,10 @@ double speedSquared(const Chain& chain, const InitialState& start);
 // Checks sizes (n-1), finiteness, |x| = 1 and x . xdot = 0 to 1e-9; the message names what is wrong.
 void validateInitialState(const Chain& chain, const InitialState& start);
 
+// A geodesic keeps its speed: over `duration` the hinges travel (mass-weighted RMS) speed x duration / sqrt(total
+// mass) rod lengths, and an integrator needs steps in proportion. Throws std::invalid_argument when that exceeds
+// limits::kMaxHingeTravel, naming the speed: a huge start speed is refused before any work instead of ending at
+// t = 0 with a reason that is not true.
+void requireCoverableMotion(const Chain& chain, const InitialState& start, double duration);
+
 }  // namespace sl

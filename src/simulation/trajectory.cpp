@@ -19,8 +19,10 @@ namespace sl {
 
 namespace {
 
-// Steps shorter than this (relative to max(1, t)) mean the integrator is fighting a singularity or a
-// non-smooth field (the published metric near the seam): stop instead of crawling.
+// Steps shorter than this, measured in arc length (step x speed, relative to max(1, the length covered so far)),
+// mean the integrator is fighting a singularity or a non-smooth field (the published metric near the seam): stop
+// instead of crawling. In arc length, because a geodesic run k times faster takes k times shorter steps in time
+// and is not crawling (a start at speed 1e6 stopped at t = 0.02 for "step-size-collapse").
 constexpr double minimumRelativeStep = 1e-9;
 
 // Counts vector-field evaluations of the wrapped system.
@@ -116,6 +118,7 @@ struct Trajectory::Impl {
   std::unique_ptr<Stepper> stepper;
   State start;
   double initialEnergy = 0;
+  double speed = 1;  // sqrt(2 x initialEnergy): a geodesic's speed, constant along it
   double chartZeroTAtStart = 0, chartZeroTAtEnd = 0;  // of the current step, for unwrapping t
   long steps = 0;
   double lastSampleTime = 0;
@@ -187,6 +190,8 @@ struct Trajectory::Impl {
       stepper->doStep(*system);
     } catch (const ConstraintRankLoss& e) {
       return haltAtLastGoodState(because(StopReason::ConstraintRankLoss, e.what()));
+    } catch (const NonFiniteConstraintData& e) {
+      return haltAtLastGoodState(because(StopReason::NonFinite, e.what()));
     } catch (const std::exception& e) {
       return haltAtLastGoodState(because(StopReason::StepSizeCollapse, e.what()));
     }
@@ -195,7 +200,7 @@ struct Trajectory::Impl {
     const double t1 = stepper->endTime();
     if (!allFinite(end) || !std::isfinite(t1))
       return haltAtLastGoodState(because(StopReason::NonFinite, system->describe(y)));
-    if (!(t1 - t0 > minimumRelativeStep * std::max(1.0, std::abs(t0))))
+    if (!((t1 - t0) * speed > minimumRelativeStep * std::max(1.0, std::abs(t0) * speed)))
       return haltAtLastGoodState(reading(StopReason::StepSizeCollapse, t1, t1 - t0, kNaN));
     if (const auto failure = system->methodFailureAt(end)) {
       StopInfo info = because(failure->reason, failure->detail);
@@ -255,6 +260,7 @@ Trajectory::Trajectory(const Chain& chain, const InitialState& start, const RunC
   const StepInvariants summary = run.system->stepInvariants(
       run.start, start.spherePoint.size() >= 2 ? std::atan2(start.spherePoint(1), start.spherePoint(0)) : 0.0);
   run.initialEnergy = summary.energy;
+  run.speed = std::sqrt(2 * summary.energy);
   if (!(run.initialEnergy > 0)) throw std::invalid_argument("the initial velocity is zero: nothing moves");
   run.chartZeroTAtStart = run.chartZeroTAtEnd = summary.chartZeroT;
   run.stepper->initialize(*run.system, run.start, 0.0);

@@ -188,6 +188,38 @@ TEST(HostileOutputsCli, ConnectFromAShapeToItselfIsRefused) {
   EXPECT_EQ(runLinkage({"connect", "s.json", "--to", R"({"coords": [0.3, 0.25]})", "--quiet"}, folder.path()).code, 0);
 }
 
+// Class 5: a start at speed 1.7e6 stopped at t = 0.023 with "step-size-collapse" (the step floor was in time, not
+// arc length), one at 1.7e150 at t = 0 with "constraint-rank-loss" for a chain nowhere near a line, and an arrival of
+// 1e-300 overflowed the found motion's energy. A fast motion now runs to its end; one that would cover more than
+// limits::kMaxHingeTravel rod lengths in its duration, or overflow, is refused before any work by validate and simulate alike.
+TEST(HostileOutputsCli, HugeStartSpeedsRunOrAreRefusedWithTheTrueReason) {
+  TempFolder folder;
+  auto scene = [&](const std::string& velocity, const std::string& duration) {
+    writeFile(folder.path() / "fast.json", R"({"name": "fast", "linkage": {"rods": 4, "L": 3.0},
+      "initial": {"coords": [0.3, 0.2], "velocity": [)" + velocity + R"(, 0.7]}, "duration": )" + duration + R"(,
+      "runs": [{"name": "a", "method": "ambient", "integrator": "dopri5", "tolerance": 1e-10}]})");
+  };
+  scene("1e6", "0.03");  // 5e4 units of length: past t = 0.023, where it stopped
+  const ProcessResult fast = runLinkage({"simulate", "fast.json", "--csv", "fast.csv"}, folder.path());
+  EXPECT_EQ(fast.code, 0) << fast.err;
+  EXPECT_NE(fast.err.find("\"a\" ran to t = 0.03"), std::string::npos) << fast.err;
+  for (const char* velocity : {"1e10", "1e150"}) {
+    scene(velocity, "1");
+    for (const char* command : {"validate", "simulate"}) {
+      const ProcessResult refused = runLinkage({command, "fast.json"}, folder.path());
+      EXPECT_EQ(refused.code, 2) << command << " " << velocity << ": " << refused.err;
+      EXPECT_NE(refused.err.find("fast.json: initial: the start moves the hinges at"), std::string::npos) << refused.err;
+      EXPECT_NE(refused.err.find("expected at most 1e+06"), std::string::npos) << refused.err;
+      EXPECT_EQ(refused.err.find("constraint-rank-loss"), std::string::npos) << refused.err;
+    }
+  }
+  const ProcessResult overflow = runLinkage(
+      {"validate", shippedScene("connect.json"), "--set", "initial.connect.arrival=1e-300"}, folder.path(), 120);
+  EXPECT_EQ(overflow.code, 2) << overflow.err;
+  EXPECT_NE(overflow.err.find("the kinetic energy overflows; expected a later arrival"), std::string::npos)
+      << overflow.err;
+}
+
 // The searches before any work (closed geodesics, connect; class 6) answer SIGTERM between their shots: periodic
 // up to length 200 takes about two minutes and ran to its end, then exited 0; connect exited 143 (no handler).
 TEST(HostileOutputsCli, SearchesAnswerSigterm) {

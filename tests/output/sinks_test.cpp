@@ -169,9 +169,43 @@ TEST(VideoSink, AnUnfinishedVideoLeavesTheEarlierOneUntouched) {
   }  // destroyed without finish()
   EXPECT_EQ(sha256OfFile(path), firstVideo);
   EXPECT_EQ(sha256OfFile(path + ".manifest.json"), firstManifest);
-  const std::vector<std::string> expected = {"clip.mp4",
-                                             "clip.mp4.manifest.json"};  // no lock: a replaced manifest needs none
+  // The claim file of one render at a time stays, as in a PNG folder; no temporary does.
+  const std::vector<std::string> expected = {".clip.mp4.manifest.json.active", "clip.mp4", "clip.mp4.manifest.json"};
   EXPECT_EQ(folderNames(folder), expected);
+}
+
+bool stopAtOnce() { return true; }
+
+// Class 11 of the fourth hostile round: two renders finishing the same video interleaved their renames and
+// manifests (one render's video beside the other's manifest, both exit 0). One render writes a video at a time
+// now: a second waits for the first's manifest to be written (cancellable, bounded by its lock wait), and then
+// replaces both.
+TEST(VideoSink, OneRenderAtATimeWritesAVideoAndItsManifest) {
+  const testing::TempFolder temp;
+  const std::string folder = temp.path();
+  const std::string path = folder + "/clip.mp4";
+  {
+    FrameManifest first(folder, {{"test", "first"}}, "clip.mp4.manifest.json", FrameManifest::Existing::replace);
+    EXPECT_THROW(FrameManifest(folder, {{"test", "second"}}, "clip.mp4.manifest.json",
+                               FrameManifest::Existing::replace, FrameManifest::Claim::join, stopAtOnce),
+                 LockWaitCancelled);
+    try {
+      FrameManifest(folder, {{"test", "second"}}, "clip.mp4.manifest.json", FrameManifest::Existing::replace,
+                    FrameManifest::Claim::join, nullptr, 0.0);
+      ADD_FAILURE() << "a second render claimed a video another is writing";
+    } catch (const std::runtime_error& error) {
+      EXPECT_NE(std::string(error.what()).find("waiting for " + folder + "/.clip.mp4.manifest.json.active"),
+                std::string::npos)
+          << error.what();
+    }
+    VideoSink sink({path, VideoFormat::Mp4, VideoQuality::High, 64, 48, 30}, first);
+    for (int k = 0; k < 3; ++k) sink.consume(k, gradient(64, 48, k));
+    sink.finish();
+  }
+  // The first render is done (its manifest written, its claim released): the next one may take the video over.
+  FrameManifest second(folder, {{"test", "second"}}, "clip.mp4.manifest.json", FrameManifest::Existing::replace,
+                       FrameManifest::Claim::join, nullptr, 0.0);
+  EXPECT_EQ(readManifestFile(path + ".manifest.json").frames.size(), 3u);
 }
 
 // A finished video replaces an earlier one and its manifest, even one written for another render.

@@ -58,6 +58,22 @@ TEST(ConstraintSolver, MatchesDenseLinearAlgebraWithAndWithoutRodMasses) {
     }
 }
 
+// Class 5 of the fourth hostile round: a step that overflowed handed the solver non-finite hinges, whose NaN pivots
+// read as "every rod on one line" for a chain nowhere near a line. Non-finite input is its own failure now.
+TEST(ConstraintSolver, NonFiniteInputIsNotALossOfRank) {
+  const Chain chain = Chain::uniform(4, 3.0);
+  Eigen::VectorXd x(3);
+  x << 0.3, 0.5, 0.8;
+  const Eigen::Matrix2Xd hinges = hingePositionsAt(chain, x.normalized());
+  ConstraintSolver solver(chain);
+  Eigen::Matrix2Xd correction;
+  EXPECT_NO_THROW(solver.solve(hinges, Eigen::VectorXd::Ones(4), correction));
+  Eigen::Matrix2Xd overflowed = hinges;
+  overflowed(0, 1) = INFINITY;
+  EXPECT_THROW(solver.solve(overflowed, Eigen::VectorXd::Ones(4), correction), NonFiniteConstraintData);
+  EXPECT_THROW(solver.solve(hinges, Eigen::VectorXd::Constant(4, NAN), correction), NonFiniteConstraintData);
+}
+
 // Runs every exact method from one start and compares hinge positions over [0, T].
 void crossCheck(const Chain& chain, const InitialState& start, double T, double tolerance, double allowed) {
   Trajectory ambient(chain, start, testing::config("ambient", "bulirsch-stoer", 1e-13));
