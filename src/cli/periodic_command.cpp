@@ -58,6 +58,7 @@ nlohmann::json geodesicJson(const Chain& chain, const ClosedGeodesic& g) {
   o["start_hinge_velocities"] = hingesJson(g.velocity);
   o["closure_position"] = g.positionClosure;
   o["closure_velocity"] = g.velocityClosure;
+  o["closure"] = g.closure();  // in the orbit's own units: what the check bounds
   o["check"] = selfCheckName(selfCheck(g));
   if (g.independentLength) {
     o["independent_length"] = *g.independentLength;
@@ -101,7 +102,7 @@ std::string runPeriodic(const PeriodicArguments& args) {
     if (g.stability != "-") std::snprintf(trace, sizeof trace, "%.6f", g.monodromy.trace());
     std::printf("%3zu %16.12f %16s %6s %-10s %9s %9s %9.1e  %-15s  %s\n", i, g.length, independent,
                 g.simple ? "yes" : "no", g.stability.c_str(), rotation, trace,
-                std::max(g.positionClosure, g.velocityClosure), selfCheckName(selfCheck(g)).c_str(),
+                g.closure(), selfCheckName(selfCheck(g)).c_str(),
                 g.symmetry.empty() ? "-" : g.symmetry.c_str());
   }
   std::fflush(stdout);

@@ -22,11 +22,13 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr int kOrbitSamples = 512;
 
+
 // How close a point of a sampled orbit must come to count as on it: the chords of kOrbitSamples points stray
-// from the curve by about (spacing)^2 curvature / 8; 1e-3 of the length squared bounds that with margin.
+// from the curve by about (spacing)^2 curvature / 8, and the curvature grows as the orbit shrinks; 1e-3 of the
+// length squared (over its scale) bounds that with margin.
 double onOrbitTolerance(double length) {
   const double spacing = length / kOrbitSamples;
-  return 2 * spacing * spacing + 1e-9;
+  return (2 * spacing * spacing + 1e-9 * orbitScale(length) * orbitScale(length)) / orbitScale(length);
 }
 
 double maxAbs(const Eigen::VectorXd& v) { return v.cwiseAbs().maxCoeff(); }
@@ -117,6 +119,11 @@ void classify(ClosedGeodesic& g) {
 
 }  // namespace
 
+// The search's absolute thresholds were written for configuration spheres of about unit size. At L = 3.99999 an
+// orbit of length 0.018 was not recognised as itself (listed twice and three times, with different symmetry
+// labels); at L = 3.999999 Newton's velocity residual never reached its threshold (none listed).
+double orbitScale(double length) { return std::min(1.0, length / (2 * kPi)); }
+
 std::optional<ClosedGeodesic> shootClosedGeodesic(const ConstrainedModel& model, Eigen::VectorXd q0, Eigen::VectorXd v0,
                                                   double period, const Eigen::MatrixXd* twist) {
   if (model.freedom() != 2) throw std::invalid_argument("shootClosedGeodesic: a 2-dimensional model is needed");
@@ -124,6 +131,7 @@ std::optional<ClosedGeodesic> shootClosedGeodesic(const ConstrainedModel& model,
   if (!model.projectPosition(q0)) return std::nullopt;
   v0 = model.projectVelocity(q0, v0);
   v0 /= model.norm(v0);
+  const double startPeriod = period;
   double previous = INFINITY;
   for (int iteration = 0; iteration < 30; ++iteration) {
     const Eigen::VectorXd n0 = across(model, q0, v0);
@@ -144,7 +152,9 @@ std::optional<ClosedGeodesic> shootClosedGeodesic(const ConstrainedModel& model,
     const Eigen::MatrixXd identity = Eigen::MatrixXd::Identity(n, n);
     const Eigen::MatrixXd& map = twist != nullptr ? *twist : identity;
     residual << s.q - map * q0, s.v - map * v0;
-    const double error = maxAbs(residual);
+    // In the orbit's own units: on a small configuration sphere the velocity turns 1 / size times faster, and its
+    // residual's rounding floor grows with it (about 1e-10 at size 1e-3, where the position closes to 1e-13).
+    const double error = std::max(maxAbs(s.q - map * q0), orbitScale(period) * maxAbs(s.v - map * v0));
     if (twist != nullptr && (error <= 1e-13 || (error <= 1e-11 && error >= previous * 0.5)))
       return shootClosedGeodesic(model, q0, v0, 2 * period);  // the whole orbit, checked without the twist
     if (error <= 1e-13 || (error <= 1e-11 && error >= previous * 0.5)) {
@@ -165,15 +175,16 @@ std::optional<ClosedGeodesic> shootClosedGeodesic(const ConstrainedModel& model,
     jac.col(1) << s.dq.col(1), s.dv.col(1) - map * n0;
     jac.col(2) << s.v, flow.acceleration(s.q, s.v);
     Eigen::Vector3d step = jac.colPivHouseholderQr().solve(-residual);
+    const double size = orbitScale(period);  // an offset of 0.3 would leave a small configuration sphere
     const double scale =
-        std::max({std::abs(step(0)) / 0.3, std::abs(step(1)) / 0.3, std::abs(step(2)) / (0.3 * period), 1.0});
+        std::max({std::abs(step(0)) / (0.3 * size), std::abs(step(1)) / 0.3, std::abs(step(2)) / (0.3 * period), 1.0});
     step /= scale;
     q0 += step(0) * n0;
     if (!model.projectPosition(q0)) return std::nullopt;
     v0 = model.projectVelocity(q0, v0 + step(1) * n0);
     v0 /= model.norm(v0);
     period += step(2);
-    if (!(period > 1e-3) || !q0.allFinite()) return std::nullopt;
+    if (!(period > 1e-3 * startPeriod) || !q0.allFinite()) return std::nullopt;
   }
   return std::nullopt;
 }
@@ -249,7 +260,7 @@ std::vector<ClosedGeodesic> findClosedGeodesics(const ConstrainedModel& model, c
     for (std::size_t i = 0; i < found.size() && !covered; ++i) {
       const double ratio = (seed.twisted ? 2 : 1) * seed.period / found[i].length;
       covered = std::abs(ratio - std::round(ratio)) < 0.02 && std::round(ratio) >= 1 &&
-                distanceToOrbit(orbits[i], u * seed.q) < 1e-3;
+                distanceToOrbit(orbits[i], u * seed.q) < 1e-3 * orbitScale(found[i].length);
     }
     if (covered) continue;
     std::optional<ClosedGeodesic> g =

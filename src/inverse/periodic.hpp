@@ -13,6 +13,7 @@
 // Stability: the linearised return map on the Jacobi field across the motion, P = [[J1, J2], [J1', J2']] at
 // T for J1 = 1, J1' = 0 and J2 = 0, J2' = 1 (det P = 1): elliptic for |tr P| < 2 with rotation number
 // acos(tr P / 2) / (2 pi), hyperbolic for |tr P| > 2.
+#include <algorithm>
 #include <functional>
 #include <optional>
 #include <string>
@@ -25,10 +26,18 @@
 
 namespace sl {
 
+// A closed geodesic's size against a great circle of the unit sphere, min(1, length / 2 pi). Near L = n the
+// configuration sphere shrinks like sqrt(n - L) while the hinge coordinates stay of size 1: digits are lost in
+// proportion, and the velocity turns 1 / size times faster. The search's thresholds and the closure are measured
+// in the orbit's own units with it.
+double orbitScale(double length);
+
 struct ClosedGeodesic {
   double length = 0;                                // route 1: the period at unit speed
   Eigen::VectorXd point, velocity;                  // a unit-speed start on it (stacked hinges for a chain)
   double positionClosure = 0, velocityClosure = 0;  // max |q(T) - q0|, max |v(T) - v0|
+  // max(position closure, orbitScale x velocity closure): the closure in the orbit's own units (the check's).
+  double closure() const { return std::max(positionClosure, orbitScale(length) * velocityClosure); }
   bool simple = true;
   Eigen::Matrix2d monodromy = Eigen::Matrix2d::Identity();
   std::string stability;      // "elliptic", "hyperbolic", "parabolic" ("-" on a circle)

@@ -15,7 +15,7 @@ bool lengthsAgree(double route1, double route2) {
 }  // namespace
 
 SelfCheck selfCheck(const ClosedGeodesic& g) {
-  const double closure = std::max(g.positionClosure, g.velocityClosure);
+  const double closure = g.closure();
   if (!std::isfinite(g.length) || !std::isfinite(closure) ||
       (g.independentLength && !std::isfinite(*g.independentLength)))
     return SelfCheck::notFinite;

@@ -319,7 +319,9 @@ TEST(RenderCli, InterruptedVideoLeavesTheEarlierVideoUntouched) {
                  folder.path());
   ASSERT_EQ(first.code, 0) << first.err;
   const auto before = folderContents(folder.path());
-  ASSERT_EQ(before.size(), 2u);  // v.mp4 and v.mp4.manifest.json, nothing else
+  // v.mp4, v.mp4.manifest.json and the claim that one render at a time writes it, nothing else.
+  ASSERT_EQ(before.size(), 3u);
+  ASSERT_TRUE(before.count(".v.mp4.manifest.json.active"));
   const auto encoding = [&] {
     for (const auto& entry : fs::directory_iterator(folder.path()))
       if (std::error_code gone; entry.path().filename().string().find(".tmp.") != std::string::npos &&

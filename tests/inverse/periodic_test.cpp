@@ -93,6 +93,27 @@ TEST(Periodic, ThreeRodCircleAcrossTheWholeRange) {
   EXPECT_GT(circleClosedGeodesic(Chain::uniform(3, 2.0)).length, 2 * 3.14159);  // longer than p1's own unit circle
 }
 
+// Class 12 of the fourth hostile round: near L = n the configuration sphere shrinks like sqrt(n - L), and the
+// search's absolute thresholds (on-orbit tolerance, covered seeds, Newton's step) were written for unit-size
+// spheres. At L = 3.99999 it listed one closed geodesic twice and another three times, with different symmetry
+// labels; at L = 3.999999 none. Lyusternik and Schnirelmann promise three simple ones: each once, confirmed.
+TEST(Periodic, NearTheStraightChainEachClosedGeodesicIsListedOnce) {
+  for (double length : {3.99999, 3.999999}) {
+    SCOPED_TRACE(length);
+    const auto found = chainClosedGeodesics(Chain::uniform(4, length), PeriodicOptions{});
+    int simple = 0;
+    for (std::size_t i = 0; i < found.size(); ++i) {
+      simple += found[i].simple;
+      EXPECT_EQ(selfCheck(found[i]), SelfCheck::confirmed) << i;
+      for (std::size_t j = 0; j < i; ++j)
+        EXPECT_FALSE(std::abs(found[i].length - found[j].length) < 1e-7 * found[i].length &&
+                     std::abs(found[i].monodromy.trace() - found[j].monodromy.trace()) < 1e-6)
+            << "closed geodesics " << j << " and " << i << " are one (length " << found[i].length << ")";
+    }
+    EXPECT_GE(simple, 3);
+  }
+}
+
 // The fixed curve of the end swap really is fixed by it, and lies on the rods.
 TEST(Periodic, EndSwapFixedCurve) {
   const Chain chain = Chain::uniform(4, 3.0);

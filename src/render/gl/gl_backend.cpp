@@ -35,21 +35,22 @@ constexpr bool kBuilt[] = {
 #endif
 };
 bool built(GlBackend backend) { return kBuilt[static_cast<int>(backend)]; }
+GlUnavailable notBuilt(GlBackend backend) { return GlUnavailable("this linkage was built without " + nameOf(backend)); }
 
 }  // namespace
 
 // A backend not built has a maker that says so (never called: built() is asked first).
 #ifndef SL_HAVE_EGL
-std::unique_ptr<GlPlatformContext> makeEglContext(bool) { throw GlUnavailable("this linkage was built without egl"); }
+std::unique_ptr<GlPlatformContext> makeEglContext(bool) { throw notBuilt(GlBackend::Egl); }
 #endif
 #ifndef SL_HAVE_OSMESA
-std::unique_ptr<GlPlatformContext> makeOsMesaContext() { throw GlUnavailable("this linkage was built without osmesa"); }
+std::unique_ptr<GlPlatformContext> makeOsMesaContext() { throw notBuilt(GlBackend::OsMesa); }
 #endif
 
 namespace {
 
 std::unique_ptr<GlPlatformContext> makeContextOf(GlBackend backend) {
-  if (!built(backend)) throw GlUnavailable("this linkage was built without " + nameOf(backend));
+  if (!built(backend)) throw notBuilt(backend);
   switch (backend) {
     case GlBackend::Egl:
       return makeEglContext(false);
@@ -80,7 +81,7 @@ std::vector<GlBackend> builtGlBackends() {
 void requestGlBackend(GlBackend backend) {
   Selection& s = selection();
   const std::lock_guard lock(s.mutex);
-  if (!built(backend)) throw GlUnavailable("this linkage was built without " + nameOf(backend));
+  if (!built(backend)) throw notBuilt(backend);
   if (s.inUse && backend != GlBackend::Auto && backend != *s.inUse)
     throw std::logic_error("this process already draws through " + nameOf(*s.inUse) + "; cannot switch to " +
                            nameOf(backend));
@@ -109,7 +110,7 @@ std::unique_ptr<GlPlatformContext> makeCurrentGlContext() {
   if (backend == GlBackend::Auto) {
     // EGL's software device first (the same llvmpipe as OSMesa, and the backend that outlives OSMesa), OSMesa
     // where EGL cannot start (no libegl-mesa0, an EGL without device enumeration). Never a GPU: see kGlBackends.
-    std::string eglError = "this linkage was built without egl";
+    std::string eglError = notBuilt(GlBackend::Egl).what();
     if (built(GlBackend::Egl)) {
       try {
         context = makeEglContext(false);
@@ -119,7 +120,7 @@ std::unique_ptr<GlPlatformContext> makeCurrentGlContext() {
       }
     }
     if (!context) {
-      if (!built(GlBackend::OsMesa)) throw GlUnavailable(eglError + "; and this linkage was built without osmesa");
+      if (!built(GlBackend::OsMesa)) throw GlUnavailable(eglError + "; and " + notBuilt(GlBackend::OsMesa).what());
       try {
         context = makeOsMesaContext();
       } catch (const GlUnavailable& error) {
