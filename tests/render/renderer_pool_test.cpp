@@ -71,11 +71,22 @@ TEST(RendererPool, HoldsNoMoreFramesThanItsCapacity) {
   EXPECT_EQ(pool.inFlight(), 0);
 }
 
-// Frames left in flight when a pool ends (an interrupted render) are dropped without waiting for anyone.
-TEST(RendererPool, EndsWithFramesStillInFlight) {
+// Frames come back in the order they were submitted, whichever renderer drew them (a pool of two against one
+// drawing them one by one), and frames left in flight when a pool ends (an interrupted render) are dropped without
+// waiting for anyone: a hang here is the test's time limit.
+TEST(RendererPool, ReturnsFramesInOrderAndEndsWithFramesStillInFlight) {
+  const FrameState early = syntheticFrame(1.0, 60), late = syntheticFrame(2.0, 120);
+  RendererPool single(testing::smallSettings(), testing::kSmallSize, "", 1);
+  single.submit(early);
+  const std::vector<std::uint8_t> earlyPixels = single.takeOldest().rgb;
+  single.submit(late);
+  const std::vector<std::uint8_t> latePixels = single.takeOldest().rgb;
+  ASSERT_NE(earlyPixels, latePixels);
   RendererPool pool(testing::smallSettings(), testing::kSmallSize, "", 2);
-  for (int k = 0; k < pool.capacity(); ++k) pool.submit(syntheticFrame(1.0 + k, 60 * (k + 1)));
-  EXPECT_EQ(pool.inFlight(), pool.capacity());
+  pool.submit(early);
+  pool.submit(late);
+  EXPECT_EQ(pool.takeOldest().rgb, earlyPixels);
+  pool.submit(early);  // two left in flight as the pool ends
 }
 
 }  // namespace
