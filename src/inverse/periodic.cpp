@@ -119,9 +119,9 @@ void classify(ClosedGeodesic& g) {
 
 }  // namespace
 
-// The search's absolute thresholds were written for configuration spheres of about unit size. At L = 3.99999 an
-// orbit of length 0.018 was not recognised as itself (listed twice and three times, with different symmetry
-// labels); at L = 3.999999 Newton's velocity residual never reached its threshold (none listed).
+// The search's thresholds are in the orbit's own units: with absolute ones, a small orbit's chord sag exceeds the
+// on-orbit tolerance (the orbit is listed again, as a twin), and Newton's velocity residual, whose rounding floor
+// grows as 1 / size, never reaches its threshold (nothing is listed).
 double orbitScale(double length) { return std::min(1.0, length / (2 * kPi)); }
 
 std::optional<ClosedGeodesic> shootClosedGeodesic(const ConstrainedModel& model, Eigen::VectorXd q0, Eigen::VectorXd v0,

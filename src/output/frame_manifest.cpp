@@ -230,8 +230,8 @@ FrameManifest::FrameManifest(std::string folder, nlohmann::json info, std::strin
   const std::string activePath = folder_ + "/." + fileName_ + ".active";
   activeFd_ = openLockFile(activePath);
   if (existing_ != Existing::merge) {
-    // One render writes a video at a time: two finishing the same path interleaved their renames and manifests
-    // (one render's video beside the other's manifest). The exclusive claim lasts until this manifest is written.
+    // One render writes a video at a time: two finishing the same path would interleave their renames and
+    // manifests (one render's video beside the other's manifest). The claim lasts until this manifest is written.
     try {
       lockWithTimeout(activeFd_, LOCK_EX, activePath, lockWaitSeconds_, cancelled);
     } catch (...) {

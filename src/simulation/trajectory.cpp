@@ -22,7 +22,7 @@ namespace {
 // Steps shorter than this, measured in arc length (step x speed, relative to max(1, the length covered so far)),
 // mean the integrator is fighting a singularity or a non-smooth field (the published metric near the seam): stop
 // instead of crawling. In arc length, because a geodesic run k times faster takes k times shorter steps in time
-// and is not crawling (a start at speed 1e6 stopped at t = 0.02 for "step-size-collapse").
+// and is not crawling.
 constexpr double minimumRelativeStep = 1e-9;
 
 // Counts vector-field evaluations of the wrapped system.
