@@ -1,21 +1,11 @@
 #include "cli/self_check_words.hpp"
 
-#include <cstdio>
 #include <iostream>
 
 #include "cli/exit_codes.hpp"
+#include "contracts/csv_format.hpp"
 
 namespace sl {
-
-namespace {
-
-std::string bound(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
-
-}  // namespace
 
 std::string selfCheckName(SelfCheck check) {
   switch (check) {
@@ -33,12 +23,12 @@ std::string selfCheckReason(SelfCheck check) {
   switch (check) {
     case SelfCheck::confirmed: return "it passes its own check";
     case SelfCheck::notFinite: return "a length or an error is not a finite number";
-    case SelfCheck::openClosure: return "it does not close within " + bound(kClosureBound);
-    case SelfCheck::missedTarget: return "it ends farther than " + bound(kEndErrorBound) + " from its target";
+    case SelfCheck::openClosure: return "it does not close within " + shortest(kClosureBound);
+    case SelfCheck::missedTarget: return "it ends farther than " + shortest(kEndErrorBound) + " from its target";
     case SelfCheck::routesDisagree:
-      return "its independent route's length differs by more than " + bound(kRouteAgreement) + " (relative)";
+      return "its independent route's length differs by more than " + shortest(kRouteAgreement) + " (relative)";
     case SelfCheck::radiiDisagree:
-      return "the nearest cut point and Klingenberg's lemma differ by more than " + bound(kInjectivityAgreementCells) +
+      return "the nearest cut point and Klingenberg's lemma differ by more than " + shortest(kInjectivityAgreementCells) +
              " grid cells";
   }
   return "unknown check";
