@@ -19,6 +19,7 @@
 #include "cli/exit_codes.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/number_options.hpp"
+#include "cli/progress.hpp"
 #include "cli/scene_input.hpp"
 #include "cli/self_check_words.hpp"
 #include "contracts/limits.hpp"
@@ -80,6 +81,7 @@ std::string runConnect(const ConnectArguments& args) {
   ConnectOptions options;
   options.maxLength = args.maxLength;
   options.cancelled = interruptRequested;
+  options.progress = searchProgress("connect", args.quiet);
   const std::vector<Connection> found = findConnections(model, &chain, from, to, options);
   if (found.empty()) throw CommandExit(kExitFailure, args.scene + ": no geodesic to the target was found");
   // Route 3: every motion found, shot again with each method asked for (empty where Newton did not converge).

@@ -16,6 +16,7 @@
 #include "cli/exit_codes.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/number_options.hpp"
+#include "cli/progress.hpp"
 #include "cli/scene_input.hpp"
 #include "cli/self_check_words.hpp"
 #include "contracts/limits.hpp"
@@ -85,7 +86,9 @@ std::string runPeriodic(const PeriodicArguments& args) {
     throw CommandExit(kExitBadInput, args.scene + ": linkage: periodic needs 3 or 4 rods with n - 2 < L < n (got " +
                                          std::to_string(chain.rods) + " rods, L = " + std::to_string(chain.baseLength) +
                                          ")");
-  const std::vector<ClosedGeodesic> found = closedGeodesicsOf(chain, args.maxLength, interruptRequested);
+  if (const auto refusal = periodicSearchRefusal(chain))
+    throw CommandExit(kExitBadInput, args.scene + ": linkage: " + *refusal);
+  const std::vector<ClosedGeodesic> found = closedGeodesicsOf(chain, args.maxLength, interruptRequested, searchProgress("periodic", args.quiet));
   if (args.json) {
     nlohmann::json list = nlohmann::json::array();
     for (const ClosedGeodesic& g : found) list.push_back(geodesicJson(chain, g));

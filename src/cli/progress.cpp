@@ -26,6 +26,26 @@ Progress::~Progress() {
   if (drawn_ && terminal_) std::fputc('\n', stderr);
 }
 
+void Progress::update(long done, long total) {
+  total_ = total;
+  update(done);
+}
+
+SearchProgress searchProgress(const std::string& command, bool quiet) {
+  struct Passes {
+    std::shared_ptr<Progress> line;
+    long offset = 0, lastDone = 0, lastTotal = 0;
+  };
+  auto passes = std::make_shared<Passes>();
+  passes->line = std::make_shared<Progress>(0, quiet, command, "search step");
+  return [passes](long done, long total) {
+    if (done < passes->lastDone) passes->offset += passes->lastTotal;  // a new pass
+    passes->lastDone = done;
+    passes->lastTotal = total;
+    passes->line->update(passes->offset + done, passes->offset + total);
+  };
+}
+
 void Progress::update(long done) {
   if (quiet_ || total_ <= 0) return;
   const auto now = std::chrono::steady_clock::now();

@@ -8,7 +8,10 @@
 // - --quiet: nothing.
 
 #include <chrono>
+#include <memory>
 #include <string>
+
+#include "contracts/run_control.hpp"
 
 namespace sl {
 
@@ -20,6 +23,8 @@ class Progress {
   Progress(const Progress&) = delete;
   Progress& operator=(const Progress&) = delete;
   void update(long done);
+  // For work whose size is learnt on the way (a search plans its shots after its rays).
+  void update(long done, long total);
 
  private:
   long total_;
@@ -29,5 +34,9 @@ class Progress {
   long lastTenth_ = 0;
   std::chrono::steady_clock::time_point start_, lastDraw_;
 };
+
+// A search's progress on one line ("linkage periodic: search step 40/260 ..."): its passes (each counted from 0)
+// follow one another, so the count only grows.
+SearchProgress searchProgress(const std::string& command, bool quiet);
 
 }  // namespace sl

@@ -93,5 +93,10 @@ inline constexpr int kMaxConnectRods = 200;
 inline constexpr int kMaxMotionIndex = 99;
 inline constexpr double kMaxConnectLength = 1000;
 inline constexpr double kMaxPeriodicLength = 200;
+// The closed-geodesic search integrates explicitly: with hinge masses r apart (the kinetic mass matrix's
+// condition number) the light hinge swings sqrt(r) times faster than the heavy one moves, and each ray costs
+// sqrt(r) times more steps. Measured (docs/hardening.md, principle 22b): r = 1e2 about 7 s, 1e4 about 1 minute,
+// 1e6 about 5 minutes, 1e12 an estimated half hour and more without one simple closed geodesic found.
+inline constexpr double kMaxPeriodicMassRatio = 1e4;
 
 }  // namespace sl::limits

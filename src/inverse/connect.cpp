@@ -572,7 +572,13 @@ std::vector<Connection> findConnections(const ConstrainedModel& model, const Cha
   std::vector<Seed> seeds;
   const GeodesicFlow flow(model, 1e-9);
   const int n = model.dimension();
+  const std::size_t shots = d > kExactShootingFreedom ? kLongChainSeeds : 60;
+  const auto tell = [&](std::size_t done, std::size_t total) {
+    if (options.progress) options.progress(static_cast<long>(done), static_cast<long>(total));
+  };
+  std::size_t raysDone = 0;
   for (const Eigen::VectorXd& u : directions) {
+    tell(raysDone++, directions.size() + shots);
     stopIfCancelled(options.cancelled);
     FlowState state{from, u, Eigen::MatrixXd(n, 0), Eigen::MatrixXd(n, 0)};
     double d2 = INFINITY, d1 = INFINITY, t1 = 0;
@@ -592,9 +598,10 @@ std::vector<Connection> findConnections(const ConstrainedModel& model, const Cha
   std::sort(seeds.begin(), seeds.end(), [](const Seed& a, const Seed& b) { return a.distance < b.distance; });
   // Each seed costs a shot with the derivative; in high dimension the fan's close approaches mostly lead
   // back to the same few geodesics, so only the closest are shot (docs/geometry.md, "Long chains").
-  const std::size_t shots = d > kExactShootingFreedom ? kLongChainSeeds : 60;
   if (seeds.size() > shots) seeds.resize(shots);
+  std::size_t shotsDone = 0;
   for (const Seed& seed : seeds) {
+    tell(directions.size() + shotsDone++, directions.size() + seeds.size());
     stopIfCancelled(options.cancelled);
     add(shootConnection(model, from, to, seed.velocity, options.tolerance));
   }
@@ -613,6 +620,7 @@ std::vector<Connection> findConnections(const ConstrainedModel& model, const Cha
       c.morseIndex = d > kExactShootingFreedom ? discreteMorseIndex(model, from, c.velocity)
                                                : morseIndexOnChain(*chain, from, c.velocity);
   };
+  tell(directions.size() + seeds.size(), directions.size() + seeds.size());
   for (Connection& c : found) {
     stopIfCancelled(options.cancelled);
     describe(c);

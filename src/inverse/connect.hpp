@@ -16,6 +16,7 @@
 
 #include <Eigen/Dense>
 
+#include "contracts/run_control.hpp"
 #include "inverse/constrained_model.hpp"
 #include "linkage/chain.hpp"
 
@@ -57,6 +58,7 @@ struct ConnectOptions {
   bool discreteRoute = true;  // run route 2 and compare
   // Asked between rays and shots: when it answers true the search ends with RunCancelled (SIGINT, SIGTERM).
   bool (*cancelled)() = nullptr;
+  SearchProgress progress;  // told after each ray and shot, when given
 };
 
 // Route 1 from one initial velocity (over time 1): the converged connection, or nothing.

@@ -9,6 +9,8 @@
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/math/special_functions/ellint_2.hpp>
 
+#include "contracts/csv_format.hpp"
+#include "contracts/limits.hpp"
 #include "inverse/connect.hpp"
 #include "inverse/geodesic_flow.hpp"
 #include "inverse/richardson.hpp"
@@ -25,10 +27,22 @@ constexpr int kOrbitSamples = 512;
 
 // How close a point of a sampled orbit must come to count as on it: the chords of kOrbitSamples points stray
 // from the curve by about (spacing)^2 curvature / 8, and the curvature grows as the orbit shrinks; 1e-3 of the
-// length squared (over its scale) bounds that with margin.
+// length squared (over its scale) bounds that with margin on a sphere of even masses.
 double onOrbitTolerance(double length) {
   const double spacing = length / kOrbitSamples;
   return (2 * spacing * spacing + 1e-9 * orbitScale(length) * orbitScale(length)) / orbitScale(length);
+}
+
+// The same bound measured on the sampled orbit itself: a chord's sag is an eighth of the second difference
+// |y(i-1) - 2 y(i) + y(i+1)| (h^2 times the curvature). With masses far apart the mass-weighted orbit bends
+// much more sharply than the even-mass estimate above (masses [0.01, 1, 100] listed one orbit three times),
+// so the larger of the two is used, with a factor 2 of margin.
+double onOrbitTolerance(const std::vector<Eigen::VectorXd>& orbit, double length) {
+  double sag = 0;
+  const std::size_t n = orbit.size();
+  for (std::size_t i = 0; i < n; ++i)
+    sag = std::max(sag, (orbit[(i + n - 1) % n] - 2 * orbit[i] + orbit[(i + 1) % n]).norm() / 8);
+  return std::max(onOrbitTolerance(length), 2 * sag);
 }
 
 double maxAbs(const Eigen::VectorXd& v) { return v.cwiseAbs().maxCoeff(); }
@@ -212,8 +226,14 @@ std::vector<ClosedGeodesic> findClosedGeodesics(const ConstrainedModel& model, c
       rays.emplace_back(q, std::cos(angle) * basis.col(0) + std::sin(angle) * basis.col(1));
     }
   }
+  constexpr std::size_t kMaxShots = 48;
+  const auto tell = [&](std::size_t done, std::size_t total) {
+    if (options.progress) options.progress(static_cast<long>(done), static_cast<long>(total));
+  };
   {
+    std::size_t raysDone = 0;
     for (auto [q, u] : rays) {
+      tell(raysDone++, rays.size() + kMaxShots + guesses.size());
       stopIfCancelled(options.cancelled);
       model.projectPosition(q);
       u = model.projectVelocity(q, u);
@@ -246,15 +266,26 @@ std::vector<ClosedGeodesic> findClosedGeodesics(const ConstrainedModel& model, c
     }
     stopIfCancelled(options.cancelled);
   }
-  std::sort(seeds.begin(), seeds.end(), [](const Seed& a, const Seed& b) { return a.residual < b.residual; });
-  if (seeds.size() > 48) seeds.resize(48);
+  // Half the shots go to the closest returns, half to the earliest: a long ray's recurrences near a long orbit
+  // return closer than a short simple orbit's first return, and would take every shot (masses [0.01, 1, 100]
+  // at L = 3.5 listed three closed geodesics of length 37-46 and none of the simple ones).
+  const auto closer = [](const Seed& a, const Seed& b) { return a.residual < b.residual; };
+  std::sort(seeds.begin(), seeds.end(), closer);
+  if (seeds.size() > kMaxShots) {
+    const auto half = seeds.begin() + kMaxShots / 2;
+    std::stable_sort(half, seeds.end(), [](const Seed& a, const Seed& b) { return a.period < b.period; });
+    seeds.resize(kMaxShots);
+    std::stable_sort(seeds.begin(), seeds.end(), closer);
+  }
   for (auto it = guesses.rbegin(); it != guesses.rend(); ++it)
     seeds.insert(seeds.begin(), {0.0, it->point, it->velocity, it->period});
+  std::size_t shotsDone = 0;
 
   std::vector<ClosedGeodesic> found;
   std::vector<std::vector<Eigen::VectorXd>> orbits;
   const Eigen::MatrixXd u = model.mass().llt().matrixU();
   for (const Seed& seed : seeds) {
+    tell(rays.size() + shotsDone++, rays.size() + seeds.size());
     stopIfCancelled(options.cancelled);
     bool covered = false;  // a seed on a known orbit with a multiple of its period: nothing new
     for (std::size_t i = 0; i < found.size() && !covered; ++i) {
@@ -270,14 +301,15 @@ std::vector<ClosedGeodesic> findClosedGeodesics(const ConstrainedModel& model, c
     for (std::size_t i = 0; i < found.size() && !known; ++i) {
       const double ratio = g->length / found[i].length;
       if (std::abs(ratio - std::round(ratio)) < 1e-7 && std::round(ratio) >= 1 &&
-          distanceToOrbit(orbits[i], u * g->point) < onOrbitTolerance(found[i].length))
+          distanceToOrbit(orbits[i], u * g->point) < onOrbitTolerance(orbits[i], found[i].length))
         known = true;  // the same one, or a multiple cover of it
-      else if (std::abs(1 / ratio - std::round(1 / ratio)) < 1e-7 &&
-               distanceToOrbit(sampledOrbit(model, g->point, g->velocity, g->length), u * found[i].point) <
-                   onOrbitTolerance(g->length)) {
-        found[i] = *g;  // a multiple cover was found first: keep the primitive one
-        orbits[i] = sampledOrbit(model, g->point, g->velocity, g->length);
-        known = true;
+      else if (std::abs(1 / ratio - std::round(1 / ratio)) < 1e-7) {
+        std::vector<Eigen::VectorXd> orbit = sampledOrbit(model, g->point, g->velocity, g->length);
+        if (distanceToOrbit(orbit, u * found[i].point) < onOrbitTolerance(orbit, g->length)) {
+          found[i] = *g;  // a multiple cover was found first: keep the primitive one
+          orbits[i] = std::move(orbit);
+          known = true;
+        }
       }
     }
     if (known) continue;
@@ -285,13 +317,14 @@ std::vector<ClosedGeodesic> findClosedGeodesics(const ConstrainedModel& model, c
     g->simple = isSimple(orbits.back(), g->length / kOrbitSamples);
     found.push_back(*g);
   }
+  tell(rays.size() + seeds.size(), rays.size() + seeds.size());
   if (chain != nullptr) {
     for (std::size_t i = 0; i < found.size(); ++i) {
       std::string names;
       for (const char* name : {"mirror", "end swap", "half turn"}) {
         if (std::string(name) != "mirror" && !symmetricMasses(*chain)) continue;
         const Eigen::VectorXd image = applyChainSymmetry(*chain, name, found[i].point);
-        if (distanceToOrbit(orbits[i], u * image) > onOrbitTolerance(found[i].length)) continue;
+        if (distanceToOrbit(orbits[i], u * image) > onOrbitTolerance(orbits[i], found[i].length)) continue;
         bool fixed = true;
         for (int k = 0; k < kOrbitSamples; k += kOrbitSamples / 16) {
           const Eigen::VectorXd q = u.triangularView<Eigen::Upper>().solve(orbits[i][static_cast<std::size_t>(k)]);
@@ -401,6 +434,7 @@ std::vector<ClosedGeodesic> chainClosedGeodesics(const Chain& chain, const Perio
       connect.discreteRoute = false;
       connect.directions = 24;
       connect.cancelled = options.cancelled;
+      connect.progress = options.progress;
       betweenPoles = findConnections(model, nullptr, poles[0], poles[1], connect);
       for (const Connection& between : betweenPoles)
         guesses.push_back({poles[0], between.velocity / between.length, 2 * between.length});
@@ -418,8 +452,12 @@ std::vector<ClosedGeodesic> chainClosedGeodesics(const Chain& chain, const Perio
       c << phi, t;
       points.push_back(ConstrainedModel::stack(hingePositions(chain, c)));
     }
+  // Without the symmetric guesses, the end swap's fixed set (a closed curve round the sphere, a geodesic only
+  // for symmetric masses) gives the size: a fixed bound would let every ray wind hundreds of times round a
+  // small sphere near L = n, and seed from each multiple cover.
+  if (scale == 0) scale = closedCurveLength(model, [&](double w) { return endSwapFixedPoint(chain, w); });
   PeriodicOptions bounded = options;
-  if (bounded.maxLength <= 0) bounded.maxLength = scale > 0 ? 2.5 * scale : 24.0;
+  if (bounded.maxLength <= 0) bounded.maxLength = 2.5 * scale;
   if (!symmetricMasses(chain)) {  // the mirror is still an isometry: seek the closed geodesics it maps to themselves
     bounded.twist = Eigen::MatrixXd::Identity(6, 6);
     for (int k = 1; k < 6; k += 2) bounded.twist(k, k) = -1;
@@ -442,8 +480,8 @@ std::vector<ClosedGeodesic> chainClosedGeodesics(const Chain& chain, const Perio
     const auto poles = halfTurnFixedPoints(chain);
     const Eigen::MatrixXd u = model.mass().llt().matrixU();
     auto throughPoles = [&](const ClosedGeodesic& g) {
-      return distanceToOrbit(sampledOrbit(model, g.point, g.velocity, g.length), u * poles[0]) <
-             onOrbitTolerance(g.length);
+      const std::vector<Eigen::VectorXd> orbit = sampledOrbit(model, g.point, g.velocity, g.length);
+      return distanceToOrbit(orbit, u * poles[0]) < onOrbitTolerance(orbit, g.length);
     };
     std::vector<DiscreteGeodesic> halves;
     for (const auto& arc : sphereArcPaths(chain, poles[0], poles[1], 5 * kPathSamples))
@@ -538,11 +576,27 @@ ClosedGeodesic circleClosedGeodesic(const Chain& chain) {
   return out;
 }
 
-std::vector<ClosedGeodesic> closedGeodesicsOf(const Chain& chain, double maxLength, bool (*cancelled)()) {
+std::optional<std::string> periodicSearchRefusal(const Chain& chain) {
+  if (chain.rods != 4 || chain.isSlack()) return std::nullopt;
+  const Eigen::VectorXd masses =
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(ConstrainedModel::fromChain(chain).mass(), Eigen::EigenvaluesOnly)
+          .eigenvalues();
+  const double ratio = masses.maxCoeff() / masses.minCoeff();
+  if (ratio <= limits::kMaxPeriodicMassRatio * (1 + 1e-9)) return std::nullopt;
+  return "hinge and rod masses " + shortest(ratio) + " apart (the kinetic mass matrix's condition number): the " +
+         "closed-geodesic search integrates explicitly, its light hinge swings sqrt(" + shortest(ratio) +
+         ") times faster than the heavy one moves, and it would run for many minutes to hours; expected masses at " +
+         "most " + shortest(limits::kMaxPeriodicMassRatio) + " apart";
+}
+
+std::vector<ClosedGeodesic> closedGeodesicsOf(const Chain& chain, double maxLength, bool (*cancelled)(),
+                                              const SearchProgress& progress) {
   if (chain.rods == 3) return {circleClosedGeodesic(chain)};
+  if (const auto refusal = periodicSearchRefusal(chain)) throw std::invalid_argument(*refusal);
   PeriodicOptions options;
   options.maxLength = maxLength;
   options.cancelled = cancelled;
+  options.progress = progress;
   return chainClosedGeodesics(chain, options);
 }
 

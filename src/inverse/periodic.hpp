@@ -21,6 +21,7 @@
 
 #include <Eigen/Dense>
 
+#include "contracts/run_control.hpp"
 #include "inverse/constrained_model.hpp"
 #include "linkage/chain.hpp"
 
@@ -60,6 +61,7 @@ struct PeriodicOptions {
   Eigen::MatrixXd twist;  // if given: also seek returns to the twisted start (see shootClosedGeodesic)
   // Asked between rays and shots: when it answers true the search ends with RunCancelled (SIGINT, SIGTERM).
   bool (*cancelled)() = nullptr;
+  SearchProgress progress;  // told after each ray and shot, when given
 };
 
 // A start (point, unit velocity) and period to shoot from directly.
@@ -82,7 +84,12 @@ std::vector<ClosedGeodesic> chainClosedGeodesics(const Chain& chain, const Perio
 ClosedGeodesic circleClosedGeodesic(const Chain& chain);
 // The closed geodesics of a 3- or 4-rod chain, in the order `linkage periodic` lists them (the circle for 3 rods).
 // `cancelled`: as PeriodicOptions::cancelled.
-std::vector<ClosedGeodesic> closedGeodesicsOf(const Chain& chain, double maxLength, bool (*cancelled)() = nullptr);
+// Why the search would not end in useful time for this chain (its masses too far apart:
+// limits::kMaxPeriodicMassRatio), or nothing. closedGeodesicsOf throws std::invalid_argument with it.
+std::optional<std::string> periodicSearchRefusal(const Chain& chain);
+// `progress`: as PeriodicOptions::progress.
+std::vector<ClosedGeodesic> closedGeodesicsOf(const Chain& chain, double maxLength, bool (*cancelled)() = nullptr,
+                                              const SearchProgress& progress = {});
 
 // Route 2 pieces, exposed for the tests.
 // The length of a closed curve from its polygons on 2^k points, Richardson-extrapolated (periodic, smooth).

@@ -2,7 +2,6 @@
 // The trajectory of one run: a geodesic method integrated from an initial state by an integrator, watched
 // for failure (the watchdogs of RunConfig), sampled on demand. Used by frames/, analysis/ and cli/.
 
-#include <functional>
 #include <memory>
 #include <limits>
 #include <optional>
@@ -13,6 +12,7 @@
 #include <Eigen/Dense>
 
 #include "contracts/registry.hpp"
+#include "contracts/run_control.hpp"
 #include "contracts/run_config.hpp"
 #include "linkage/chain.hpp"
 
@@ -61,17 +61,6 @@ struct InvariantExtremes {
   double maxRelativeEnergyDrift = 0;  // max |E - E0| / E0
   double maxRodLengthError = 0;       // max_k | |p_k - p_(k-1)| - 1 |
 };
-
-// Thrown by Trajectory::sampleAt when the run's cancellation check (setCancellation) answers true; the run is
-// left as it was after its last step.
-struct RunCancelled : std::runtime_error {
-  RunCancelled() : std::runtime_error("the run was cancelled") {}
-};
-// The check long searches (connect, closed geodesics) ask between their rays and shots: RunCancelled when
-// `cancelled` is given and answers true.
-inline void stopIfCancelled(bool (*cancelled)()) {
-  if (cancelled && cancelled()) throw RunCancelled();
-}
 
 class Trajectory {
  public:

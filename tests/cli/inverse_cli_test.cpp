@@ -166,6 +166,37 @@ TEST(ConnectCli, FiftyRodsEndToEnd) {
   EXPECT_LT(list[0]["path_difference"].get<double>(), 1e-7);
 }
 
+// Masses a million apart: refused before any search (it would run for many minutes), naming the scene and the
+// linkage; a scene starting on such a closed geodesic is refused by validate at its start.
+TEST(PeriodicCli, RefusesMassesTooFarApart) {
+  TempFolder folder;
+  writeFile(folder.path() / "far.json", R"({"name": "far", "linkage": {"rods": 4, "L": 3.5,
+      "hinge_masses": [1e-3, 1, 1e3]}, "initial": {"coords": [0.1, 0.2], "velocity": [1, 0]}, "duration": 2,
+      "runs": [{"name": "a", "method": "christoffel"}]})");
+  const ProcessResult periodic = runLinkage({"periodic", "far.json"}, folder.path());
+  EXPECT_EQ(periodic.code, 2);
+  EXPECT_NE(periodic.err.find("far.json: linkage: hinge and rod masses 1e+06 apart"), std::string::npos) << periodic.err;
+  writeFile(folder.path() / "far-start.json", R"({"name": "far", "linkage": {"rods": 4, "L": 3.5,
+      "hinge_masses": [1e-3, 1, 1e3]}, "initial": {"periodic": {"index": 0}}, "duration": 2,
+      "runs": [{"name": "a", "method": "christoffel"}]})");
+  const ProcessResult validate = runLinkage({"validate", "far-start.json"}, folder.path());
+  EXPECT_NE(validate.code, 0);
+  EXPECT_NE(validate.err.find("initial.periodic"), std::string::npos) << validate.err;
+  EXPECT_NE(validate.err.find("apart"), std::string::npos) << validate.err;
+}
+
+// A search says how far it got in a log (stderr not a terminal), and --quiet leaves only its table.
+TEST(PeriodicCli, ShowsItsProgressInALogAndNothingWhenQuiet) {
+  TempFolder folder;
+  const ProcessResult shown = runLinkage({"periodic", shippedScene("default.json")}, folder.path());
+  EXPECT_EQ(shown.code, 0) << shown.err;
+  EXPECT_NE(shown.err.find("linkage periodic: search step "), std::string::npos) << shown.err;
+  EXPECT_NE(shown.err.find("(100%)"), std::string::npos) << shown.err;
+  const ProcessResult quiet = runLinkage({"periodic", shippedScene("default.json"), "--quiet"}, folder.path());
+  EXPECT_EQ(quiet.code, 0) << quiet.err;
+  EXPECT_EQ(quiet.err, "");
+}
+
 TEST(PeriodicCli, RefusesLongChains) {
   TempFolder folder;
   const ProcessResult result = runLinkage({"periodic", shippedScene("five-rods.json")}, folder.path());

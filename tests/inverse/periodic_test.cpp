@@ -114,6 +114,46 @@ TEST(Periodic, NearTheStraightChainEachClosedGeodesicIsListedOnce) {
   }
 }
 
+// Masses 100 apart bend the mass-weighted orbit far more sharply than even masses do: the twin test measures
+// the chord sag on the orbit itself (one mirror-symmetric closed geodesic was listed five times), and half the
+// shots go to the earliest returns (the long orbits' close recurrences took every shot, and no simple one was
+// listed). Mirror pairs (two orbits, one the other's image) share length and trace; a mirror-symmetric one has
+// no pair.
+TEST(Periodic, MassesFarApartListEachClosedGeodesicOnce) {
+  Chain chain = Chain::uniform(4, 3.5);
+  chain.hingeMasses << 0.01, 1.0, 100.0;
+  PeriodicOptions options;
+  options.maxLength = 24;
+  const auto found = chainClosedGeodesics(chain, options);
+  int simple = 0;
+  for (std::size_t i = 0; i < found.size(); ++i) {
+    simple += found[i].simple;
+    EXPECT_EQ(selfCheck(found[i]), SelfCheck::confirmed) << i;
+    for (std::size_t j = 0; j < i; ++j)
+      EXPECT_FALSE(found[i].symmetry == "mirror" && found[j].symmetry == "mirror" &&
+                   std::abs(found[i].length - found[j].length) < 1e-7 * found[i].length &&
+                   std::abs(found[i].monodromy.trace() - found[j].monodromy.trace()) < 1e-6)
+          << "closed geodesics " << j << " and " << i << " are one (length " << found[i].length << ")";
+  }
+  ASSERT_FALSE(found.empty());
+  EXPECT_TRUE(found[0].simple);
+  EXPECT_NEAR(found[0].length, 3.488186331482, 1e-9);
+}
+
+// Masses beyond limits::kMaxPeriodicMassRatio apart are refused before the search, with the reason; at the
+// limit they are searched.
+TEST(Periodic, MassesTooFarApartAreRefusedBeforeTheSearch) {
+  Chain chain = Chain::uniform(4, 3.5);
+  chain.hingeMasses << 1e-3, 1.0, 1e3;
+  const auto refusal = periodicSearchRefusal(chain);
+  ASSERT_TRUE(refusal);
+  EXPECT_NE(refusal->find("1e+06 apart"), std::string::npos) << *refusal;
+  EXPECT_THROW(closedGeodesicsOf(chain, 5), std::invalid_argument);
+  chain.hingeMasses << 1e-2, 1.0, 1e2;
+  EXPECT_FALSE(periodicSearchRefusal(chain));
+  EXPECT_FALSE(periodicSearchRefusal(Chain::uniform(4, 3.0)));
+}
+
 // The fixed curve of the end swap really is fixed by it, and lies on the rods.
 TEST(Periodic, EndSwapFixedCurve) {
   const Chain chain = Chain::uniform(4, 3.0);
