@@ -86,8 +86,14 @@ std::string runConnect(const ConnectArguments& args) {
   if (found.empty()) throw CommandExit(kExitFailure, args.scene + ": no geodesic to the target was found");
   // Route 3: every motion found, shot again with each method asked for (empty where Newton did not converge).
   std::vector<std::vector<std::optional<MethodConnection>>> shots(found.size());
-  for (std::size_t i = 0; i < found.size(); ++i)
-    for (const Method method : methods) shots[i].push_back(shootWithMethod(chain, method, from, to, found[i].velocity));
+  if (!methods.empty()) {
+    Progress progress(static_cast<long>(found.size() * methods.size()), args.quiet, "connect", "method shot");
+    for (std::size_t i = 0; i < found.size(); ++i)
+      for (const Method method : methods) {
+        shots[i].push_back(shootWithMethod(chain, method, from, to, found[i].velocity, 1e-13, interruptRequested));
+        progress.update(static_cast<long>(i * methods.size() + shots[i].size()));
+      }
+  }
   if (args.json) {
     nlohmann::json list = nlohmann::json::array();
     for (std::size_t i = 0; i < found.size(); ++i) {
@@ -161,8 +167,8 @@ std::string runConnect(const ConnectArguments& args) {
           std::printf("%3zu %-14s %16.12f %10.1e %10.1e\n", i, nameOf(methods[k]).c_str(), shot->length,
                       std::abs(shot->length - found[i].length), shot->endError);
         else
-          std::printf("%3zu %-14s %16s %10s %10s  (did not reach the target to 1e-12)\n", i,
-                      nameOf(methods[k]).c_str(), "-", "-", "-");
+          std::printf("%3zu %-14s %16s %10s %10s  (did not reach the target to %s)\n", i,
+                      nameOf(methods[k]).c_str(), "-", "-", "-", shortest(kMethodShotEndBound).c_str());
       }
   }
   std::fflush(stdout);

@@ -1,5 +1,6 @@
 #include "inverse/method_shooting.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "inverse/constrained_model.hpp"
@@ -48,12 +49,12 @@ std::optional<EndPoint> endOf(const Chain& chain, const RunConfig& config, const
 
 std::optional<MethodConnection> shootWithMethod(const Chain& chain, Method method, const Eigen::VectorXd& from,
                                                 const Eigen::VectorXd& to, const Eigen::VectorXd& hingeVelocity,
-                                                double tolerance) {
+                                                double tolerance, bool (*cancelled)()) {
   requireMethodMoves({method, &chain, false, false});
   RunConfig config;
   config.method = method;
   config.integrator = Integrator::Rkf78;
-  config.tolerance = tolerance;
+  config.tolerance = traits(method).published ? std::max(tolerance, kPublishedMethodToleranceFloor) : tolerance;
   const Eigen::Matrix2Xd target = ConstrainedModel::unstack(to);
   const Eigen::VectorXd x0 = spherePointFromHinges(chain, ConstrainedModel::unstack(from));
   const Eigen::VectorXd xT = spherePointFromHinges(chain, target);
@@ -62,11 +63,15 @@ std::optional<MethodConnection> shootWithMethod(const Chain& chain, Method metho
   xdot -= xdot.dot(x0) * x0;
 
   double previous = INFINITY;
+  int stalled = 0;  // iterations in a row that did not halve the error
   for (int iteration = 1; iteration <= 30; ++iteration) {
+    stopIfCancelled(cancelled);
     const auto end = endOf(chain, config, x0, xdot);
     if (!end) return std::nullopt;
     const double error = (end->hinges - target).cwiseAbs().maxCoeff();
-    if (error <= 1e-13 || (error <= 1e-12 && error >= previous * 0.5)) {
+    stalled = error >= previous * 0.5 ? stalled + 1 : 0;
+    const bool atFloor = stalled >= 2 && error <= kMethodShotEndBound;
+    if (error <= 1e-13 || (error <= 1e-12 && error >= previous * 0.5) || atFloor) {
       MethodConnection out;
       out.method = method;
       out.velocity = xdot;
@@ -75,6 +80,7 @@ std::optional<MethodConnection> shootWithMethod(const Chain& chain, Method metho
       out.newtonIterations = iteration;
       return out;
     }
+    if (stalled >= 2) return std::nullopt;  // stalled above the bound: it will not get there
     previous = error;
     // The end point's derivative along each tangent direction of the start velocity, by central differences
     // (step relative to the speed: the flow is smooth in xdot, so the O(h^2) error is far below the residual
@@ -83,6 +89,7 @@ std::optional<MethodConnection> shootWithMethod(const Chain& chain, Method metho
     const double h = 1e-6 * std::max(1.0, xdot.norm());
     Eigen::MatrixXd jacobian(k, k);
     for (Eigen::Index c = 0; c < k; ++c) {
+      stopIfCancelled(cancelled);
       const auto plus = endOf(chain, config, x0, xdot + h * startBasis.col(c));
       const auto minus = endOf(chain, config, x0, xdot - h * startBasis.col(c));
       if (!plus || !minus) return std::nullopt;

@@ -235,5 +235,22 @@ TEST(HostileOutputsCli, SearchesAnswerSigterm) {
   EXPECT_EQ(stopped.out, "");
 }
 
+// connect's third route (each motion shot again with a method) answers too: 16 of 18 motions, about ten seconds
+// of embedded-fd shots, are left when the first progress line is out (the event; route 3 ignored SIGTERM).
+TEST(HostileOutputsCli, ConnectsThirdRouteAnswersSigterm) {
+  TempFolder folder;
+  ChildProcess connect(linkageBinary(),
+                       {"connect", shippedScene("default.json"), "--to", R"({"coords": [-0.6, 2.2]})", "--max-length",
+                        "16", "--method", "embedded-fd"},
+                       folder.path());
+  while (connect.running() && connect.errSoFar().find("method shot") == std::string::npos)  // events only
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  connect.sendSignal(SIGTERM);
+  const ProcessResult stopped = connect.wait();
+  EXPECT_EQ(stopped.code, 130) << stopped.err;
+  EXPECT_NE(stopped.err.find("stopped by SIGTERM"), std::string::npos) << stopped.err;
+  EXPECT_EQ(stopped.out, "");
+}
+
 }  // namespace
 }  // namespace sl::testing

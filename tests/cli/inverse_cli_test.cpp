@@ -85,6 +85,26 @@ TEST(ConnectCli, ChartMethodsAsAThirdRoute) {
   EXPECT_NE(refused.err.find("4-rod"), std::string::npos) << refused.err;
 }
 
+// The published embedded-fd reaches every motion at its own noise floor (integrated at 1e-11, Newton stopping
+// when its error no longer halves): it spent 713 s in 30 futile iterations a motion and then printed "-" for each.
+// Its lengths agree with route 1 to its finite differences' accuracy, its end errors within kMethodShotEndBound.
+TEST(ConnectCli, ThePublishedEmbeddedFdReachesTheMotionsAtItsOwnFloor) {
+  TempFolder folder;
+  const ProcessResult result =
+      runLinkage({"connect", shippedScene("default.json"), "--to", R"({"coords": [-0.6, 2.2]})", "--max-length", "5",
+                  "--method", "embedded-fd", "--json"},
+                 folder.path());
+  ASSERT_EQ(result.code, 0) << result.err;
+  const nlohmann::json list = nlohmann::json::parse(result.out);
+  ASSERT_GE(list.size(), 2u);
+  for (const auto& c : list) {
+    const auto& m = c["methods"][0];
+    ASSERT_TRUE(m["length"].is_number()) << m.dump();
+    EXPECT_NEAR(m["length"].get<double>(), c["length"].get<double>(), 1e-6);
+    EXPECT_LE(m["end_error"].get<double>(), 1e-8);
+  }
+}
+
 TEST(PeriodicCli, ThreeSimpleClosedGeodesicsAsJson) {
   TempFolder folder;
   const ProcessResult result = runLinkage({"periodic", shippedScene("default.json"), "--json"}, folder.path());

@@ -113,6 +113,8 @@ std::string shellQuoted(const std::string& word) {
   return quoted + "'";
 }
 
+std::string ChildProcess::errSoFar() const { return readFile(logs_ / "err"); }
+
 bool catchesSignal(pid_t pid, int signal) {
   std::ifstream status("/proc/" + std::to_string(pid) + "/status");
   for (std::string line; std::getline(status, line);)

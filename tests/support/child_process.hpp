@@ -35,6 +35,8 @@ class ChildProcess {
   bool running();
   pid_t pid() const { return pid_; }
   void sendSignal(int signal);  // nothing once the child has been reaped
+  // What it has written to stderr so far (its progress lines: events to wait for).
+  std::string errSoFar() const;
   // Waits at most timeoutSeconds; on timeout the child is killed and timedOut is set.
   ProcessResult wait(double timeoutSeconds = kDefaultTimeoutSeconds);
 
