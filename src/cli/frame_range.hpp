@@ -18,6 +18,11 @@ struct FrameRange {
 // Throws CommandExit(kExitBadInput) naming the option, what was found and the allowed range.
 FrameRange parseFrameRange(const std::string& text, int frameCount);
 
+// The --time option: a half-open range A:B of scene seconds, the frames whose time t has A <= t < B ("A:" runs
+// through the last frame, ":B" starts at 0), optionally A:B:STEP frames apart as --frames. Throws
+// CommandExit(kExitBadInput) naming the option when it is not of that form, outside 0..duration, or holds no frame.
+FrameRange parseTimeRange(const std::string& text, double duration, int fps);
+
 // "--size WxH"; throws CommandExit(kExitBadInput) when it is not of that form.
 std::pair<int, int> parseImageSize(const std::string& text);
 

@@ -51,7 +51,7 @@ namespace fs = std::filesystem;
 
 struct RenderArguments {
   std::vector<std::string> overrides;  // --set KEY=VALUE
-  std::string scene, out, frames, video, size, videoQuality, gl;
+  std::string scene, out, frames, time, video, size, videoQuality, gl;
   bool png = false, noPng = false, quiet = false, resume = false, replace = false, preview = false;
   int threads = 0;  // --threads; 0: the cores this process may use
 };
@@ -132,7 +132,10 @@ RenderPlan planRender(const RenderArguments& args) {
       problems.push_back({"--video-quality", "found \"" + args.videoQuality + "\"; expected high, medium or small"});
     }
   }
-  plan.range = parseFrameRange(args.frames.empty() ? (args.preview ? "::2" : ":") : args.frames, scene.frameCount());
+  plan.range = !args.time.empty()
+                   ? parseTimeRange(args.time, scene.duration, scene.output.fps)
+                   : parseFrameRange(args.frames.empty() ? (args.preview ? "::2" : ":") : args.frames, scene.frameCount());
+  if (!args.time.empty() && args.preview && args.time.find(':') == args.time.rfind(':')) plan.range.step = 2;
   plan.folder = args.out.empty() ? renderFolderFor(scene, ownSize, ownFps, plan.range.step, args.preview) : args.out;
   for (SceneProblem& problem : checkOutputFolder(plan.folder, args.out.empty() ? "output.folder" : "--out")) {
     problems.push_back(problem);
@@ -532,6 +535,11 @@ void addRenderCommand(CLI::App& app) {
                       "half-open range A:B of frames to render (A: or :B allowed; A:B:STEP every STEP-th; K one frame), or K/N: shard K of N equal "
                       "parts (K = 1..N, as a job array numbers its tasks); shards of one animation give "
                       "byte-identical files");
+  command
+      ->add_option("--time", args->time,
+                   "the same in scene seconds: A:B renders the frames whose time t has A <= t < B (A: through the "
+                   "last frame, :B from 0; A:B:STEP every STEP-th), e.g. --time 2.5:4")
+      ->excludes("--frames");
   command->add_option("--video", args->video,
                       "also encode a video with ffmpeg, its format by the extension: .mp4 (H.264), .webm (VP9), "
                       ".gif (palette-optimised), e.g. renders/default.mp4");

@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include "cli/exit_codes.hpp"
+#include "cli/frame_range.hpp"
 #include "support/files.hpp"
 #include "support/linkage_binary.hpp"
 #include "support/scene_files.hpp"
@@ -179,6 +181,39 @@ TEST(EverydayCli, FramesWithAStepAndReplace) {
   EXPECT_FALSE(fs::exists(folder.path() / "r/frame_00005.png"));
   EXPECT_TRUE(fs::exists(folder.path() / "r/frame_00001.png"));
   EXPECT_EQ(render("comparison.json", {"--frames", "0:2", "--replace", "--resume"}).code, 2);
+}
+
+// --time A:B picks the frames whose time t has A <= t < B, as --frames picks numbers: at 30 fps 2.5:3 is frames
+// 75..89 (t = 2.5 .. 2.9667), "19.99:" the last one, A:B:STEP every STEP-th; the files are those of --frames.
+TEST(EverydayCli, TimeRangesInSeconds) {
+  const FrameRange half = parseTimeRange("2.5:3", 20, 30);
+  EXPECT_EQ(half.first, 75);
+  EXPECT_EQ(half.end, 90);
+  const FrameRange last = parseTimeRange("19.99:", 20, 30);
+  EXPECT_EQ(last.first, 600);
+  EXPECT_EQ(last.end, 601);
+  const FrameRange stepped = parseTimeRange(":1:10", 20, 30);
+  EXPECT_EQ(stepped.count(), 3);  // frames 0, 10, 20
+  const FrameRange whole = parseTimeRange(":", 20, 30);
+  EXPECT_EQ(whole.end, 601);
+  EXPECT_THROW(parseTimeRange("0.01:0.02", 20, 30), CommandExit);  // no frame at 30 fps in [0.01, 0.02)
+
+  TempFolder folder;
+  const ProcessResult byTime = runLinkage(
+      {"render", shippedScene("default.json"), "--size", "160x90", "--time", "2.5:3", "--out", "t"}, folder.path());
+  ASSERT_EQ(byTime.code, 0) << byTime.err;
+  const ProcessResult byNumber = runLinkage(
+      {"render", shippedScene("default.json"), "--size", "160x90", "--frames", "75:90", "--out", "f"}, folder.path());
+  ASSERT_EQ(byNumber.code, 0) << byNumber.err;
+  for (int frame = 74; frame <= 90; ++frame) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05d.png", frame);
+    const bool inRange = frame >= 75 && frame < 90;
+    EXPECT_EQ(fs::exists(folder.path() / "t" / name), inRange) << name;
+    if (inRange) {
+      EXPECT_EQ(readFile(folder.path() / "t" / name), readFile(folder.path() / "f" / name)) << name;
+    }
+  }
 }
 
 TEST(EverydayCli, UnsetAndAppendByJsonPath) {
