@@ -51,7 +51,8 @@ namespace fs = std::filesystem;
 
 struct RenderArguments {
   std::vector<std::string> overrides;  // --set KEY=VALUE
-  std::string scene, out, frames, time, video, size, videoQuality, gl;
+  std::string scene, out, frames, time, size, videoQuality, gl;
+  std::vector<std::string> videos;  // --video, repeatable
   bool png = false, noPng = false, quiet = false, resume = false, replace = false, preview = false;
   int threads = 0;  // --threads; 0: the cores this process may use
 };
@@ -62,7 +63,7 @@ struct RenderPlan {
   FrameRange range;
   std::string folder;
   bool png = true;
-  std::string video;
+  std::vector<std::string> videos;  // every one encoded from the same drawing of each frame
   bool quiet = false, resume = false;
   // Renderers drawing frames side by side, and PNG encoders: as many as the cores the process may use (at least
   // two encoders: they overlap with the drawing even on one core), no more renderers than frames. With
@@ -103,27 +104,35 @@ RenderPlan planRender(const RenderArguments& args) {
                                                                           : scene.output.fps;
   applySize(args, scene);
   plan.png = args.noPng ? false : (args.png || scene.output.png);
-  plan.video = args.video.empty() ? scene.output.video : args.video;
+  plan.videos = args.videos;
+  if (plan.videos.empty() && !scene.output.video.empty()) plan.videos.push_back(scene.output.video);
   plan.quiet = args.quiet;
   plan.resume = args.resume;
-  if (!plan.png && plan.video.empty()) {
+  if (!plan.png && plan.videos.empty()) {
     throw CommandExit(kExitBadInput,
                       "nothing to write: PNG frames are off (--no-png or output.png) and no video is asked for");
   }
-  if (plan.resume && !plan.video.empty()) {
+  if (plan.resume && !plan.videos.empty()) {
     throw CommandExit(kExitBadInput,
                       "--resume completes PNG frames; a video is always encoded whole (drop --video or --resume)");
   }
   if (plan.resume && args.replace)
     throw CommandExit(kExitBadInput, "--resume joins the render in the folder and --replace removes it: give one");
-  const std::string videoPath = args.video.empty() ? "output.video" : "--video";
-  const auto format = videoFormatOfPath(plan.video);
+  const std::string videoPath = args.videos.empty() ? "output.video" : "--video";
+  const bool needsEvenSize = std::any_of(plan.videos.begin(), plan.videos.end(), [](const std::string& video) {
+    const auto format = videoFormatOfPath(video);
+    return format && traits(*format).needsEvenSize;
+  });
   std::vector<SceneProblem> problems =
-      checkImageSize(scene.output.size, format && traits(*format).needsEvenSize, args.size.empty() ? "output" : "--size");
-  if (!plan.video.empty()) {
-    for (SceneProblem& problem : checkVideoPath(plan.video, videoPath)) problems.push_back(problem);
-    if (sameFile(plan.video, args.scene))
+      checkImageSize(scene.output.size, needsEvenSize, args.size.empty() ? "output" : "--size");
+  for (std::size_t i = 0; i < plan.videos.size(); ++i) {
+    const std::string& video = plan.videos[i];
+    for (SceneProblem& problem : checkVideoPath(video, videoPath)) problems.push_back(problem);
+    if (sameFile(video, args.scene))
       problems.push_back({videoPath, "is the scene file itself; an output never replaces an input"});
+    for (std::size_t j = 0; j < i; ++j)
+      if (fs::absolute(video).lexically_normal() == fs::absolute(plan.videos[j]).lexically_normal())
+        problems.push_back({videoPath, "names " + video + " twice; expected each video once"});
   }
   if (!args.videoQuality.empty()) {
     if (const auto quality = parseKind(kVideoQualities, args.videoQuality)) {
@@ -144,13 +153,13 @@ RenderPlan planRender(const RenderArguments& args) {
   const int cores = args.threads > 0 ? args.threads : static_cast<int>(defaultThreadCount());
   // A video encoder (x264) takes the cores itself: one renderer keeps up with it. PNG frames are encoded here,
   // by as many encoders as renderers.
-  const int renderers = plan.video.empty() ? std::min(cores, limits::kMaxRenderers) : 1;
+  const int renderers = plan.videos.empty() ? std::min(cores, limits::kMaxRenderers) : 1;
   plan.renderers = std::clamp(static_cast<int>(plan.range.count()), 1, renderers);
   plan.encoders = std::max(2, std::min(cores, limits::kMaxRenderers));
   // Renderers on threads of one process take turns at llvmpipe's shading (its lock is the process's): in processes
   // of their own they do not (docs/rendering.md, "Frames drawn by several processes"). PNG frames only: a video
   // takes its frames in order from one process.
-  plan.workerProcesses = plan.renderers > 1 && plan.video.empty() && plan.range.count() >= 2 * plan.renderers &&
+  plan.workerProcesses = plan.renderers > 1 && plan.videos.empty() && plan.range.count() >= 2 * plan.renderers &&
                          sceneWork(scene) / scene.frameCount() <= kMaxRepeatedWorkPerFrame;
   return plan;
 }
@@ -229,7 +238,7 @@ bool renderFrames(const RenderPlan& plan, const FrameRange& range, FrameManifest
 void sweepOutputFolders(const RenderPlan& plan) {
   std::vector<std::string> folders;
   if (plan.png) folders.push_back(plan.folder);
-  if (!plan.video.empty()) folders.push_back(videoFolder(plan.video));
+  for (const std::string& video : plan.videos) folders.push_back(videoFolder(video));
   for (const std::string& folder : folders) {
     const std::vector<std::string> removed = removeStaleTemporaries(folder);
     if (!removed.empty() && !plan.quiet)
@@ -244,7 +253,8 @@ std::string renderSummary(const RenderPlan& plan, int drawn, int skipped) {
                      std::to_string(plan.scene.output.size.width) + "x" +
                      std::to_string(plan.scene.output.size.height) + " -> ";
   if (plan.png) what += plan.folder + "/ (PNG + manifest.json)";
-  if (!plan.video.empty()) what += std::string(plan.png ? " and " : "") + plan.video;
+  for (std::size_t i = 0; i < plan.videos.size(); ++i)
+    what += std::string(plan.png || i > 0 ? " and " : "") + plan.videos[i];
   if (skipped > 0) what += ", " + std::to_string(skipped) + " already complete";
   return what;
 }
@@ -294,22 +304,22 @@ RenderCounts renderHere(const RenderPlan& plan, const nlohmann::json& info, bool
   checkSpaceForFrames(plan, renderers, builder);
 
   ImageRecycler buffers;  // before the sinks: they give buffers back until they are finished or destroyed
-  std::unique_ptr<FrameManifest> pngManifest, videoManifest;
+  std::unique_ptr<FrameManifest> pngManifest;
+  std::vector<std::unique_ptr<FrameManifest>> videoManifests;
   std::unique_ptr<PngSequenceSink> pngSink;
-  std::unique_ptr<VideoSink> videoSink;
+  std::vector<std::unique_ptr<VideoSink>> videoSinks;
   std::vector<FrameSink*> sinks;
-  // The encoder starts first: if it cannot, nothing of an earlier render has been replaced yet.
-  if (!plan.video.empty()) {
-    videoManifest = std::make_unique<FrameManifest>(videoFolder(plan.video), info,
-                                                    fs::path(plan.video).filename().string() + ".manifest.json",
-                                                    FrameManifest::Existing::replace, FrameManifest::Claim::join,
-                                                    nullptr, environment().lockWaitSeconds);
-    recordRenderer(*videoManifest, renderers);
-    VideoSettings settings{plan.video, *videoFormatOfPath(plan.video), scene.output.videoQuality,
+  // The encoders start first: if one cannot, nothing of an earlier render has been replaced yet.
+  for (const std::string& video : plan.videos) {
+    videoManifests.push_back(std::make_unique<FrameManifest>(
+        videoFolder(video), info, fs::path(video).filename().string() + ".manifest.json",
+        FrameManifest::Existing::replace, FrameManifest::Claim::join, nullptr, environment().lockWaitSeconds));
+    recordRenderer(*videoManifests.back(), renderers);
+    VideoSettings settings{video, *videoFormatOfPath(video), scene.output.videoQuality,
                            scene.output.size.width, scene.output.size.height, double(scene.output.fps)};
     settings.cancelled = interruptRequested;
     settings.maxStallSeconds = environment().encoderWaitSeconds;
-    videoSink = std::make_unique<VideoSink>(settings, *videoManifest);
+    videoSinks.push_back(std::make_unique<VideoSink>(settings, *videoManifests.back()));
   }
   if (plan.png) {
     pngManifest = openFrameManifest(plan, info, whole);
@@ -317,7 +327,7 @@ RenderCounts renderHere(const RenderPlan& plan, const nlohmann::json& info, bool
     pngSink = std::make_unique<PngSequenceSink>(plan.folder, *pngManifest, plan.encoders, scene.output.pngCompression);
     sinks.push_back(pngSink.get());
   }
-  if (videoSink) sinks.push_back(videoSink.get());
+  for (const auto& videoSink : videoSinks) sinks.push_back(videoSink.get());
   if (!sinks.empty()) sinks.back()->recycleInto(buffers);  // the last sink gets each frame's own buffer
 
   RenderCounts counts;
@@ -333,14 +343,15 @@ RenderCounts renderHere(const RenderPlan& plan, const nlohmann::json& info, bool
   }
   if (pngSink) pngSink->finish();  // every frame handed over is written whole, interrupted or not
   try {
-    if (videoSink && finished) videoSink->finish();
-  } catch (const EncodingCancelled&) {  // a signal while the encoder finished the video
+    if (finished)
+      for (const auto& videoSink : videoSinks) videoSink->finish();
+  } catch (const EncodingCancelled&) {  // a signal while an encoder finished its video
     finished = false;
   }
-  videoSink.reset();  // unfinished: reaps ffmpeg and removes its temporary, so the video never gets its name
+  videoSinks.clear();  // unfinished: reaps ffmpeg and removes its temporary, so the video never gets its name
   reportStops(scene, builder.runs(), plan.quiet);
   if (!finished) {
-    stopIfInterrupted(plan.video.empty()
+    stopIfInterrupted(plan.videos.empty()
                           ? "frames written so far are complete; rerun the same command with --resume to finish"
                           : "the unfinished video was discarded (an earlier video of that name is untouched); rerun to "
                             "encode it");
@@ -540,9 +551,12 @@ void addRenderCommand(CLI::App& app) {
                    "the same in scene seconds: A:B renders the frames whose time t has A <= t < B (A: through the "
                    "last frame, :B from 0; A:B:STEP every STEP-th), e.g. --time 2.5:4")
       ->excludes("--frames");
-  command->add_option("--video", args->video,
-                      "also encode a video with ffmpeg, its format by the extension: .mp4 (H.264), .webm (VP9), "
-                      ".gif (palette-optimised), e.g. renders/default.mp4");
+  command
+      ->add_option("--video", args->videos,
+                   "also encode a video with ffmpeg, its format by the extension: .mp4 (H.264), .webm (VP9), "
+                   ".gif (palette-optimised), e.g. renders/default.mp4; repeatable: every video from one drawing of "
+                   "each frame, e.g. --video talk.mp4 --video blog.gif")
+      ->allow_extra_args(false);
   command->add_option("--video-quality", args->videoQuality, "high, medium or small (default: output.video_quality, high)");
   command->add_flag("--png", args->png, "write PNG frames (the default unless the scene says output.png: false)");
   command->add_flag("--no-png", args->noPng, "no PNG frames (with --video: the video only)");

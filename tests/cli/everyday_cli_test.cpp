@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "cli/exit_codes.hpp"
 #include "cli/frame_range.hpp"
@@ -214,6 +215,38 @@ TEST(EverydayCli, TimeRangesInSeconds) {
       EXPECT_EQ(readFile(folder.path() / "t" / name), readFile(folder.path() / "f" / name)) << name;
     }
   }
+}
+
+// --video is repeatable: an mp4 and a gif from one drawing of each frame, each with its manifest, whose frames
+// carry the same pixel checksums as a render of one video; the same video named twice is refused before any work.
+TEST(EverydayCli, SeveralVideosFromOneDrawing) {
+  TempFolder folder;
+  const ProcessResult both =
+      runLinkage({"render", shippedScene("default.json"), "--size", "160x90", "--frames", "0:12", "--no-png", "--video",
+                  "v/talk.mp4", "--video", "v/blog.gif"},
+                 folder.path());
+  ASSERT_EQ(both.code, 0) << both.err;
+  EXPECT_NE(both.err.find("-> v/talk.mp4 and v/blog.gif"), std::string::npos) << both.err;
+  const ProcessResult one = runLinkage(
+      {"render", shippedScene("default.json"), "--size", "160x90", "--frames", "0:12", "--no-png", "--video", "one.mp4"},
+      folder.path());
+  ASSERT_EQ(one.code, 0) << one.err;
+  const auto framesOf = [&](const fs::path& manifest) {
+    return nlohmann::json::parse(readFile(folder.path() / manifest))["frames"];
+  };
+  const nlohmann::json reference = framesOf("one.mp4.manifest.json");
+  EXPECT_EQ(reference.size(), 12u);
+  EXPECT_EQ(framesOf("v/talk.mp4.manifest.json"), reference);
+  EXPECT_EQ(framesOf("v/blog.gif.manifest.json"), reference);
+  EXPECT_GT(fs::file_size(folder.path() / "v/talk.mp4"), 0u);
+  EXPECT_GT(fs::file_size(folder.path() / "v/blog.gif"), 0u);
+
+  const ProcessResult twice = runLinkage({"render", shippedScene("default.json"), "--no-png", "--video", "w/a.mp4",
+                                          "--video", "w/./a.mp4"},
+                                         folder.path());
+  EXPECT_EQ(twice.code, 2);
+  EXPECT_NE(twice.err.find("--video: names w/./a.mp4 twice"), std::string::npos) << twice.err;
+  EXPECT_FALSE(fs::exists(folder.path() / "w"));
 }
 
 TEST(EverydayCli, UnsetAndAppendByJsonPath) {
