@@ -18,10 +18,8 @@ install(FILES ${CMAKE_SOURCE_DIR}/scenes/README.md DESTINATION ${CMAKE_INSTALL_D
 install(FILES ${CMAKE_SOURCE_DIR}/bench/README.md DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/linkage/bench)
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/scripts/slurm/ DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/linkage/scripts/slurm)
 
-# The man page (made by src/cli/CMakeLists.txt each time linkage is linked, when help2man is found).
-if(SL_HELP2MAN)
-  install(FILES ${CMAKE_BINARY_DIR}/linkage.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
-endif()
+# The man page (made by src/cli/CMakeLists.txt each time linkage is linked: linkage --man).
+install(FILES ${CMAKE_BINARY_DIR}/linkage.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
 
 set(CPACK_PACKAGE_NAME linkage)
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})

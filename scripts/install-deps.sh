@@ -14,7 +14,7 @@ packages=(
   libgtest-dev libbenchmark-dev parallel gnuplot-nox    # tests, benchmarks, sharded renders, charts
   libpng-dev                                            # a second PNG decoder for the tests
   python3-jsonschema                                    # checks scenes/scene.schema.json in the tests
-  help2man                                              # the man page, made from the help texts
+  man-db                                                # the tests read the man page (man -l; groff lints it)
   clang libclang-rt-14-dev                              # fuzzing (libFuzzer) and sanitizer runtimes
 )
 

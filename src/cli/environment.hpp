@@ -24,6 +24,20 @@ struct Environment {
   std::string llvmpipeSwitches;
 };
 
+// The variables read, and what each does, in words (the man page's ENVIRONMENT).
+struct EnvironmentWords {
+  const char* name;
+  const char* meaning;
+};
+inline constexpr EnvironmentWords kEnvironmentWords[] = {
+    {"LINKAGE_GL", "the GL backend of commands that draw when --gl does not say (a name --gl takes)"},
+    {"LINKAGE_LOCK_WAIT", "seconds a render waits for a lock another process holds on its folder (unset: a minute)"},
+    {"LINKAGE_ENCODER_WAIT", "seconds the video encoder may read nothing before the render gives up (unset: a minute)"},
+    {"SL_SHADER_DIR", "a folder to read the shaders from instead of the built-in ones"},
+    {"GALLIUM_OVERRIDE_CPU_CAPS, GALLIUM_NOSSE, LP_NATIVE_VECTOR_WIDTH",
+     "llvmpipe's switches that change its code and so the pixels; recorded with the renderer in every manifest"},
+};
+
 // Read once, at the first call. Throws CommandExit (exit 2) naming the variable when a value is unusable.
 const Environment& environment();
 

@@ -41,12 +41,29 @@ inline ExitReport exitReportOf(const std::exception& error) {
   return {kExitFailure, std::string("linkage: ") + error.what()};
 }
 
+// What each exit status means, in words: the footer of `linkage --help` and the man page's EXIT STATUS.
+struct ExitStatusWords {
+  ExitCode code;
+  const char* meaning;
+};
+inline constexpr ExitStatusWords kExitStatusWords[] = {
+    {kExitOk, "ok"},
+    {kExitMismatch, "diff found differences beyond its tolerances"},
+    {kExitBadInput, "bad scene, options or input files; nothing was written"},
+    {kExitFailure, "the work failed (cannot write, ffmpeg failed, none of a search's results confirmed)"},
+    {kExitInterrupted, "interrupted by SIGINT or SIGTERM (rerun with --resume to finish PNG frames)"},
+};
+// Why a stopped run is not an error.
+inline constexpr const char* kStoppedRunWords =
+    "A run that stops (a method failing at a pole, say) is a result, not an error: it is reported and the frames "
+    "show where and why it stopped.";
+
 // The footer of `linkage --help`.
-inline const char* exitCodeHelp() {
-  return "Exit status: 0 ok; 1 diff found differences; 2 bad scene, options or input files (nothing written);\n"
-         "3 the work failed (cannot write, ffmpeg failed); 130 interrupted by SIGINT/SIGTERM (rerun with --resume).\n"
-         "A run that stops (a method failing at a pole, say) is a result, not an error: it is reported and the\n"
-         "frames show where and why it stopped.";
+inline std::string exitCodeHelp() {
+  std::string text = "Exit status:";
+  for (const ExitStatusWords& status : kExitStatusWords)
+    text += std::string(status.code == kExitOk ? " " : "; ") + std::to_string(status.code) + " " + status.meaning;
+  return text + ".\n" + kStoppedRunWords;
 }
 
 }  // namespace sl

@@ -31,4 +31,12 @@ std::string HelpFormatter::make_option_desc(const CLI::Option* option) const {
   return description;
 }
 
+std::string HelpFormatter::make_expanded(const CLI::App* command) const {
+  std::string text = CLI::Formatter::make_expanded(command);
+  if (command->get_footer().empty()) return text;
+  std::string footer = "\n" + command->get_footer();
+  for (std::size_t at = 0; (at = footer.find('\n', at)) != std::string::npos; at += 3) footer.replace(at, 1, "\n  ");
+  return text.substr(0, text.size() - 1) + footer + "\n\n";
+}
+
 }  // namespace sl

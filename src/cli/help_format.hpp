@@ -11,6 +11,8 @@ class HelpFormatter : public CLI::Formatter {
   std::string make_option_name(const CLI::Option* option, bool positional) const override;
   std::string make_option_opts(const CLI::Option* option) const override;
   std::string make_option_desc(const CLI::Option* option) const override;
+  // --help-all: each command with its footer (its notes and examples), which CLI11 leaves out.
+  std::string make_expanded(const CLI::App* command) const override;
 };
 
 }  // namespace sl

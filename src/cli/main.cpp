@@ -12,6 +12,7 @@
 #include "cli/exit_codes.hpp"
 #include "cli/gl_choice.hpp"
 #include "cli/help_format.hpp"
+#include "cli/man_page.hpp"
 #include "cli/typo_hints.hpp"
 #include "render/gl_backend.hpp"
 #include "render/renderer.hpp"
@@ -75,7 +76,9 @@ int runCommand(int argc, char** argv) {
   app.formatter(std::make_shared<sl::HelpFormatter>());  // subcommands inherit it
   bool version = false;
   app.add_flag("--version", version, "print the version, commit, compiler and GL renderer, then exit");
-  app.set_help_all_flag("--help-all", "print the help of every command (the man page is made from it)");
+  app.set_help_all_flag("--help-all", "print the help of every command");
+  bool man = false;
+  app.add_flag("--man", man, "print the man page (roff): linkage --man | man -l -")->group("");
   app.require_subcommand(0, 1);
   app.footer(std::string("Examples:\n  linkage validate scenes/default.json\n  linkage render scenes/default.json\n"
                          "  linkage render scenes/comparison.json --frames 0:100 --size 640x360\n"
@@ -89,6 +92,10 @@ int runCommand(int argc, char** argv) {
     app.parse(argc, argv);
     if (version) {
       printVersion();
+      return sl::kExitOk;
+    }
+    if (man) {
+      std::cout << sl::manPage(app, SL_VERSION);
       return sl::kExitOk;
     }
     if (app.get_subcommands().empty()) {

@@ -249,6 +249,27 @@ TEST(EverydayCli, SeveralVideosFromOneDrawing) {
   EXPECT_FALSE(fs::exists(folder.path() / "w"));
 }
 
+// --help-all shows every command's notes and examples, as its own --help does (CLI11 left the footers out).
+TEST(EverydayCli, HelpAllShowsEveryCommandsExamples) {
+  TempFolder folder;
+  const ProcessResult all = runLinkage({"--help-all"}, folder.path());
+  ASSERT_EQ(all.code, 0) << all.err;
+  int commands = 0;
+  for (const char* command : {"render", "still", "contact-sheet", "simulate", "validate", "diff", "numbers", "connect",
+                              "periodic", "geometry", "stability", "bench"}) {
+    const ProcessResult own = runLinkage({command, "--help"}, folder.path());
+    ASSERT_EQ(own.code, 0) << command;
+    const std::size_t examples = own.out.find("Example");
+    if (examples == std::string::npos) continue;
+    ++commands;
+    const std::size_t line = own.out.find("linkage ", examples);
+    ASSERT_NE(line, std::string::npos) << command;
+    const std::string example = own.out.substr(line, own.out.find('\n', line) - line);
+    EXPECT_NE(all.out.find(example), std::string::npos) << command << ": " << example;
+  }
+  EXPECT_GE(commands, 10);
+}
+
 TEST(EverydayCli, UnsetAndAppendByJsonPath) {
   TempFolder folder;
   const std::string seam = shippedScene("seam.json");  // runs[0]: christoffel, dopri5, tolerance 1e-10

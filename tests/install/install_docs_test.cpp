@@ -35,7 +35,7 @@ TEST(InstallDocs, ReadmeLinksResolveAndTheManPageIsInstalled) {
   EXPECT_GT(links, 10);
 
   const fs::path man = prefix / "share" / "man" / "man1" / "linkage.1";
-  ASSERT_TRUE(fs::exists(man)) << "no man page: is help2man installed (scripts/install-deps.sh)?";
+  ASSERT_TRUE(fs::exists(man)) << "no man page (linkage --man, written when linkage is linked)";
   const std::string page = readFile(man);
   EXPECT_NE(page.find(".TH LINKAGE \"1\""), std::string::npos) << page.substr(0, 400);
   for (const char* command : {"render", "still", "contact\\-sheet", "diff", "numbers", "validate"})  // roff escapes -
@@ -43,6 +43,18 @@ TEST(InstallDocs, ReadmeLinksResolveAndTheManPageIsInstalled) {
   EXPECT_NE(page.find("\\-\\-pixel\\-tol"), std::string::npos);  // subcommands' options too
   const ProcessResult shown = runShell("man -l " + shellQuoted(man.string()) + " > /dev/null", temp.path());
   EXPECT_EQ(shown.code, 0) << shown.err;
+  // A man page's sections, each command under COMMANDS with its examples, and roff that groff reads without a
+  // warning (help2man listed the commands as options and ran the examples together into one paragraph).
+  for (const char* section : {".SH NAME", ".SH SYNOPSIS", ".SH COMMANDS", ".SH EXIT STATUS", ".SH ENVIRONMENT",
+                              ".SH FILES", ".SH EXAMPLES", ".SS \"linkage render\"", ".SS \"linkage connect\"",
+                              "LINKAGE_LOCK_WAIT", ".B 130"})
+    EXPECT_NE(page.find(section), std::string::npos) << section;
+  EXPECT_NE(page.find(".nf\n  linkage render scenes/default.json\n  linkage render scenes/comparison.json"),
+            std::string::npos)
+      << "render's examples as literal lines";
+  const ProcessResult lint = runShell("groff -man -ww -z " + shellQuoted(man.string()), temp.path());
+  EXPECT_EQ(lint.code, 0) << lint.err;
+  EXPECT_EQ(lint.err, "") << "groff warns of the man page";
 }
 
 }  // namespace
