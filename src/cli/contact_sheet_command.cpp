@@ -35,7 +35,7 @@ namespace {
 struct SheetArguments {
   std::string folder, out;
   int count = 12, columns = 4, tileWidth = 320;
-  bool quiet = false;
+  bool quiet = false, noClobber = false;
 };
 
 std::string readWholeFile(const std::string& path) {
@@ -65,7 +65,12 @@ void drawLabel(Image& sheet, int x, int y, const std::string& text) {
   }
 }
 
-void runContactSheet(const SheetArguments& args) {
+void runContactSheet(SheetArguments args) {
+  if (args.out.empty()) {  // renders/default/ -> renders/default-sheet.png
+    std::string folder = args.folder;
+    while (folder.size() > 1 && folder.back() == '/') folder.pop_back();
+    args.out = (folder == "." || folder == "/" ? std::string("contact") : folder) + "-sheet.png";
+  }
   const CommandSummary summary("contact-sheet", args.quiet);
   // The manifest through the one validated reader (as --resume and diff read it): entries well formed, frame numbers
   // in range, file names inside the folder.
@@ -93,6 +98,7 @@ void runContactSheet(const SheetArguments& args) {
   if (frames.empty()) throw CommandExit(kExitBadInput, path + ": lists no PNG frames");
   if (args.out.size() < 5 || args.out.substr(args.out.size() - 4) != ".png")
     throw CommandExit(kExitBadInput, "--out: found \"" + args.out + "\"; expected a file name ending in .png");
+  if (args.noClobber) refuseExistingOutputs("contact-sheet", {{"--out", args.out}});
   requireOutputsBeforeWork("contact-sheet", inputs, {{"--out", args.out}});
 
   const int count = std::min<int>(args.count, int(frames.size()));
@@ -163,7 +169,8 @@ void addContactSheetCommand(CLI::App& app) {
   CLI::App* command =
       app.add_subcommand("contact-sheet", "Evenly spaced frames of a render in one picture, with their times");
   command->add_option("folder", args->folder, "a render folder (frames and manifest.json)")->required();
-  command->add_option("--out", args->out, "the PNG file to write")->required();
+  command->add_option("--out", args->out, "the PNG file to write; default: FOLDER-sheet.png beside the folder");
+  addNoClobberFlag(*command, args->noClobber);
   command->add_option("--count", args->count, "how many frames (the first and the last included)")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();

@@ -53,7 +53,7 @@ struct RenderArguments {
   std::vector<std::string> overrides;  // --set KEY=VALUE
   std::string scene, out, frames, time, size, videoQuality, gl;
   std::vector<std::string> videos;  // --video, repeatable
-  bool png = false, noPng = false, quiet = false, resume = false, replace = false, preview = false;
+  bool png = false, noPng = false, quiet = false, resume = false, replace = false, preview = false, noClobber = false;
   int threads = 0;  // --threads; 0: the cores this process may use
 };
 
@@ -150,6 +150,12 @@ RenderPlan planRender(const RenderArguments& args) {
     problems.push_back(problem);
   }
   failOnProblems(args.scene, problems);
+  if (args.noClobber) {  // a render the folder holds (its manifest), or a video of that name
+    std::vector<NamedFile> outputs;
+    if (plan.png) outputs.push_back({args.out.empty() ? "output.folder" : "--out", plan.folder + "/manifest.json"});
+    for (const std::string& video : plan.videos) outputs.push_back({videoPath, video});
+    refuseExistingOutputs("render", outputs);
+  }
   const int cores = args.threads > 0 ? args.threads : static_cast<int>(defaultThreadCount());
   // A video encoder (x264) takes the cores itself: one renderer keeps up with it. PNG frames are encoded here,
   // by as many encoders as renderers.
@@ -573,6 +579,7 @@ void addRenderCommand(CLI::App& app) {
       ->check(CLI::Range(1, 1024));
   addGlOption(*command, args->gl);
   command->add_flag("--quiet", args->quiet, "errors only: no progress, run reports or summary line");
+  addNoClobberFlag(*command, args->noClobber);
   command->add_flag("--resume", args->resume, "skip frames whose file and manifest entry are complete (PNG only)");
   command->add_flag("--replace", args->replace,
                     "with --frames: remove the render the folder holds first, as a whole render does (for golden "

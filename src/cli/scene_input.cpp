@@ -168,4 +168,15 @@ void requireOutputsBeforeWork(const std::string& command, const std::vector<Name
       std::filesystem::create_directories(parent);
 }
 
+void addNoClobberFlag(CLI::App& command, bool& noClobber) {
+  command.add_flag("--no-clobber", noClobber, "never replace a file: an output that exists already is refused (exit 2)");
+}
+
+void refuseExistingOutputs(const std::string& command, const std::vector<NamedFile>& outputs) {
+  for (const NamedFile& output : outputs)
+    if (!output.path.empty() && std::filesystem::exists(output.path))
+      throw CommandExit(kExitBadInput, "linkage " + command + ": " + output.role + ": " + output.path +
+                                           " exists, and --no-clobber never replaces a file");
+}
+
 }  // namespace sl

@@ -37,6 +37,11 @@ void failOnProblems(const std::string& file, const std::vector<SceneProblem>& pr
 void requireOutputsBeforeWork(const std::string& command, const std::vector<NamedFile>& inputs,
                               const std::vector<NamedFile>& outputs);
 
+// --no-clobber, the one flag and rule of the commands that write files: an output that exists already ends the
+// command with exit 2 naming it, before any work.
+void addNoClobberFlag(CLI::App& command, bool& noClobber);
+void refuseExistingOutputs(const std::string& command, const std::vector<NamedFile>& outputs);
+
 // Each run's start as an InitialState (the scene's "initial", or the run's own, on the run's own linkage), and
 // one Trajectory per run from it. A start or run the simulation refuses is a problem of the scene:
 // CommandExit(kExitBadInput) naming the file and the JSON path ("initial" or "runs[i].initial", "runs[i]").

@@ -22,6 +22,7 @@
 #include "cli/number_options.hpp"
 #include "cli/scene_input.hpp"
 #include "cli/summary.hpp"
+#include "contracts/csv_format.hpp"
 #include "contracts/time_grid.hpp"
 #include "frames/frame_builder.hpp"
 #include "output/atomic_file.hpp"
@@ -37,8 +38,15 @@ struct StillArguments {
   std::string scene, out, size, gl;
   std::vector<std::string> overrides;
   double time = 0;
-  bool transparent = false, quiet = false;
+  bool transparent = false, quiet = false, noClobber = false;
 };
+
+// Without --out: beside the scene's render folder, named by the time (and the size when --size gives one):
+// renders/default-t10.png, renders/default-t10-1920x1080.png.
+std::string defaultStillPath(const Scene& scene, const StillArguments& args) {
+  return scene.output.folder + "-t" + shortest(args.time) + (args.size.empty() ? "" : "-" + args.size) +
+         (args.transparent ? "-transparent" : "") + ".png";
+}
 
 // The smallest multiple m of the scene's frame rate (m <= 1000) at which `time` is a frame time; 0 if none.
 int frameRateMultiple(double time, int fps) {
@@ -70,11 +78,13 @@ void appendBytes(void* context, void* data, int size) {
   bytes->insert(bytes->end(), static_cast<std::uint8_t*>(data), static_cast<std::uint8_t*>(data) + size);
 }
 
-void runStill(const StillArguments& args) {
+void runStill(StillArguments args) {
   installInterruptHandlers();
   const CommandSummary summary("still", args.quiet);
-  requireOutputsBeforeWork("still", {{"the scene", args.scene}}, {{"--out", args.out}});
   Scene scene = loadSceneForCommand(args.scene, args.overrides);
+  if (args.out.empty()) args.out = defaultStillPath(scene, args);
+  if (args.noClobber) refuseExistingOutputs("still", {{"--out", args.out}});
+  requireOutputsBeforeWork("still", {{"the scene", args.scene}}, {{"--out", args.out}});
   if (!args.size.empty()) {
     const auto [width, height] = parseImageSize(args.size);
     scene.output.size = {width, height};
@@ -143,7 +153,10 @@ void addStillCommand(CLI::App& app) {
   command->add_option("--time", args->time, "the time shown, from 0 to the scene's duration")
       ->required()
       ->check(finiteNonNegative());
-  command->add_option("--out", args->out, "the PNG file to write (written whole or not at all)")->required();
+  command->add_option("--out", args->out,
+                      "the PNG file to write (written whole or not at all); default: beside the scene's render "
+                      "folder, named by the time, e.g. renders/default-t10.png");
+  addNoClobberFlag(*command, args->noClobber);
   command->add_option("--size", args->size, "override the frame size, WIDTHxHEIGHT, e.g. 1920x1080");
   command->add_flag("--transparent", args->transparent,
                     "a transparent background (RGBA PNG, for compositing): drawn on black and on white and unblended");

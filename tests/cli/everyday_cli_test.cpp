@@ -270,6 +270,37 @@ TEST(EverydayCli, HelpAllShowsEveryCommandsExamples) {
   EXPECT_GE(commands, 10);
 }
 
+// still and contact-sheet name their output when --out is not given (beside the render folder); --no-clobber
+// refuses an output that exists, before any work, and leaves it as it was (still, contact-sheet and render).
+TEST(EverydayCli, DefaultOutputNamesAndNoClobber) {
+  TempFolder folder;
+  const ProcessResult still =
+      runLinkage({"still", shippedScene("default.json"), "--time", "1.5", "--size", "160x90"}, folder.path());
+  ASSERT_EQ(still.code, 0) << still.err;
+  const fs::path stillPath = folder.path() / "renders" / "default-t1.5-160x90.png";
+  ASSERT_TRUE(fs::exists(stillPath)) << still.err;
+  const std::string before = readFile(stillPath);
+  const ProcessResult again = runLinkage(
+      {"still", shippedScene("default.json"), "--time", "1.5", "--size", "160x90", "--transparent", "--no-clobber",
+       "--out", "renders/default-t1.5-160x90.png"},
+      folder.path());
+  EXPECT_EQ(again.code, 2);
+  EXPECT_NE(again.err.find("exists, and --no-clobber never replaces a file"), std::string::npos) << again.err;
+  EXPECT_EQ(readFile(stillPath), before);
+
+  ASSERT_EQ(runLinkage({"render", shippedScene("default.json"), "--size", "160x90", "--frames", "0:3", "--out", "r"},
+                       folder.path()).code, 0);
+  const ProcessResult sheet = runLinkage({"contact-sheet", "r/", "--count", "3"}, folder.path());
+  ASSERT_EQ(sheet.code, 0) << sheet.err;
+  EXPECT_TRUE(fs::exists(folder.path() / "r-sheet.png"));
+  EXPECT_EQ(runLinkage({"contact-sheet", "r", "--no-clobber"}, folder.path()).code, 2);
+  const ProcessResult render = runLinkage(
+      {"render", shippedScene("default.json"), "--size", "160x90", "--frames", "0:3", "--out", "r", "--no-clobber"},
+      folder.path());
+  EXPECT_EQ(render.code, 2);
+  EXPECT_NE(render.err.find("r/manifest.json exists"), std::string::npos) << render.err;
+}
+
 TEST(EverydayCli, UnsetAndAppendByJsonPath) {
   TempFolder folder;
   const std::string seam = shippedScene("seam.json");  // runs[0]: christoffel, dopri5, tolerance 1e-10
