@@ -108,8 +108,10 @@ int runCommand(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& help) {
     return app.exit(help);
   } catch (const CLI::ParseError& error) {
-    app.exit(error);  // prints the message
+    // The program's own words first ("did you mean"), then the parser's (which may call a mistyped option's value,
+    // or the scene after it, "not expected").
     std::cerr << sl::typoHints(app, argc, argv);
+    app.exit(error);  // prints the message
     return sl::kExitBadInput;
   } catch (const std::exception& error) {
     const sl::ExitReport report = sl::exitReportOf(error);

@@ -46,7 +46,17 @@ std::string typoHints(const CLI::App& app, int argc, const char* const* argv) {
     word = word.substr(0, word.find('='));
     const std::vector<std::string> known = longOptions(command ? *command : app);
     if (std::find(known.begin(), known.end(), word) != known.end()) continue;
-    const std::string close = closestName(word, known);
+    // An abbreviation ("--t": --time or --transparent) first, then the closest name by spelling.
+    std::vector<std::string> longer;
+    for (const std::string& name : known)
+      if (name.rfind(word, 0) == 0) longer.push_back(name);
+    std::string close;
+    if (!longer.empty() && longer.size() <= 3) {
+      for (std::size_t k = 0; k < longer.size(); ++k)
+        close += (k == 0 ? "" : k + 1 == longer.size() ? "\" or \"" : "\", \"") + longer[k];
+    } else {
+      close = closestName(word, known);
+    }
     if (!close.empty())
       hints += "linkage: " + (command ? command->get_name() + ": " : std::string()) + "\"" + word +
                "\" is no option; did you mean \"" + close + "\"?\n";

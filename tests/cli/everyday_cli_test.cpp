@@ -133,6 +133,13 @@ TEST(EverydayCli, DidYouMeanForCommandsAndOptions) {
   const ProcessResult far = runLinkage({"validate", shippedScene("seam.json"), "--zzzzzzzz"}, folder.path());
   EXPECT_EQ(far.code, 2);
   EXPECT_EQ(far.err.find("did you mean"), std::string::npos) << far.err;
+  // An abbreviation is answered with the options it begins, and the program's words come before the parser's.
+  const ProcessResult shortened = runLinkage({"still", shippedScene("seam.json"), "--t", "7"}, folder.path());
+  EXPECT_EQ(shortened.code, 2);
+  const std::size_t hint = shortened.err.find("still: \"--t\" is no option; did you mean \"--time\" or \"--transparent\"?");
+  ASSERT_NE(hint, std::string::npos) << shortened.err;
+  EXPECT_LT(hint, shortened.err.find("--time is required")) << shortened.err;
+  EXPECT_LT(option.err.find("did you mean"), option.err.find("not expected")) << option.err;
 }
 
 TEST(EverydayCli, ListMethodsMarksTheDefaultsAndSaysWhatEachIs) {
