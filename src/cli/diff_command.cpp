@@ -105,6 +105,27 @@ bool diffFolders(const DiffArguments& args, std::string& summary) {
   if (drawnBefore.renderers != drawnAfter.renderers && !args.quiet)
     std::cerr << "linkage diff: warning: the two renders name different GL renderers (or CPUs), so their pixels may "
                  "differ slightly; compare them with --pixel-tol LEVELS --max-differing PERCENT\n";
+  // The scene texts first: frames that differ because the scene did are not a regression of the program.
+  if (!drawnBefore.sceneSha256.empty() && !drawnAfter.sceneSha256.empty()) {
+    if (drawnBefore.sceneSha256 == drawnAfter.sceneSha256)
+      std::cout << "scene: the same scene text (sceneSha256 " << drawnBefore.sceneSha256.substr(0, 12) << "...)\n";
+    else
+      std::cout << "scene: different scene texts (sceneSha256 " << drawnBefore.sceneSha256.substr(0, 12) << "... in "
+                << args.before << ", " << drawnAfter.sceneSha256.substr(0, 12) << "... in " << args.after
+                << "): the scene or its --set overrides changed\n";
+  }
+  // Diff images of an earlier comparison would read as this one's: they go first.
+  if (!args.imageFolder.empty() && fs::is_directory(args.imageFolder)) {
+    int removed = 0;
+    for (const auto& entry : fs::directory_iterator(args.imageFolder)) {
+      const std::string name = entry.path().filename().string();
+      if (entry.is_regular_file() && name.rfind(kDiffImagePrefix, 0) == 0 && entry.path().extension() == ".png")
+        removed += fs::remove(entry.path()) ? 1 : 0;
+    }
+    if (removed > 0 && !args.quiet)
+      std::cerr << "linkage diff: removed " << removed << " diff image(s) of an earlier diff from " << args.imageFolder
+                << "\n";
+  }
   const FolderDifference byHash = compareFolders(before, after);
   const bool tolerant = args.pixels.levels > 0 || args.pixels.maxDifferingPercent > 0;
   const bool decode = args.images || tolerant || !args.imageFolder.empty();

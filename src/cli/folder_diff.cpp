@@ -48,7 +48,9 @@ DrawnBy readDrawnBy(const std::string& folder) {
   const std::string path = folder + "/manifest.json";
   if (!std::filesystem::exists(path)) throw std::invalid_argument(path + ": cannot read (is " + folder + " a render folder?)");
   ManifestContents contents = readManifestFile(path);
-  return {std::move(contents.renderers), std::move(contents.backends)};
+  const auto scene = contents.info.find("sceneSha256");
+  return {std::move(contents.renderers), std::move(contents.backends),
+          scene != contents.info.end() && scene->is_string() ? scene->get<std::string>() : std::string()};
 }
 
 namespace {
@@ -131,7 +133,7 @@ PixelDifference comparePixels(const std::string& before, const std::string& afte
   std::string path;
   if (!imageFolder.empty()) {
     std::filesystem::create_directories(imageFolder);
-    path = imageFolder + "/diff_" + name;
+    path = imageFolder + "/" + kDiffImagePrefix + name;
     writeFileAtomically(path, PngEncoder().encode(diff));
   }
   return {differing / double(size_t(a.width) * a.height), largest, path, ""};

@@ -38,10 +38,15 @@ std::pair<std::map<int, std::string>, std::map<int, std::string>> comparableHash
 // its order; empty where it names none (backends: manifests before 0.5).
 struct DrawnBy {
   std::vector<std::string> renderers, backends;
+  std::string sceneSha256;  // and from which scene text (with its --set overrides), empty if not recorded
 };
 DrawnBy readDrawnBy(const std::string& folder);
 
 FolderDifference compareFolders(const std::map<int, std::string>& before, const std::map<int, std::string>& after);
+
+// A diff image is named after its frame's file with this prefix (diff_frame_00012.png); `diff` removes the ones an
+// earlier comparison left in its --image-dir.
+inline constexpr const char* kDiffImagePrefix = "diff_";
 
 struct PixelTolerance {
   int levels = 0;               // a pixel differs only when a channel differs by more than this (0..255)

@@ -82,6 +82,16 @@ TEST(DiffCli, RenderFolders) {
   EXPECT_NE(other.out.find("4 frames vs 4; 4 differ; first differing frame 0"), std::string::npos) << other.out;
   EXPECT_NE(other.out.find("% of pixels differ"), std::string::npos);
   EXPECT_TRUE(fs::exists(folder.path() / "pictures" / "diff_frame_00000.png"));
+  // The scene texts named: the same for a and b, different for a and c.
+  EXPECT_NE(same.out.find("scene: the same scene text"), std::string::npos) << same.out;
+  EXPECT_NE(other.out.find("scene: different scene texts"), std::string::npos) << other.out;
+  // A passing comparison into the same image folder leaves no diff image of the earlier one (other files stay).
+  writeFile(folder.path() / "pictures" / "notes.txt", "mine");
+  const ProcessResult again = runLinkage({"diff", "a", "b", "--image-dir", "pictures"}, folder.path());
+  EXPECT_EQ(again.code, 0) << again.err;
+  EXPECT_NE(again.err.find("removed 4 diff image(s) of an earlier diff"), std::string::npos) << again.err;
+  EXPECT_FALSE(fs::exists(folder.path() / "pictures" / "diff_frame_00000.png"));
+  EXPECT_TRUE(fs::exists(folder.path() / "pictures" / "notes.txt"));
   ASSERT_EQ(render("seam.json", "d", "0:3").code, 0);
   const ProcessResult fewer = runLinkage({"diff", "a", "d"}, folder.path());
   EXPECT_EQ(fewer.code, 1);
