@@ -145,7 +145,8 @@ RenderPlan planRender(const RenderArguments& args) {
                    ? parseTimeRange(args.time, scene.duration, scene.output.fps)
                    : parseFrameRange(args.frames.empty() ? (args.preview ? "::2" : ":") : args.frames, scene.frameCount());
   if (!args.time.empty() && args.preview && args.time.find(':') == args.time.rfind(':')) plan.range.step = 2;
-  plan.folder = args.out.empty() ? renderFolderFor(scene, ownSize, ownFps, plan.range.step, args.preview) : args.out;
+  plan.folder = args.out.empty() ? renderFolderFor(scene, ownSize, ownFps, plan.range.step, args.preview, args.overrides)
+                               : args.out;
   for (SceneProblem& problem : checkOutputFolder(plan.folder, args.out.empty() ? "output.folder" : "--out")) {
     problems.push_back(problem);
   }

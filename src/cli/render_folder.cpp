@@ -1,14 +1,43 @@
 #include "cli/render_folder.hpp"
 
+#include <cctype>
 #include <filesystem>
 
 #include "cli/exit_codes.hpp"
 #include "output/frame_manifest.hpp"
+#include "output/sha256.hpp"
+#include "scene/scene_overrides.hpp"
 
 namespace sl {
 
-std::string renderFolderFor(const Scene& scene, ImageSize ownSize, int ownFps, int step, bool preview) {
-  std::string folder = scene.output.folder;
+namespace {
+
+// "-linkage.L=3.2,duration=5" for the overrides that change the picture (not the output's own settings, which
+// have their suffixes below); characters a file name should not hold become '_'; a hash when it grows long.
+std::string overridesSuffix(const std::vector<std::string>& overrides) {
+  std::string text;
+  for (std::string override : overrides) {
+    if (override.rfind(kUnsetPrefix, 0) == 0) override = "unset-" + override.substr(std::string(kUnsetPrefix).size());
+    const std::string key = override.substr(0, override.find('='));
+    if (key.rfind("output", 0) == 0 || key.rfind("unset-output", 0) == 0) continue;
+    for (char& c : override)
+      if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '=' || c == '-' || c == '_' || c == '[' ||
+            c == ']'))
+        c = '_';
+    text += (text.empty() ? "" : ",") + override;
+  }
+  if (text.empty()) return "";
+  constexpr std::size_t kReadableLength = 48;
+  if (text.size() > kReadableLength)
+    text = "set-" + sha256Hex(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()).substr(0, 12);
+  return "-" + text;
+}
+
+}  // namespace
+
+std::string renderFolderFor(const Scene& scene, ImageSize ownSize, int ownFps, int step, bool preview,
+                            const std::vector<std::string>& overrides) {
+  std::string folder = scene.output.folder + overridesSuffix(overrides);
   if (preview) return folder + "-preview";
   const ImageSize size = scene.output.size;
   if (size.width != ownSize.width || size.height != ownSize.height)

@@ -8,6 +8,7 @@
 // what differs, before anything is written.
 
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -16,8 +17,11 @@
 namespace sl {
 
 // The folder for a render of `scene` (its settings as the command line left them) whose scene file says
-// `ownSize` and `ownFps`, rendering every `step`-th frame.
-std::string renderFolderFor(const Scene& scene, ImageSize ownSize, int ownFps, int step, bool preview);
+// `ownSize` and `ownFps`, rendering every `step`-th frame. `overrides` (the --set and --unset texts): those
+// outside `output` change the picture, so the render gets a folder of its own named by them,
+// renders/<name>-linkage.L=3.2 (a hash of them when long), and never replaces the scene's own render.
+std::string renderFolderFor(const Scene& scene, ImageSize ownSize, int ownFps, int step, bool preview,
+                            const std::vector<std::string>& overrides = {});
 
 // The preview size: a quarter of each side, even (videos need it), at least 16.
 ImageSize previewSize(ImageSize size);

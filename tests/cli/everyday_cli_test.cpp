@@ -308,6 +308,26 @@ TEST(EverydayCli, DefaultOutputNamesAndNoClobber) {
   EXPECT_NE(render.err.find("r/manifest.json exists"), std::string::npos) << render.err;
 }
 
+// A render whose scene --set changed in anything but its output goes to a folder of its own, named by the change,
+// and never replaces the scene's own render; the output's own settings keep their suffixes.
+TEST(EverydayCli, RendersOfAChangedSceneGetAFolderOfTheirOwn) {
+  TempFolder folder;
+  const auto render = [&](const std::vector<std::string>& extra) {
+    std::vector<std::string> args = {"render", shippedScene("default.json"), "--frames", "0:2", "--quiet"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return runLinkage(args, folder.path());
+  };
+  ASSERT_EQ(render({"--size", "160x90"}).code, 0);
+  ASSERT_EQ(render({"--size", "160x90", "--set", "linkage.L=3.2"}).code, 0);
+  ASSERT_EQ(render({"--size", "160x90", "--set", "linkage.L=3.2", "--set", "output.fps=10"}).code, 0);
+  EXPECT_TRUE(fs::exists(folder.path() / "renders/default-160x90/manifest.json"));
+  EXPECT_TRUE(fs::exists(folder.path() / "renders/default-linkage.L=3.2-160x90/manifest.json"));
+  EXPECT_TRUE(fs::exists(folder.path() / "renders/default-linkage.L=3.2-160x90-10fps/manifest.json"));
+  const std::string own = readFile(folder.path() / "renders/default-160x90/manifest.json");
+  const std::string changed = readFile(folder.path() / "renders/default-linkage.L=3.2-160x90/manifest.json");
+  EXPECT_NE(own, changed);
+}
+
 TEST(EverydayCli, UnsetAndAppendByJsonPath) {
   TempFolder folder;
   const std::string seam = shippedScene("seam.json");  // runs[0]: christoffel, dopri5, tolerance 1e-10
