@@ -10,16 +10,22 @@ namespace sl {
 
 namespace {
 
-// Text as roff reads it: backslashes and hyphens escaped, a leading dot or quote kept from reading as a request.
-std::string roff(const std::string& text) {
+// Words as roff reads them inside a line: backslashes and hyphens escaped.
+std::string roffWords(const std::string& text) {
   std::string out;
   for (char c : text) {
     if (c == '\\') out += "\\e";
     else if (c == '-') out += "\\-";
     else out += c;
   }
+  return out;
+}
+
+// Lines of text as roff reads them: roffWords, each line ended, a leading dot or quote kept from reading as a
+// request.
+std::string roff(const std::string& text) {
   std::string lines, line;
-  std::istringstream in(out);
+  std::istringstream in(roffWords(text));
   while (std::getline(in, line)) {
     if (!line.empty() && (line[0] == '.' || line[0] == '\'')) line = "\\&" + line;
     lines += line + "\n";
@@ -55,7 +61,7 @@ void options(std::ostringstream& page, const CLI::App& command, const HelpFormat
 std::string manPage(const CLI::App& app, const std::string& version) {
   const HelpFormatter formatter;
   std::ostringstream page;
-  page << ".TH LINKAGE \"1\" \"\" \"linkage " << roff(version).substr(0, roff(version).size() - 1)
+  page << ".TH LINKAGE \"1\" \"\" \"linkage " << roffWords(version)
        << "\" \"User Commands\"\n";
   page << ".SH NAME\nlinkage \\- geodesics of planar linkages on their configuration spheres, rendered headless\n";
   page << ".SH SYNOPSIS\n.B linkage\n.I COMMAND\n[\\fIOPTIONS\\fR] \\fISCENE\\fR ...\n.br\n.B linkage\n"
@@ -66,7 +72,7 @@ std::string manPage(const CLI::App& app, const std::string& version) {
   page << ".SH COMMANDS\n";
   for (const CLI::App* command : app.get_subcommands([](const CLI::App*) { return true; })) {
     if (command->get_group().empty()) continue;
-    page << ".SS \"linkage " << roff(command->get_name()).substr(0, roff(command->get_name()).size() - 1) << "\"\n"
+    page << ".SS \"linkage " << roffWords(command->get_name()) << "\"\n"
          << roff(command->get_description());
     options(page, *command, formatter);
     footer(page, command->get_footer());

@@ -35,7 +35,7 @@ double onOrbitTolerance(double length) {
 
 // The same bound measured on the sampled orbit itself: a chord's sag is an eighth of the second difference
 // |y(i-1) - 2 y(i) + y(i+1)| (h^2 times the curvature). With masses far apart the mass-weighted orbit bends
-// much more sharply than the even-mass estimate above (masses [0.01, 1, 100] listed one orbit three times),
+// much more sharply than the even-mass estimate above (masses [0.01, 1, 100] listed one orbit five times),
 // so the larger of the two is used, with a factor 2 of margin.
 double onOrbitTolerance(const std::vector<Eigen::VectorXd>& orbit, double length) {
   double sag = 0;
