@@ -6,7 +6,7 @@
 #   scene       scene files -> Scene
 #   simulation  geodesic methods, integrators, runs
 #   analysis    work-precision and stability sweeps
-#   inverse     two-point motions and closed geodesics (shooting and discrete action)
+#   inverse     two-point motions, closed geodesics, parallel transport and holonomy of loops
 #   frames      scene + runs -> FrameState per frame
 #   render      FrameState -> pixels (draw lists on the CPU; gl: OpenGL through EGL or OSMesa)
 #   output      pixels -> PNG files + manifest, video
@@ -22,7 +22,7 @@ set(SL_USES_geometry contracts linkage)
 set(SL_USES_scene contracts linkage)
 set(SL_USES_simulation contracts linkage)
 set(SL_USES_analysis contracts linkage simulation)
-set(SL_USES_inverse contracts linkage simulation)
+set(SL_USES_inverse contracts linkage geometry simulation)
 set(SL_USES_frames contracts linkage geometry scene simulation inverse)
 set(SL_USES_render contracts)
 set(SL_USES_output contracts)

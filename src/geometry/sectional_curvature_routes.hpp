@@ -37,7 +37,7 @@ struct ScalarBinaryOpTraits<double, AutoDiffScalar<Matrix<sl::SecondOrderJet, R,
 namespace sl::sectional {
 
 // A point in the atlas chart best conditioned there, and the conversions between sphere velocities and that chart's
-// rates (chart j is chart 0's construction with its components sent to the axes sphereChartAxes lists).
+// rates.
 struct ChartPoint {
   std::vector<int> axes;
   Eigen::VectorXd coords;
@@ -49,16 +49,9 @@ struct ChartPoint {
     p.coords = coordinatesInChart(p.axes, x);
     return p;
   }
-  Eigen::VectorXd rates(const Eigen::VectorXd& sphereVelocity) const {
-    Eigen::VectorXd s(sphereVelocity.size());
-    for (Eigen::Index i = 0; i < s.size(); ++i) s(i) = sphereVelocity(axes[static_cast<size_t>(i)]);
-    return coordinateRatesFromSphereVelocity(coords, s);
-  }
+  Eigen::VectorXd rates(const Eigen::VectorXd& sphereVelocity) const { return ratesInChart(axes, coords, sphereVelocity); }
   Eigen::VectorXd sphereVelocity(const Eigen::VectorXd& rates) const {
-    const Eigen::VectorXd s = sphereVelocityFromCoordinateRates(coords, rates);
-    Eigen::VectorXd out(s.size());
-    for (Eigen::Index i = 0; i < s.size(); ++i) out(axes[static_cast<size_t>(i)]) = s(i);
-    return out;
+    return sphereVelocityInChart(axes, coords, rates);
   }
 };
 

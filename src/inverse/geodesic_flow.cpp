@@ -14,27 +14,29 @@ namespace {
 using Packed = std::vector<double>;
 
 void pack(const FlowState& s, Packed& y) {
-  const Eigen::Index n = s.q.size(), k = s.dq.cols();
-  y.resize(static_cast<std::size_t>(2 * n * (1 + k)));
+  const Eigen::Index n = s.q.size(), k = s.dq.cols(), w = s.transported.cols();
+  y.resize(static_cast<std::size_t>(2 * n * (1 + k) + n * w));
   Eigen::Map<Eigen::VectorXd>(y.data(), n) = s.q;
   Eigen::Map<Eigen::VectorXd>(y.data() + n, n) = s.v;
   Eigen::Map<Eigen::MatrixXd>(y.data() + 2 * n, n, k) = s.dq;
   Eigen::Map<Eigen::MatrixXd>(y.data() + 2 * n + n * k, n, k) = s.dv;
+  if (w > 0) Eigen::Map<Eigen::MatrixXd>(y.data() + 2 * n * (1 + k), n, w) = s.transported;
 }
 
 void unpack(const Packed& y, FlowState& s) {
-  const Eigen::Index n = s.q.size(), k = s.dq.cols();
+  const Eigen::Index n = s.q.size(), k = s.dq.cols(), w = s.transported.cols();
   s.q = Eigen::Map<const Eigen::VectorXd>(y.data(), n);
   s.v = Eigen::Map<const Eigen::VectorXd>(y.data() + n, n);
   s.dq = Eigen::Map<const Eigen::MatrixXd>(y.data() + 2 * n, n, k);
   s.dv = Eigen::Map<const Eigen::MatrixXd>(y.data() + 2 * n + n * k, n, k);
+  if (w > 0) s.transported = Eigen::Map<const Eigen::MatrixXd>(y.data() + 2 * n * (1 + k), n, w);
 }
 
 }  // namespace
 
 GeodesicFlow::GeodesicFlow(const ConstrainedModel& model, double tolerance) : model_(model), tolerance_(tolerance) {}
 
-void GeodesicFlow::derivative(const Packed& y, Packed& dydt, int columns) const {
+void GeodesicFlow::derivative(const Packed& y, Packed& dydt, int columns, int transported) const {
   ++evaluations_;
   const int n = model_.dimension();
   const Eigen::Map<const Eigen::VectorXd> q(y.data(), n), v(y.data() + n, n);
@@ -52,6 +54,12 @@ void GeodesicFlow::derivative(const Packed& y, Packed& dydt, int columns) const 
         kkt.solve(-model_.hessianCombination(mu, dq),
                   -2.0 * model_.secondDerivatives(v, dv) - model_.secondDerivatives(dq, a));
   }
+  const Eigen::Index offset = 2 * n * (1 + columns);
+  for (int j = 0; j < transported; ++j) {
+    const Eigen::Map<const Eigen::VectorXd> w(y.data() + offset + n * j, n);
+    Eigen::Map<Eigen::VectorXd>(dydt.data() + offset + n * j, n) =
+        kkt.solve(Eigen::VectorXd::Zero(n), -model_.secondDerivatives(v, w));
+  }
 }
 
 Eigen::VectorXd GeodesicFlow::acceleration(const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
@@ -67,8 +75,8 @@ bool GeodesicFlow::advance(FlowState& state, double duration,
   namespace odeint = boost::numeric::odeint;
   using Stepper = odeint::runge_kutta_fehlberg78<Packed>;
   auto stepper = odeint::make_controlled<Stepper>(tolerance_, tolerance_);
-  const int columns = static_cast<int>(state.dq.cols());
-  auto system = [&](const Packed& y, Packed& dydt, double) { derivative(y, dydt, columns); };
+  const int columns = static_cast<int>(state.dq.cols()), transported = static_cast<int>(state.transported.cols());
+  auto system = [&](const Packed& y, Packed& dydt, double) { derivative(y, dydt, columns, transported); };
   Packed y;
   pack(state, y);
   if (observer && !observer(0.0, state)) return duration == 0.0;
@@ -91,6 +99,8 @@ bool GeodesicFlow::advance(FlowState& state, double duration,
       model_.projectPosition(state.q);
       state.v = model_.projectVelocity(state.q, state.v);
       model_.projectVariations(state.q, state.v, state.dq, state.dv);
+      for (Eigen::Index j = 0; j < state.transported.cols(); ++j)
+        state.transported.col(j) = model_.projectVelocity(state.q, state.transported.col(j));
       pack(state, y);
     }
     if (observer && !observer(t, state)) return t >= duration;

@@ -8,6 +8,9 @@
 // shooting derivative, and over one period the monodromy). Integrated by Runge-Kutta-Fehlberg 7(8)
 // (Boost.Odeint), the state projected back onto the constraints (positions, velocities, variations)
 // between steps once they drift.
+// Vectors W parallel transported along the geodesic ride along too (inverse/parallel_transport.hpp): W stays tangent,
+// G W = 0, and its derivative is normal (M-orthogonal to the tangent space), so M W' + G^T nu = 0 with
+// G W' = -(v^T A_i W)_i: once more the same KKT matrix.
 #include <functional>
 
 #include <Eigen/Dense>
@@ -19,6 +22,7 @@ namespace sl {
 struct FlowState {
   Eigen::VectorXd q, v;
   Eigen::MatrixXd dq, dv;  // variations, one column each (may have no columns)
+  Eigen::MatrixXd transported = {};  // parallel transported vectors, one column each (usually none)
 };
 
 class GeodesicFlow {
@@ -37,8 +41,8 @@ class GeodesicFlow {
   const ConstrainedModel& model() const { return model_; }
   long evaluations() const { return evaluations_; }
 
-  // The derivative of the packed state y = (q, v, dq columns, dv columns).
-  void derivative(const std::vector<double>& y, std::vector<double>& dydt, int columns) const;
+  // The derivative of the packed state y = (q, v, dq columns, dv columns, transported columns).
+  void derivative(const std::vector<double>& y, std::vector<double>& dydt, int columns, int transported = 0) const;
 
  private:
   const ConstrainedModel& model_;

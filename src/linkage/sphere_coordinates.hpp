@@ -72,5 +72,10 @@ VectorX<S> spherePointInChart(const std::vector<int>& axes, const VectorX<S>& c)
   return x;
 }
 Eigen::VectorXd coordinatesInChart(const std::vector<int>& axes, const Eigen::VectorXd& x, double previousT = 0.0);
+// Sphere velocity xdot = d/dt x(c) in chart j, and chart j's rates from (x, xdot): tangent vectors between the
+// sphere's R^(k+1) and a chart.
+Eigen::VectorXd sphereVelocityInChart(const std::vector<int>& axes, const Eigen::VectorXd& coords,
+                                      const Eigen::VectorXd& rates);
+Eigen::VectorXd ratesInChart(const std::vector<int>& axes, const Eigen::VectorXd& coords, const Eigen::VectorXd& xdot);
 
 }  // namespace sl

@@ -12,20 +12,6 @@
 
 namespace sl {
 
-Eigen::VectorXd sphereVelocityInChart(const std::vector<int>& axes, const Eigen::VectorXd& coords,
-                                      const Eigen::VectorXd& rates) {
-  const Eigen::VectorXd s = sphereVelocityFromCoordinateRates(coords, rates);
-  Eigen::VectorXd xdot(s.size());
-  for (Eigen::Index i = 0; i < s.size(); ++i) xdot(axes[static_cast<size_t>(i)]) = s(i);
-  return xdot;
-}
-
-Eigen::VectorXd ratesInChart(const std::vector<int>& axes, const Eigen::VectorXd& coords, const Eigen::VectorXd& xdot) {
-  Eigen::VectorXd s(xdot.size());
-  for (Eigen::Index i = 0; i < s.size(); ++i) s(i) = xdot(axes[static_cast<size_t>(i)]);
-  return coordinateRatesFromSphereVelocity(coords, s);
-}
-
 void requireMethodMoves(const MotionRequest& request) {
   const std::vector<MethodRefusal> refusals = methodRefusals(request);
   if (refusals.empty()) return;

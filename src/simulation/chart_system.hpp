@@ -12,6 +12,7 @@
 #include "contracts/run_config.hpp"
 #include "linkage/chain_constants.hpp"
 #include "linkage/method_rules.hpp"
+#include "linkage/sphere_coordinates.hpp"  // sphereVelocityInChart, ratesInChart
 #include "simulation/geodesic_system.hpp"
 
 namespace sl {
@@ -59,10 +60,5 @@ class ChartSystem : public GeodesicSystem {
   int switches_ = 0;
   State start_;
 };
-
-// Sphere velocity xdot = d/dt x(c) in a chart, and the rates of a chart from (x, xdot).
-Eigen::VectorXd sphereVelocityInChart(const std::vector<int>& axes, const Eigen::VectorXd& coords,
-                                      const Eigen::VectorXd& rates);
-Eigen::VectorXd ratesInChart(const std::vector<int>& axes, const Eigen::VectorXd& coords, const Eigen::VectorXd& xdot);
 
 }  // namespace sl

@@ -1,0 +1,271 @@
+#include "inverse/holonomy.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include <boost/math/quadrature/gauss.hpp>
+
+#include "geometry/curvature.hpp"
+#include "geometry/sectional_curvature.hpp"
+#include "inverse/connect.hpp"
+#include "inverse/geodesic_flow.hpp"
+#include "inverse/parallel_transport.hpp"
+#include "linkage/chain_constants.hpp"
+#include "linkage/chart.hpp"
+#include "simulation/ambient_system.hpp"
+#include "simulation/initial_state.hpp"
+
+namespace sl {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+// Gauss-Legendre nodes per geodesic piece (along the loop) and per stretch of a chord of the cone, chords cut into
+// stretches of at most kChordStretch radians: the integrand is analytic on each, so the rule converges
+// geometrically (long chords over a strongly curved sphere, L = 2.6, needed the cut to reach 1e-8).
+constexpr int kQuadratureNodes = 48;
+constexpr double kChordStretch = 0.5;
+constexpr double kTransportTolerance = 1e-13;
+
+struct QuadratureRule {
+  std::vector<double> nodes, weights;  // on [0, 1]
+};
+
+// Boost.Math's Gauss-Legendre rule moved from [-1, 1] to [0, 1].
+const QuadratureRule& gaussRule() {
+  static const QuadratureRule rule = [] {
+    using Gauss = boost::math::quadrature::gauss<double, kQuadratureNodes>;
+    QuadratureRule r;
+    const auto& abscissa = Gauss::abscissa();
+    const auto& weights = Gauss::weights();
+    std::vector<std::pair<double, double>> rule;  // ascending nodes: the path is integrated from one to the next
+    for (std::size_t i = 0; i < abscissa.size(); ++i)
+      for (double sign : {-1.0, 1.0}) {
+        if (abscissa[i] == 0.0 && sign > 0) continue;
+        rule.emplace_back(0.5 * (1.0 + sign * abscissa[i]), 0.5 * weights[i]);
+      }
+    std::sort(rule.begin(), rule.end());
+    for (const auto& [node, weight] : rule) {
+      r.nodes.push_back(node);
+      r.weights.push_back(weight);
+    }
+    return r;
+  }();
+  return rule;
+}
+
+// A g-orthonormal frame of the tangent plane at x in the orientation of the outward normal, in both forms.
+struct OrientedFrame {
+  Eigen::VectorXd sphere[2];  // sphere velocities
+  Eigen::VectorXd ambient[2];  // stacked hinge velocities
+};
+
+OrientedFrame orientedFrame(const ChainConstants& bound, const Eigen::VectorXd& x) {
+  std::vector<Eigen::VectorXd> basis = orthonormalTangentBasis(bound, x);
+  const Eigen::Vector3d p = x, a = basis[0], b = basis[1];
+  if (p.dot(a.cross(b)) < 0) basis[1] = -basis[1];
+  OrientedFrame frame;
+  for (int i = 0; i < 2; ++i) {
+    frame.sphere[i] = basis[static_cast<size_t>(i)];
+    frame.ambient[i] = ConstrainedModel::stack(hingeVelocitiesOnSphere(bound.chain, x, frame.sphere[i]));
+  }
+  return frame;
+}
+
+// The angle of w in the frame (w tangent at the frame's point, given as a stacked hinge velocity).
+double angleInFrame(const ConstrainedModel& model, const OrientedFrame& frame, const Eigen::VectorXd& w) {
+  return std::atan2(model.inner(w, frame.ambient[1]), model.inner(w, frame.ambient[0]));
+}
+
+// The turning angle from direction a to direction b in the frame.
+double turningAngle(const ConstrainedModel& model, const OrientedFrame& frame, const Eigen::VectorXd& a,
+                    const Eigen::VectorXd& b) {
+  return angleDifference(angleInFrame(model, frame, b), angleInFrame(model, frame, a));
+}
+
+// Integral of K dA over the cone of chords from the apex to the path's points, for one piece of the path given at
+// the rule's nodes (points gamma and their derivatives along the piece's parameter, over a piece of unit length).
+double coneCurvature(const ConfigurationSurface& surface, const Eigen::Vector3d& apex,
+                     const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& derivatives) {
+  const QuadratureRule& rule = gaussRule();
+  double total = 0;
+  for (std::size_t j = 0; j < points.size(); ++j) {
+    // y = (1 - u) A + u gamma: det[x, x_u, x_s] = u det[A, gamma, gamma'] / |y|^3 for x = y / |y|.
+    const double spread = apex.dot(points[j].cross(derivatives[j]));
+    const double angle = std::atan2(apex.cross(points[j]).norm(), apex.dot(points[j]));
+    if (!(angle < 3.0)) throw std::invalid_argument("holonomy: the loop passes opposite its apex; split it into smaller loops");
+    const int stretches = std::max(1, static_cast<int>(std::ceil(angle / kChordStretch)));
+    double chord = 0;
+    for (int stretch = 0; stretch < stretches; ++stretch)
+      for (std::size_t l = 0; l < rule.nodes.size(); ++l) {
+        const double u = (stretch + rule.nodes[l]) / stretches;
+        const Eigen::Vector3d y = (1.0 - u) * apex + u * points[j];
+        const double r = y.norm();
+        const SecondFundamentalForm form = surface.secondFundamentalFormAt(y / r);
+        chord += rule.weights[l] / stretches * gaussianCurvature(form) * areaDensity(form) * u / (r * r * r);
+      }
+    total += rule.weights[j] * spread * chord;
+  }
+  return total;
+}
+
+Eigen::Vector3d apexOf(const std::vector<Eigen::VectorXd>& points) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (const Eigen::VectorXd& p : points) sum += Eigen::Vector3d(p);
+  if (sum.norm() < 1e-6) throw std::invalid_argument("holonomy: the loop's corners balance round the sphere's centre; "
+                                                     "split it into smaller loops");
+  return sum.normalized();
+}
+
+void requireFourRods(const Chain& chain) {
+  if (chain.rods != 4)
+    throw std::invalid_argument("holonomy: computed for 4 rods (a surface, S^2); found " + std::to_string(chain.rods) +
+                                " rods");
+}
+
+}  // namespace
+
+double angleDifference(double x, double y) {
+  double d = std::remainder(x - y, 2.0 * kPi);
+  if (d <= -kPi) d += 2.0 * kPi;
+  return d;
+}
+
+double Holonomy::routeDifference() const { return angleDifference(angle, chartAngle); }
+double Holonomy::curvatureDifference() const { return angleDifference(angle, enclosedCurvature); }
+std::optional<double> Holonomy::excessDifference() const {
+  if (!angleExcess) return std::nullopt;
+  return angleDifference(angle, *angleExcess);
+}
+
+Holonomy polygonHolonomy(const Chain& chain, const std::vector<Eigen::VectorXd>& corners, bool (*cancelled)()) {
+  requireFourRods(chain);
+  if (corners.size() < 3) throw std::invalid_argument("holonomy: expected at least 3 corners");
+  const ChainConstants bound(chain);
+  const ConstrainedModel model = ConstrainedModel::fromChain(chain);
+  const std::size_t m = corners.size();
+  std::vector<Eigen::VectorXd> x(m), q(m), velocity(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    x[i] = corners[i].normalized();
+    q[i] = ConstrainedModel::stack(hingePositionsAt(chain, x[i]));
+  }
+  Holonomy h;
+  for (std::size_t i = 0; i < m; ++i) {
+    stopIfCancelled(cancelled);
+    const std::size_t next = (i + 1) % m;
+    if (sameShape(model, q[i], q[next]))
+      throw std::invalid_argument("holonomy: corners " + std::to_string(i + 1) + " and " + std::to_string(next + 1) +
+                                  " are the same shape");
+    const std::optional<Connection> piece = directConnection(model, &chain, q[i], q[next]);
+    if (!piece)
+      throw std::runtime_error("holonomy: no motion found from corner " + std::to_string(i + 1) + " to corner " +
+                               std::to_string(next + 1));
+    velocity[i] = piece->velocity;
+    h.pieceLengths.push_back(piece->length);
+    h.length += piece->length;
+  }
+  stopIfCancelled(cancelled);
+  const OrientedFrame start = orientedFrame(bound, x[0]);
+
+  // Ambient route, and each piece's arriving velocity and its points at the quadrature nodes.
+  const GeodesicFlow flow(model, kTransportTolerance);
+  const ConfigurationSurface surface(chain);
+  const Eigen::Vector3d apex = apexOf(x);
+  const QuadratureRule& rule = gaussRule();
+  Eigen::VectorXd w = start.ambient[0];
+  std::vector<Eigen::VectorXd> arriving(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    const std::size_t next = (i + 1) % m;
+    FlowState s{q[i], velocity[i], Eigen::MatrixXd(q[i].size(), 0), Eigen::MatrixXd(q[i].size(), 0), w};
+    flow.advance(s, 1.0);
+    arriving[i] = s.v;
+    w = model.projectVelocity(q[next], s.transported.col(0));
+    // The piece at the nodes, for the enclosed curvature.
+    FlowState along{q[i], velocity[i], Eigen::MatrixXd(q[i].size(), 0), Eigen::MatrixXd(q[i].size(), 0)};
+    std::vector<Eigen::Vector3d> points, derivatives;
+    double at = 0;
+    for (double node : rule.nodes) {
+      flow.advance(along, node - at);
+      at = node;
+      const Eigen::VectorXd p = spherePointFromHinges(chain, ConstrainedModel::unstack(along.q));
+      points.emplace_back(p);
+      derivatives.emplace_back(sphereVelocityFromHingeVelocities(chain, p, ConstrainedModel::unstack(along.v)));
+    }
+    h.enclosedCurvature += coneCurvature(surface, apex, points, derivatives);
+  }
+  h.angle = angleInFrame(model, start, w);
+
+  // Chart route.
+  const ChristoffelField gamma = chainChristoffelField(bound);
+  Eigen::VectorXd ws = start.sphere[0];
+  for (std::size_t i = 0; i < m; ++i) {
+    const std::size_t next = (i + 1) % m;
+    const Eigen::VectorXd xdot = sphereVelocityFromHingeVelocities(chain, x[i], ConstrainedModel::unstack(velocity[i]));
+    const ChartTransport t = transportAlongGeodesicInCharts(gamma, x[i], xdot, 1.0, {ws}, kTransportTolerance);
+    ws = t.vectors[0] - t.vectors[0].dot(x[next]) * x[next];
+    h.chartChanges += t.chartChanges;
+  }
+  h.chartAngle = angleInFrame(model, start, ConstrainedModel::stack(hingeVelocitiesOnSphere(chain, x[0], ws)));
+
+  // Gauss-Bonnet for a geodesic polygon: the region to the left has integral K dA = 2 pi - sum of turning angles.
+  double turning = 0;
+  for (std::size_t i = 0; i < m; ++i) {
+    const double e = turningAngle(model, i == 0 ? start : orientedFrame(bound, x[i]), arriving[(i + m - 1) % m],
+                                  velocity[i]);
+    h.interiorAngles.push_back(kPi - e);
+    turning += e;
+  }
+  h.angleExcess = 2.0 * kPi - turning;
+  return h;
+}
+
+Holonomy latitudeHolonomy(const Chain& chain, double phi) {
+  requireFourRods(chain);
+  if (!(std::abs(phi) < kPi / 2))
+    throw std::invalid_argument("holonomy: expected a latitude phi with |phi| < pi/2");
+  const ChainConstants bound(chain);
+  const ConstrainedModel model = ConstrainedModel::fromChain(chain);
+  const double c = std::cos(phi), s = std::sin(phi);
+  const PathPoint sphere = [c, s](double arc, Eigen::VectorXd& x, Eigen::VectorXd& xdot) {
+    const double t = arc - kPi;
+    x = Eigen::Vector3d(c * std::cos(t), c * std::sin(t), s);
+    xdot = Eigen::Vector3d(-c * std::sin(t), c * std::cos(t), 0.0);
+  };
+  const PathPoint ambient = [&](double arc, Eigen::VectorXd& q, Eigen::VectorXd& qdot) {
+    Eigen::VectorXd x, xdot;
+    sphere(arc, x, xdot);
+    q = ConstrainedModel::stack(hingePositionsAt(chain, x));
+    qdot = ConstrainedModel::stack(hingeVelocitiesOnSphere(chain, x, xdot));
+  };
+  Eigen::VectorXd x0, xdot0;
+  sphere(0.0, x0, xdot0);
+  const OrientedFrame start = orientedFrame(bound, x0);
+  Holonomy h;
+  const Eigen::MatrixXd w = transportAlongPathAmbient(model, ambient, 2.0 * kPi, start.ambient[0], kTransportTolerance);
+  h.angle = angleInFrame(model, start, w.col(0));
+  const std::vector<Eigen::VectorXd> ws =
+      transportAlongPathInCharts(chainChristoffelField(bound), sphere, 2.0 * kPi, {start.sphere[0]}, kTransportTolerance);
+  h.chartAngle = angleInFrame(model, start, ConstrainedModel::stack(hingeVelocitiesOnSphere(chain, x0, ws[0])));
+  // The cap's curvature over the cone from its pole, and the loop's length, in four quarters.
+  const ConfigurationSurface surface(chain);
+  const QuadratureRule& rule = gaussRule();
+  for (int quarter = 0; quarter < 4; ++quarter) {
+    std::vector<Eigen::Vector3d> points, derivatives;
+    for (std::size_t j = 0; j < rule.nodes.size(); ++j) {
+      Eigen::VectorXd x, xdot, q, qdot;
+      const double arc = (quarter + rule.nodes[j]) * kPi / 2;
+      sphere(arc, x, xdot);
+      points.emplace_back(x);
+      derivatives.emplace_back(xdot * (kPi / 2));
+      ambient(arc, q, qdot);
+      h.length += rule.weights[j] * (kPi / 2) * model.norm(qdot);
+    }
+    h.enclosedCurvature += coneCurvature(surface, Eigen::Vector3d::UnitZ(), points, derivatives);
+  }
+  return h;
+}
+
+}  // namespace sl
