@@ -6,6 +6,7 @@
 #include <string>
 
 #include <Eigen/Dense>
+#include <nlohmann/json.hpp>
 
 #include "inverse/constrained_model.hpp"
 #include "linkage/chain.hpp"
@@ -14,5 +15,11 @@ namespace sl {
 
 Eigen::VectorXd readConfigurationPoint(const Chain& chain, const ConstrainedModel& model, const std::string& text,
                                        const std::string& option);
+// One configuration from parsed JSON; `where` names it in errors (a file, an option, a JSON path).
+Eigen::VectorXd configurationFromJson(const Chain& chain, const ConstrainedModel& model, const nlohmann::json& j,
+                                      const std::string& where);
+// An option's JSON value: the text itself when it starts with '{' or '[', else a file holding it; `where` is set to
+// what errors should name (the option or the file).
+nlohmann::json readJsonArgument(const std::string& target, const std::string& option, std::string& where);
 
 }  // namespace sl

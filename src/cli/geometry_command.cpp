@@ -19,6 +19,7 @@
 #include "analysis/gnuplot.hpp"
 #include "cli/chart_formats.hpp"
 #include "cli/commands.hpp"
+#include "cli/curvature_output.hpp"
 #include "cli/distance_map_output.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/geometry_json.hpp"
@@ -54,6 +55,8 @@ struct GeometryArguments {
   std::string chartFormats;
   std::string distanceFrom;  // a configuration, or "start"
   bool json = false;         // with --distance-from
+  std::string holonomy;      // LOOP: JSON text or file
+  std::string sectional;     // POINTS: JSON text or file
 };
 
 const char* kSampleColumns = "phi,t,K,bending,stiffness_max,stiffness_min,stiffness_angle";
@@ -255,11 +258,12 @@ void runGeometry(const GeometryArguments& args) {
   const CommandSummary summary("geometry", args.quiet);
   const bool distance = !args.distanceFrom.empty();
   const int modes = (!distance && (args.grid > 0 || !args.maps.empty())) + !args.points.empty() + args.summary +
-                    !args.sweep.empty() + distance;
+                    !args.sweep.empty() + distance + !args.holonomy.empty() + !args.sectional.empty();
   if (modes != 1)
     throw CommandExit(kExitBadInput,
                       "linkage geometry: expected exactly one of --grid N (with --csv and/or --maps DIR), "
-                      "--points FILE, --summary, --sweep-L A:B:N, --distance-from POINT (with --grid, --csv, --maps)");
+                      "--points FILE, --summary, --sweep-L A:B:N, --distance-from POINT (with --grid, --csv, --maps), "
+                      "--holonomy LOOP, --sectional POINTS");
   if (args.json && !distance) throw CommandExit(kExitBadInput, "--json: goes with --distance-from POINT");
   if (!args.chart.empty() && args.sweep.empty())
     throw CommandExit(kExitBadInput, "--chart: draws the L sweep; expected --sweep-L A:B:N with it");
@@ -284,6 +288,13 @@ void runGeometry(const GeometryArguments& args) {
   if ((!args.chart.empty() || !args.maps.empty()) && !gnuplotAvailable())
     throw std::runtime_error("--chart and --maps need gnuplot with pngcairo: apt-get install gnuplot-nox");
   const Scene scene = loadSceneForCommand(args.scene, args.overrides);
+  const std::string of = " of \"" + scene.name + "\" (L = " + shortest(scene.chain.baseLength) + ")" +
+                         (args.csv.empty() ? "" : " -> " + args.csv);
+  if (!args.holonomy.empty() || !args.sectional.empty()) {
+    const CurvatureRequest request{args.holonomy.empty() ? args.sectional : args.holonomy, args.csv, args.quiet};
+    summary.print((args.holonomy.empty() ? runSectional(scene, request) : runHolonomy(scene, request)) + of);
+    return;
+  }
   if (scene.chain.rods != 4)
     throw CommandExit(kExitBadInput, args.scene + ": linkage.rods: found " + std::to_string(scene.chain.rods) +
                                          "; the curvature of the configuration space is computed for 4 rods "
@@ -336,8 +347,7 @@ void runGeometry(const GeometryArguments& args) {
     }
     done = "L sweep of " + std::to_string(range.count) + " values";
   }
-  summary.print(done + " of \"" + scene.name + "\" (L = " + shortest(scene.chain.baseLength) + ")" +
-                (args.csv.empty() ? "" : " -> " + args.csv));
+  summary.print(done + of);
 }
 
 }  // namespace
@@ -361,6 +371,14 @@ void addGeometryCommand(CLI::App& app) {
                       "POINT: the distance map from a configuration ({\"coords\": [...]}, {\"hinges\": ...}, a file, "
                       "or start), with its conjugate and cut loci and the injectivity radius (--grid, default 256)");
   command->add_flag("--json", args->json, "with --distance-from: the radii and the loci as JSON on standard output");
+  command->add_option("--holonomy", args->holonomy,
+                      "LOOP: how a vector parallel transported round a loop comes back turned (4 rods), checked "
+                      "against Gauss-Bonnet: {\"corners\": [3 or more configurations]} joined by their shortest "
+                      "motions, or {\"latitude\": phi}; JSON text or a file");
+  command->add_option("--sectional", args->sectional,
+                      "POINTS: the range of the sectional curvature over the tangent planes at each configuration "
+                      "(5 rods and more), and of given planes: [{\"coords\": [...], \"planes\": [[X, Y]]}, ...]; JSON "
+                      "text or a file");
   command->add_flag("--quiet", args->quiet, "no summary line");
   addChartFormatsOption(*command, args->chartFormats);
   command->footer(
@@ -370,7 +388,13 @@ void addGeometryCommand(CLI::App& app) {
       "  linkage geometry scenes/default.json --grid 256 --csv renders/curvature.csv\n"
       "  linkage geometry scenes/default.json --sweep-L 2.1:3.9:37 --csv renders/sweep.csv --chart renders/sweep.png\n"
       "  linkage geometry scenes/default.json --distance-from start --csv renders/distance.csv --maps renders/distance\n"
-      "Columns of --distance-from: phi,t,distance,direction (angle of the shortest geodesic at the point).");
+      "  linkage geometry scenes/default.json --holonomy '{\"latitude\": 0.5}'\n"
+      "  linkage geometry scenes/holonomy.json --holonomy '{\"corners\": [{\"coords\": [0.2, 0]}, {\"coords\": [0.3, 1.4]}, "
+      "{\"coords\": [1.2, 0.6]}]}'\n"
+      "  linkage geometry scenes/five-rods.json --sectional '[{\"coords\": [0.3, -0.2, 0.5]}]'\n"
+      "Columns of --distance-from: phi,t,distance,direction (angle of the shortest geodesic at the point).\n"
+      "--holonomy and --sectional write JSON (to --csv FILE when given); each result carries its own checks and a "
+      "failed check ends the command with exit 3.");
   command->callback([args] { runGeometry(*args); });
 }
 

@@ -15,6 +15,8 @@ std::string selfCheckName(SelfCheck check) {
     case SelfCheck::missedTarget: return "missed target";
     case SelfCheck::routesDisagree: return "routes disagree";
     case SelfCheck::radiiDisagree: return "radii disagree";
+    case SelfCheck::turningDisagrees: return "routes disagree";
+    case SelfCheck::gaussBonnetFails: return "Gauss-Bonnet fails";
   }
   return "unknown";
 }
@@ -30,6 +32,12 @@ std::string selfCheckReason(SelfCheck check) {
     case SelfCheck::radiiDisagree:
       return "the nearest cut point and Klingenberg's lemma differ by more than " + shortest(kInjectivityAgreementCells) +
              " grid cells";
+    case SelfCheck::turningDisagrees:
+      return "its two transport routes turn the vector differently by more than " + shortest(kHolonomyRouteBound) +
+             " rad";
+    case SelfCheck::gaussBonnetFails:
+      return "its turning differs from the enclosed curvature or the angle excess by more than " +
+             shortest(kGaussBonnetBound) + " rad";
   }
   return "unknown check";
 }

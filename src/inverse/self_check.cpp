@@ -41,4 +41,15 @@ SelfCheck selfCheck(const DistanceMap& map) {
   return SelfCheck::confirmed;
 }
 
+SelfCheck selfCheck(const Holonomy& h) {
+  const double excess = h.excessDifference().value_or(0.0);
+  if (!std::isfinite(h.angle) || !std::isfinite(h.chartAngle) || !std::isfinite(h.enclosedCurvature) ||
+      !std::isfinite(excess))
+    return SelfCheck::notFinite;
+  if (std::abs(h.routeDifference()) > kHolonomyRouteBound) return SelfCheck::turningDisagrees;
+  if (std::abs(h.curvatureDifference()) > kGaussBonnetBound || std::abs(excess) > kGaussBonnetBound)
+    return SelfCheck::gaussBonnetFails;
+  return SelfCheck::confirmed;
+}
+
 }  // namespace sl

@@ -1,10 +1,12 @@
 // `linkage geometry`: the curvature of the configuration sphere from the command line. The values themselves
 // are pinned by tests/geometry (two routes, Gauss-Bonnet, symmetry); these tests pin what a user sees: the
 // summary's figures, the CSV's columns and size, the maps and the sweep chart, and the refusals.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -101,6 +103,113 @@ TEST(GeometryCli, Refusals) {
   EXPECT_EQ(badPoints.code, 2);
   EXPECT_NE(badPoints.err.find("bad.csv"), std::string::npos) << badPoints.err;
   EXPECT_FALSE(fs::exists(folder / "x.png"));
+}
+
+// Holonomy (docs/geometry.md, "Parallel transport and holonomy"): the values are pinned by tests/inverse; here what a
+// user reads: three figures that agree, the checks written beside them, the orientation, and the summary.
+TEST(GeometryCli, HolonomyOfATriangleAgreesWithItsCurvatureAndItsAngleExcess) {
+  TempFolder folder;
+  const std::string corners = R"([{"coords": [0.2, 0]}, {"coords": [0.3, 1.4]}, {"coords": [1.2, 0.6]}])";
+  const ProcessResult forward =
+      runLinkage({"geometry", shippedScene("default.json"), "--holonomy", R"({"corners": )" + corners + "}"},
+                 folder.path());
+  ASSERT_EQ(forward.code, 0) << forward.err;
+  const nlohmann::json h = nlohmann::json::parse(forward.out);
+  const double angle = h["holonomy"].get<double>();
+  EXPECT_GT(std::abs(angle), 0.1);
+  EXPECT_NEAR(h["enclosed_curvature"].get<double>(), angle, 1e-8);
+  EXPECT_NEAR(h["angle_excess"].get<double>(), angle, 1e-8);
+  EXPECT_NEAR(h["checks"]["chart_route_holonomy"].get<double>(), angle, 1e-10);
+  EXPECT_EQ(h["checks"]["result"], "confirmed");
+  EXPECT_EQ(h["interior_angles"].size(), 3u);
+  EXPECT_NE(forward.err.find("holonomy " ), std::string::npos) << forward.err;
+  EXPECT_NE(forward.err.find("3-corner loop (routes agree to"), std::string::npos) << forward.err;
+
+  // Run the other way round, from a file: the vector turns back by as much.
+  const nlohmann::json reversed = {{"corners", nlohmann::json::parse(corners).get<std::vector<nlohmann::json>>()}};
+  nlohmann::json backwards = reversed;
+  std::reverse(backwards["corners"].begin(), backwards["corners"].end());
+  writeFile(folder / "loop.json", backwards.dump());
+  const ProcessResult back = runLinkage(
+      {"geometry", shippedScene("default.json"), "--holonomy", "loop.json", "--csv", "back.json", "--quiet"},
+      folder.path());
+  ASSERT_EQ(back.code, 0) << back.err;
+  EXPECT_EQ(back.err, "");
+  EXPECT_NEAR(nlohmann::json::parse(readFile(folder / "back.json"))["holonomy"].get<double>(), -angle, 1e-10);
+}
+
+TEST(GeometryCli, HolonomyOfALatitudeIsTheCurvatureOfItsCap) {
+  TempFolder folder;
+  const ProcessResult result =
+      runLinkage({"geometry", shippedScene("default.json"), "--holonomy", R"({"latitude": 0.5})"}, folder.path());
+  ASSERT_EQ(result.code, 0) << result.err;
+  const nlohmann::json h = nlohmann::json::parse(result.out);
+  // The cap above phi = 0.5 holds more curvature than pi: the holonomy is its remainder in (-pi, pi].
+  EXPECT_NEAR(std::remainder(h["enclosed_curvature"].get<double>() - h["holonomy"].get<double>(), 2 * M_PI), 0.0, 1e-8);
+  EXPECT_FALSE(h.contains("angle_excess"));
+  EXPECT_EQ(h["checks"]["result"], "confirmed");
+}
+
+TEST(GeometryCli, SectionalCurvatureRangeHoldsGivenPlanesAndIsAttained) {
+  TempFolder folder;
+  const std::string scene = shippedScene("five-rods.json");
+  const ProcessResult first = runLinkage(
+      {"geometry", scene, "--sectional",
+       R"([{"coords": [0.3, -0.2, 0.5], "planes": [[[1, 0, 0], [0, 1, 0]], [[0, 0, 1], [1, 1, 0]]]}, {"coords": [-1.0, 0.4, 2.0]}])"},
+      folder.path());
+  ASSERT_EQ(first.code, 0) << first.err;
+  const nlohmann::json points = nlohmann::json::parse(first.out);
+  ASSERT_EQ(points.size(), 2u);
+  const double lo = points[0]["K_min"].get<double>(), hi = points[0]["K_max"].get<double>();
+  EXPECT_LT(lo, hi);
+  for (const nlohmann::json& plane : points[0]["planes"]) {
+    EXPECT_GE(plane["K"].get<double>(), lo - 1e-12);
+    EXPECT_LE(plane["K"].get<double>(), hi + 1e-12);
+    EXPECT_NEAR(plane["K_intrinsic"].get<double>(), plane["K"].get<double>(), 1e-9);
+  }
+  EXPECT_LT(points[0]["intrinsic_check"].get<double>(), 1e-9);
+  EXPECT_NE(first.err.find("sectional curvature at 2 points (routes agree to"), std::string::npos) << first.err;
+
+  // The plane reported for the maximum, given back as a plane, has the maximum.
+  const nlohmann::json again = {{{"coords", points[0]["coords"]}, {"planes", {points[0]["plane_max"]}}}};
+  const ProcessResult second = runLinkage({"geometry", scene, "--sectional", again.dump(), "--quiet"}, folder.path());
+  ASSERT_EQ(second.code, 0) << second.err;
+  EXPECT_NEAR(nlohmann::json::parse(second.out)[0]["planes"][0]["K"].get<double>(), hi, 1e-10);
+}
+
+TEST(GeometryCli, HolonomyAndSectionalRefusals) {
+  TempFolder folder;
+  const std::string four = shippedScene("default.json"), five = shippedScene("five-rods.json");
+  const std::string triangle = R"({"corners": [{"coords": [0.2, 0]}, {"coords": [0.3, 1.4]}, {"coords": [1.2, 0.6]}]})";
+  struct Case {
+    std::vector<std::string> args;
+    std::string expected;
+  };
+  const std::vector<Case> cases = {
+      {{"geometry", five, "--holonomy", triangle}, "holonomy is computed for 4 rods"},
+      {{"geometry", four, "--sectional", R"([{"coords": [0, 0]}])"}, "sectional curvature is for 5 rods and more"},
+      {{"geometry", four, "--holonomy", triangle, "--summary"}, "expected exactly one of"},
+      {{"geometry", four, "--holonomy", R"({"corners": [{"coords": [0.2, 0]}, {"coords": [0.3, 1.4]}]})"},
+       "--holonomy: corners: expected a list of at least 3 configurations"},
+      {{"geometry", four, "--holonomy", R"({"corners": [{"coords": [0.2, 0]}, {"coords": [0.2, 0]}, {"coords": [1, 1]}]})"},
+       "corners 1 and 2 are the same shape"},
+      {{"geometry", four, "--holonomy", R"({"corners": [{"coords": [0.2, 0]}, {"coords": [0.3, "x"]}, {"coords": [1, 1]}]})"},
+       "--holonomy: corners[1]: coords[1]: expected a finite number"},
+      {{"geometry", four, "--holonomy", R"({"latitude": 1.6})"}, "latitude: found 1.6; expected -pi/2 < phi < pi/2"},
+      {{"geometry", four, "--holonomy", R"({"latitude": 0.1, "corners": []})"}, "expected an object with one key"},
+      {{"geometry", four, "--holonomy", "missing.json"}, "--holonomy missing.json: neither JSON nor a readable file"},
+      {{"geometry", five, "--sectional", R"([{"coords": [0, 0, 0], "planes": [[[1, 0, 0], [2, 0, 0]]]}])"},
+       "--sectional[0]: planes[0]: sectional curvature: the two tangent vectors do not span a plane"},
+      {{"geometry", five, "--sectional", R"([{"coords": [0, 0, 0], "planes": [[[1, 0], [0, 1, 0]]]}])"},
+       "--sectional[0]: planes[0][0]: expected an array of 3 numbers"},
+      {{"geometry", five, "--sectional", "{}"}, "--sectional: expected a list of configurations"},
+  };
+  for (const Case& c : cases) {
+    const ProcessResult result = runLinkage(c.args, folder.path());
+    EXPECT_EQ(result.code, 2) << c.expected << "\n" << result.err;
+    EXPECT_NE(result.err.find(c.expected), std::string::npos) << result.err;
+    EXPECT_EQ(result.out, "") << c.expected;
+  }
 }
 
 }  // namespace
