@@ -3,6 +3,7 @@
 // angle excess of geodesic triangles).
 
 #include <cmath>
+#include <sstream>
 #include <numbers>
 
 #include <gtest/gtest.h>
@@ -108,7 +109,7 @@ TEST(ParallelTransport, EllipsoidRoutesAgreeAlongGeodesicsAndLatitudes) {
     worst = std::max(worst, (surface.ambient(chart) - amb).norm());
   }
   EXPECT_GT(chartChanges, 2);  // the chart route crossed the atlas
-  RecordProperty("worst_difference", std::to_string(worst));
+  RecordProperty("worst_difference", (std::ostringstream() << std::scientific << worst).str());
   EXPECT_LT(worst, 1e-10);
 }
 
