@@ -264,7 +264,7 @@ void FrameBuilder::sampleRunAt(size_t run, double t, bool isFrameTime) {
     return;
   }
   if (sample->spherePoint.size() == 0) {  // a slack chain: no configuration sphere, the linkage alone
-    if (isFrameTime) recordFrameState(history, *sample);
+    if (isFrameTime) recordFrameState(run, *sample);
     return;
   }
   frame.current = view_.project(sample->spherePoint);
@@ -279,17 +279,24 @@ void FrameBuilder::sampleRunAt(size_t run, double t, bool isFrameTime) {
   fadeOut(history.path, t, scene_.view.pathFadeSeconds);
   thinOut(history.path);
   if (!isFrameTime) return;
-  recordFrameState(history, *sample);
+  recordFrameState(run, *sample);
   if (stopsBy(runs_[run], t, sampleSpacing())) markStopped(run, t);  // stopped at the frame time itself: shown now
 }
 
 // At a frame time: the linkage, the plots' values and the trails (one point per frame, while visible).
-void FrameBuilder::recordFrameState(RunHistory& history, const Sample& sample) {
+void FrameBuilder::recordFrameState(std::size_t run, const Sample& sample) {
+  RunHistory& history = history_[run];
   RunFrame& frame = history.frame;
   frame.hinges = hingeList(sample.hinges);
   history.hingesAtFrame = sample.hinges;
   history.energyErrors.push_back(std::abs(sample.relativeEnergyDrift));
   history.jacobiSizes.push_back(sample.jacobi.value_or(kNaN));
+  if (std::any_of(scene_.view.plots.begin(), scene_.view.plots.end(),
+                  [](const PlotSpec& plot) { return plot.kind == PlotKind::Sectional; })) {
+    const std::array<double, 2> through = curvatureThroughVelocity(scene_.runs[run].chain, sample);
+    history.curvatureLow.push_back(through[0]);
+    history.curvatureHigh.push_back(through[1]);
+  }
   const size_t kept = static_cast<size_t>(std::ceil(scene_.view.trailFadeSeconds * scene_.output.fps)) + 1;
   for (size_t i = 0; i < scene_.view.trailHinges.size(); ++i) {
     SharedTrack<Vec2>& trail = history.trails[i];
@@ -310,6 +317,8 @@ void FrameBuilder::recordPlots(int k) {
   for (RunHistory& history : history_) {
     if (history.energyErrors.size() < plotTimes_.size()) history.energyErrors.push_back(kNaN);
     if (history.jacobiSizes.size() < plotTimes_.size()) history.jacobiSizes.push_back(kNaN);
+    if (history.curvatureLow.size() < plotTimes_.size()) history.curvatureLow.push_back(kNaN);
+    if (history.curvatureHigh.size() < plotTimes_.size()) history.curvatureHigh.push_back(kNaN);
     // Spread: members still moving against the run, while it moves (plot_overview.cpp computes the same).
     double spread = kNaN;
     for (const MemberFrame& member : history.frame.members) {
@@ -381,6 +390,17 @@ FrameState FrameBuilder::snapshot(int k) const {
           if (!scene_.runs[run].config.jacobi) continue;
           plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, history_[run].jacobiSizes.view(),
                                  history_[run].frame.conjugateTimes, stopTimeSoFar(history_[run].frame)});
+        }
+        break;
+      case PlotKind::Sectional:
+        // Each run twice: the largest curvature through its velocity in its colour, the smallest paler.
+        for (size_t run = 0; run < runs_.size(); ++run) {
+          const ColorRGB color = runColor(scene_, run);
+          const ColorRGB pale{0.45f * color.r + 0.55f, 0.45f * color.g + 0.55f, 0.45f * color.b + 0.55f};
+          plot.series.push_back({scene_.runs[run].name + ", largest", color, times, history_[run].curvatureHigh.view(),
+                                 {}, stopTimeSoFar(history_[run].frame)});
+          plot.series.push_back({scene_.runs[run].name + ", smallest", pale, times, history_[run].curvatureLow.view(),
+                                 {}, stopTimeSoFar(history_[run].frame)});
         }
         break;
       case PlotKind::EnergyError:

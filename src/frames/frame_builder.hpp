@@ -54,12 +54,15 @@ class FrameBuilder {
     SharedTrack<double> energyErrors;  // one per frame while running
     SharedTrack<double> jacobiSizes;   // one per frame while running (runs with Jacobi fields; else NaN)
     SharedTrack<double> spreads;       // one per frame: the family's largest hinge distance from the run
+    // One per frame while running, with a sectional plot: the smallest and largest curvature of the planes through
+    // the velocity (plot_overview.hpp's curvatureThroughVelocity).
+    SharedTrack<double> curvatureLow, curvatureHigh;
   };
 
   void sampleFrame(int k);  // advance the history to frame k (k = sampled_ + 1)
   void sampleRunAt(size_t run, double t, bool isFrameTime);
   void markStopped(std::size_t run, double t);
-  void recordFrameState(RunHistory& history, const Sample& sample);
+  void recordFrameState(std::size_t run, const Sample& sample);
   void sampleMembers(int k);
   double sampleSpacing() const;  // between consecutive path samples (after frame 0)
   double pathSampleTime(int k, int j, int substeps) const;  // every family member up to frame k, members spread over the cores

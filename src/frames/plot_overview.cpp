@@ -7,7 +7,9 @@
 #include "contracts/limits.hpp"
 #include "contracts/parallel_for.hpp"
 #include "contracts/registry.hpp"
+#include "geometry/sectional_curvature.hpp"
 #include "linkage/chain.hpp"
+#include "linkage/chain_constants.hpp"
 #include "simulation/family.hpp"
 #include "simulation/trajectory.hpp"
 
@@ -39,6 +41,7 @@ std::optional<PlotFrame::RoundoffOnly> roundoffOnly(PlotKind kind, double larges
       return PlotFrame::RoundoffOnly{largest, largest > limits::kRoundoffLevel, runs};
     case PlotKind::Jacobi:
     case PlotKind::Spread:
+    case PlotKind::Sectional:
       return std::nullopt;
   }
   return std::nullopt;
@@ -46,6 +49,12 @@ std::optional<PlotFrame::RoundoffOnly> roundoffOnly(PlotKind kind, double larges
 
 }  // namespace
 
+std::array<double, 2> curvatureThroughVelocity(const Chain& chain, const Sample& sample) {
+  const double nan = std::nan("");
+  if (chain.rods < 5 || chain.isSlack() || chain.rods > limits::kMaxRods || !(sample.sphereVelocity.norm() > 0))
+    return {nan, nan};
+  return sectionalCurvatureThrough(ChainConstants(chain), sample.spherePoint, sample.sphereVelocity);
+}
 
 MotionOverview overviewMotion(const Scene& scene, const std::vector<InitialState>& starts,
                               const std::function<bool()>& cancelled) {
@@ -66,7 +75,10 @@ MotionOverview overviewMotion(const Scene& scene, const std::vector<InitialState
   // Per frame: each run's divergence from run 0 (index 0 unused) and its energy error; NaN where not defined.
   const int frames = scene.frameCount();
   const double nan = std::nan("");
-  std::vector<std::vector<double>> divergence(runCount), energy(runCount), jacobi(runCount), spread(runCount);
+  std::vector<std::vector<double>> divergence(runCount), energy(runCount), jacobi(runCount), spread(runCount),
+      sectional(runCount);
+  const bool wantSectional =
+      std::any_of(plots.begin(), plots.end(), [](const PlotSpec& plot) { return plot.kind == PlotKind::Sectional; });
   std::vector<bool> stopped(runCount, false);
   // The families, only if a spread plot shows them.
   const bool wantSpread =
@@ -91,6 +103,11 @@ MotionOverview overviewMotion(const Scene& scene, const std::vector<InitialState
           holdPoint(box, samples[r]->hinges(0, j), samples[r]->hinges(1, j));
       energy[r].push_back(samples[r] ? std::abs(samples[r]->relativeEnergyDrift) : nan);
       jacobi[r].push_back(samples[r] ? samples[r]->jacobi.value_or(nan) : nan);
+      if (wantSectional) {  // both ends of the range: the axis holds them all
+        const std::array<double, 2> through = samples[r] ? curvatureThroughVelocity(scene.runs[r].chain, *samples[r])
+                                                         : std::array<double, 2>{nan, nan};
+        sectional[r].insert(sectional[r].end(), through.begin(), through.end());
+      }
       divergence[r].push_back(r > 0 && samples[0] && samples[r] ? hingeDistance(samples[0]->hinges, samples[r]->hinges)
                                                                  : nan);
     }
@@ -117,6 +134,7 @@ MotionOverview overviewMotion(const Scene& scene, const std::vector<InitialState
         case PlotKind::Jacobi: return jacobi;
         case PlotKind::Spread: return spread;
         case PlotKind::EnergyError: return energy;
+        case PlotKind::Sectional: return sectional;
       }
       throw std::logic_error("overviewMotion: a plot kind without values");
     }();

@@ -14,6 +14,7 @@
 #include "contracts/frame_state.hpp"
 #include "contracts/run_config.hpp"
 #include "scene/scene.hpp"
+#include "simulation/trajectory.hpp"
 
 namespace sl {
 
@@ -36,6 +37,10 @@ struct MotionOverview {
 // `cancelled` is given to the trajectories (Trajectory::setCancellation): RunCancelled comes through.
 MotionOverview overviewMotion(const Scene& scene, const std::vector<InitialState>& starts,
                               const std::function<bool()>& cancelled = {});
+
+// The sectional plot's values at a sample: the smallest and largest curvature of the planes through the velocity
+// (geometry/sectional_curvature.hpp); NaN where the chain is slack, has fewer than 5 rods or the sample is at rest.
+std::array<double, 2> curvatureThroughVelocity(const Chain& chain, const Sample& sample);
 
 
 }  // namespace sl

@@ -56,6 +56,11 @@ SectionalRange sectionalCurvatureRange(const ChainConstants& bound, const Eigen:
   return sectional::curvatureRange(checkedEmbedding(bound, spherePoint), spherePoint);
 }
 
+std::array<double, 2> sectionalCurvatureThrough(const ChainConstants& bound, const Eigen::VectorXd& spherePoint,
+                                                const Eigen::VectorXd& velocity) {
+  return sectional::rangeThrough(checkedEmbedding(bound, spherePoint), spherePoint, velocity);
+}
+
 std::vector<Eigen::VectorXd> orthonormalTangentBasis(const ChainConstants& bound, const Eigen::VectorXd& spherePoint) {
   const ChainEmbedding embed = checkedEmbedding(bound, spherePoint);
   const sectional::AmbientFrame<ChainEmbedding> frame(embed, spherePoint);

@@ -16,6 +16,7 @@
 // Tangent vectors are given as sphere velocities (tangent vectors of S^(n-2) in R^(n-1), like Sample's
 // sphereVelocity); every evaluation uses the atlas chart best conditioned at the point, so no point is special.
 
+#include <array>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -45,6 +46,11 @@ double sectionalCurvatureIntrinsic(const ChainConstants& bound, const Eigen::Vec
 // plane there. 6 and more: the largest and smallest of alternating Rayleigh-quotient ascents over planes started
 // from every pair of the curvature operator's eigen-directions, each a local extremum (docs/geometry.md).
 SectionalRange sectionalCurvatureRange(const ChainConstants& bound, const Eigen::VectorXd& spherePoint);
+
+// The smallest and largest curvature of the planes through the tangent vector v at x: {min, max} of K(v, w) over w.
+// A motion's Jacobi fields feel these (J'' + R(J, v)v = 0): where both are positive, nearby motions refocus.
+std::array<double, 2> sectionalCurvatureThrough(const ChainConstants& bound, const Eigen::VectorXd& spherePoint,
+                                                const Eigen::VectorXd& velocity);
 
 // A g-orthonormal basis of the tangent space at x, as sphere velocities (deterministic): what planes are written in.
 std::vector<Eigen::VectorXd> orthonormalTangentBasis(const ChainConstants& bound, const Eigen::VectorXd& spherePoint);

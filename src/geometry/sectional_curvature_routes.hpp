@@ -9,6 +9,7 @@
 // and the second-order jet flow through it.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -351,6 +352,24 @@ SectionalRange curvatureRange(const Embedding& embed, const Eigen::VectorXd& sph
   range.minimumPlane[1] = frame.chart.sphereVelocity(form.basis * lowest.y);
   range.maximumPlane[0] = frame.chart.sphereVelocity(form.basis * highest.x);
   range.maximumPlane[1] = frame.chart.sphereVelocity(form.basis * highest.y);
+  return range;
+}
+
+// The smallest and largest K(v, w) over the planes through the tangent vector v (sectionalCurvatureThrough): the
+// extreme eigenvalues of v's Jacobi operator on the complement of v.
+template <class Embedding>
+std::array<double, 2> rangeThrough(const Embedding& embed, const Eigen::VectorXd& spherePoint,
+                                   const Eigen::VectorXd& velocity) {
+  const AmbientFrame<Embedding> frame(embed, spherePoint);
+  const OrthonormalSecondForm form = orthonormalSecondForm(frame);
+  const Eigen::VectorXd coefficients = form.basis.partialPivLu().solve(frame.chart.rates(velocity));
+  if (!(coefficients.norm() > 0) || !coefficients.allFinite())
+    throw std::invalid_argument("sectional curvature: the velocity is zero or not finite");
+  const Eigen::VectorXd v = coefficients.normalized();
+  const Eigen::MatrixXd A = jacobiOperator(form, frame, v);
+  std::array<double, 2> range{0, 0};
+  extremeDirection(A, v, -1.0, range[0]);
+  extremeDirection(A, v, 1.0, range[1]);
   return range;
 }
 

@@ -75,6 +75,9 @@ std::vector<std::string> plotTitles(const PlotFrame& plot) {
               "Jacobi field |J\u22a5| (zeros: conjugate points)", "Jacobi field |J\u22a5|", "|J\u22a5|"};
     case PlotKind::Spread:
       return {"spread of the family (largest hinge distance from the run)", "spread of the family", "spread"};
+    case PlotKind::Sectional:
+      return {"curvature of the planes through the velocity: largest and smallest K(v, \u00b7)",
+              "curvature of the planes through the velocity", "curvature through the velocity", "K(v, \u00b7)"};
   }
   return {""};
 }
@@ -114,6 +117,7 @@ std::vector<std::string> roundoffNotes(const PlotFrame& plot) {
       return {"the runs agree " + level + " (largest hinge distance)", "the runs agree " + level};
     case PlotKind::Jacobi:
     case PlotKind::Spread:
+    case PlotKind::Sectional:
       return {};
   }
   return {};
@@ -128,6 +132,8 @@ std::string valueAxisWords(PlotKind kind) {
       return "|J⊥| (metric units)";
     case PlotKind::EnergyError:
       return "|E − E₀| / E₀ (no unit)";
+    case PlotKind::Sectional:
+      return "sectional curvature K";
   }
   return "";
 }

@@ -53,7 +53,8 @@ void addPanel(const json& value, const std::string& path, Scene& scene, bool rod
       kind = pickKind(object.pathOf("panel"), *name, kPanelKinds, problems);
     if (const auto name = object.string("plot")) {
       if (const auto plotKind = pickKind(object.pathOf("plot"), *name, kPlotKinds, problems)) plot.kind = *plotKind;
-      plot.logY = plot.kind != PlotKind::Jacobi;  // a Jacobi field's zeros need a linear axis
+      // A Jacobi field's zeros and a curvature's sign need a linear axis.
+      plot.logY = plot.kind != PlotKind::Jacobi && plot.kind != PlotKind::Sectional;
     }
     if (const auto scale = object.string("scale")) {
       plot.logY = pickKind(object.pathOf("scale"), *scale, kPlotScales, problems).value_or(true);
@@ -94,6 +95,10 @@ void addPanel(const json& value, const std::string& path, Scene& scene, bool rod
         std::any_of(scene.runs.begin(), scene.runs.end(), [](const RunSpec& run) { return run.family.has_value(); });
     if (plot.kind == PlotKind::Spread && !anyFamily)
       problems.push_back({path, "a spread plot shows how families spread; expected a run with a \"family\""});
+    if (plot.kind == PlotKind::Sectional && rodsKnown && scene.chain.rods < 5)
+      problems.push_back({path, "a sectional plot shows the curvature of the planes of S^3 and larger; expected 5 rods "
+                                "or more, found " + std::to_string(scene.chain.rods) +
+                                " (for 4 rods every plane has the Gaussian curvature: view.sphere.color_by)"});
     panel.plotIndex = static_cast<int>(scene.view.plots.size());
     scene.view.plots.push_back(plot);
   }

@@ -8,6 +8,9 @@
 #include "contracts/registry.hpp"
 #include "contracts/limits.hpp"
 #include "frames/frame_builder.hpp"
+#include "geometry/sectional_curvature.hpp"
+#include "linkage/chain_constants.hpp"
+#include "simulation/trajectory.hpp"
 #include "linkage/chain.hpp"
 #include "scene/scene_loader.hpp"
 #include "simulation/family.hpp"
@@ -425,6 +428,54 @@ TEST(FrameBuilder, APlotThatStaysEmptySaysWhy) {
   EXPECT_EQ(frame.plots[0].earlyStops[0].run, "published");
   EXPECT_EQ(frame.plots[0].earlyStops[0].time, 0.0);
   EXPECT_EQ(frame.plots[0].earlyStops[0].reason, StopReason::FieldBlowUp);
+}
+
+// The sectional plot (5 rods): each run's largest and smallest curvature of the planes through its velocity, two
+// series per run; each value is checked against planes through the velocity computed here, and the axis holds both.
+TEST(FrameBuilder, SectionalPlotShowsTheRangeOfCurvatureThroughTheVelocity) {
+  const Scene scene = parseScene(R"({"name": "s", "linkage": {"rods": 5, "L": 4},
+    "initial": {"coords": [0.2, 0.3, 0.4], "velocity": [0.4, -0.3, 0.6]}, "duration": 2.0,
+    "runs": [{"name": "g", "method": "ambient", "integrator": "dopri5", "tolerance": 1e-10}],
+    "output": {"fps": 5}, "view": {"panels": ["sphere", {"panel": "plot", "plot": "sectional"}]}})",
+                                 "s.json");
+  ASSERT_EQ(scene.view.plots.size(), 1u);
+  EXPECT_FALSE(scene.view.plots[0].logY);
+  FrameBuilder builder = builderFor(scene);
+  const FrameState last = builder.frame(builder.frameCount() - 1);
+  ASSERT_EQ(last.plots[0].series.size(), 2u);
+  const PlotSeries &high = last.plots[0].series[0], &low = last.plots[0].series[1];
+  EXPECT_EQ(high.label, "g, largest");
+  EXPECT_EQ(low.label, "g, smallest");
+  ASSERT_EQ(high.values.size(), static_cast<std::size_t>(builder.frameCount()));
+  Trajectory run(scene.runs[0].chain, startsOf(scene)[0], scene.runs[0].config);
+  const ChainConstants bound(scene.runs[0].chain);
+  for (int k = 0; k < builder.frameCount(); ++k) {
+    const std::optional<Sample> sample = run.sampleAt(scene.frameTime(k));
+    ASSERT_TRUE(sample);
+    const Eigen::VectorXd& x = sample->spherePoint;
+    const Eigen::VectorXd& v = sample->sphereVelocity;
+    ASSERT_LT(low.values[std::size_t(k)], high.values[std::size_t(k)]);
+    // Planes through v: each within the range.
+    for (const Eigen::Vector4d& other : {Eigen::Vector4d(1, 0, 0, 0), Eigen::Vector4d(0, 1, 0, 0), Eigen::Vector4d(0, 0, 1, 1)}) {
+      Eigen::VectorXd w = other - other.dot(x) * x;
+      const double K = sectionalCurvature(bound, x, v, w);
+      EXPECT_GE(K, low.values[std::size_t(k)] - 1e-10);
+      EXPECT_LE(K, high.values[std::size_t(k)] + 1e-10);
+    }
+    ASSERT_TRUE(last.plots[0].valueRange);
+    EXPECT_LE((*last.plots[0].valueRange)[0], low.values[std::size_t(k)]);
+    EXPECT_GE((*last.plots[0].valueRange)[1], high.values[std::size_t(k)]);
+  }
+  // 4 rods: refused with its path.
+  try {
+    parseScene(R"({"name": "s", "linkage": {"rods": 4, "L": 3}, "initial": {"coords": [0.2, 0.3], "velocity": [0.4, 0.3]},
+      "runs": [{"name": "g", "method": "ambient"}], "view": {"panels": [{"panel": "plot", "plot": "sectional"}]}})",
+               "four.json");
+    FAIL() << "a sectional plot of 4 rods was accepted";
+  } catch (const std::exception& error) {
+    EXPECT_NE(std::string(error.what()).find("view.panels[0]"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("expected 5 rods or more, found 4"), std::string::npos) << error.what();
+  }
 }
 
 // The linkage panel's box is the part of the plane the whole motion sweeps, known from the first frame: the box

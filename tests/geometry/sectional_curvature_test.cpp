@@ -165,6 +165,30 @@ TEST(SectionalCurvature, RangeHoldsRandomPlanesAndIsAttained) {
     }
 }
 
+// The range through a velocity holds every plane through it and lies within the range over all planes.
+TEST(SectionalCurvature, RangeThroughAVelocityHoldsEveryPlaneThroughIt) {
+  RandomPlanes draw(19);
+  const ChainConstants bound(fiveRods(3.7, 2));
+  for (int i = 0; i < 20; ++i) {
+    const Eigen::VectorXd x = draw.point(4), v = draw.tangent(x);
+    const std::array<double, 2> through = sectionalCurvatureThrough(bound, x, v);
+    const SectionalRange all = sectionalCurvatureRange(bound, x);
+    const double scale = std::max({1.0, std::abs(all.minimum), std::abs(all.maximum)});
+    EXPECT_LE(through[0], through[1]);
+    EXPECT_GE(through[0], all.minimum - 1e-12 * scale);
+    EXPECT_LE(through[1], all.maximum + 1e-12 * scale);
+    double lo = INFINITY, hi = -INFINITY;
+    for (int j = 0; j < 200; ++j) {
+      const double K = sectionalCurvature(bound, x, v, draw.tangent(x, v));
+      lo = std::min(lo, K), hi = std::max(hi, K);
+    }
+    EXPECT_GE(lo, through[0] - 1e-10 * scale);
+    EXPECT_LE(hi, through[1] + 1e-10 * scale);
+    EXPECT_NEAR(lo, through[0], 0.05 * (through[1] - through[0]) + 1e-12);  // 200 planes come close to both ends
+    EXPECT_NEAR(hi, through[1], 0.05 * (through[1] - through[0]) + 1e-12);
+  }
+}
+
 TEST(SectionalCurvature, RefusesVectorsThatSpanNoPlane) {
   const ChainConstants bound(fiveRods(4.2, 0));
   const Eigen::VectorXd x = Eigen::Vector4d(1, 0, 0, 0);
