@@ -10,7 +10,9 @@
 #include "cli/interrupt.hpp"
 #include "cli/self_check_words.hpp"
 #include "inverse/connect.hpp"
+#include "inverse/holonomy.hpp"
 #include "inverse/periodic.hpp"
+#include "inverse/self_check.hpp"
 #include "linkage/chart.hpp"
 #include "scene/json_fields.hpp"
 #include "scene/scene_loader.hpp"
@@ -131,6 +133,33 @@ std::vector<SceneProblem> resolveMotionStarts(Scene& scene) {
     const ConstrainedModel model = ConstrainedModel::fromChain(scene.chain);
     if (const auto q = configurationOf(scene.chain, model, *scene.distanceFrom, "view.sphere.distance_from", problems))
       scene.distancePoint = spherePointFromHinges(scene.chain, ConstrainedModel::unstack(*q));
+  }
+  scene.holonomyPoints.clear();
+  if (!scene.holonomyCorners.empty()) {  // the holonomy polygon's corners, placed on the rod constraints
+    const ConstrainedModel model = ConstrainedModel::fromChain(scene.chain);
+    for (std::size_t i = 0; i < scene.holonomyCorners.size(); ++i) {
+      const std::string path = indexPath("view.sphere.holonomy.corners", i);
+      const auto q = configurationOf(scene.chain, model, scene.holonomyCorners[i], path, problems);
+      if (!q) continue;
+      scene.holonomyPoints.push_back(spherePointFromHinges(scene.chain, ConstrainedModel::unstack(*q)));
+      if (i > 0 && scene.holonomyPoints.size() == i + 1 &&
+          (scene.holonomyPoints[i] - scene.holonomyPoints[i - 1]).norm() < 1e-9)
+        problems.push_back({path, "is the same shape as the corner before it; expected the corners of a polygon"});
+    }
+    // The polygon computed once here, so that what a render would refuse validate refuses too (its shortest motions
+    // found, its enclosed curvature defined, its own checks passed); the frames compute it again (30 ms).
+    if (problems.empty() && scene.holonomyPoints.size() == scene.holonomyCorners.size()) {
+      const std::string path = "view.sphere.holonomy.corners";
+      try {
+        const SelfCheck check = selfCheck(polygonHolonomy(scene.chain, scene.holonomyPoints, interruptRequested));
+        if (check != SelfCheck::confirmed)
+          problems.push_back({path, "the polygon's holonomy is unconfirmed: " + selfCheckReason(check)});
+      } catch (const RunCancelled&) {
+        throw;
+      } catch (const std::exception& error) {
+        problems.push_back({path, error.what()});
+      }
+    }
   }
   std::map<std::string, Found> searches;
   bool any = false;

@@ -209,6 +209,20 @@ struct SphereDistance {
   double injectivityRadius = 0;
 };
 
+// A tangent vector parallel transported round a geodesic polygon (view.sphere.holonomy; inverse/holonomy.hpp).
+struct SphereTransport {
+  struct Arrow {
+    Vec3 base;       // on the unit sphere
+    Vec3 direction;  // the transported vector there, tangent, unit length in R^3 (its angle to the sides is the
+                     // kinetic metric's, drawn in the sphere's own)
+  };
+  std::vector<Arrow> arrows;  // round the loop in order: the first is the starting vector, the last the returning one
+  std::vector<Vec3> corners;
+  double holonomy = 0;           // the turning, in (-pi, pi]
+  double angleExcess = 0;        // 2 pi - sum of the turning angles at the corners (angle sum - pi for a triangle)
+  double enclosedCurvature = 0;  // integral of K dA over the region to the loop's left
+};
+
 // What the sphere panel draws on and over the sphere, the same in every frame (shared, never copied).
 struct SphereDecoration {
   std::optional<SphereField> field;
@@ -216,6 +230,7 @@ struct SphereDecoration {
   bool seam = false;                    // the seams t = +-pi/2 drawn and named
   std::optional<SphereDistance> distance;  // with the distance colouring
   std::vector<SphereCurve> curves;      // the loci of the distance colouring, each named by a label
+  std::optional<SphereTransport> transport;  // a vector carried round a polygon, with its holonomy
 };
 
 struct FrameState {

@@ -40,7 +40,10 @@ struct SphereSurfaceSpec {
   bool stiffness = false;
   bool seam = false;  // the seams t = +-pi/2 drawn and named
   bool closedGeodesics = false;  // the simple closed geodesics drawn faintly (inverse/periodic.hpp)
-  bool decorated() const { return colorBy != SphereColoring::None || stiffness || seam || closedGeodesics; }
+  bool holonomy = false;  // a vector carried round a geodesic polygon (the scene's view.sphere.holonomy corners)
+  bool decorated() const {
+    return colorBy != SphereColoring::None || stiffness || seam || closedGeodesics || holonomy;
+  }
 };
 
 struct ViewSettings {

@@ -150,7 +150,7 @@ FrameBuilder::FrameBuilder(const Scene& scene, const std::vector<InitialState>& 
       history_(runs_.size()),
       divergence_(runs_.empty() ? 0 : runs_.size() - 1),
       sphereDecoration_(makeSphereDecoration(scene.chain, scene.view.sphereSurface, distancePoint(scene, starts),
-                                             !scene.distanceFrom)),
+                                             !scene.distanceFrom, scene.holonomyPoints)),
       title_(fillTitlePlaceholders(scene.title, scene, injectivityRadiusOf(sphereDecoration_))),
       shortTitle_(fillTitlePlaceholders(scene.shortTitle, scene, injectivityRadiusOf(sphereDecoration_))),
       overview_(overviewMotion(scene, starts, cancelled)),

@@ -12,6 +12,7 @@
 #include "geometry/curvature_grid.hpp"
 #include "inverse/distance_map.hpp"
 #include "inverse/geodesic_flow.hpp"
+#include "inverse/holonomy.hpp"
 #include "inverse/periodic.hpp"
 #include "linkage/chart.hpp"
 
@@ -201,10 +202,26 @@ std::vector<SphereCurve> closedGeodesicCurves(const Chain& chain) {
   return curves;
 }
 
+// A vector carried round the polygon through the corners: arrows at evenly spaced times of each side (the first the
+// starting vector at corner 1, the last the returning one there) and the three figures of Gauss-Bonnet.
+SphereTransport transportAround(const Chain& chain, const std::vector<Eigen::VectorXd>& corners) {
+  constexpr int kArrowsPerSide = 6;
+  const Holonomy h = polygonHolonomy(chain, corners, nullptr, kArrowsPerSide);
+  SphereTransport transport;
+  for (const Holonomy::Sample& s : h.samples)
+    transport.arrows.push_back({vec(Eigen::Vector3d(s.point).normalized()), vec(Eigen::Vector3d(s.transported).normalized())});
+  for (const Eigen::VectorXd& c : corners) transport.corners.push_back(vec(Eigen::Vector3d(c).normalized()));
+  transport.holonomy = h.angle;
+  transport.angleExcess = h.angleExcess.value_or(0.0);
+  transport.enclosedCurvature = h.enclosedCurvature;
+  return transport;
+}
+
 }  // namespace
 
 std::shared_ptr<const SphereDecoration> makeSphereDecoration(const Chain& chain, const SphereSurfaceSpec& spec,
-                                                             const Eigen::VectorXd& distancePoint, bool fromStart) {
+                                                             const Eigen::VectorXd& distancePoint, bool fromStart,
+                                                             const std::vector<Eigen::VectorXd>& holonomyCorners) {
   if (!spec.decorated()) return nullptr;
   const ConfigurationSurface surface(chain);
   auto decoration = std::make_shared<SphereDecoration>();
@@ -219,6 +236,11 @@ std::shared_ptr<const SphereDecoration> makeSphereDecoration(const Chain& chain,
   if (spec.closedGeodesics)
     for (SphereCurve& curve : closedGeodesicCurves(chain)) decoration->curves.push_back(std::move(curve));
   if (spec.stiffness) decoration->ellipses = stiffnessEllipses(surface);
+  if (spec.holonomy) {
+    if (holonomyCorners.size() < 3)
+      throw std::invalid_argument("makeSphereDecoration: the holonomy needs the polygon's corners (at least 3)");
+    decoration->transport = transportAround(chain, holonomyCorners);
+  }
   return decoration;
 }
 

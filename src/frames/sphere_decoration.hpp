@@ -14,10 +14,12 @@ namespace sl {
 
 // Null when the spec asks for nothing. The chain must have 4 rods when it asks for something (the scene
 // loader refuses other chains with the JSON path). The distance colouring is measured from `distancePoint` (a
-// point of the configuration sphere; `fromStart`: the first run's start, else one the scene names).
+// point of the configuration sphere; `fromStart`: the first run's start, else one the scene names). The holonomy is
+// that of the geodesic polygon through `holonomyCorners` (sphere points, at least 3).
 std::shared_ptr<const SphereDecoration> makeSphereDecoration(const Chain& chain, const SphereSurfaceSpec& spec,
                                                              const Eigen::VectorXd& distancePoint = {},
-                                                             bool fromStart = true);
+                                                             bool fromStart = true,
+                                                             const std::vector<Eigen::VectorXd>& holonomyCorners = {});
 
 // Grid and glyph counts: a colour texture of 128 x 256 cells (1.4 degrees), 72 ellipses.
 inline constexpr int kSphereFieldRows = 128;

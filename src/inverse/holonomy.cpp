@@ -141,7 +141,8 @@ std::optional<double> Holonomy::excessDifference() const {
   return angleDifference(angle, *angleExcess);
 }
 
-Holonomy polygonHolonomy(const Chain& chain, const std::vector<Eigen::VectorXd>& corners, bool (*cancelled)()) {
+Holonomy polygonHolonomy(const Chain& chain, const std::vector<Eigen::VectorXd>& corners, bool (*cancelled)(),
+                         int samplesPerPiece) {
   requireFourRods(chain);
   if (corners.size() < 3) throw std::invalid_argument("holonomy: expected at least 3 corners");
   const ChainConstants bound(chain);
@@ -180,6 +181,19 @@ Holonomy polygonHolonomy(const Chain& chain, const std::vector<Eigen::VectorXd>&
   for (std::size_t i = 0; i < m; ++i) {
     const std::size_t next = (i + 1) % m;
     FlowState s{q[i], velocity[i], Eigen::MatrixXd(q[i].size(), 0), Eigen::MatrixXd(q[i].size(), 0), w};
+    if (samplesPerPiece > 0) {  // a separate pass, so that the angle does not depend on how the loop is drawn
+      FlowState shown = s;
+      auto record = [&] {
+        const Eigen::VectorXd p = spherePointFromHinges(chain, ConstrainedModel::unstack(shown.q));
+        h.samples.push_back({p, sphereVelocityFromHingeVelocities(chain, p, ConstrainedModel::unstack(shown.v)),
+                             sphereVelocityFromHingeVelocities(chain, p, ConstrainedModel::unstack(shown.transported.col(0)))});
+      };
+      if (i == 0) record();
+      for (int k = 1; k <= samplesPerPiece; ++k) {
+        flow.advance(shown, 1.0 / samplesPerPiece);
+        record();
+      }
+    }
     flow.advance(s, 1.0);
     arriving[i] = s.v;
     w = model.projectVelocity(q[next], s.transported.col(0));

@@ -30,6 +30,12 @@ struct Holonomy {
   std::vector<double> pieceLengths;   // geodesic loops: the length of each motion
   double length = 0;                  // of the whole loop, in the kinetic metric
   int chartChanges = 0;               // the chart route's changes of chart round the loop
+  // Geodesic loops, when asked for: the loop sampled evenly in each piece's time, the first sample at corner 1 and
+  // the last back there, with the transported vector (ambient route) and the path's velocity, as sphere velocities.
+  struct Sample {
+    Eigen::VectorXd point, velocity, transported;
+  };
+  std::vector<Sample> samples;
 
   // The checks, each reduced to (-pi, pi]: routes against each other, holonomy against the enclosed curvature and
   // against the angle excess.
@@ -42,7 +48,8 @@ struct Holonomy {
 // antipodal), each pair joined by its shortest motion (inverse/connect.hpp), the last back to the first.
 // Throws std::invalid_argument for fewer than 3 corners or a chain that is not of 4 rods, std::runtime_error if no
 // motion between two corners is found.
-Holonomy polygonHolonomy(const Chain& chain, const std::vector<Eigen::VectorXd>& corners, bool (*cancelled)() = nullptr);
+Holonomy polygonHolonomy(const Chain& chain, const std::vector<Eigen::VectorXd>& corners, bool (*cancelled)() = nullptr,
+                         int samplesPerPiece = 0);
 
 // The latitude phi = constant of chart 0 (|phi| < pi/2), run with t increasing: counter-clockwise round the pole
 // phi = pi/2, whose cap is the enclosed region.

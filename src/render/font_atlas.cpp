@@ -15,13 +15,14 @@ namespace sl {
 namespace {
 
 // Printable ASCII, Greek (phi, theta, pi, ...), and the symbols labels use: degree, plus-minus, minus (U+2212),
-// square root (U+221A), perpendicular (U+22A5), superscript digits and minus, subscript zero, the ellipsis.
+// square root (U+221A), perpendicular (U+22A5), integral (U+222B), superscript digits and minus, subscript zero, the
+// ellipsis.
 std::vector<int> charset() {
   std::vector<int> codepoints;
   for (int c = 32; c < 127; ++c) codepoints.push_back(c);
   for (int c = 0x391; c <= 0x3C9; ++c) codepoints.push_back(c);
-  for (int c : {0xB0, 0xB1, 0xB7, 0xD7,   0x2013, 0x2014, 0x2026, 0x2212, 0x2248, 0x2192, 0x221E, 0x2070, 0x221A, 0x22A5,
-                0xB9, 0xB2, 0xB3, 0x2074, 0x2075, 0x2076, 0x2077, 0x2078, 0x2079, 0x207B, 0x2080, 0xFFFD})
+  for (int c : {0xB0,   0xB1,   0xB7,   0xD7,   0x2013, 0x2014, 0x2026, 0x2212, 0x2248, 0x2192, 0x221E, 0x2070, 0x221A,
+                0x22A5, 0x222B, 0xB9,   0xB2,   0xB3, 0x2074, 0x2075, 0x2076, 0x2077, 0x2078, 0x2079, 0x207B, 0x2080, 0xFFFD})
     codepoints.push_back(c);
   return codepoints;
 }

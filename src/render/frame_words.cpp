@@ -191,6 +191,24 @@ std::vector<std::string> ellipseCaptions() {
           "ellipses: stiffness |II(v,v)|\u00b2 over directions v", "ellipses: stiffness"};
 }
 
+std::vector<std::string> transportCaptions(const SphereTransport& transport) {
+  auto fixed = [](double value, int digits) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.*f", digits, value);
+    return withMinusSigns(text);
+  };
+  const std::size_t m = transport.corners.size();
+  const std::string polygon = m == 3 ? "triangle" : m == 4 ? "quadrilateral" : std::to_string(m) + "-gon";
+  const std::string excess = m == 3 ? "angle sum \u2212 \u03c0" : "angle sum \u2212 " + std::to_string(m - 2) + "\u03c0";
+  const std::string h = fixed(transport.holonomy, 3), degrees = fixed(transport.holonomy * 180 / M_PI, 1) + "\u00b0";
+  const std::string e = fixed(transport.angleExcess, 3), k = fixed(transport.enclosedCurvature, 3);
+  return {"arrows: a vector carried round the " + polygon + " comes back turned: " + excess + " = " + e +
+              " = \u222bK dA = " + k + " = holonomy " + h + " rad (" + degrees + ")",
+          excess + " = " + e + " = \u222bK dA = " + k + " = holonomy " + h + " rad (" + degrees + ")",
+          excess + " = \u222bK dA = holonomy = " + h + " rad (" + degrees + ")", "holonomy " + h + " rad (" + degrees + ")",
+          "holonomy " + degrees};
+}
+
 std::vector<std::string> chartPoleLabels(bool north) {
   if (north) return {"chart pole \u03c6 = 90\u00b0", "\u03c6 = 90\u00b0", "N"};
   return {"chart pole \u03c6 = \u221290\u00b0", "\u03c6 = \u221290\u00b0", "S"};

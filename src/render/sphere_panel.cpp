@@ -932,6 +932,52 @@ void drawLoci(const SphereDecoration& decoration, const PanelContext& context, c
     if (name.at) drawLabel(curveName(kind), *name.at, false, context, placer, placed, labels);
 }
 
+// A vector carried round a geodesic polygon (view.sphere.holonomy): an arrow at evenly spaced times of each side,
+// ink on a light halo (faint where the sphere hides it), the returning vector at the first corner in its own colour
+// beside the starting one, whose corner is ringed. An arrow spans kTransportArrowLength of the sphere whatever the
+// frame's size; its width follows the frame's unit, as the paths' do.
+constexpr double kTransportArrowLength = 0.2;
+void drawTransport(const SphereTransport& transport, const PanelContext& context, const SphereCamera& camera,
+                   LabelPlacer& placer, ShapeBatch& back, ShapeBatch& front) {
+  const Placement onSurface{true, 0.012};
+  const float mark = markUnit(context.unit);
+  const Rgba halo{1, 1, 1, 0.75f};  // over the sphere's colours, not the background
+  for (std::size_t i = 0; i < transport.arrows.size(); ++i) {
+    const SphereTransport::Arrow& arrow = transport.arrows[i];
+    const bool starting = i == 0, returning = i + 1 == transport.arrows.size();
+    const Vec3 tip{arrow.base.x + kTransportArrowLength * arrow.direction.x,
+                   arrow.base.y + kTransportArrowLength * arrow.direction.y,
+                   arrow.base.z + kTransportArrowLength * arrow.direction.z};
+    const V3 from3 = onSurface.place(arrow.base), to3 = onSurface.place(tip);
+    if (!camera.inFront(from3) || !camera.inFront(to3)) continue;
+    const P2 from = camera.project(from3), to = camera.project(to3);
+    const float length = std::hypot(to.x - from.x, to.y - from.y);
+    if (!(length > 2 * mark)) continue;  // seen end-on
+    const bool hidden = surfaceBehind(camera, from3) || surfaceBehind(camera, to3);
+    const Rgba color = returning ? palette::returningVector : palette::ink;
+    const float shaft = (starting || returning ? 1.5f : 1.0f) * mark, head = 3.2f * shaft;
+    const P2 dir = unitDirection(from, to), neck = plus(to, dir, -std::min(0.45f * length, 3.0f * head));
+    const auto draw = [&](ShapeBatch& into, float grow, Rgba c) {
+      into.polyline({{plus(from, dir, -grow), shaft + grow, c, {}}, {neck, shaft + grow, c, {}}});
+      into.polyline({{neck, head + grow, c, {}}, {plus(to, dir, grow), 0.3f * shaft + grow, c, {}}});
+    };
+    if (hidden) {
+      draw(back, 0, ghost(color));
+      continue;
+    }
+    draw(front, 1.2f * mark, halo);
+    draw(front, 0, color);
+    placer.avoidPoint(from);
+    placer.avoidPoint(to);
+    placer.avoidPoint({0.5f * (from.x + to.x), 0.5f * (from.y + to.y)});
+  }
+  if (!transport.corners.empty()) {
+    const V3 corner = onSurface.place(transport.corners.front());
+    if (camera.inFront(corner) && !surfaceBehind(camera, corner))
+      front.ring(camera.project(corner), 4.5f * mark, 0.9f * mark, palette::ink);
+  }
+}
+
 // A family on the sphere explained where no text panel does it: the run, its members and their wavefront, in the
 // panel's bottom-left corner (wrapped to at most two lines; the ball view's caption takes that corner there).
 void captionFamilies(const PanelContext& context, float width, ShapeBatch& batch) {
@@ -964,7 +1010,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   SphereCamera camera(cameraOfFrame(context.settings.camera, context.frame), context.frame.time, sphereRect);
   const Placement placement{space == ViewSpace::Sphere, kTubeRadius};
   // Captions at the panel's foot: the ball view's, the stiffness ellipses', or (no text panel) a family's.
-  const bool captioned = space == ViewSpace::Ball || (decoration && !decoration->ellipses.empty());
+  const bool captioned = space == ViewSpace::Ball || (decoration && (!decoration->ellipses.empty() || decoration->transport));
   const std::vector<PanelSpec> panels = effectivePanels(context.settings);
   const bool textPanel =
       std::any_of(panels.begin(), panels.end(), [](const PanelSpec& p) { return p.kind == PanelKind::Text; });
@@ -983,11 +1029,17 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
     const float pad = 0.02f * context.rect.height;
     const Placement onSurface{true, 0.004};
     drawEllipses(decoration->ellipses, camera, onSurface, context.rect, context.unit, batch);
+    // The captions at the foot, bottom up: the ellipses', then the holonomy's.
+    const float width = context.rect.width - 2 * pad - (colored ? colorBarStrip(context.rect) : 0);
+    float foot = context.rect.y + context.rect.height - pad;
     if (!decoration->ellipses.empty()) {
-      const float width = context.rect.width - 2 * pad - (colored ? colorBarStrip(context.rect) : 0);
       context.font.draw(batch, fittedForm(context.font, ellipseCaptions(), TextSize::Small, width), TextSize::Small,
-                        context.rect.x + pad, context.rect.y + context.rect.height - pad, palette::softInk);
+                        context.rect.x + pad, foot, palette::softInk);
+      foot -= context.font.lineHeight(TextSize::Small);
     }
+    if (decoration->transport)
+      context.font.draw(batch, fittedForm(context.font, transportCaptions(*decoration->transport), TextSize::Small, width),
+                        TextSize::Small, context.rect.x + pad, foot, palette::ink);
     if (colored) {
       const SphereField& field = *decoration->field;
       // A gap of a text line from the panel's right edge: the bar never butts against a neighbouring plot's axis.
@@ -1042,6 +1094,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
     ballBoxes.push_back({balls[k].at.x - r, balls[k].at.y - r, 2 * r, 2 * r});
   }
   for (const P2& p : pathPoints) placer.avoidPoint(p);
+  if (decoration && decoration->transport) drawTransport(*decoration->transport, context, camera, placer, back, front);
   // Labels over the paths (never struck through), placed clear of the balls, the paths and each other.
   ShapeBatch labelLayer, loci;  // the loci ride on the sphere, under every path
   if (decoration && decoration->seam) drawSeams(context, camera, placer, labels, loci, back, labelLayer);

@@ -49,6 +49,10 @@ struct Scene {
   // (empty: the first run's start); the commands resolve it into its sphere point (cli/motion_starts.hpp).
   std::optional<ConfigurationSpec> distanceFrom;
   Eigen::VectorXd distancePoint;
+  // view.sphere.holonomy.corners as the scene names them, and their sphere points once the commands resolve them
+  // (cli/motion_starts.hpp): the geodesic polygon whose holonomy the sphere panel draws.
+  std::vector<ConfigurationSpec> holonomyCorners;
+  std::vector<Eigen::VectorXd> holonomyPoints;
 
   int frameCount() const { return static_cast<int>(sl::frameCount(duration, output.fps)); }
   double frameTime(int frame) const { return sl::frameTime(frame, output.fps); }

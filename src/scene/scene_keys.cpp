@@ -634,8 +634,8 @@ std::vector<SceneKey> describeKeys() {
        .target = "ViewSettings::panels, ViewSettings::plots",
        .meaning =
            "panels in layout order: `\"sphere\"`, `\"linkage\"`, `\"plot\"`, `\"text\"`, or objects `{ \"panel\": "
-           "\"plot\", \"plot\": \"divergence\" \\| \"energy\", \"scale\": \"log\" \\| \"linear\", \"y_range\": [lo, "
-           "hi], "
+           "\"plot\", \"plot\": \"divergence\" \\| \"energy\" \\| \"jacobi\" \\| \"spread\" \\| \"sectional\", \"scale\": "
+           "\"log\" \\| \"linear\", \"y_range\": [lo, hi], "
            "\"rect\": [x, y, w, h] }` (rect in fractions of the frame from the top left; omitted = automatic layout, "
            "portrait frames stacked; a plot's axes span the whole animation from its first frame, y from the data of "
            "every frame unless `y_range` says otherwise, and its legend sits above the plot area, beside the title "
@@ -742,6 +742,35 @@ std::vector<SceneKey> describeKeys() {
        .meaning = "draw the simple closed geodesics of the scene's linkage (those `linkage periodic` lists as simple) "
                   "as faint curves on the sphere (4 rods), found once per render",
        .allowed = "true/false"},
+      {.path = "view.sphere.holonomy",
+       .type = KeyType::Object,
+       .summary = "a vector carried round a geodesic polygon (4 rods)",
+       .target = "Scene::holonomyCorners",
+       .meaning = "the geodesic polygon through `corners` (each joined to the next by its shortest motion, the last "
+                  "back to the first) with a tangent vector parallel transported round it, drawn as arrows along "
+                  "the sides, the returning vector beside the starting one, and the caption angle sum - pi = "
+                  "integral of K dA = holonomy (docs/geometry.md, \"Parallel transport and holonomy\"); computed once "
+                  "per render"},
+      {.path = "view.sphere.holonomy.corners",
+       .type = KeyType::Custom,
+       .required = true,
+       .summary = "the polygon's corners: 3 or more configurations",
+       .target = "Scene::holonomyCorners",
+       .meaning = "-",
+       .allowed = "a list of at least 3 configurations, `{\"coords\": [phi, t]}` or `{\"hinges\": [[x, y], ...]}`, "
+                  "consecutive ones different shapes",
+       .schema = json{{"type", "array"}, {"minItems", 3}, {"items", configuration}}},
+      {.path = "view.sphere.holonomy.corners[i].coords",
+       .type = KeyType::Numbers,
+       .summary = "chart 0 coordinates, n-2 numbers",
+       .target = "ConfigurationSpec::coords",
+       .meaning = "-"},
+      {.path = "view.sphere.holonomy.corners[i].hinges",
+       .type = KeyType::Custom,
+       .summary = "n-1 hinge positions [x, y]",
+       .target = "ConfigurationSpec::hinges",
+       .meaning = "-",
+       .schema = points},
       {.path = "view.camera",
        .type = KeyType::Object,
        .summary = "the sphere panel's camera",

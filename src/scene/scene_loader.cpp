@@ -232,7 +232,11 @@ ConfigurationSpec detail::readConfiguration(const JsonObject& parent, const std:
                               "...]} (n-1 points)");
     return spec;
   }
-  const JsonObject object(*parent.member(key), parent.pathOf(key), problems);
+  return readConfigurationObject(JsonObject(*parent.member(key), parent.pathOf(key), problems), rods);
+}
+
+ConfigurationSpec detail::readConfigurationObject(const JsonObject& object, RodCount rods) {
+  ConfigurationSpec spec;
   if (!object.isObject()) return spec;
   if (object.has("coords") == object.has("hinges")) {
     object.report(object.has("coords") ? "hinges" : "coords",

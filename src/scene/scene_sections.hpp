@@ -23,6 +23,8 @@ void readView(const nlohmann::json& view, Scene& scene, bool rodsKnown, std::vec
 // commands resolve it (cli/motion_starts.hpp).
 ConfigurationSpec readConfiguration(const JsonObject& parent, const std::string& key, std::optional<int> rods,
                                     std::vector<SceneProblem>& problems);
+// The same from the configuration's own object (an element of a list).
+ConfigurationSpec readConfigurationObject(const JsonObject& object, std::optional<int> rods);
 
 // "found "word" (did you mean ...); expected one of a, b, c" at path.
 void reportUnknownName(const std::string& path, const std::string& word, const std::vector<std::string>& names,

@@ -233,14 +233,37 @@ void readSphereSurface(const JsonObject& view, Scene& scene, bool rodsKnown, std
                                      "{\"coords\": [...]} (chart 0, n-2 numbers) or {\"hinges\": [[x, y], ...]} "
                                      "(n-1 points)");
   }
+  scene.holonomyCorners.clear();
+  surface.holonomy = false;
+  if (object.has("holonomy")) {
+    const JsonObject holonomy(*object.member("holonomy"), object.pathOf("holonomy"), problems);
+    const nlohmann::json* corners = holonomy.isObject() ? holonomy.member("corners") : nullptr;
+    if (holonomy.isObject() && !corners) {
+      holonomy.reportMissing("corners", "a list of at least 3 configurations, the corners of a geodesic polygon");
+    } else if (corners && (!corners->is_array() || corners->size() < 3)) {
+      holonomy.report("corners", "found " + describeJson(*corners) + "; expected a list of at least 3 "
+                                 "configurations, the corners of a geodesic polygon");
+    } else if (corners) {
+      const std::optional<int> rods = rodsKnown ? std::optional<int>(scene.chain.rods) : std::nullopt;
+      for (std::size_t i = 0; i < corners->size(); ++i)
+        scene.holonomyCorners.push_back(
+            readConfigurationObject(JsonObject((*corners)[i], indexPath(holonomy.pathOf("corners"), i), problems), rods));
+      surface.holonomy = true;
+    }
+  }
+  auto reset = [&] {
+    surface = {};
+    scene.distanceFrom.reset();
+    scene.holonomyCorners.clear();
+  };
   if (rodsKnown && scene.chain.isSlack() && surface.decorated()) {
     object.report(surface.colorBy != SphereColoring::None ? "color_by"
                   : surface.stiffness                      ? "stiffness"
                   : surface.seam                           ? "seam"
+                  : surface.holonomy                       ? "holonomy"
                                                            : "closed_geodesics",
                   "a slack chain (L <= n-2) has no configuration sphere to colour or decorate");
-    surface = {};
-    scene.distanceFrom.reset();
+    reset();
   }
   if (rodsKnown && scene.chain.rods != 4 && surface.decorated()) {
     const std::string why = "found " + std::to_string(scene.chain.rods) +
@@ -250,8 +273,11 @@ void readSphereSurface(const JsonObject& view, Scene& scene, bool rodsKnown, std
     if (surface.stiffness) object.report("stiffness", why);
     if (surface.seam) object.report("seam", why);
     if (surface.closedGeodesics) object.report("closed_geodesics", why);
-    surface = {};
-    scene.distanceFrom.reset();
+    if (surface.holonomy)
+      object.report("holonomy", "found " + std::to_string(scene.chain.rods) +
+                                    " rods; the holonomy of a loop is drawn for 4 rods only (for more rods: "
+                                    "linkage geometry --sectional)");
+    reset();
   }
 }
 

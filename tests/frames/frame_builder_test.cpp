@@ -736,5 +736,41 @@ TEST(SphereDecoration, ClosedGeodesicsAreTheThreeSimpleOnesEachClosed) {
   }
 }
 
+// A vector carried round a geodesic triangle (view.sphere.holonomy): arrows round the loop from the first corner back
+// to it, each tangent to the sphere; the three figures of Gauss-Bonnet agree.
+TEST(SphereDecoration, HolonomyArrowsGoRoundTheTriangleAndItsFiguresAgree) {
+  const Chain chain = Chain::uniform(4, 3.0);
+  auto point = [](double phi, double t) {
+    return Eigen::VectorXd(Eigen::Vector3d(std::cos(phi) * std::cos(t), std::cos(phi) * std::sin(t), std::sin(phi)));
+  };
+  const std::vector<Eigen::VectorXd> corners = {point(0.2, 0.0), point(0.3, 1.4), point(1.2, 0.6)};
+  SphereSurfaceSpec spec;
+  spec.holonomy = true;
+  EXPECT_THROW(makeSphereDecoration(chain, spec), std::invalid_argument);  // the corners were not given
+  const auto decoration = makeSphereDecoration(chain, spec, {}, true, corners);
+  ASSERT_NE(decoration, nullptr);
+  ASSERT_TRUE(decoration->transport);
+  const SphereTransport& t = *decoration->transport;
+  ASSERT_EQ(t.corners.size(), 3u);
+  ASSERT_GE(t.arrows.size(), 7u);
+  auto near = [](const Vec3& a, const Eigen::VectorXd& b, double tolerance) {
+    return std::abs(a.x - b(0)) < tolerance && std::abs(a.y - b(1)) < tolerance && std::abs(a.z - b(2)) < tolerance;
+  };
+  EXPECT_TRUE(near(t.arrows.front().base, corners[0], 1e-12));
+  EXPECT_TRUE(near(t.arrows.back().base, corners[0], 1e-8));  // back at the first corner
+  for (const SphereTransport::Arrow& a : t.arrows) {
+    EXPECT_NEAR(a.base.x * a.direction.x + a.base.y * a.direction.y + a.base.z * a.direction.z, 0.0, 1e-8);  // tangent
+    EXPECT_NEAR(std::hypot(a.direction.x, a.direction.y, a.direction.z), 1.0, 1e-12);
+  }
+  // The returning arrow differs from the starting one: the vector came back turned.
+  const double turned = std::acos(t.arrows.front().direction.x * t.arrows.back().direction.x +
+                                  t.arrows.front().direction.y * t.arrows.back().direction.y +
+                                  t.arrows.front().direction.z * t.arrows.back().direction.z);
+  EXPECT_GT(turned, 0.1);
+  EXPECT_NEAR(t.holonomy, 0.3298489844393, 1e-9);  // docs/geometry.md's triangle, by the CLI
+  EXPECT_NEAR(t.angleExcess, t.holonomy, 1e-8);
+  EXPECT_NEAR(t.enclosedCurvature, t.holonomy, 1e-8);
+}
+
 }  // namespace
 }  // namespace sl
