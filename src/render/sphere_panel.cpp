@@ -1010,10 +1010,12 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
   SphereCamera camera(cameraOfFrame(context.settings.camera, context.frame), context.frame.time, sphereRect);
   const Placement placement{space == ViewSpace::Sphere, kTubeRadius};
   // Captions at the panel's foot: the ball view's, the stiffness ellipses', or (no text panel) a family's.
-  const bool captioned = space == ViewSpace::Ball || (decoration && (!decoration->ellipses.empty() || decoration->transport));
   const std::vector<PanelSpec> panels = effectivePanels(context.settings);
   const bool textPanel =
       std::any_of(panels.begin(), panels.end(), [](const PanelSpec& p) { return p.kind == PanelKind::Text; });
+  // A holonomy's figures go under the sphere unless a text panel says them.
+  const bool transportCaption = decoration && decoration->transport && !textPanel;
+  const bool captioned = space == ViewSpace::Ball || (decoration && !decoration->ellipses.empty()) || transportCaption;
   const bool families = std::any_of(context.frame.runs.begin(), context.frame.runs.end(),
                                     [](const RunFrame& run) { return !run.members.empty(); });
   // Labels stay in the sphere's part of the panel, clear of the colour bar and of the captions at its foot (room for
@@ -1037,7 +1039,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
                         context.rect.x + pad, foot, palette::softInk);
       foot -= context.font.lineHeight(TextSize::Small);
     }
-    if (decoration->transport)
+    if (transportCaption)
       context.font.draw(batch, fittedForm(context.font, transportCaptions(*decoration->transport), TextSize::Small, width),
                         TextSize::Small, context.rect.x + pad, foot, palette::ink);
     if (colored) {

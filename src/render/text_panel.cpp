@@ -118,10 +118,18 @@ void drawTextPanel(const PanelContext& c, ShapeBatch& batch) {
   const float firstRow = y + 0.15f * titleLine;
   const float bottom = c.rect.y + c.rect.height;
   // A stop is said as fully as the panel has room for: explained, then with its reading, then by its reason.
+  // A polygon's holonomy (view.sphere.holonomy) takes a line under the runs: the sphere panel leaves its caption to it.
+  const SphereDecoration* decoration = c.frame.sphereDecoration.get();
+  const bool holonomy = decoration && decoration->transport;
+  const float holonomyLine = holonomy ? c.font.lineHeight(TextSize::Small) : 0.0f;
   for (const TextSize size : {TextSize::Normal, TextSize::Small}) {
     for (const StopDetail detail : {StopDetail::Explained, StopDetail::Measured, StopDetail::Reason}) {
-      if (flowRuns(c, size, detail, pad, firstRow, nullptr) <= bottom) {
-        flowRuns(c, size, detail, pad, firstRow, &batch);
+      if (flowRuns(c, size, detail, pad, firstRow, nullptr) + holonomyLine <= bottom) {
+        const float end = flowRuns(c, size, detail, pad, firstRow, &batch);
+        if (holonomy)
+          c.font.draw(batch, fittedForm(c.font, transportCaptions(*decoration->transport), TextSize::Small,
+                                        c.rect.width - 2 * pad),
+                      TextSize::Small, c.rect.x + pad, end + holonomyLine, palette::ink);
         return;
       }
     }

@@ -183,5 +183,26 @@ TEST(FontAtlas, DamagedFontFilesAreRefusedNotRead) {
   EXPECT_NE(damaged("").find("is damaged"), std::string::npos);
 }
 
+// A holonomy's caption: Gauss-Bonnet's three figures in the longest forms, the turning in every form, true minus
+// signs, each form shorter than the one before.
+TEST(FrameWords, HolonomyCaptionsGiveTheThreeFiguresAndShortenInOrder) {
+  SphereTransport t;
+  t.corners.resize(3);
+  t.holonomy = -0.32985;
+  t.angleExcess = -0.32985;
+  t.enclosedCurvature = -0.32985;
+  const std::vector<std::string> forms = transportCaptions(t);
+  ASSERT_GE(forms.size(), 3u);
+  EXPECT_NE(forms[0].find("angle sum \u2212 \u03c0 = \u22120.330 = \u222bK dA = \u22120.330 = holonomy \u22120.330 rad (\u221218.9\u00b0)"),
+            std::string::npos) << forms[0];
+  EXPECT_NE(forms[0].find("triangle"), std::string::npos);
+  for (std::size_t i = 1; i < forms.size(); ++i) {
+    EXPECT_LT(forms[i].size(), forms[i - 1].size()) << forms[i];
+    EXPECT_NE(forms[i].find("18.9\u00b0"), std::string::npos) << forms[i];
+  }
+  t.corners.resize(5);
+  EXPECT_NE(transportCaptions(t)[0].find("5-gon comes back turned: angle sum \u2212 3\u03c0"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace sl
