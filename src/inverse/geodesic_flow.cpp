@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include <boost/numeric/odeint.hpp>
+#include "inverse/controlled_steps.hpp"
 
 namespace sl {
 
@@ -72,41 +72,26 @@ Eigen::VectorXd GeodesicFlow::acceleration(const Eigen::VectorXd& q, const Eigen
 
 bool GeodesicFlow::advance(FlowState& state, double duration,
                            const std::function<bool(double, const FlowState&)>& observer) const {
-  namespace odeint = boost::numeric::odeint;
-  using Stepper = odeint::runge_kutta_fehlberg78<Packed>;
-  auto stepper = odeint::make_controlled<Stepper>(tolerance_, tolerance_);
   const int columns = static_cast<int>(state.dq.cols()), transported = static_cast<int>(state.transported.cols());
   auto system = [&](const Packed& y, Packed& dydt, double) { derivative(y, dydt, columns, transported); };
   Packed y;
   pack(state, y);
   if (observer && !observer(0.0, state)) return duration == 0.0;
-  double t = 0.0, dt = std::min(0.05, duration);
-  int failures = 0;
-  while (t < duration) {
-    const bool last = dt >= duration - t;
-    if (last) dt = duration - t;
-    const double before = t;
-    const odeint::controlled_step_result result = stepper.try_step(system, y, t, dt);
-    if (result == odeint::fail) {
-      if (++failures > 500 || dt < 1e-12 * std::max(1.0, t))
-        throw std::runtime_error("geodesic flow: the step size collapsed at t = " + std::to_string(t));
-      continue;
-    }
-    failures = 0;
-    if (last && t - before >= (duration - before) * (1 - 1e-15)) t = duration;
-    unpack(y, state);
+  const auto settle = [&](double t, Packed& packed) {
+    unpack(packed, state);
     if (model_.relativeResidual(state.q) > 1e-15) {
       model_.projectPosition(state.q);
       state.v = model_.projectVelocity(state.q, state.v);
       model_.projectVariations(state.q, state.v, state.dq, state.dv);
       for (Eigen::Index j = 0; j < state.transported.cols(); ++j)
         state.transported.col(j) = model_.projectVelocity(state.q, state.transported.col(j));
-      pack(state, y);
+      pack(state, packed);
     }
-    if (observer && !observer(t, state)) return t >= duration;
-  }
+    return !observer || observer(t, state);
+  };
+  const bool whole = integrateControlled(system, y, duration, tolerance_, settle, "geodesic flow");
   unpack(y, state);
-  return true;
+  return whole;
 }
 
 }  // namespace sl

@@ -5,8 +5,8 @@
 #include <stdexcept>
 #include <string>
 
-#include <boost/numeric/odeint.hpp>
 
+#include "inverse/controlled_steps.hpp"
 #include "linkage/sphere_coordinates.hpp"
 #include "simulation/exact_fields.hpp"
 
@@ -14,35 +14,11 @@ namespace sl {
 
 namespace {
 
-namespace odeint = boost::numeric::odeint;
 using Packed = std::vector<double>;
 
 // A chart is given up between steps once another is twice as well conditioned at the point: no chart is ever used
 // near its singular set, and no chart change is made back and forth for nothing.
 constexpr double kChartChangeRatio = 0.5;
-
-// Advances y over [0, length] by Runge-Kutta-Fehlberg 7(8) with step control, calling `settle(s, y)` after every
-// accepted step (it may change y, the chart). Throws when the step size collapses.
-template <class System, class Settle>
-void integrate(System&& system, Packed& y, double length, double tolerance, Settle&& settle, const char* what) {
-  using Stepper = odeint::runge_kutta_fehlberg78<Packed>;
-  auto stepper = odeint::make_controlled<Stepper>(tolerance, tolerance);
-  double s = 0.0, ds = std::min(0.05, length);
-  int failures = 0;
-  while (s < length) {
-    const bool last = ds >= length - s;
-    if (last) ds = length - s;
-    const double before = s;
-    if (stepper.try_step(system, y, s, ds) == odeint::fail) {
-      if (++failures > 500 || ds < 1e-12 * std::max(1.0, s))
-        throw std::runtime_error(std::string(what) + ": the step size collapsed at s = " + std::to_string(s));
-      continue;
-    }
-    failures = 0;
-    if (last && s - before >= (length - before) * (1 - 1e-15)) s = length;
-    settle(s, y);
-  }
-}
 
 // The chart side's state: a chart of the atlas and the coordinates of the point in it.
 struct Chart {
@@ -117,14 +93,15 @@ ChartTransport transportAlongGeodesicInCharts(const ChristoffelField& gamma, con
   };
   Packed y;
   load(y);
-  integrate(system, y, duration, tolerance,
+  integrateControlled(system, y, duration, tolerance,
             [&](double, Packed& state) {
               const Eigen::VectorXd x = spherePointInChart<double>(chart.axes, Eigen::Map<const Eigen::VectorXd>(state.data(), k));
-              if (!chart.shouldChange(x)) return;
+              if (!chart.shouldChange(x)) return true;
               store(state);
               chart.choose(out.point);
               ++out.chartChanges;
               load(state);
+              return true;
             },
             "parallel transport (charts)");
   store(y);
@@ -167,13 +144,14 @@ std::vector<Eigen::VectorXd> transportAlongPathInCharts(const ChristoffelField& 
   };
   Packed y;
   load(0.0, y);
-  integrate(system, y, length, tolerance,
+  integrateControlled(system, y, length, tolerance,
             [&](double s, Packed& state) {
               path(s, x, xdot);
-              if (!chart.shouldChange(x)) return;
+              if (!chart.shouldChange(x)) return true;
               store(s, state);
               chart.choose(x);
               load(s, state);
+              return true;
             },
             "parallel transport (charts)");
   store(length, y);
@@ -197,7 +175,7 @@ Eigen::MatrixXd transportAlongPathAmbient(const ConstrainedModel& model, const P
           kkt.solve(Eigen::VectorXd::Zero(n), -model.secondDerivatives(qdot, w));
     }
   };
-  integrate(system, y, length, tolerance, [](double, Packed&) {}, "parallel transport (ambient)");
+  integrateControlled(system, y, length, tolerance, [](double, Packed&) { return true; }, "parallel transport (ambient)");
   return Eigen::Map<const Eigen::MatrixXd>(y.data(), n, m);
 }
 
