@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 
 #include <boost/math/quadrature/gauss.hpp>
+#include <boost/math/quadrature/gauss_kronrod.hpp>
 
 #include "geometry/curvature.hpp"
 #include "geometry/sectional_curvature.hpp"
@@ -23,11 +25,15 @@ namespace sl {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-// Gauss-Legendre nodes per geodesic piece (along the loop) and per stretch of a chord of the cone, chords cut into
-// stretches of at most kChordStretch radians: the integrand is analytic on each, so the rule converges
-// geometrically (long chords over a strongly curved sphere, L = 2.6, needed the cut to reach 1e-8).
-constexpr int kQuadratureNodes = 48;
-constexpr double kChordStretch = 0.5;
+// Gauss-Legendre nodes per geodesic piece along the loop (the integrand is analytic there, so the rule converges
+// geometrically), and along each chord of the cone adaptive Gauss-Kronrod (15 points, bisected down to 1e-13): near
+// L = n - 2 the curvature gathers into narrow peaks where the chain folds flat (at L = 2.05 a fixed rule of 48 nodes
+// per half radian still missed 4e-4 of the equator's 2 pi).
+constexpr int kQuadratureNodes = 32;
+constexpr double kChordTolerance = 1e-12;
+constexpr unsigned kChordDepth = 8;
+constexpr double kPieceTolerance = 1e-12;
+constexpr int kMaxPieceParts = 4;
 constexpr double kTransportTolerance = 1e-13;
 
 struct QuadratureRule {
@@ -86,30 +92,45 @@ double turningAngle(const ConstrainedModel& model, const OrientedFrame& frame, c
   return angleDifference(angleInFrame(model, frame, b), angleInFrame(model, frame, a));
 }
 
-// Integral of K dA over the cone of chords from the apex to the path's points, for one piece of the path given at
-// the rule's nodes (points gamma and their derivatives along the piece's parameter, over a piece of unit length).
-double coneCurvature(const ConfigurationSurface& surface, const Eigen::Vector3d& apex,
-                     const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& derivatives) {
+// A piece of a loop at ascending parameters s in [0, 1]: its points and their derivatives d/ds.
+using PieceSampler =
+    std::function<void(const std::vector<double>& s, std::vector<Eigen::Vector3d>& points,
+                       std::vector<Eigen::Vector3d>& derivatives)>;
+
+// Integral of K dA over the cone of chords from the apex to one piece of the loop. Along each chord adaptive
+// Gauss-Kronrod; along the piece the Gauss-Legendre rule composed over 1, 2, 4, ... equal parts until two
+// successive results agree to kPieceTolerance (near L = n - 2 the curvature gathers into peaks a single rule misses).
+double coneCurvature(const ConfigurationSurface& surface, const Eigen::Vector3d& apex, const PieceSampler& sample) {
   const QuadratureRule& rule = gaussRule();
-  double total = 0;
-  for (std::size_t j = 0; j < points.size(); ++j) {
-    // y = (1 - u) A + u gamma: det[x, x_u, x_s] = u det[A, gamma, gamma'] / |y|^3 for x = y / |y|.
-    const double spread = apex.dot(points[j].cross(derivatives[j]));
-    const double angle = std::atan2(apex.cross(points[j]).norm(), apex.dot(points[j]));
+  auto chord = [&](const Eigen::Vector3d& point) {
+    const double angle = std::atan2(apex.cross(point).norm(), apex.dot(point));
     if (!(angle < 3.0)) throw std::invalid_argument("holonomy: the loop passes opposite its apex; split it into smaller loops");
-    const int stretches = std::max(1, static_cast<int>(std::ceil(angle / kChordStretch)));
-    double chord = 0;
-    for (int stretch = 0; stretch < stretches; ++stretch)
-      for (std::size_t l = 0; l < rule.nodes.size(); ++l) {
-        const double u = (stretch + rule.nodes[l]) / stretches;
-        const Eigen::Vector3d y = (1.0 - u) * apex + u * points[j];
-        const double r = y.norm();
-        const SecondFundamentalForm form = surface.secondFundamentalFormAt(y / r);
-        chord += rule.weights[l] / stretches * gaussianCurvature(form) * areaDensity(form) * u / (r * r * r);
+    // y = (1 - u) A + u gamma: det[x, x_u, x_s] = u det[A, gamma, gamma'] / |y|^3 for x = y / |y|.
+    const auto along = [&](double u) {
+      const Eigen::Vector3d y = (1.0 - u) * apex + u * point;
+      const double r = y.norm();
+      const SecondFundamentalForm form = surface.secondFundamentalFormAt(y / r);
+      return gaussianCurvature(form) * areaDensity(form) * u / (r * r * r);
+    };
+    return boost::math::quadrature::gauss_kronrod<double, 15>::integrate(along, 0.0, 1.0, kChordDepth, kChordTolerance);
+  };
+  double previous = 0;
+  for (int parts = 1;; parts *= 2) {
+    std::vector<double> nodes, weights;
+    for (int part = 0; part < parts; ++part)
+      for (std::size_t j = 0; j < rule.nodes.size(); ++j) {
+        nodes.push_back((part + rule.nodes[j]) / parts);
+        weights.push_back(rule.weights[j] / parts);
       }
-    total += rule.weights[j] * spread * chord;
+    std::vector<Eigen::Vector3d> points, derivatives;
+    sample(nodes, points, derivatives);
+    double total = 0;
+    for (std::size_t j = 0; j < nodes.size(); ++j)
+      total += weights[j] * apex.dot(points[j].cross(derivatives[j])) * chord(points[j]);
+    if (parts > 1 && std::abs(total - previous) <= kPieceTolerance * std::max(1.0, std::abs(total))) return total;
+    if (parts >= kMaxPieceParts) return total;  // unconverged: the holonomy's own check will say so
+    previous = total;
   }
-  return total;
 }
 
 Eigen::Vector3d apexOf(const std::vector<Eigen::VectorXd>& points) {
@@ -175,7 +196,6 @@ Holonomy polygonHolonomy(const Chain& chain, const std::vector<Eigen::VectorXd>&
   const GeodesicFlow flow(model, kTransportTolerance);
   const ConfigurationSurface surface(chain);
   const Eigen::Vector3d apex = apexOf(x);
-  const QuadratureRule& rule = gaussRule();
   Eigen::VectorXd w = start.ambient[0];
   std::vector<Eigen::VectorXd> arriving(m);
   for (std::size_t i = 0; i < m; ++i) {
@@ -197,18 +217,20 @@ Holonomy polygonHolonomy(const Chain& chain, const std::vector<Eigen::VectorXd>&
     flow.advance(s, 1.0);
     arriving[i] = s.v;
     w = model.projectVelocity(q[next], s.transported.col(0));
-    // The piece at the nodes, for the enclosed curvature.
-    FlowState along{q[i], velocity[i], Eigen::MatrixXd(q[i].size(), 0), Eigen::MatrixXd(q[i].size(), 0)};
-    std::vector<Eigen::Vector3d> points, derivatives;
-    double at = 0;
-    for (double node : rule.nodes) {
-      flow.advance(along, node - at);
-      at = node;
-      const Eigen::VectorXd p = spherePointFromHinges(chain, ConstrainedModel::unstack(along.q));
-      points.emplace_back(p);
-      derivatives.emplace_back(sphereVelocityFromHingeVelocities(chain, p, ConstrainedModel::unstack(along.v)));
-    }
-    h.enclosedCurvature += coneCurvature(surface, apex, points, derivatives);
+    // The piece at the quadrature's nodes, for the enclosed curvature.
+    const PieceSampler piece = [&](const std::vector<double>& nodes, std::vector<Eigen::Vector3d>& points,
+                                   std::vector<Eigen::Vector3d>& derivatives) {
+      FlowState along{q[i], velocity[i], Eigen::MatrixXd(q[i].size(), 0), Eigen::MatrixXd(q[i].size(), 0)};
+      double at = 0;
+      for (double node : nodes) {
+        flow.advance(along, node - at);
+        at = node;
+        const Eigen::VectorXd p = spherePointFromHinges(chain, ConstrainedModel::unstack(along.q));
+        points.emplace_back(p);
+        derivatives.emplace_back(sphereVelocityFromHingeVelocities(chain, p, ConstrainedModel::unstack(along.v)));
+      }
+    };
+    h.enclosedCurvature += coneCurvature(surface, apex, piece);
   }
   h.angle = angleInFrame(model, start, w);
 
@@ -263,21 +285,27 @@ Holonomy latitudeHolonomy(const Chain& chain, double phi) {
   const std::vector<Eigen::VectorXd> ws =
       transportAlongPathInCharts(chainChristoffelField(bound), sphere, 2.0 * kPi, {start.sphere[0]}, kTransportTolerance);
   h.chartAngle = angleInFrame(model, start, ConstrainedModel::stack(hingeVelocitiesOnSphere(chain, x0, ws[0])));
-  // The cap's curvature over the cone from its pole, and the loop's length, in four quarters.
+  // The cap's curvature over the cone from the pole on the latitude's side (the loop never passes opposite its
+  // apex), in four quarters; and the loop's length.
   const ConfigurationSurface surface(chain);
+  const Eigen::Vector3d pole(0, 0, phi < 0 ? -1.0 : 1.0);
   const QuadratureRule& rule = gaussRule();
   for (int quarter = 0; quarter < 4; ++quarter) {
-    std::vector<Eigen::Vector3d> points, derivatives;
+    const PieceSampler piece = [&](const std::vector<double>& nodes, std::vector<Eigen::Vector3d>& points,
+                                   std::vector<Eigen::Vector3d>& derivatives) {
+      for (double node : nodes) {
+        Eigen::VectorXd x, xdot;
+        sphere((quarter + node) * kPi / 2, x, xdot);
+        points.emplace_back(x);
+        derivatives.emplace_back(xdot * (kPi / 2));
+      }
+    };
+    h.enclosedCurvature += coneCurvature(surface, pole, piece);
     for (std::size_t j = 0; j < rule.nodes.size(); ++j) {
-      Eigen::VectorXd x, xdot, q, qdot;
-      const double arc = (quarter + rule.nodes[j]) * kPi / 2;
-      sphere(arc, x, xdot);
-      points.emplace_back(x);
-      derivatives.emplace_back(xdot * (kPi / 2));
-      ambient(arc, q, qdot);
+      Eigen::VectorXd q, qdot;
+      ambient((quarter + rule.nodes[j]) * kPi / 2, q, qdot);
       h.length += rule.weights[j] * (kPi / 2) * model.norm(qdot);
     }
-    h.enclosedCurvature += coneCurvature(surface, Eigen::Vector3d::UnitZ(), points, derivatives);
   }
   return h;
 }
