@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <iostream>
+#include <numbers>
 
 #include <nlohmann/json.hpp>
 
@@ -89,8 +89,9 @@ std::string runHolonomy(const Scene& scene, const CurvatureRequest& request) {
   std::string where;
   const nlohmann::json loop = readJsonArgument(request.input, "--holonomy", where);
   if (!loop.is_object() || (loop.contains("corners") == loop.contains("latitude")) || loop.size() != 1)
-    throw CommandExit(kExitBadInput, where + ": expected an object with one key, \"corners\" (a list of at least 3 "
-                                             "configurations) or \"latitude\" (phi of chart 0)");
+    throw CommandExit(kExitBadInput, where +
+                                         ": expected an object with one key, \"corners\" (a list of at least 3 "
+                                         "configurations) or \"latitude\" (phi of chart 0)");
   Holonomy h;
   nlohmann::ordered_json out;
   out["L"] = chain.baseLength;
@@ -99,7 +100,8 @@ std::string runHolonomy(const Scene& scene, const CurvatureRequest& request) {
     if (loop.contains("latitude")) {
       const double phi = numberAt(loop["latitude"], where + ": latitude");
       if (!(std::abs(phi) < std::numbers::pi / 2))
-        throw CommandExit(kExitBadInput, where + ": latitude: found " + shortest(phi) + "; expected -pi/2 < phi < pi/2");
+        throw CommandExit(kExitBadInput,
+                          where + ": latitude: found " + shortest(phi) + "; expected -pi/2 < phi < pi/2");
       h = latitudeHolonomy(chain, phi);
       out["loop"] = {{"latitude", phi}};
       what = "latitude phi = " + shortest(phi);
@@ -146,9 +148,10 @@ std::string runSectional(const Scene& scene, const CurvatureRequest& request) {
   std::string where;
   const nlohmann::json list = readJsonArgument(request.input, "--sectional", where);
   if (!list.is_array() || list.empty())
-    throw CommandExit(kExitBadInput, where + ": expected a list of configurations ({\"coords\": [...]} or "
-                                             "{\"hinges\": [...]}, each with optional \"planes\": [[X, Y], ...] of "
-                                             "chart-0 rates)");
+    throw CommandExit(kExitBadInput, where +
+                                         ": expected a list of configurations ({\"coords\": [...]} or "
+                                         "{\"hinges\": [...]}, each with optional \"planes\": [[X, Y], ...] of "
+                                         "chart-0 rates)");
   const ChainConstants bound(chain);
   const ConstrainedModel model = ConstrainedModel::fromChain(chain);
   const Eigen::Index k = chain.sphereDimension();
@@ -162,23 +165,24 @@ std::string runSectional(const Scene& scene, const CurvatureRequest& request) {
     const Eigen::VectorXd coords = chartZeroCoords(chain, q);
     const Eigen::VectorXd x = spherePointFromHinges(chain, ConstrainedModel::unstack(q));
     const SectionalRange range = sectionalCurvatureRange(bound, x);
-    auto planeJson = [&](const Eigen::VectorXd (&plane)[2]) {
+    auto planeJson = [&](const Eigen::VectorXd(&plane)[2]) {
       return nlohmann::json::array({vectorJson(coordinateRatesFromSphereVelocity(coords, plane[0])),
                                     vectorJson(coordinateRatesFromSphereVelocity(coords, plane[1]))});
     };
     // The extremes again by the intrinsic route: the point's own check.
-    const double check = std::max(std::abs(sectionalCurvatureIntrinsic(bound, x, range.minimumPlane[0], range.minimumPlane[1]) -
+    const double check =
+        std::max(std::abs(sectionalCurvatureIntrinsic(bound, x, range.minimumPlane[0], range.minimumPlane[1]) -
                           range.minimum),
                  std::abs(sectionalCurvatureIntrinsic(bound, x, range.maximumPlane[0], range.maximumPlane[1]) -
                           range.maximum)) /
-                        std::max({1.0, std::abs(range.minimum), std::abs(range.maximum)});
+        std::max({1.0, std::abs(range.minimum), std::abs(range.maximum)});
     worstCheck = std::max(worstCheck, check);
     nlohmann::ordered_json point{{"coords", vectorJson(coords)},
-                         {"K_min", range.minimum},
-                         {"K_max", range.maximum},
-                         {"plane_min", planeJson(range.minimumPlane)},
-                         {"plane_max", planeJson(range.maximumPlane)},
-                         {"intrinsic_check", check}};
+                                 {"K_min", range.minimum},
+                                 {"K_max", range.maximum},
+                                 {"plane_min", planeJson(range.minimumPlane)},
+                                 {"plane_max", planeJson(range.maximumPlane)},
+                                 {"intrinsic_check", check}};
     if (list[i].contains("planes")) {
       const nlohmann::json& planes = list[i]["planes"];
       if (!planes.is_array()) throw CommandExit(kExitBadInput, at + ": planes: expected a list of [X, Y]");
@@ -186,8 +190,8 @@ std::string runSectional(const Scene& scene, const CurvatureRequest& request) {
       for (std::size_t p = 0; p < planes.size(); ++p) {
         const std::string pw = at + ": planes[" + std::to_string(p) + "]";
         if (!planes[p].is_array() || planes[p].size() != 2)
-          throw CommandExit(kExitBadInput, pw + ": expected [X, Y], two arrays of " + std::to_string(k) +
-                                               " chart-0 rates");
+          throw CommandExit(kExitBadInput,
+                            pw + ": expected [X, Y], two arrays of " + std::to_string(k) + " chart-0 rates");
         const Eigen::VectorXd X = sphereVelocityFromCoordinateRates(coords, vectorAt(planes[p][0], k, pw + "[0]"));
         const Eigen::VectorXd Y = sphereVelocityFromCoordinateRates(coords, vectorAt(planes[p][1], k, pw + "[1]"));
         try {
@@ -204,9 +208,11 @@ std::string runSectional(const Scene& scene, const CurvatureRequest& request) {
   }
   writeJson(request.output, out);
   if (!(worstCheck <= kRouteAgreement))
-    throw CommandExit(kExitFailure, "linkage geometry: the sectional curvature is unconfirmed: its two routes differ "
-                                    "by " + shortest(worstCheck) + " (relative) at the extremes, more than " +
-                                    shortest(kRouteAgreement) + " (the JSON written lists each point's check)");
+    throw CommandExit(kExitFailure,
+                      "linkage geometry: the sectional curvature is unconfirmed: its two routes differ "
+                      "by " +
+                          shortest(worstCheck) + " (relative) at the extremes, more than " + shortest(kRouteAgreement) +
+                          " (the JSON written lists each point's check)");
   return "sectional curvature at " + std::to_string(list.size()) + " point" + (list.size() == 1 ? "" : "s") +
          " (routes agree to " + shortest(std::round(worstCheck * 1e16) / 1e16) + ")";
 }

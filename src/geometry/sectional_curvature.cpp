@@ -30,7 +30,8 @@ struct ChainEmbedding {
 
 ChainEmbedding checkedEmbedding(const ChainConstants& bound, const Eigen::VectorXd& spherePoint) {
   if (bound.chain.rods < 4)
-    throw std::invalid_argument("sectional curvature: expected a chain of at least 4 rods (a sphere of dimension >= 2)");
+    throw std::invalid_argument(
+        "sectional curvature: expected a chain of at least 4 rods (a sphere of dimension >= 2)");
   if (bound.stackedMass.size() == 0)
     throw std::invalid_argument("sectional curvature: computed for chains of at most " +
                                 std::to_string(limits::kMaxRods) + " rods");
@@ -59,17 +60,6 @@ SectionalRange sectionalCurvatureRange(const ChainConstants& bound, const Eigen:
 std::array<double, 2> sectionalCurvatureThrough(const ChainConstants& bound, const Eigen::VectorXd& spherePoint,
                                                 const Eigen::VectorXd& velocity) {
   return sectional::rangeThrough(checkedEmbedding(bound, spherePoint), spherePoint, velocity);
-}
-
-std::vector<Eigen::VectorXd> orthonormalTangentBasis(const ChainConstants& bound, const Eigen::VectorXd& spherePoint) {
-  const ChainEmbedding embed = checkedEmbedding(bound, spherePoint);
-  const sectional::AmbientFrame<ChainEmbedding> frame(embed, spherePoint);
-  const Eigen::Index k = frame.metric.rows();
-  const Eigen::LLT<Eigen::MatrixXd> cholesky(frame.metric);
-  const Eigen::MatrixXd basis = cholesky.matrixU().solve(Eigen::MatrixXd::Identity(k, k));
-  std::vector<Eigen::VectorXd> out;
-  for (Eigen::Index a = 0; a < k; ++a) out.push_back(frame.chart.sphereVelocity(basis.col(a)));
-  return out;
 }
 
 }  // namespace sl

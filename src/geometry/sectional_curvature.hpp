@@ -52,7 +52,4 @@ SectionalRange sectionalCurvatureRange(const ChainConstants& bound, const Eigen:
 std::array<double, 2> sectionalCurvatureThrough(const ChainConstants& bound, const Eigen::VectorXd& spherePoint,
                                                 const Eigen::VectorXd& velocity);
 
-// A g-orthonormal basis of the tangent space at x, as sphere velocities (deterministic): what planes are written in.
-std::vector<Eigen::VectorXd> orthonormalTangentBasis(const ChainConstants& bound, const Eigen::VectorXd& spherePoint);
-
 }  // namespace sl

@@ -50,7 +50,9 @@ struct ChartPoint {
     p.coords = coordinatesInChart(p.axes, x);
     return p;
   }
-  Eigen::VectorXd rates(const Eigen::VectorXd& sphereVelocity) const { return ratesInChart(axes, coords, sphereVelocity); }
+  Eigen::VectorXd rates(const Eigen::VectorXd& sphereVelocity) const {
+    return ratesInChart(axes, coords, sphereVelocity);
+  }
   Eigen::VectorXd sphereVelocity(const Eigen::VectorXd& rates) const {
     return sphereVelocityInChart(axes, coords, rates);
   }
@@ -102,8 +104,7 @@ struct AmbientFrame {
     const Eigen::Index k = chart.coords.size();
     for (Eigen::Index a = 0; a < k; a += 2) {
       const Eigen::Index b = std::min(a + 1, k - 1);
-      const Derivatives d =
-          derivativesAlong(embed, chart, Eigen::VectorXd::Unit(k, a), Eigen::VectorXd::Unit(k, b));
+      const Derivatives d = derivativesAlong(embed, chart, Eigen::VectorXd::Unit(k, a), Eigen::VectorXd::Unit(k, b));
       if (jacobian.size() == 0) jacobian.resize(d.u.size(), k);
       jacobian.col(a) = d.u;
       jacobian.col(b) = d.v;
@@ -210,7 +211,7 @@ double intrinsicRoute(const Embedding& embed, const Eigen::VectorXd& spherePoint
 
 // II(e_a, e_b) for a g-orthonormal basis (e_a) of rates: every pair from one jet per pair a < b.
 struct OrthonormalSecondForm {
-  Eigen::MatrixXd basis;                          // columns e_a, as rates
+  Eigen::MatrixXd basis;                         // columns e_a, as rates
   std::vector<std::vector<Eigen::VectorXd>> ii;  // ii[a][b] = II(e_a, e_b)
   int dimension() const { return static_cast<int>(basis.cols()); }
 };
@@ -235,7 +236,8 @@ OrthonormalSecondForm orthonormalSecondForm(const AmbientFrame<Embedding>& frame
 }
 
 // II(X, Y) for X, Y given by their coefficients in the orthonormal basis.
-inline Eigen::VectorXd secondForm(const OrthonormalSecondForm& form, const Eigen::VectorXd& x, const Eigen::VectorXd& y) {
+inline Eigen::VectorXd secondForm(const OrthonormalSecondForm& form, const Eigen::VectorXd& x,
+                                  const Eigen::VectorXd& y) {
   Eigen::VectorXd out = Eigen::VectorXd::Zero(form.ii[0][0].size());
   for (int a = 0; a < form.dimension(); ++a)
     for (int b = 0; b < form.dimension(); ++b)
@@ -246,7 +248,8 @@ inline Eigen::VectorXd secondForm(const OrthonormalSecondForm& form, const Eigen
 // The Jacobi operator of x restricted to x's orthogonal complement: A(b, d) = R(x ^ e_b, x ^ e_d), whose Rayleigh
 // quotient on a unit y orthogonal to x is K(x, y).
 template <class Embedding>
-Eigen::MatrixXd jacobiOperator(const OrthonormalSecondForm& form, const AmbientFrame<Embedding>& frame, const Eigen::VectorXd& x) {
+Eigen::MatrixXd jacobiOperator(const OrthonormalSecondForm& form, const AmbientFrame<Embedding>& frame,
+                               const Eigen::VectorXd& x) {
   const int k = form.dimension();
   const Eigen::VectorXd xx = secondForm(form, x, x);
   std::vector<Eigen::VectorXd> xe(static_cast<size_t>(k));
@@ -261,7 +264,8 @@ Eigen::MatrixXd jacobiOperator(const OrthonormalSecondForm& form, const AmbientF
 
 // The unit eigenvector of A on the orthogonal complement of x with the largest (sign +1) or smallest (-1)
 // eigenvalue.
-inline Eigen::VectorXd extremeDirection(const Eigen::MatrixXd& A, const Eigen::VectorXd& x, double sign, double& value) {
+inline Eigen::VectorXd extremeDirection(const Eigen::MatrixXd& A, const Eigen::VectorXd& x, double sign,
+                                        double& value) {
   const Eigen::Index k = A.rows();
   // An orthonormal basis of x's complement: the last k - 1 columns of a Householder QR of x.
   const Eigen::HouseholderQR<Eigen::MatrixXd> qr(x);
@@ -281,7 +285,8 @@ struct Plane {
 // Alternating ascent (sign +1) or descent (-1) of K(x, y): with x fixed the best y is an extreme eigenvector of x's
 // Jacobi operator, and the other way round; each half-step can only improve K, so it converges to a local extremum.
 template <class Embedding>
-Plane alternatingExtremum(const OrthonormalSecondForm& form, const AmbientFrame<Embedding>& frame, Plane plane, double sign) {
+Plane alternatingExtremum(const OrthonormalSecondForm& form, const AmbientFrame<Embedding>& frame, Plane plane,
+                          double sign) {
   for (int iteration = 0; iteration < 200; ++iteration) {
     const double before = plane.curvature;
     plane.y = extremeDirection(jacobiOperator(form, frame, plane.x), plane.x, sign, plane.curvature);

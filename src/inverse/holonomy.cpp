@@ -11,13 +11,13 @@
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
 #include "geometry/curvature.hpp"
-#include "geometry/sectional_curvature.hpp"
 #include "inverse/connect.hpp"
 #include "inverse/geodesic_flow.hpp"
 #include "inverse/parallel_transport.hpp"
 #include "linkage/chain_constants.hpp"
 #include "linkage/chart.hpp"
 #include "simulation/ambient_system.hpp"
+#include "simulation/family.hpp"
 #include "simulation/initial_state.hpp"
 
 namespace sl {
@@ -25,10 +25,11 @@ namespace sl {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-// Gauss-Legendre nodes per geodesic piece along the loop (the integrand is analytic there, so the rule converges
-// geometrically), and along each chord of the cone adaptive Gauss-Kronrod (15 points, bisected down to 1e-13): near
-// L = n - 2 the curvature gathers into narrow peaks where the chain folds flat (at L = 2.05 a fixed rule of 48 nodes
-// per half radian still missed 4e-4 of the equator's 2 pi).
+// The enclosed curvature's quadrature (coneCurvature): a Gauss-Legendre rule composed over 1, 2 and 4 parts of each
+// piece of the loop until two results agree, and along each chord adaptive Gauss-Kronrod (15 points, at most 8
+// bisections, to 1e-12). Near L = n - 2 the curvature gathers into narrow peaks where the chain folds flat: one fixed
+// rule missed 4e-4 of the equator's 2 pi at L = 2.05. The effort is bounded; what it does not reach, the holonomy's
+// own check reports.
 constexpr int kQuadratureNodes = 32;
 constexpr double kChordTolerance = 1e-12;
 constexpr unsigned kChordDepth = 8;
@@ -65,18 +66,24 @@ const QuadratureRule& gaussRule() {
 
 // A g-orthonormal frame of the tangent plane at x in the orientation of the outward normal, in both forms.
 struct OrientedFrame {
-  Eigen::VectorXd sphere[2];  // sphere velocities
+  Eigen::VectorXd sphere[2];   // sphere velocities
   Eigen::VectorXd ambient[2];  // stacked hinge velocities
 };
 
-OrientedFrame orientedFrame(const ChainConstants& bound, const Eigen::VectorXd& x) {
-  std::vector<Eigen::VectorXd> basis = orthonormalTangentBasis(bound, x);
+// The frame whose first vector is the path's left normal there (g-perpendicular to its velocity, a sphere
+// velocity): the vector the loop carries starts pointing into the region the loop turns round, and drawn along the
+// sides it never lies on them.
+OrientedFrame orientedFrame(const Chain& chain, const Eigen::VectorXd& x, const Eigen::VectorXd& pathVelocity) {
+  const std::vector<Eigen::VectorXd> along = orthonormalTangentFrame(chain, x, pathVelocity, 2);
+  const double side = Eigen::Vector3d(x).dot(Eigen::Vector3d(along[0]).cross(Eigen::Vector3d(along[1])));
+  std::vector<Eigen::VectorXd> basis =
+      orthonormalTangentFrame(chain, x, side < 0 ? Eigen::VectorXd(-along[1]) : along[1]);
   const Eigen::Vector3d p = x, a = basis[0], b = basis[1];
   if (p.dot(a.cross(b)) < 0) basis[1] = -basis[1];
   OrientedFrame frame;
   for (int i = 0; i < 2; ++i) {
     frame.sphere[i] = basis[static_cast<size_t>(i)];
-    frame.ambient[i] = ConstrainedModel::stack(hingeVelocitiesOnSphere(bound.chain, x, frame.sphere[i]));
+    frame.ambient[i] = ConstrainedModel::stack(hingeVelocitiesOnSphere(chain, x, frame.sphere[i]));
   }
   return frame;
 }
@@ -93,18 +100,18 @@ double turningAngle(const ConstrainedModel& model, const OrientedFrame& frame, c
 }
 
 // A piece of a loop at ascending parameters s in [0, 1]: its points and their derivatives d/ds.
-using PieceSampler =
-    std::function<void(const std::vector<double>& s, std::vector<Eigen::Vector3d>& points,
-                       std::vector<Eigen::Vector3d>& derivatives)>;
+using PieceSampler = std::function<void(const std::vector<double>& s, std::vector<Eigen::Vector3d>& points,
+                                        std::vector<Eigen::Vector3d>& derivatives)>;
 
 // Integral of K dA over the cone of chords from the apex to one piece of the loop. Along each chord adaptive
-// Gauss-Kronrod; along the piece the Gauss-Legendre rule composed over 1, 2, 4, ... equal parts until two
+// Gauss-Kronrod; along the piece the Gauss-Legendre rule composed over 1, 2 and 4 equal parts until two
 // successive results agree to kPieceTolerance (near L = n - 2 the curvature gathers into peaks a single rule misses).
 double coneCurvature(const ConfigurationSurface& surface, const Eigen::Vector3d& apex, const PieceSampler& sample) {
   const QuadratureRule& rule = gaussRule();
   auto chord = [&](const Eigen::Vector3d& point) {
     const double angle = std::atan2(apex.cross(point).norm(), apex.dot(point));
-    if (!(angle < 3.0)) throw std::invalid_argument("holonomy: the loop passes opposite its apex; split it into smaller loops");
+    if (!(angle < 3.0))
+      throw std::invalid_argument("holonomy: the loop passes opposite its apex; split it into smaller loops");
     // y = (1 - u) A + u gamma: det[x, x_u, x_s] = u det[A, gamma, gamma'] / |y|^3 for x = y / |y|.
     const auto along = [&](double u) {
       const Eigen::Vector3d y = (1.0 - u) * apex + u * point;
@@ -136,8 +143,10 @@ double coneCurvature(const ConfigurationSurface& surface, const Eigen::Vector3d&
 Eigen::Vector3d apexOf(const std::vector<Eigen::VectorXd>& points) {
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (const Eigen::VectorXd& p : points) sum += Eigen::Vector3d(p);
-  if (sum.norm() < 1e-6) throw std::invalid_argument("holonomy: the loop's corners balance round the sphere's centre; "
-                                                     "split it into smaller loops");
+  if (sum.norm() < 1e-6)
+    throw std::invalid_argument(
+        "holonomy: the loop's corners balance round the sphere's centre; "
+        "split it into smaller loops");
   return sum.normalized();
 }
 
@@ -190,7 +199,8 @@ Holonomy polygonHolonomy(const Chain& chain, const std::vector<Eigen::VectorXd>&
     h.length += piece->length;
   }
   stopIfCancelled(cancelled);
-  const OrientedFrame start = orientedFrame(bound, x[0]);
+  const OrientedFrame start = orientedFrame(
+      chain, x[0], sphereVelocityFromHingeVelocities(chain, x[0], ConstrainedModel::unstack(velocity[0])));
 
   // Ambient route, and each piece's arriving velocity and its points at the quadrature nodes.
   const GeodesicFlow flow(model, kTransportTolerance);
@@ -205,8 +215,9 @@ Holonomy polygonHolonomy(const Chain& chain, const std::vector<Eigen::VectorXd>&
       FlowState shown = s;
       auto record = [&] {
         const Eigen::VectorXd p = spherePointFromHinges(chain, ConstrainedModel::unstack(shown.q));
-        h.samples.push_back({p, sphereVelocityFromHingeVelocities(chain, p, ConstrainedModel::unstack(shown.v)),
-                             sphereVelocityFromHingeVelocities(chain, p, ConstrainedModel::unstack(shown.transported.col(0)))});
+        h.samples.push_back(
+            {p, sphereVelocityFromHingeVelocities(chain, p, ConstrainedModel::unstack(shown.v)),
+             sphereVelocityFromHingeVelocities(chain, p, ConstrainedModel::unstack(shown.transported.col(0)))});
       };
       if (i == 0) record();
       for (int k = 1; k <= samplesPerPiece; ++k) {
@@ -249,8 +260,12 @@ Holonomy polygonHolonomy(const Chain& chain, const std::vector<Eigen::VectorXd>&
   // Gauss-Bonnet for a geodesic polygon: the region to the left has integral K dA = 2 pi - sum of turning angles.
   double turning = 0;
   for (std::size_t i = 0; i < m; ++i) {
-    const double e = turningAngle(model, i == 0 ? start : orientedFrame(bound, x[i]), arriving[(i + m - 1) % m],
-                                  velocity[i]);
+    const double e = turningAngle(
+        model,
+        i == 0 ? start
+               : orientedFrame(chain, x[i],
+                               sphereVelocityFromHingeVelocities(chain, x[i], ConstrainedModel::unstack(velocity[i]))),
+        arriving[(i + m - 1) % m], velocity[i]);
     h.interiorAngles.push_back(kPi - e);
     turning += e;
   }
@@ -260,8 +275,7 @@ Holonomy polygonHolonomy(const Chain& chain, const std::vector<Eigen::VectorXd>&
 
 Holonomy latitudeHolonomy(const Chain& chain, double phi) {
   requireFourRods(chain);
-  if (!(std::abs(phi) < kPi / 2))
-    throw std::invalid_argument("holonomy: expected a latitude phi with |phi| < pi/2");
+  if (!(std::abs(phi) < kPi / 2)) throw std::invalid_argument("holonomy: expected a latitude phi with |phi| < pi/2");
   const ChainConstants bound(chain);
   const ConstrainedModel model = ConstrainedModel::fromChain(chain);
   const double c = std::cos(phi), s = std::sin(phi);
@@ -278,12 +292,12 @@ Holonomy latitudeHolonomy(const Chain& chain, double phi) {
   };
   Eigen::VectorXd x0, xdot0;
   sphere(0.0, x0, xdot0);
-  const OrientedFrame start = orientedFrame(bound, x0);
+  const OrientedFrame start = orientedFrame(chain, x0, xdot0);
   Holonomy h;
   const Eigen::MatrixXd w = transportAlongPathAmbient(model, ambient, 2.0 * kPi, start.ambient[0], kTransportTolerance);
   h.angle = angleInFrame(model, start, w.col(0));
-  const std::vector<Eigen::VectorXd> ws =
-      transportAlongPathInCharts(chainChristoffelField(bound), sphere, 2.0 * kPi, {start.sphere[0]}, kTransportTolerance);
+  const std::vector<Eigen::VectorXd> ws = transportAlongPathInCharts(chainChristoffelField(bound), sphere, 2.0 * kPi,
+                                                                     {start.sphere[0]}, kTransportTolerance);
   h.chartAngle = angleInFrame(model, start, ConstrainedModel::stack(hingeVelocitiesOnSphere(chain, x0, ws[0])));
   // The cap's curvature over the cone from the pole on the latitude's side (the loop never passes opposite its
   // apex), in four quarters; and the loop's length.

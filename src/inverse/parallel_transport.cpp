@@ -5,7 +5,6 @@
 #include <stdexcept>
 #include <string>
 
-
 #include "inverse/controlled_steps.hpp"
 #include "linkage/sphere_coordinates.hpp"
 #include "simulation/exact_fields.hpp"
@@ -36,7 +35,8 @@ struct Chart {
 };
 
 // Gamma(u, w)^i = Gamma^i_jk u^j w^k.
-Eigen::VectorXd contract(const std::vector<Eigen::MatrixXd>& gamma, const Eigen::VectorXd& u, const Eigen::VectorXd& w) {
+Eigen::VectorXd contract(const std::vector<Eigen::MatrixXd>& gamma, const Eigen::VectorXd& u,
+                         const Eigen::VectorXd& w) {
   Eigen::VectorXd out(static_cast<Eigen::Index>(gamma.size()));
   for (Eigen::Index i = 0; i < out.size(); ++i) out(i) = u.dot(gamma[static_cast<size_t>(i)] * w);
   return out;
@@ -93,17 +93,19 @@ ChartTransport transportAlongGeodesicInCharts(const ChristoffelField& gamma, con
   };
   Packed y;
   load(y);
-  integrateControlled(system, y, duration, tolerance,
-            [&](double, Packed& state) {
-              const Eigen::VectorXd x = spherePointInChart<double>(chart.axes, Eigen::Map<const Eigen::VectorXd>(state.data(), k));
-              if (!chart.shouldChange(x)) return true;
-              store(state);
-              chart.choose(out.point);
-              ++out.chartChanges;
-              load(state);
-              return true;
-            },
-            "parallel transport (charts)");
+  integrateControlled(
+      system, y, duration, tolerance,
+      [&](double, Packed& state) {
+        const Eigen::VectorXd x =
+            spherePointInChart<double>(chart.axes, Eigen::Map<const Eigen::VectorXd>(state.data(), k));
+        if (!chart.shouldChange(x)) return true;
+        store(state);
+        chart.choose(out.point);
+        ++out.chartChanges;
+        load(state);
+        return true;
+      },
+      "parallel transport (charts)");
   store(y);
   return out;
 }
@@ -144,16 +146,17 @@ std::vector<Eigen::VectorXd> transportAlongPathInCharts(const ChristoffelField& 
   };
   Packed y;
   load(0.0, y);
-  integrateControlled(system, y, length, tolerance,
-            [&](double s, Packed& state) {
-              path(s, x, xdot);
-              if (!chart.shouldChange(x)) return true;
-              store(s, state);
-              chart.choose(x);
-              load(s, state);
-              return true;
-            },
-            "parallel transport (charts)");
+  integrateControlled(
+      system, y, length, tolerance,
+      [&](double s, Packed& state) {
+        path(s, x, xdot);
+        if (!chart.shouldChange(x)) return true;
+        store(s, state);
+        chart.choose(x);
+        load(s, state);
+        return true;
+      },
+      "parallel transport (charts)");
   store(length, y);
   return out;
 }
@@ -175,7 +178,8 @@ Eigen::MatrixXd transportAlongPathAmbient(const ConstrainedModel& model, const P
           kkt.solve(Eigen::VectorXd::Zero(n), -model.secondDerivatives(qdot, w));
     }
   };
-  integrateControlled(system, y, length, tolerance, [](double, Packed&) { return true; }, "parallel transport (ambient)");
+  integrateControlled(
+      system, y, length, tolerance, [](double, Packed&) { return true; }, "parallel transport (ambient)");
   return Eigen::Map<const Eigen::MatrixXd>(y.data(), n, m);
 }
 
