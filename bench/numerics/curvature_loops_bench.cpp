@@ -2,6 +2,9 @@
 //   BM_HolonomyTriangle: the holonomy of a 3-corner loop on 4 rods, L = 3, including its three connects, both
 //     transport routes, the enclosed curvature and the angle excess (target: < 0.5 s).
 //   BM_HolonomyLatitude: the same for the latitude phi = 0.5 (both routes and the cap's curvature).
+//   BM_HolonomyDrawn: the triangle with the samples frames draw (12 per side, each with its swept curvature).
+//   BM_HolonomyClosedGeodesic: closed geodesic 0 of L = 3 (found once, outside the loop): both routes and the
+//     curvature of the half sphere inside it.
 //   BM_SectionalRange: the minimum and maximum of the sectional curvature over the planes at a point, 5 rods,
 //     L = 4 (target: < 1 ms); BM_SectionalRange/6: 6 rods (the alternating search).
 //   BM_SectionalPlane, BM_SectionalPlaneIntrinsic: one plane's curvature by each route, 5 rods.
@@ -24,6 +27,18 @@ void BM_HolonomyTriangle(benchmark::State& state) {
   const sl::Chain chain = sl::Chain::uniform(4, 3.0);
   const std::vector<Eigen::VectorXd> corners = {unit({1, 0, 0.2}), unit({0.2, 1, 0.3}), unit({0.4, 0.3, 1})};
   for (auto _ : state) benchmark::DoNotOptimize(sl::polygonHolonomy(chain, corners));
+}
+
+void BM_HolonomyDrawn(benchmark::State& state) {
+  const sl::Chain chain = sl::Chain::uniform(4, 3.0);
+  const std::vector<Eigen::VectorXd> corners = {unit({1, 0, 0.2}), unit({0.2, 1, 0.3}), unit({0.4, 0.3, 1})};
+  for (auto _ : state) benchmark::DoNotOptimize(sl::polygonHolonomy(chain, corners, nullptr, 12));
+}
+
+void BM_HolonomyClosedGeodesic(benchmark::State& state) {
+  const sl::Chain chain = sl::Chain::uniform(4, 3.0);
+  const sl::ClosedGeodesic geodesic = sl::closedGeodesicsOf(chain, 0).at(0);
+  for (auto _ : state) benchmark::DoNotOptimize(sl::closedGeodesicHolonomy(chain, geodesic));
 }
 
 void BM_HolonomyLatitude(benchmark::State& state) {
@@ -52,6 +67,8 @@ void BM_SectionalPlane(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(BM_HolonomyTriangle)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_HolonomyDrawn)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_HolonomyClosedGeodesic)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_HolonomyLatitude)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SectionalRange)->Arg(5)->Arg(6)->Unit(benchmark::kMicrosecond);
 BENCHMARK_TEMPLATE(BM_SectionalPlane, false)->Name("BM_SectionalPlane")->Unit(benchmark::kMicrosecond);

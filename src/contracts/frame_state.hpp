@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <initializer_list>
 #include <limits>
@@ -209,18 +210,58 @@ struct SphereDistance {
   double injectivityRadius = 0;
 };
 
-// A tangent vector parallel transported round a geodesic polygon (view.sphere.holonomy; inverse/holonomy.hpp).
+// A tangent vector parallel transported round a geodesic polygon (view.sphere.holonomy; inverse/holonomy.hpp),
+// carried over the whole animation: every side at once, at the fraction time / duration of its own time, each from
+// the vector the side before brings to its first corner. A scene whose runs are the sides, timed to arrive together
+// at the end (scenes/holonomy.json), shows each vector riding its run's ball; at the end the last side brings the
+// vector back to the first corner, turned by the holonomy.
 struct SphereTransport {
+  // The returning vector's colour, and the holonomy plot's line (the value it reaches is that vector's turn).
+  static constexpr ColorRGB kReturningColor{0.45f, 0.16f, 0.62f};
   struct Arrow {
     Vec3 base;       // on the unit sphere
     Vec3 direction;  // the transported vector there, tangent, unit length in R^3 (its angle to the sides is the
                      // kinetic metric's, drawn in the sphere's own)
+    std::size_t side = 0;
+    double fraction = 0;  // of the side's time, from its first corner
+    double swept = 0;     // integral of K dA swept from the loop's apex by the side so far (Holonomy::Sample::swept)
   };
-  std::vector<Arrow> arrows;  // round the loop in order: the first is the starting vector, the last the returning one
+  std::vector<Arrow> arrows;  // side by side, each at fractions 0, 1/k, ..., 1 (k = samplesPerSide)
+  int samplesPerSide = 1;
   std::vector<Vec3> corners;
   double holonomy = 0;           // the turning, in (-pi, pi]
   double angleExcess = 0;        // 2 pi - sum of the turning angles at the corners (angle sum - pi for a triangle)
   double enclosedCurvature = 0;  // integral of K dA over the region to the loop's left
+
+  // Side `side`'s carried vector at `fraction` of its time in [0, 1], between the two samples around it.
+  Arrow carriedAt(std::size_t side, double fraction) const {
+    const double at = std::clamp(fraction, 0.0, 1.0) * samplesPerSide;
+    const std::size_t k = std::min(static_cast<std::size_t>(at), static_cast<std::size_t>(samplesPerSide - 1));
+    const Arrow& a = arrows.at(side * std::size_t(samplesPerSide + 1) + k);
+    const Arrow& b = arrows.at(side * std::size_t(samplesPerSide + 1) + k + 1);
+    const double u = at - double(k);
+    const auto mix = [u](const Vec3& p, const Vec3& q) {
+      return Vec3{(1 - u) * p.x + u * q.x, (1 - u) * p.y + u * q.y, (1 - u) * p.z + u * q.z};
+    };
+    const auto unit = [](Vec3 v) {
+      const double n = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+      return Vec3{v.x / n, v.y / n, v.z / n};
+    };
+    Arrow c = a;
+    c.base = unit(mix(a.base, b.base));
+    Vec3 d = mix(a.direction, b.direction);  // tangent again at the base
+    const double along = d.x * c.base.x + d.y * c.base.y + d.z * c.base.z;
+    c.direction = unit({d.x - along * c.base.x, d.y - along * c.base.y, d.z - along * c.base.z});
+    c.fraction = std::clamp(fraction, 0.0, 1.0);
+    c.swept = (1 - u) * a.swept + u * b.swept;
+    return c;
+  }
+  // The curvature the sides have swept by `fraction` of their time, together: at 1, enclosedCurvature.
+  double sweptAt(double fraction) const {
+    double total = 0;
+    for (std::size_t side = 0; side < corners.size(); ++side) total += carriedAt(side, fraction).swept;
+    return total;
+  }
 };
 
 // What the sphere panel draws on and over the sphere, the same in every frame (shared, never copied).

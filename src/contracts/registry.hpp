@@ -119,14 +119,16 @@ inline constexpr std::array<Named<PanelKind>, 4> kPanelKinds{{
     {PanelKind::Text, "text"},
 }};
 
-enum class PlotKind { Divergence, EnergyError, Jacobi, Spread, Sectional };
-inline constexpr std::array<Named<PlotKind>, 5> kPlotKinds{{
+enum class PlotKind { Divergence, EnergyError, Jacobi, Spread, Sectional, Holonomy };
+inline constexpr std::array<Named<PlotKind>, 6> kPlotKinds{{
     {PlotKind::Divergence, "divergence"},
     {PlotKind::EnergyError, "energy"},
     {PlotKind::Jacobi, "jacobi"},  // |J_perp| of the runs with "jacobi": true, their conjugate points marked
     {PlotKind::Spread, "spread"},  // how far each run's family strays from it (max hinge distance)
     // 5 rods and more: the smallest and largest curvature of the planes through each run's velocity
     {PlotKind::Sectional, "sectional"},
+    // with view.sphere.holonomy: the curvature the polygon's sides have swept, rising to the holonomy
+    {PlotKind::Holonomy, "holonomy"},
 }};
 
 enum class LinkageLayout { SingleRun, SideBySide, Overlay };

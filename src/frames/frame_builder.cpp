@@ -153,7 +153,9 @@ FrameBuilder::FrameBuilder(const Scene& scene, const std::vector<InitialState>& 
                                              !scene.distanceFrom, scene.holonomyPoints)),
       title_(fillTitlePlaceholders(scene.title, scene, injectivityRadiusOf(sphereDecoration_))),
       shortTitle_(fillTitlePlaceholders(scene.shortTitle, scene, injectivityRadiusOf(sphereDecoration_))),
-      overview_(overviewMotion(scene, starts, cancelled)),
+      overview_(overviewMotion(scene, starts, cancelled,
+                               sphereDecoration_ && sphereDecoration_->transport ? &*sphereDecoration_->transport
+                                                                                 : nullptr)),
 
       cameraDirections_(planDirectedCamera(scene, starts, view_, cancelled)) {
   for (size_t i = 0; i < runs_.size(); ++i) {
@@ -309,6 +311,8 @@ void FrameBuilder::recordFrameState(std::size_t run, const Sample& sample) {
 // both still run. Energy error: |E - E0| / E0 per run, while it runs.
 void FrameBuilder::recordPlots(int k) {
   plotTimes_.push_back(scene_.frameTime(k));
+  if (sphereDecoration_ && sphereDecoration_->transport)
+    holonomy_.push_back(sweptByTime(*sphereDecoration_->transport, scene_.frameTime(k), scene_.duration));
   const Eigen::Matrix2Xd& reference = history_[0].hingesAtFrame;
   for (size_t run = 1; run < runs_.size(); ++run) {
     const Eigen::Matrix2Xd& other = history_[run].hingesAtFrame;
@@ -408,6 +412,10 @@ FrameState FrameBuilder::snapshot(int k) const {
           plot.series.push_back({scene_.runs[run].name, runColor(scene_, run), times, history_[run].energyErrors.view(),
                                  {}, stopTimeSoFar(history_[run].frame)});
         }
+        break;
+      case PlotKind::Holonomy:  // one line, the polygon's: known in advance, shown up to this frame
+        plot.series.push_back({"\u222bK dA swept", SphereTransport::kReturningColor, times, holonomy_.view(), {},
+                               std::numeric_limits<double>::infinity()});
         break;
     }
     state.plots.push_back(std::move(plot));

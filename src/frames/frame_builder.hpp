@@ -77,6 +77,7 @@ class FrameBuilder {
   int sampled_ = -1;  // the last frame sampled into the history
   std::vector<RunHistory> history_;
   SharedTrack<double> plotTimes_;
+  SharedTrack<double> holonomy_;  // [frame]: the curvature the holonomy polygon's sides have swept (its plot)
   std::vector<SharedTrack<double>> divergence_;  // [run - 1][frame]: run 0 against run
   std::shared_ptr<const SphereDecoration> sphereDecoration_;  // computed once, shared by every frame
   std::string title_, shortTitle_;  // the scene's, with what the decoration found ({injectivity_radius})

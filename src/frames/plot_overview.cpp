@@ -42,6 +42,7 @@ std::optional<PlotFrame::RoundoffOnly> roundoffOnly(PlotKind kind, double larges
     case PlotKind::Jacobi:
     case PlotKind::Spread:
     case PlotKind::Sectional:
+    case PlotKind::Holonomy:
       return std::nullopt;
   }
   return std::nullopt;
@@ -56,8 +57,12 @@ std::array<double, 2> curvatureThroughVelocity(const Chain& chain, const Sample&
   return sectionalCurvatureThrough(ChainConstants(chain), sample.spherePoint, sample.sphereVelocity);
 }
 
+double sweptByTime(const SphereTransport& transport, double t, double duration) {
+  return transport.sweptAt(duration > 0 ? t / duration : 1.0);
+}
+
 MotionOverview overviewMotion(const Scene& scene, const std::vector<InitialState>& starts,
-                              const std::function<bool()>& cancelled) {
+                              const std::function<bool()>& cancelled, const SphereTransport* transport) {
   const std::vector<PlotSpec>& plots = scene.view.plots;
   const bool anyFamily =
       std::any_of(scene.runs.begin(), scene.runs.end(), [](const RunSpec& run) { return bool(run.family); });
@@ -76,7 +81,7 @@ MotionOverview overviewMotion(const Scene& scene, const std::vector<InitialState
   const int frames = scene.frameCount();
   const double nan = std::nan("");
   std::vector<std::vector<double>> divergence(runCount), energy(runCount), jacobi(runCount), spread(runCount),
-      sectional(runCount);
+      sectional(runCount), holonomy(runCount);
   const bool wantSectional =
       std::any_of(plots.begin(), plots.end(), [](const PlotSpec& plot) { return plot.kind == PlotKind::Sectional; });
   std::vector<bool> stopped(runCount, false);
@@ -111,6 +116,7 @@ MotionOverview overviewMotion(const Scene& scene, const std::vector<InitialState
       divergence[r].push_back(r > 0 && samples[0] && samples[r] ? hingeDistance(samples[0]->hinges, samples[r]->hinges)
                                                                  : nan);
     }
+    if (transport && runCount > 0) holonomy[0].push_back(sweptByTime(*transport, t, scene.duration));  // one line
     parallelFor(memberJobs.size(), [&](std::size_t j) {
       const auto [r, m] = memberJobs[j];
       if (k == 0 || memberSamples[j]) memberSamples[j] = members[r][m].sampleAt(t);  // a stopped member stays out
@@ -135,6 +141,7 @@ MotionOverview overviewMotion(const Scene& scene, const std::vector<InitialState
         case PlotKind::Spread: return spread;
         case PlotKind::EnergyError: return energy;
         case PlotKind::Sectional: return sectional;
+        case PlotKind::Holonomy: return holonomy;
       }
       throw std::logic_error("overviewMotion: a plot kind without values");
     }();

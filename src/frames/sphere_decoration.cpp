@@ -202,14 +202,17 @@ std::vector<SphereCurve> closedGeodesicCurves(const Chain& chain) {
   return curves;
 }
 
-// A vector carried round the polygon through the corners: arrows at evenly spaced times of each side (the first the
-// starting vector at corner 1, the last the returning one there) and the three figures of Gauss-Bonnet.
+// A vector carried round the polygon through the corners: each side sampled at kSamplesPerSide even steps of its
+// time (frames draw every other sample as an arrow and the carried vector between them) and the three figures of
+// Gauss-Bonnet.
 SphereTransport transportAround(const Chain& chain, const std::vector<Eigen::VectorXd>& corners) {
-  constexpr int kArrowsPerSide = 6;
-  const Holonomy h = polygonHolonomy(chain, corners, nullptr, kArrowsPerSide);
+  constexpr int kSamplesPerSide = 12;
+  const Holonomy h = polygonHolonomy(chain, corners, nullptr, kSamplesPerSide);
   SphereTransport transport;
+  transport.samplesPerSide = kSamplesPerSide;
   for (const Holonomy::Sample& s : h.samples)
-    transport.arrows.push_back({vec(Eigen::Vector3d(s.point).normalized()), vec(Eigen::Vector3d(s.transported).normalized())});
+    transport.arrows.push_back({vec(Eigen::Vector3d(s.point).normalized()),
+                                vec(Eigen::Vector3d(s.transported).normalized()), s.piece, s.fraction, s.swept});
   for (const Eigen::VectorXd& c : corners) transport.corners.push_back(vec(Eigen::Vector3d(c).normalized()));
   transport.holonomy = h.angle;
   transport.angleExcess = h.angleExcess.value_or(0.0);

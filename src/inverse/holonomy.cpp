@@ -31,6 +31,8 @@ constexpr double kPi = std::numbers::pi;
 // rule missed 4e-4 of the equator's 2 pi at L = 2.05. The effort is bounded; what it does not reach, the holonomy's
 // own check reports.
 constexpr int kQuadratureNodes = 32;
+// The swept curvature drawn against time (Holonomy::Sample::swept): this rule on each interval between samples.
+constexpr int kSweptNodes = 8;
 constexpr double kChordTolerance = 1e-12;
 constexpr unsigned kChordDepth = 8;
 constexpr double kPieceTolerance = 1e-12;
@@ -41,10 +43,11 @@ struct QuadratureRule {
   std::vector<double> nodes, weights;  // on [0, 1]
 };
 
-// Boost.Math's Gauss-Legendre rule moved from [-1, 1] to [0, 1].
+// Boost.Math's Gauss-Legendre rule of `Points` nodes moved from [-1, 1] to [0, 1].
+template <int Points>
 const QuadratureRule& gaussRule() {
   static const QuadratureRule rule = [] {
-    using Gauss = boost::math::quadrature::gauss<double, kQuadratureNodes>;
+    using Gauss = boost::math::quadrature::gauss<double, Points>;
     QuadratureRule r;
     const auto& abscissa = Gauss::abscissa();
     const auto& weights = Gauss::weights();
@@ -103,24 +106,29 @@ double turningAngle(const ConstrainedModel& model, const OrientedFrame& frame, c
 using PieceSampler = std::function<void(const std::vector<double>& s, std::vector<Eigen::Vector3d>& points,
                                         std::vector<Eigen::Vector3d>& derivatives)>;
 
+// The cone's integrand at one point of the loop and its derivative d/ds there:
+// det[A, gamma, gamma'] * (integral of K dA along the chord from A to gamma, per unit det).
+double coneIntegrand(const ConfigurationSurface& surface, const Eigen::Vector3d& apex, const Eigen::Vector3d& point,
+                     const Eigen::Vector3d& derivative) {
+  const double angle = std::atan2(apex.cross(point).norm(), apex.dot(point));
+  if (!(angle < 3.0))
+    throw std::invalid_argument("holonomy: the loop passes opposite its apex; split it into smaller loops");
+  // y = (1 - u) A + u gamma: det[x, x_u, x_s] = u det[A, gamma, gamma'] / |y|^3 for x = y / |y|.
+  const auto along = [&](double u) {
+    const Eigen::Vector3d y = (1.0 - u) * apex + u * point;
+    const double r = y.norm();
+    const SecondFundamentalForm form = surface.secondFundamentalFormAt(y / r);
+    return gaussianCurvature(form) * areaDensity(form) * u / (r * r * r);
+  };
+  return apex.dot(point.cross(derivative)) *
+         boost::math::quadrature::gauss_kronrod<double, 15>::integrate(along, 0.0, 1.0, kChordDepth, kChordTolerance);
+}
+
 // Integral of K dA over the cone of chords from the apex to one piece of the loop. Along each chord adaptive
 // Gauss-Kronrod; along the piece the Gauss-Legendre rule composed over 1, 2 and 4 equal parts until two
 // successive results agree to kPieceTolerance (near L = n - 2 the curvature gathers into peaks a single rule misses).
 double coneCurvature(const ConfigurationSurface& surface, const Eigen::Vector3d& apex, const PieceSampler& sample) {
-  const QuadratureRule& rule = gaussRule();
-  auto chord = [&](const Eigen::Vector3d& point) {
-    const double angle = std::atan2(apex.cross(point).norm(), apex.dot(point));
-    if (!(angle < 3.0))
-      throw std::invalid_argument("holonomy: the loop passes opposite its apex; split it into smaller loops");
-    // y = (1 - u) A + u gamma: det[x, x_u, x_s] = u det[A, gamma, gamma'] / |y|^3 for x = y / |y|.
-    const auto along = [&](double u) {
-      const Eigen::Vector3d y = (1.0 - u) * apex + u * point;
-      const double r = y.norm();
-      const SecondFundamentalForm form = surface.secondFundamentalFormAt(y / r);
-      return gaussianCurvature(form) * areaDensity(form) * u / (r * r * r);
-    };
-    return boost::math::quadrature::gauss_kronrod<double, 15>::integrate(along, 0.0, 1.0, kChordDepth, kChordTolerance);
-  };
+  const QuadratureRule& rule = gaussRule<kQuadratureNodes>();
   double previous = 0;
   for (int parts = 1;; parts *= 2) {
     std::vector<double> nodes, weights;
@@ -132,12 +140,33 @@ double coneCurvature(const ConfigurationSurface& surface, const Eigen::Vector3d&
     std::vector<Eigen::Vector3d> points, derivatives;
     sample(nodes, points, derivatives);
     double total = 0;
-    for (std::size_t j = 0; j < nodes.size(); ++j)
-      total += weights[j] * apex.dot(points[j].cross(derivatives[j])) * chord(points[j]);
+    for (std::size_t j = 0; j < nodes.size(); ++j) total += weights[j] * coneIntegrand(surface, apex, points[j], derivatives[j]);
     if (parts > 1 && std::abs(total - previous) <= kPieceTolerance * std::max(1.0, std::abs(total))) return total;
     if (parts >= kMaxPieceParts) return total;  // unconverged: the holonomy's own check will say so
     previous = total;
   }
+}
+
+// The cone's curvature from the piece's start to each of `intervals` equal steps of it (kSweptNodes on each step):
+// entry k is the integral over [0, (k + 1) / intervals].
+std::vector<double> sweptCurvature(const ConfigurationSurface& surface, const Eigen::Vector3d& apex,
+                                   const PieceSampler& sample, int intervals) {
+  const QuadratureRule& rule = gaussRule<kSweptNodes>();
+  std::vector<double> nodes, weights;
+  for (int k = 0; k < intervals; ++k)
+    for (std::size_t j = 0; j < rule.nodes.size(); ++j) {
+      nodes.push_back((k + rule.nodes[j]) / intervals);
+      weights.push_back(rule.weights[j] / intervals);
+    }
+  std::vector<Eigen::Vector3d> points, derivatives;
+  sample(nodes, points, derivatives);
+  std::vector<double> swept;
+  double total = 0;
+  for (std::size_t j = 0; j < nodes.size(); ++j) {
+    total += weights[j] * coneIntegrand(surface, apex, points[j], derivatives[j]);
+    if ((j + 1) % rule.nodes.size() == 0) swept.push_back(total);
+  }
+  return swept;
 }
 
 Eigen::Vector3d apexOf(const std::vector<Eigen::VectorXd>& points) {
@@ -206,29 +235,17 @@ Holonomy polygonHolonomy(const Chain& chain, const std::vector<Eigen::VectorXd>&
   const GeodesicFlow flow(model, kTransportTolerance);
   const ConfigurationSurface surface(chain);
   const Eigen::Vector3d apex = apexOf(x);
+  h.apex = apex;
   Eigen::VectorXd w = start.ambient[0];
   std::vector<Eigen::VectorXd> arriving(m);
   for (std::size_t i = 0; i < m; ++i) {
     const std::size_t next = (i + 1) % m;
+    const Eigen::VectorXd carried = w;  // as the previous piece brought it
     FlowState s{q[i], velocity[i], Eigen::MatrixXd(q[i].size(), 0), Eigen::MatrixXd(q[i].size(), 0), w};
-    if (samplesPerPiece > 0) {  // a separate pass, so that the angle does not depend on how the loop is drawn
-      FlowState shown = s;
-      auto record = [&] {
-        const Eigen::VectorXd p = spherePointFromHinges(chain, ConstrainedModel::unstack(shown.q));
-        h.samples.push_back(
-            {p, sphereVelocityFromHingeVelocities(chain, p, ConstrainedModel::unstack(shown.v)),
-             sphereVelocityFromHingeVelocities(chain, p, ConstrainedModel::unstack(shown.transported.col(0)))});
-      };
-      if (i == 0) record();
-      for (int k = 1; k <= samplesPerPiece; ++k) {
-        flow.advance(shown, 1.0 / samplesPerPiece);
-        record();
-      }
-    }
     flow.advance(s, 1.0);
     arriving[i] = s.v;
     w = model.projectVelocity(q[next], s.transported.col(0));
-    // The piece at the quadrature's nodes, for the enclosed curvature.
+    // The piece at given parameters, for the enclosed curvature.
     const PieceSampler piece = [&](const std::vector<double>& nodes, std::vector<Eigen::Vector3d>& points,
                                    std::vector<Eigen::Vector3d>& derivatives) {
       FlowState along{q[i], velocity[i], Eigen::MatrixXd(q[i].size(), 0), Eigen::MatrixXd(q[i].size(), 0)};
@@ -241,6 +258,18 @@ Holonomy polygonHolonomy(const Chain& chain, const std::vector<Eigen::VectorXd>&
         derivatives.emplace_back(sphereVelocityFromHingeVelocities(chain, p, ConstrainedModel::unstack(along.v)));
       }
     };
+    if (samplesPerPiece > 0) {  // a separate pass, so that the angle does not depend on how the loop is drawn
+      FlowState shown{q[i], velocity[i], Eigen::MatrixXd(q[i].size(), 0), Eigen::MatrixXd(q[i].size(), 0), carried};
+      const std::vector<double> swept = sweptCurvature(surface, apex, piece, samplesPerPiece);
+      for (int k = 0; k <= samplesPerPiece; ++k) {
+        if (k > 0) flow.advance(shown, 1.0 / samplesPerPiece);
+        const Eigen::VectorXd p = spherePointFromHinges(chain, ConstrainedModel::unstack(shown.q));
+        h.samples.push_back(
+            {p, sphereVelocityFromHingeVelocities(chain, p, ConstrainedModel::unstack(shown.v)),
+             sphereVelocityFromHingeVelocities(chain, p, ConstrainedModel::unstack(shown.transported.col(0))), i,
+             double(k) / samplesPerPiece, k == 0 ? 0.0 : swept[std::size_t(k - 1)]});
+      }
+    }
     h.enclosedCurvature += coneCurvature(surface, apex, piece);
   }
   h.angle = angleInFrame(model, start, w);
@@ -270,6 +299,71 @@ Holonomy polygonHolonomy(const Chain& chain, const std::vector<Eigen::VectorXd>&
     turning += e;
   }
   h.angleExcess = 2.0 * kPi - turning;
+  return h;
+}
+
+Holonomy closedGeodesicHolonomy(const Chain& chain, const ClosedGeodesic& geodesic) {
+  requireFourRods(chain);
+  if (!(geodesic.length > 0)) throw std::invalid_argument("holonomy: a closed geodesic of positive length expected");
+  constexpr int kPieces = 8;  // the cone's quadrature piece by piece (a closed geodesic goes round the sphere)
+  const ChainConstants bound(chain);
+  const ConstrainedModel model = ConstrainedModel::fromChain(chain);
+  const GeodesicFlow flow(model, kTransportTolerance);
+  const Eigen::VectorXd& q0 = geodesic.point;
+  const double piece = geodesic.length / kPieces;
+  // Each piece's start, and the apex: the mean of the unit left normals x cross x' / |x cross x'| along the loop.
+  std::vector<FlowState> starts;
+  Eigen::Vector3d apex = Eigen::Vector3d::Zero();
+  FlowState along{q0, geodesic.velocity, Eigen::MatrixXd(q0.size(), 0), Eigen::MatrixXd(q0.size(), 0)};
+  for (int k = 0; k < kPieces; ++k) {
+    starts.push_back(along);
+    for (int j = 0; j < 4; ++j) {
+      const Eigen::Vector3d x = spherePointFromHinges(chain, ConstrainedModel::unstack(along.q));
+      const Eigen::Vector3d xdot = sphereVelocityFromHingeVelocities(chain, x, ConstrainedModel::unstack(along.v));
+      apex += x.cross(xdot).normalized();
+      flow.advance(along, piece / 4);
+    }
+  }
+  if (!(apex.norm() > 1e-6))
+    throw std::invalid_argument("holonomy: this closed geodesic has no side to call its inside (it balances round "
+                                "the sphere's centre)");
+  apex.normalize();
+  const Eigen::VectorXd x0 = spherePointFromHinges(chain, ConstrainedModel::unstack(q0));
+  const Eigen::VectorXd xdot0 =
+      sphereVelocityFromHingeVelocities(chain, x0, ConstrainedModel::unstack(geodesic.velocity));
+  const OrientedFrame start = orientedFrame(chain, x0, xdot0);
+  Holonomy h;
+  h.length = geodesic.length;
+  h.apex = apex;
+  // Ambient route: the vector rides in the flow; back at the start it is projected onto its tangent plane (the loop
+  // closes to the periodic search's closure).
+  FlowState carried{q0, geodesic.velocity, Eigen::MatrixXd(q0.size(), 0), Eigen::MatrixXd(q0.size(), 0),
+                    start.ambient[0]};
+  flow.advance(carried, geodesic.length);
+  h.angle = angleInFrame(model, start, model.projectVelocity(q0, carried.transported.col(0)));
+  // Chart route.
+  const ChartTransport t = transportAlongGeodesicInCharts(chainChristoffelField(bound), x0, xdot0, geodesic.length,
+                                                          {start.sphere[0]}, kTransportTolerance);
+  const Eigen::VectorXd ws = t.vectors[0] - t.vectors[0].dot(x0) * x0;
+  h.chartAngle = angleInFrame(model, start, ConstrainedModel::stack(hingeVelocitiesOnSphere(chain, x0, ws)));
+  h.chartChanges = t.chartChanges;
+  // The curvature to the left, over the cone from the apex, piece by piece.
+  const ConfigurationSurface surface(chain);
+  for (const FlowState& from : starts) {
+    const PieceSampler sample = [&](const std::vector<double>& nodes, std::vector<Eigen::Vector3d>& points,
+                                    std::vector<Eigen::Vector3d>& derivatives) {
+      FlowState s = from;
+      double at = 0;
+      for (double node : nodes) {
+        flow.advance(s, (node - at) * piece);
+        at = node;
+        const Eigen::VectorXd p = spherePointFromHinges(chain, ConstrainedModel::unstack(s.q));
+        points.emplace_back(p);
+        derivatives.emplace_back(piece * sphereVelocityFromHingeVelocities(chain, p, ConstrainedModel::unstack(s.v)));
+      }
+    };
+    h.enclosedCurvature += coneCurvature(surface, apex, sample);
+  }
   return h;
 }
 
@@ -303,7 +397,7 @@ Holonomy latitudeHolonomy(const Chain& chain, double phi) {
   // apex), in four quarters; and the loop's length.
   const ConfigurationSurface surface(chain);
   const Eigen::Vector3d pole(0, 0, phi < 0 ? -1.0 : 1.0);
-  const QuadratureRule& rule = gaussRule();
+  const QuadratureRule& rule = gaussRule<kQuadratureNodes>();
   for (int quarter = 0; quarter < 4; ++quarter) {
     const PieceSampler piece = [&](const std::vector<double>& nodes, std::vector<Eigen::Vector3d>& points,
                                    std::vector<Eigen::Vector3d>& derivatives) {

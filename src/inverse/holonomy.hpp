@@ -17,6 +17,7 @@
 #include <Eigen/Dense>
 
 #include "contracts/run_control.hpp"
+#include "inverse/periodic.hpp"
 #include "linkage/chain.hpp"
 
 namespace sl {
@@ -30,10 +31,17 @@ struct Holonomy {
   std::vector<double> pieceLengths;   // geodesic loops: the length of each motion
   double length = 0;                  // of the whole loop, in the kinetic metric
   int chartChanges = 0;               // the chart route's changes of chart round the loop
-  // Geodesic loops, when asked for: the loop sampled evenly in each piece's time, the first sample at corner 1 and
-  // the last back there, with the transported vector (ambient route) and the path's velocity, as sphere velocities.
+  Eigen::VectorXd apex;               // geodesic loops: the enclosed curvature's cone is from here (the corners' mean)
+  // Geodesic loops, when asked for: each piece sampled evenly in its time, from its start (the vector as the previous
+  // piece brought it) to its end, with the transported vector (ambient route) and the path's velocity as sphere
+  // velocities, and the curvature swept so far: integral of K dA over the cone of chords from the loop's apex to the
+  // piece between its start and this sample (the holonomy of that closed wedge, by Gauss-Bonnet; summed over the
+  // pieces at fraction 1 it is enclosedCurvature).
   struct Sample {
     Eigen::VectorXd point, velocity, transported;
+    std::size_t piece = 0;
+    double fraction = 0;  // of the piece's time
+    double swept = 0;
   };
   std::vector<Sample> samples;
 
@@ -54,6 +62,12 @@ Holonomy polygonHolonomy(const Chain& chain, const std::vector<Eigen::VectorXd>&
 // The latitude phi = constant of chart 0 (|phi| < pi/2), run with t increasing: counter-clockwise round the pole
 // phi = pi/2, whose cap is the enclosed region.
 Holonomy latitudeHolonomy(const Chain& chain, double phi);
+
+// A closed geodesic (inverse/periodic.hpp) once round from its start. A vector carried along it comes back as it
+// left: the velocity is carried to itself, and on a surface a rotation fixing a vector is none; so the holonomy is 0
+// and the curvature to the loop's left is a whole number of turns (2 pi for a simple one: Gauss-Bonnet with a
+// geodesic boundary). The cone's apex is the loop's mean left normal (the loop runs counter-clockwise round it).
+Holonomy closedGeodesicHolonomy(const Chain& chain, const ClosedGeodesic& geodesic);
 
 // (x - y) reduced to (-pi, pi].
 double angleDifference(double x, double y);

@@ -78,6 +78,9 @@ std::vector<std::string> plotTitles(const PlotFrame& plot) {
     case PlotKind::Sectional:
       return {"curvature of the planes through the velocity: largest and smallest K(v, \u00b7)",
               "curvature of the planes through the velocity", "curvature through the velocity", "K(v, \u00b7)"};
+    case PlotKind::Holonomy:
+      return {"\u222bK dA swept by the sides so far: at the end, the holonomy", "\u222bK dA swept by the sides so far",
+              "\u222bK dA swept", "holonomy"};
   }
   return {""};
 }
@@ -118,6 +121,7 @@ std::vector<std::string> roundoffNotes(const PlotFrame& plot) {
     case PlotKind::Jacobi:
     case PlotKind::Spread:
     case PlotKind::Sectional:
+    case PlotKind::Holonomy:
       return {};
   }
   return {};
@@ -134,6 +138,8 @@ std::string valueAxisWords(PlotKind kind) {
       return "|E − E₀| / E₀ (no unit)";
     case PlotKind::Sectional:
       return "sectional curvature K";
+    case PlotKind::Holonomy:
+      return "angle (rad)";
   }
   return "";
 }
@@ -191,7 +197,9 @@ std::vector<std::string> ellipseCaptions() {
           "ellipses: stiffness |II(v,v)|\u00b2 over directions v", "ellipses: stiffness"};
 }
 
-std::vector<std::string> transportCaptions(const SphereTransport& transport) {
+// Gauss-Bonnet said once the vector is back; on the way, what the sides have swept so far (the holonomy plot's
+// value at this time).
+std::vector<std::string> transportCaptions(const SphereTransport& transport, double time, double duration) {
   auto fixed = [](double value, int digits) {
     char text[32];
     std::snprintf(text, sizeof text, "%.*f", digits, value);
@@ -199,6 +207,14 @@ std::vector<std::string> transportCaptions(const SphereTransport& transport) {
   };
   const std::size_t m = transport.corners.size();
   const std::string polygon = m == 3 ? "triangle" : m == 4 ? "quadrilateral" : std::to_string(m) + "-gon";
+  const double reached = duration > 0 ? time / duration : 1.0;
+  if (reached < 1.0) {
+    const std::string swept = fixed(transport.sweptAt(reached), 3);
+    return {"arrows: each side of the " + polygon + " carries on the vector the side before brings; \u222bK dA swept "
+                "so far = " + swept + " rad",
+            "arrows: a vector carried round the " + polygon + "; \u222bK dA swept so far = " + swept + " rad",
+            "\u222bK dA swept so far = " + swept + " rad", "swept " + swept + " rad"};
+  }
   const std::string excess = m == 3 ? "angle sum \u2212 \u03c0" : "angle sum \u2212 " + std::to_string(m - 2) + "\u03c0";
   const std::string h = fixed(transport.holonomy, 3), degrees = fixed(transport.holonomy * 180 / M_PI, 1) + "\u00b0";
   const std::string e = fixed(transport.angleExcess, 3), k = fixed(transport.enclosedCurvature, 3);

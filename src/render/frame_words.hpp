@@ -32,7 +32,7 @@ std::vector<std::string> ellipseCaptions();            // the line explaining th
 // Under a polygon's transported vector (view.sphere.holonomy): Gauss-Bonnet's three figures, e.g. "a vector carried
 // round the triangle comes back turned: angle sum − π = 0.330 = ∫K dA = 0.330 = holonomy 0.330 rad (18.9°)", then
 // shorter, down to "holonomy 0.330 rad".
-std::vector<std::string> transportCaptions(const SphereTransport& transport);
+std::vector<std::string> transportCaptions(const SphereTransport& transport, double time, double duration);
 // A family's key: "large ball: the run; thin paths and small dots: its 32 members; dark curve: their wavefront",
 // then shorter, down to "ball: run; dots: 32 members; dark: wavefront" (320x180 cut the longest at "its 32…").
 std::vector<std::string> familyCaptions(std::size_t members);

@@ -1,6 +1,7 @@
 #pragma once
 // The look of the reference demo: cream sphere, silver chain, charcoal pins, warm grey ink.
 
+#include "contracts/frame_state.hpp"
 #include "render/shape_batch.hpp"
 
 namespace sl::palette {
@@ -23,7 +24,8 @@ inline constexpr Rgba stoppedGrey{0.60f, 0.60f, 0.60f, 1};     // a stopped chai
 inline constexpr Rgba conjugateLocus{0.88f, 0.22f, 0.62f, 1};
 inline constexpr Rgba cutLocus{1.00f, 1.00f, 1.00f, 1};
 // The returning vector of a holonomy (view.sphere.holonomy): purple, in neither half of the curvature map.
-inline constexpr Rgba returningVector{0.45f, 0.16f, 0.62f, 1};
+inline constexpr Rgba returningVector{SphereTransport::kReturningColor.r, SphereTransport::kReturningColor.g,
+                                      SphereTransport::kReturningColor.b, 1};
 
 inline Rgba withAlpha(Rgba c, float a) { return {c.r, c.g, c.b, a}; }
 

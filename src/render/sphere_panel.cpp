@@ -932,30 +932,29 @@ void drawLoci(const SphereDecoration& decoration, const PanelContext& context, c
     if (name.at) drawLabel(curveName(kind), *name.at, false, context, placer, placed, labels);
 }
 
-// A vector carried round a geodesic polygon (view.sphere.holonomy): an arrow at evenly spaced times of each side,
-// ink on a light halo (faint where the sphere hides it), the returning vector at the first corner in its own colour
-// beside the starting one, whose corner is ringed. An arrow spans kTransportArrowLength of the sphere whatever the
-// frame's size; its width follows the frame's unit, as the paths' do.
+// A vector carried round a geodesic polygon (view.sphere.holonomy), every side at once at the frame's fraction of
+// the animation (SphereTransport): behind each carried vector the arrows it left at every other sample, ink on a
+// light halo (faint where the sphere hides it); the carried vectors heavier; the starting vector at the first corner,
+// whose corner is ringed, and at the end the returning vector beside it in its own colour. The arrows left behind fade
+// as the paths do (view.path_fade_seconds). An arrow spans
+// kTransportArrowLength of the sphere whatever the frame's size; its width follows the frame's unit, as the paths' do.
 constexpr double kTransportArrowLength = 0.2;
 void drawTransport(const SphereTransport& transport, const PanelContext& context, const SphereCamera& camera,
                    LabelPlacer& placer, ShapeBatch& back, ShapeBatch& front) {
   const Placement onSurface{true, 0.012};
   const float mark = markUnit(context.unit);
   const Rgba halo{1, 1, 1, 0.75f};  // over the sphere's colours, not the background
-  for (std::size_t i = 0; i < transport.arrows.size(); ++i) {
-    const SphereTransport::Arrow& arrow = transport.arrows[i];
-    const bool starting = i == 0, returning = i + 1 == transport.arrows.size();
+  const auto drawArrow = [&](const SphereTransport::Arrow& arrow, Rgba color, float weight) {
     const Vec3 tip{arrow.base.x + kTransportArrowLength * arrow.direction.x,
                    arrow.base.y + kTransportArrowLength * arrow.direction.y,
                    arrow.base.z + kTransportArrowLength * arrow.direction.z};
     const V3 from3 = onSurface.place(arrow.base), to3 = onSurface.place(tip);
-    if (!camera.inFront(from3) || !camera.inFront(to3)) continue;
+    if (!camera.inFront(from3) || !camera.inFront(to3)) return;
     const P2 from = camera.project(from3), to = camera.project(to3);
     const float length = std::hypot(to.x - from.x, to.y - from.y);
-    if (!(length > 2 * mark)) continue;  // seen end-on
+    if (!(length > 2 * mark)) return;  // seen end-on
     const bool hidden = surfaceBehind(camera, from3) || surfaceBehind(camera, to3);
-    const Rgba color = returning ? palette::returningVector : palette::ink;
-    const float shaft = (starting || returning ? 1.5f : 1.0f) * mark, head = 3.2f * shaft;
+    const float shaft = weight * mark, head = 3.2f * shaft;
     const P2 dir = unitDirection(from, to), neck = plus(to, dir, -std::min(0.45f * length, 3.0f * head));
     const auto draw = [&](ShapeBatch& into, float grow, Rgba c) {
       into.polyline({{plus(from, dir, -grow), shaft + grow, c, {}}, {neck, shaft + grow, c, {}}});
@@ -963,13 +962,30 @@ void drawTransport(const SphereTransport& transport, const PanelContext& context
     };
     if (hidden) {
       draw(back, 0, ghost(color));
-      continue;
+      return;
     }
-    draw(front, 1.2f * mark, halo);
+    draw(front, 1.2f * mark, palette::withAlpha(halo, halo.a * color.a));
     draw(front, 0, color);
     placer.avoidPoint(from);
     placer.avoidPoint(to);
     placer.avoidPoint({0.5f * (from.x + to.x), 0.5f * (from.y + to.y)});
+  };
+  const double reached = context.frame.duration > 0 ? std::clamp(context.frame.time / context.frame.duration, 0.0, 1.0)
+                                                    : 1.0;
+  const std::size_t perSide = std::size_t(transport.samplesPerSide) + 1;
+  for (std::size_t i = 0; i < transport.arrows.size(); ++i) {  // the arrows left behind, fading as the paths do
+    const SphereTransport::Arrow& arrow = transport.arrows[i];
+    const std::size_t k = i % perSide;
+    if (k % 2 != 0 || k == 0 || k + 1 == perSide || !(arrow.fraction < reached)) continue;
+    const float alpha = pathAlpha(context.settings, (reached - arrow.fraction) * context.frame.duration);
+    if (alpha > 0) drawArrow(arrow, palette::withAlpha(palette::ink, alpha), 1.0f);
+  }
+  drawArrow(transport.arrows.front(), palette::ink, 1.5f);
+  const std::size_t sides = transport.corners.size();
+  for (std::size_t side = 0; side < sides; ++side) {  // the carried vectors, the last side's returning at the end
+    const bool returning = side + 1 == sides && reached >= 1.0;
+    if (side == 0 && reached == 0) continue;  // the starting vector, drawn
+    drawArrow(transport.carriedAt(side, reached), returning ? palette::returningVector : palette::ink, 1.5f);
   }
   if (!transport.corners.empty()) {
     const V3 corner = onSurface.place(transport.corners.front());
@@ -1040,7 +1056,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
       foot -= context.font.lineHeight(TextSize::Small);
     }
     if (transportCaption)
-      context.font.draw(batch, fittedForm(context.font, transportCaptions(*decoration->transport), TextSize::Small, width),
+      context.font.draw(batch, fittedForm(context.font, transportCaptions(*decoration->transport, context.frame.time, context.frame.duration), TextSize::Small, width),
                         TextSize::Small, context.rect.x + pad, foot, palette::ink);
     if (colored) {
       const SphereField& field = *decoration->field;

@@ -634,7 +634,7 @@ std::vector<SceneKey> describeKeys() {
        .target = "ViewSettings::panels, ViewSettings::plots",
        .meaning =
            "panels in layout order: `\"sphere\"`, `\"linkage\"`, `\"plot\"`, `\"text\"`, or objects `{ \"panel\": "
-           "\"plot\", \"plot\": \"divergence\" \\| \"energy\" \\| \"jacobi\" \\| \"spread\" \\| \"sectional\", \"scale\": "
+           "\"plot\", \"plot\": \"divergence\" \\| \"energy\" \\| \"jacobi\" \\| \"spread\" \\| \"sectional\" \\| \"holonomy\", \"scale\": "
            "\"log\" \\| \"linear\", \"y_range\": [lo, hi], "
            "\"rect\": [x, y, w, h] }` (rect in fractions of the frame from the top left; omitted = automatic layout, "
            "portrait frames stacked; a plot's axes span the whole animation from its first frame, y from the data of "
@@ -750,7 +750,9 @@ std::vector<SceneKey> describeKeys() {
                   "back to the first) with a tangent vector parallel transported round it, drawn as arrows along "
                   "the sides, the returning vector beside the starting one, and the caption angle sum - pi = "
                   "integral of K dA = holonomy (docs/geometry.md, \"Parallel transport and holonomy\"); computed once "
-                  "per render"},
+                  "per render. Carried over the whole animation, every side at once from the vector the side before "
+                  "brings (runs that are the sides, arriving together at the end, carry it on their balls); a "
+                  "`\"plot\": \"holonomy\"` panel draws the curvature the sides have swept so far"},
       {.path = "view.sphere.holonomy.corners",
        .type = KeyType::Custom,
        .required = true,

@@ -53,8 +53,8 @@ void addPanel(const json& value, const std::string& path, Scene& scene, bool rod
       kind = pickKind(object.pathOf("panel"), *name, kPanelKinds, problems);
     if (const auto name = object.string("plot")) {
       if (const auto plotKind = pickKind(object.pathOf("plot"), *name, kPlotKinds, problems)) plot.kind = *plotKind;
-      // A Jacobi field's zeros and a curvature's sign need a linear axis.
-      plot.logY = plot.kind != PlotKind::Jacobi && plot.kind != PlotKind::Sectional;
+      // A Jacobi field's zeros and a curvature's or an angle's sign need a linear axis.
+      plot.logY = plot.kind != PlotKind::Jacobi && plot.kind != PlotKind::Sectional && plot.kind != PlotKind::Holonomy;
     }
     if (const auto scale = object.string("scale")) {
       plot.logY = pickKind(object.pathOf("scale"), *scale, kPlotScales, problems).value_or(true);
@@ -290,6 +290,14 @@ void readView(const json& value, Scene& scene, bool rodsKnown, std::vector<Scene
   readPanels(view, scene, rodsKnown, problems);
   if (view.has("camera")) readCamera(view, render.camera, problems);
   if (view.has("sphere")) readSphereSurface(view, scene, rodsKnown, problems);
+  for (std::size_t i = 0; i < render.panels.size(); ++i) {  // in file order (a panel read wrong is reported already)
+    const PanelSpec& panel = render.panels[i];
+    if (panel.kind == PanelKind::Plot && render.plots.at(std::size_t(panel.plotIndex)).kind == PlotKind::Holonomy &&
+        !render.sphereSurface.holonomy)
+      problems.push_back({indexPath("view.panels", i) + ".plot",
+                          "a holonomy plot shows the curvature a polygon's sides sweep; expected "
+                          "view.sphere.holonomy with its corners"});
+  }
   readLinkageChoice(view, scene, problems);
   readTrails(view, scene, rodsKnown);
   readFades(view, scene);

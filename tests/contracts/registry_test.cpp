@@ -34,7 +34,7 @@ TEST(Registry, TablesAreComplete) {
   expectComplete(kIntegrators, static_cast<int>(Integrator::BulirschStoer) + 1);
   expectComplete(kStopReasons, static_cast<int>(StopReason::ConstraintRankLoss) + 1);
   expectComplete(kPanelKinds, static_cast<int>(PanelKind::Text) + 1);
-  expectComplete(kPlotKinds, static_cast<int>(PlotKind::Sectional) + 1);
+  expectComplete(kPlotKinds, static_cast<int>(PlotKind::Holonomy) + 1);
   expectComplete(kFamilyKinds, static_cast<int>(FamilyKind::Cloud) + 1);
   expectComplete(kLinkageLayouts, static_cast<int>(LinkageLayout::Overlay) + 1);
   expectComplete(kCameraModes, static_cast<int>(CameraMode::Orbit) + 1);

@@ -770,6 +770,61 @@ TEST(SphereDecoration, HolonomyArrowsGoRoundTheTriangleAndItsFiguresAgree) {
   EXPECT_NEAR(t.holonomy, 0.3298489844393, 1e-9);  // docs/geometry.md's triangle, by the CLI
   EXPECT_NEAR(t.angleExcess, t.holonomy, 1e-8);
   EXPECT_NEAR(t.enclosedCurvature, t.holonomy, 1e-8);
+  // Carried over the animation, every side at once: each side's vector from its first corner to the next, and the
+  // curvature the sides sweep from 0 to the enclosed curvature.
+  for (std::size_t side = 0; side < 3; ++side) {
+    EXPECT_TRUE(near(t.carriedAt(side, 0.0).base, corners[side], 1e-8)) << side;
+    EXPECT_TRUE(near(t.carriedAt(side, 1.0).base, corners[(side + 1) % 3], 1e-8)) << side;
+    const SphereTransport::Arrow between = t.carriedAt(side, 0.37);
+    EXPECT_NEAR(between.base.x * between.direction.x + between.base.y * between.direction.y +
+                    between.base.z * between.direction.z, 0.0, 1e-12);
+    EXPECT_NEAR(std::hypot(between.base.x, between.base.y, between.base.z), 1.0, 1e-12);
+  }
+  EXPECT_EQ(t.sweptAt(0.0), 0.0);
+  EXPECT_NEAR(t.sweptAt(1.0), t.enclosedCurvature, 1e-9);
+}
+
+// The holonomy plot: one line, the curvature the sides have swept by each frame, from 0 at the start to the
+// holonomy at the end, inside the axis fixed from the first frame; refused without the polygon it plots.
+TEST(FrameBuilder, HolonomyPlotRisesFromZeroToTheHolonomy) {
+  const std::string polygon = R"("holonomy": {"corners": [{"coords": [0.2, 0.0]}, {"coords": [0.3, 1.4]},
+    {"coords": [1.2, 0.6]}]})";
+  const Scene scene = parseScene(R"({"name": "h", "linkage": {"rods": 4, "L": 3}, "duration": 1.0,
+    "initial": {"coords": [0.2, 0.0], "velocity": [0.1, 1.0]}, "runs": [{"name": "g", "method": "ambient"}],
+    "output": {"fps": 4}, "view": {"panels": ["sphere", {"panel": "plot", "plot": "holonomy"}],
+    "sphere": {)" + polygon + R"(}}})",
+                                 "h.json");
+  ASSERT_EQ(scene.view.plots.size(), 1u);
+  EXPECT_FALSE(scene.view.plots[0].logY);
+  ASSERT_EQ(scene.holonomyCorners.size(), 3u);
+  Scene resolved = scene;  // the corners' chart-0 points, as the commands resolve them (cli/motion_starts.hpp)
+  for (const auto& [phi, t] : {std::pair{0.2, 0.0}, std::pair{0.3, 1.4}, std::pair{1.2, 0.6}})
+    resolved.holonomyPoints.push_back(
+        Eigen::Vector3d(std::cos(phi) * std::cos(t), std::cos(phi) * std::sin(t), std::sin(phi)));
+  FrameBuilder builder = builderFor(resolved);
+  const FrameState first = builder.frame(0);
+  ASSERT_EQ(first.plots[0].series.size(), 1u);
+  EXPECT_EQ(first.plots[0].series[0].values.size(), 1u);
+  EXPECT_EQ(first.plots[0].series[0].values[0], 0.0);
+  const FrameState last = builder.frame(builder.frameCount() - 1);
+  const PlotSeries& line = last.plots[0].series[0];
+  ASSERT_EQ(line.values.size(), static_cast<std::size_t>(builder.frameCount()));
+  EXPECT_NEAR(line.values[line.values.size() - 1], 0.3298489844393, 1e-8);  // the triangle's holonomy
+  ASSERT_TRUE(first.plots[0].valueRange);
+  for (double v : line.values) {
+    EXPECT_GE(v, (*first.plots[0].valueRange)[0]);
+    EXPECT_LE(v, (*first.plots[0].valueRange)[1]);
+  }
+  try {
+    parseScene(R"({"name": "h", "linkage": {"rods": 4, "L": 3}, "duration": 1.0,
+      "initial": {"coords": [0.2, 0.0], "velocity": [0.1, 1.0]}, "runs": [{"name": "g", "method": "ambient"}],
+      "view": {"panels": ["sphere", {"panel": "plot", "plot": "holonomy"}]}})",
+               "plain.json");
+    FAIL() << "a holonomy plot without a polygon was accepted";
+  } catch (const std::exception& error) {
+    EXPECT_NE(std::string(error.what()).find("view.panels[1].plot"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("expected view.sphere.holonomy"), std::string::npos) << error.what();
+  }
 }
 
 }  // namespace

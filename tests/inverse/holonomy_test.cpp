@@ -12,7 +12,10 @@
 #include "inverse/geodesic_flow.hpp"
 #include "inverse/holonomy.hpp"
 #include "inverse/parallel_transport.hpp"
+#include "inverse/periodic.hpp"
 #include "inverse/self_check.hpp"
+#include "simulation/initial_state.hpp"
+#include "linkage/chain_constants.hpp"
 
 namespace sl {
 namespace {
@@ -141,6 +144,84 @@ TEST(Holonomy, GeodesicTrianglesTurnVectorsByTheirCurvatureAndAngleExcess) {
       EXPECT_EQ(h.interiorAngles.size(), 3u);
       EXPECT_GT(std::abs(h.angle), 1e-3);  // a real turning, not a coincidence of zeros
     }
+  }
+}
+
+// The signed angle from a to b, tangent at x, in the kinetic metric and the orientation of the outward normal.
+double kineticAngle(const Chain& chain, const Eigen::VectorXd& x, const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  const ConstrainedModel model = ConstrainedModel::fromChain(chain);
+  const auto g = [&](const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
+    return model.inner(ConstrainedModel::stack(hingeVelocitiesOnSphere(chain, x, u)),
+                       ConstrainedModel::stack(hingeVelocitiesOnSphere(chain, x, v)));
+  };
+  const Eigen::VectorXd e1 = a / std::sqrt(g(a, a));
+  Eigen::VectorXd e2 = Eigen::Vector3d(x).cross(Eigen::Vector3d(e1));  // on the outward normal's left of e1
+  e2 -= g(e2, e1) * e1;
+  e2 /= std::sqrt(g(e2, e2));
+  return std::atan2(g(b, e2), g(b, e1));
+}
+
+// What the holonomy plot draws: each side's swept curvature at a sample is the holonomy of the wedge from the apex
+// (chord to the side's first corner, the side so far, chord back), here carried round that wedge by the chart route
+// alone (chords as paths, the side as a geodesic), against the ambient route and quadrature behind the samples.
+TEST(Holonomy, SweptCurvatureIsTheHolonomyOfEachWedgeFromTheApex) {
+  const Triangle triangle = triangles()[0];
+  const Chain chain = Chain::uniform(4, triangle.L);
+  constexpr int kSamples = 4;
+  const Holonomy h = polygonHolonomy(chain, triangle.corners, nullptr, kSamples);
+  ASSERT_EQ(h.samples.size(), 3u * (kSamples + 1));
+  const ChainConstants bound(chain);  // the field refers to it
+  const ChristoffelField gamma = chainChristoffelField(bound);
+  const Eigen::Vector3d apex = h.apex;
+  const auto chord = [](const Eigen::Vector3d& from, const Eigen::Vector3d& to) -> PathPoint {
+    return [from, to](double u, Eigen::VectorXd& x, Eigen::VectorXd& xdot) {
+      const Eigen::Vector3d y = (1 - u) * from + u * to, dy = to - from;
+      x = y.normalized();
+      xdot = (dy - y.dot(dy) / y.squaredNorm() * y) / y.norm();
+    };
+  };
+  double total = 0;
+  for (std::size_t side = 0; side < 3; ++side) {
+    const Holonomy::Sample& first = h.samples[side * (kSamples + 1)];
+    EXPECT_EQ(first.piece, side);
+    EXPECT_EQ(first.swept, 0.0);
+    if (side > 0) {  // each side starts from the vector the side before brought
+      EXPECT_LT((first.transported - h.samples[side * (kSamples + 1) - 1].transported).norm(), 1e-9);
+    }
+    for (int k : {2, kSamples}) {
+      const Holonomy::Sample& at = h.samples[side * (kSamples + 1) + std::size_t(k)];
+      SCOPED_TRACE("side " + std::to_string(side) + ", sample " + std::to_string(k));
+      EXPECT_DOUBLE_EQ(at.fraction, double(k) / kSamples);
+      Eigen::VectorXd w = Eigen::Vector3d(apex.cross(Eigen::Vector3d(first.point - apex)));  // tangent at the apex
+      const Eigen::VectorXd start = w;
+      w = transportAlongPathInCharts(gamma, chord(apex, first.point), 1.0, {w}, 1e-13)[0];
+      w = transportAlongGeodesicInCharts(gamma, first.point, first.velocity, at.fraction, {w}, 1e-13).vectors[0];
+      w = transportAlongPathInCharts(gamma, chord(at.point, apex), 1.0, {w}, 1e-13)[0];
+      EXPECT_LT(std::abs(angleDifference(kineticAngle(chain, apex, start, w), at.swept)), 1e-8) << at.swept;
+      if (k == kSamples) total += at.swept;
+    }
+  }
+  EXPECT_LT(std::abs(total - h.enclosedCurvature), 1e-9);
+  EXPECT_GT(std::abs(total), 0.1);
+}
+
+// A closed geodesic brings a vector back as it left (both routes), and a simple one has 2 pi of curvature on each
+// side (Gauss-Bonnet with a geodesic boundary; 4 pi in all): the cone's quadrature over half the sphere.
+TEST(Holonomy, ClosedGeodesicsBringVectorsBackAndHalveTheTotalCurvature) {
+  for (double L : {3.0, 2.4}) {
+    const Chain chain = Chain::uniform(4, L);
+    int simple = 0;
+    for (const ClosedGeodesic& g : closedGeodesicsOf(chain, 0)) {
+      if (!g.simple) continue;
+      ++simple;
+      const Holonomy h = closedGeodesicHolonomy(chain, g);
+      SCOPED_TRACE("L = " + std::to_string(L) + ", length " + std::to_string(g.length));
+      EXPECT_LT(std::abs(h.angle), 1e-8);
+      EXPECT_LT(std::abs(h.chartAngle), 1e-8);
+      EXPECT_NEAR(h.enclosedCurvature, 2 * kPi, 1e-8);
+      EXPECT_EQ(selfCheck(h), SelfCheck::confirmed);
+    }
+    EXPECT_GE(simple, 3) << L;  // at least the three of L = 3 (scenes/periodic.json)
   }
 }
 

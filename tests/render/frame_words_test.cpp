@@ -191,7 +191,7 @@ TEST(FrameWords, HolonomyCaptionsGiveTheThreeFiguresAndShortenInOrder) {
   t.holonomy = -0.32985;
   t.angleExcess = -0.32985;
   t.enclosedCurvature = -0.32985;
-  const std::vector<std::string> forms = transportCaptions(t);
+  const std::vector<std::string> forms = transportCaptions(t, 6.0, 6.0);  // at the end: the vector is back
   ASSERT_GE(forms.size(), 3u);
   EXPECT_NE(forms[0].find("angle sum \u2212 \u03c0 = \u22120.330 = \u222bK dA = \u22120.330 = holonomy \u22120.330 rad (\u221218.9\u00b0)"),
             std::string::npos) << forms[0];
@@ -201,7 +201,23 @@ TEST(FrameWords, HolonomyCaptionsGiveTheThreeFiguresAndShortenInOrder) {
     EXPECT_NE(forms[i].find("18.9\u00b0"), std::string::npos) << forms[i];
   }
   t.corners.resize(5);
-  EXPECT_NE(transportCaptions(t)[0].find("5-gon comes back turned: angle sum \u2212 3\u03c0"), std::string::npos);
+  EXPECT_NE(transportCaptions(t, 6.0, 6.0)[0].find("5-gon comes back turned: angle sum \u2212 3\u03c0"),
+            std::string::npos);
+}
+
+// On the way round, the caption says what the sides have swept so far (the holonomy plot's value), not the end.
+TEST(FrameWords, HolonomyCaptionOnTheWaySaysTheCurvatureSweptSoFar) {
+  SphereTransport t;
+  t.samplesPerSide = 2;
+  for (std::size_t side = 0; side < 3; ++side) {
+    t.corners.push_back({1, 0, 0});
+    for (int k = 0; k <= 2; ++k) t.arrows.push_back({{1, 0, 0}, {0, 1, 0}, side, k / 2.0, -0.1 * k});
+  }
+  t.holonomy = t.angleExcess = t.enclosedCurvature = -0.6;
+  const std::vector<std::string> half = transportCaptions(t, 3.0, 6.0);  // each side halfway: 3 x -0.1
+  EXPECT_NE(half[0].find("swept so far = \u22120.300 rad"), std::string::npos) << half[0];
+  EXPECT_EQ(half[0].find("holonomy"), std::string::npos) << half[0];
+  EXPECT_NE(transportCaptions(t, 6.0, 6.0)[0].find("holonomy \u22120.600"), std::string::npos);
 }
 
 }  // namespace
