@@ -88,16 +88,32 @@ std::string runHolonomy(const Scene& scene, const CurvatureRequest& request) {
                                          "--sectional");
   std::string where;
   const nlohmann::json loop = readJsonArgument(request.input, "--holonomy", where);
-  if (!loop.is_object() || (loop.contains("corners") == loop.contains("latitude")) || loop.size() != 1)
+  const int keys = int(loop.contains("corners")) + int(loop.contains("latitude")) + int(loop.contains("periodic"));
+  if (!loop.is_object() || keys != 1 || loop.size() != 1)
     throw CommandExit(kExitBadInput, where +
                                          ": expected an object with one key, \"corners\" (a list of at least 3 "
-                                         "configurations) or \"latitude\" (phi of chart 0)");
+                                         "configurations), \"latitude\" (phi of chart 0) or \"periodic\" (an index "
+                                         "of linkage periodic's list)");
   Holonomy h;
   nlohmann::ordered_json out;
   out["L"] = chain.baseLength;
   std::string what;
   try {
-    if (loop.contains("latitude")) {
+    if (loop.contains("periodic")) {
+      const nlohmann::json& index = loop["periodic"];
+      if (!index.is_number_unsigned())
+        throw CommandExit(kExitBadInput, where + ": periodic: found " + index.dump() +
+                                             "; expected an index of linkage periodic's list (0, 1, ...)");
+      const std::vector<ClosedGeodesic> found = closedGeodesicsOf(chain, 0, interruptRequested);
+      const std::size_t k = index.get<std::size_t>();
+      if (k >= found.size())
+        throw CommandExit(kExitBadInput, where + ": periodic: found " + std::to_string(k) + "; linkage periodic lists " +
+                                             std::to_string(found.size()) + " closed geodesics here (indices 0.." +
+                                             std::to_string(found.size() - 1) + ")");
+      h = closedGeodesicHolonomy(chain, found[k]);
+      out["loop"] = {{"periodic", k}};
+      what = "closed geodesic " + std::to_string(k) + (found[k].simple ? " (simple)" : "");
+    } else if (loop.contains("latitude")) {
       const double phi = numberAt(loop["latitude"], where + ": latitude");
       if (!(std::abs(phi) < std::numbers::pi / 2))
         throw CommandExit(kExitBadInput,

@@ -374,7 +374,8 @@ void addGeometryCommand(CLI::App& app) {
   command->add_option("--holonomy", args->holonomy,
                       "LOOP: how a vector parallel transported round a loop comes back turned (4 rods), checked "
                       "against Gauss-Bonnet: {\"corners\": [3 or more configurations]} joined by their shortest "
-                      "motions, or {\"latitude\": phi}; JSON text or a file");
+                      "motions, {\"latitude\": phi} or {\"periodic\": k} (closed geodesic k of linkage periodic's "
+                      "list: back unturned, 2 pi inside a simple one); JSON text or a file");
   command->add_option("--sectional", args->sectional,
                       "POINTS: the range of the sectional curvature over the tangent planes at each configuration "
                       "(5 rods and more), and of given planes: [{\"coords\": [...], \"planes\": [[X, Y]]}, ...]; JSON "
@@ -389,6 +390,7 @@ void addGeometryCommand(CLI::App& app) {
       "  linkage geometry scenes/default.json --sweep-L 2.1:3.9:37 --csv renders/sweep.csv --chart renders/sweep.png\n"
       "  linkage geometry scenes/default.json --distance-from start --csv renders/distance.csv --maps renders/distance\n"
       "  linkage geometry scenes/default.json --holonomy '{\"latitude\": 0.5}'\n"
+      "  linkage geometry scenes/default.json --holonomy '{\"periodic\": 0}'\n"
       "  linkage geometry scenes/holonomy.json --holonomy '{\"corners\": [{\"coords\": [0.2, 0]}, {\"coords\": [0.3, 1.4]}, "
       "{\"coords\": [1.2, 0.6]}]}'\n"
       "  linkage geometry scenes/five-rods.json --sectional '[{\"coords\": [0.3, -0.2, 0.5]}]'\n"

@@ -138,6 +138,26 @@ TEST(GeometryCli, HolonomyOfATriangleAgreesWithItsCurvatureAndItsAngleExcess) {
   EXPECT_NEAR(nlohmann::json::parse(readFile(folder / "back.json"))["holonomy"].get<double>(), -angle, 1e-10);
 }
 
+// A closed geodesic from linkage periodic's list: the vector comes back unturned, and 2 pi of curvature lies inside;
+// an index past the list is refused naming it.
+TEST(GeometryCli, HolonomyOfAClosedGeodesicIsNoneWithTwoPiInside) {
+  TempFolder folder;
+  const ProcessResult result =
+      runLinkage({"geometry", shippedScene("default.json"), "--holonomy", R"({"periodic": 0})"}, folder.path());
+  ASSERT_EQ(result.code, 0) << result.err;
+  const nlohmann::json h = nlohmann::json::parse(result.out);
+  EXPECT_EQ(h["loop"]["periodic"], 0);
+  EXPECT_NEAR(h["holonomy"].get<double>(), 0.0, 1e-8);
+  EXPECT_NEAR(h["enclosed_curvature"].get<double>(), 2 * M_PI, 1e-8);
+  EXPECT_EQ(h["checks"]["result"], "confirmed");
+  EXPECT_NE(result.err.find("closed geodesic 0 (simple)"), std::string::npos) << result.err;
+  const ProcessResult past =
+      runLinkage({"geometry", shippedScene("default.json"), "--holonomy", R"({"periodic": 99})"}, folder.path());
+  EXPECT_EQ(past.code, 2);
+  EXPECT_NE(past.err.find("--holonomy: periodic: found 99; linkage periodic lists"), std::string::npos) << past.err;
+  EXPECT_EQ(past.out, "");
+}
+
 TEST(GeometryCli, HolonomyOfALatitudeIsTheCurvatureOfItsCap) {
   TempFolder folder;
   const ProcessResult result =
