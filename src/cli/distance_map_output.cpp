@@ -95,6 +95,26 @@ void renderDistanceMap(const DistanceMap& map, const std::string& title, const s
   renderGnuplotChart(script, png);
 }
 
+// The distance at each given point, exact, in the grid CSV's columns; the points no motion was found to are named.
+std::string pointsCsv(const Chain& chain, const ConstrainedModel& model, const DistanceMap& map,
+                      const Eigen::VectorXd& from, const std::vector<Eigen::Vector2d>& points,
+                      std::vector<std::string>& missed) {
+  std::string text = "phi,t,distance,direction\n";
+  for (const Eigen::Vector2d& p : points) {
+    const Eigen::Vector3d x(std::cos(p(0)) * std::cos(p(1)), std::cos(p(0)) * std::sin(p(1)), std::sin(p(0)));
+    const std::optional<Arrival> arrival =
+        shortestArrival(model, map, from, ConstrainedModel::stack(hingePositionsAt(chain, x)), x);
+    if (!arrival) missed.push_back("(" + shortest(p(0)) + ", " + shortest(p(1)) + ")");
+    std::string row;
+    for (double v : {p(0), p(1), arrival ? arrival->distance : std::nan(""), arrival ? arrival->direction : std::nan("")}) {
+      if (!row.empty()) row += ',';
+      appendCsvNumber(row, v);
+    }
+    text += row + "\n";
+  }
+  return text;
+}
+
 nlohmann::json chartPoint(const Eigen::Vector3d& x, double distance) {
   const Eigen::Vector2d p = chartOf(x);
   return nlohmann::json::array({p(0), p(1), distance});
@@ -126,8 +146,10 @@ std::string runDistanceMap(const Scene& scene, const DistanceMapRequest& request
   progress.update(4L * request.grid);
 
   const Eigen::Vector2d centre = chartOf(map.point);
+  std::vector<std::string> missed;  // --points no motion was found to
   if (!request.csv.empty() || (request.maps.empty() && !request.json)) {
-    const std::string text = gridCsv(map);
+    const std::string text =
+        request.points.empty() ? gridCsv(map) : pointsCsv(chain, model, map, point, request.points, missed);
     if (request.csv.empty()) {
       if (!(std::cout << text << std::flush))
         throw CommandExit(kExitFailure, "linkage geometry: cannot write to standard output");
@@ -167,12 +189,18 @@ std::string runDistanceMap(const Scene& scene, const DistanceMapRequest& request
   }
   // The map is written whole either way; one whose two injectivity radii disagree is reported as failed.
   reportUnconfirmed("geometry", "distance map", {selfCheck(map)}, request.quiet);
+  if (!missed.empty())
+    throw CommandExit(kExitFailure, "linkage geometry: no motion found to " + std::to_string(missed.size()) +
+                                        " of the --points (the first at (phi, t) = " + missed.front() +
+                                        "); their rows are written with nan");
+  const std::string atPoints =
+      request.points.empty() ? "" : ", the distance at " + std::to_string(request.points.size()) + " points";
   return "distance map from (phi, t) = (" + shortest(std::round(centre(0) * 1e6) / 1e6) + ", " +
          shortest(std::round(centre(1) * 1e6) / 1e6) + "), " + std::to_string(request.grid) + " x " +
          std::to_string(request.grid) + " grid, " + std::to_string(map.geodesics) +
          " geodesics, injectivity radius " + shortest(std::round(map.injectivityRadius * 1e6) / 1e6) +
          " (Klingenberg: min(first conjugate " + shortest(std::round(map.conjugateRadius * 1e6) / 1e6) +
-         ", half the shortest loop " + shortest(std::round(map.shortestLoop / 2 * 1e6) / 1e6) + "))";
+         ", half the shortest loop " + shortest(std::round(map.shortestLoop / 2 * 1e6) / 1e6) + "))" + atPoints;
 }
 
 }  // namespace sl

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Dense>
+
 #include "scene/scene.hpp"
 
 namespace sl {
@@ -16,6 +18,8 @@ struct DistanceMapRequest {
   bool json = false;  // the summary and the loci as JSON on standard output
   bool quiet = false;
   std::vector<std::string> formats;
+  // --points: the distance at these chart-0 points (phi, t), exact (shortestArrival), in place of the grid's CSV.
+  std::vector<Eigen::Vector2d> points;
 };
 
 // Writes what was asked; returns what the summary line says.

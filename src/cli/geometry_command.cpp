@@ -257,12 +257,13 @@ void renderMap(const ChartGrid& grid, const std::vector<CurvatureSample>& sample
 void runGeometry(const GeometryArguments& args) {
   const CommandSummary summary("geometry", args.quiet);
   const bool distance = !args.distanceFrom.empty();
-  const int modes = (!distance && (args.grid > 0 || !args.maps.empty())) + !args.points.empty() + args.summary +
+  const int modes = (!distance && (args.grid > 0 || !args.maps.empty())) + (!distance && !args.points.empty()) +
+                    args.summary +
                     !args.sweep.empty() + distance + !args.holonomy.empty() + !args.sectional.empty();
   if (modes != 1)
     throw CommandExit(kExitBadInput,
                       "linkage geometry: expected exactly one of --grid N (with --csv and/or --maps DIR), "
-                      "--points FILE, --summary, --sweep-L A:B:N, --distance-from POINT (with --grid, --csv, --maps), "
+                      "--points FILE, --summary, --sweep-L A:B:N, --distance-from POINT (with --grid, --csv, --maps, --points), "
                       "--holonomy LOOP, --sectional POINTS");
   if (args.json && !distance) throw CommandExit(kExitBadInput, "--json: goes with --distance-from POINT");
   if (!args.chart.empty() && args.sweep.empty())
@@ -304,7 +305,8 @@ void runGeometry(const GeometryArguments& args) {
                                          "; with --distance-from expected 8 to " + std::to_string(kMaxDistanceGrid));
   if (distance) {
     DistanceMapRequest request{args.distanceFrom, args.grid > 0 ? args.grid : kDefaultDistanceGrid, args.csv,
-                               args.maps, args.json, args.quiet, formats};
+                               args.maps, args.json, args.quiet, formats, {}};
+    if (!args.points.empty()) request.points = readPoints(args.points);
     summary.print(runDistanceMap(scene, request) + " of \"" + scene.name + "\" (L = " +
                   shortest(scene.chain.baseLength) + ")" + (args.csv.empty() ? "" : " -> " + args.csv));
     return;
@@ -360,7 +362,9 @@ void addGeometryCommand(CLI::App& app) {
   addSceneOverrideOption(*command, args->overrides);
   command->add_option("--grid", args->grid, "N x N chart grid (phi from pole to pole, t periodic): CSV")
       ->check(CLI::Range(2, kMaxGrid));
-  command->add_option("--points", args->points, "CSV file of chart points (header phi,t): the same columns there");
+  command->add_option("--points", args->points,
+                      "CSV file of chart points (header phi,t): the same columns there; with --distance-from, the "
+                      "exact distance at those points (the shortest motion, seeded from the map) instead of the grid");
   command->add_flag("--summary", args->summary,
                     "JSON: area, total curvature (4 pi by Gauss-Bonnet), min and max K, max bending");
   command->add_option("--sweep-L", args->sweep, "A:B:N: the summary for N values of L from A to B, as CSV");
@@ -389,6 +393,7 @@ void addGeometryCommand(CLI::App& app) {
       "  linkage geometry scenes/default.json --grid 256 --csv renders/curvature.csv\n"
       "  linkage geometry scenes/default.json --sweep-L 2.1:3.9:37 --csv renders/sweep.csv --chart renders/sweep.png\n"
       "  linkage geometry scenes/default.json --distance-from start --csv renders/distance.csv --maps renders/distance\n"
+      "  linkage geometry scenes/default.json --distance-from start --points points.csv --grid 64\n"
       "  linkage geometry scenes/default.json --holonomy '{\"latitude\": 0.5}'\n"
       "  linkage geometry scenes/default.json --holonomy '{\"periodic\": 0}'\n"
       "  linkage geometry scenes/holonomy.json --holonomy '{\"corners\": [{\"coords\": [0.2, 0]}, {\"coords\": [0.3, 1.4]}, "

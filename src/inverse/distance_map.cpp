@@ -534,4 +534,30 @@ int conjugateCusps(const DistanceMap& map, double noise) {
   return turns > 0 ? turns + 1 : 0;
 }
 
+std::optional<Arrival> shortestArrival(const ConstrainedModel& model, const DistanceMap& map,
+                                       const Eigen::VectorXd& from, const Eigen::VectorXd& to,
+                                       const Eigen::Vector3d& x) {
+  const std::size_t rows = map.phis.size(), columns = map.ts.size();
+  if (rows < 2 || columns < 2) throw std::invalid_argument("shortestArrival: the map has no grid");
+  // The cell holding x in chart 0: rows phi from pole to pole, columns t periodic from -pi.
+  const double phi = std::asin(std::clamp(x.z(), -1.0, 1.0)), t = std::atan2(x.y(), x.x());
+  const double rowStep = map.phis[1] - map.phis[0], columnStep = map.ts[1] - map.ts[0];
+  const std::size_t i = std::min(rows - 2, static_cast<std::size_t>(std::max(0.0, (phi - map.phis[0]) / rowStep)));
+  const std::size_t j =
+      static_cast<std::size_t>(std::max(0.0, std::floor((t - map.ts[0]) / columnStep))) % columns;
+  std::optional<Arrival> best;
+  for (const std::size_t row : {i, i + 1})
+    for (const std::size_t column : {j, (j + 1) % columns}) {
+      const std::size_t n = row * columns + column;
+      if (!std::isfinite(map.distance[n]) || !std::isfinite(map.direction[n])) continue;
+      const Eigen::VectorXd seed = map.distance[n] * directionAt(map.basis, map.direction[n]);
+      const std::optional<Connection> shot = shootConnection(model, from, to, seed);
+      if (!shot || (best && shot->length >= best->distance)) continue;
+      const double along = model.inner(shot->velocity, map.basis.col(0)),
+                   across = model.inner(shot->velocity, map.basis.col(1));
+      best = Arrival{shot->length, std::atan2(across, along)};
+    }
+  return best;
+}
+
 }  // namespace sl

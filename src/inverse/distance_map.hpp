@@ -11,6 +11,7 @@
 //   shortest geodesics). The injectivity radius: the distance to the nearest cut point, checked against
 //   Klingenberg's lemma, min(first conjugate distance, half the shortest geodesic loop through the point).
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -68,6 +69,18 @@ struct DistanceMap {
 
 DistanceMap distanceMap(const ConstrainedModel& model, const SphereProjection& project, const Eigen::VectorXd& point,
                         const DistanceMapOptions& options = {});
+
+// The distance from the map's point to one configuration `to` (sphere point x), exact: the map's shortest arrivals
+// at the four grid nodes around x seed route 1 of connect (shootConnection), and the shortest converged motion is
+// taken (across the cut locus the nodes' arrivals come from distinct geodesics; both are tried). Nothing when no
+// seed converges. `from` is the map's point.
+struct Arrival {
+  double distance = 0;   // the kinetic length of the shortest motion found
+  double direction = 0;  // its start's angle in the map's tangent basis
+};
+std::optional<Arrival> shortestArrival(const ConstrainedModel& model, const DistanceMap& map,
+                                       const Eigen::VectorXd& from, const Eigen::VectorXd& to,
+                                       const Eigen::Vector3d& x);
 
 // The shortest geodesic loop through the point up to the length bound (geodesics from it back to it, by
 // shooting from a fan's near returns); 0 if none was found.

@@ -1,7 +1,10 @@
 // `linkage connect` and `linkage periodic` from the command line: what a user sees (the JSON keys, the
 // shortest first, both routes agreeing) and the refusals. The numbers are pinned by tests/inverse.
 #include <algorithm>
+#include <array>
+#include <cstdio>
 #include <filesystem>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -254,6 +257,50 @@ TEST(DistanceMapCli, CsvJsonAndRefusals) {
   const ProcessResult jsonAlone = runLinkage({"geometry", scene, "--summary", "--json"}, folder.path());
   EXPECT_EQ(jsonAlone.code, 2);
   EXPECT_NE(jsonAlone.err.find("--json: goes with --distance-from"), std::string::npos) << jsonAlone.err;
+}
+
+// `geometry --distance-from --points`: the distance at given points, exact, in the grid's columns; at two of the
+// grid's own nodes it agrees with the map (good to 1e-3); a bad points file is refused naming its line.
+TEST(DistanceMapCli, DistanceAtGivenPoints) {
+  TempFolder folder;
+  const std::string scene = shippedScene("default.json");
+  const ProcessResult grid = runLinkage({"geometry", scene, "--distance-from", "start", "--grid", "48", "--quiet"},
+                                        folder.path());
+  ASSERT_EQ(grid.code, 0) << grid.err;
+  std::istringstream rows(grid.out);
+  std::string header, line;
+  std::getline(rows, header);
+  std::vector<std::array<double, 3>> nodes;  // phi, t, distance of every 700th node
+  for (int k = 0; std::getline(rows, line); ++k) {
+    if (k % 700 != 350) continue;
+    std::array<double, 3> node{};
+    std::sscanf(line.c_str(), "%lf,%lf,%lf", &node[0], &node[1], &node[2]);
+    nodes.push_back(node);
+  }
+  ASSERT_GE(nodes.size(), 2u);
+  std::string points = "phi,t\n";
+  for (const auto& node : nodes) points += std::to_string(node[0]) + "," + std::to_string(node[1]) + "\n";
+  writeFile(folder.path() / "points.csv", points);
+  const ProcessResult at = runLinkage(
+      {"geometry", scene, "--distance-from", "start", "--grid", "48", "--points", "points.csv"}, folder.path());
+  ASSERT_EQ(at.code, 0) << at.err;
+  EXPECT_NE(at.err.find("the distance at " + std::to_string(nodes.size()) + " points"), std::string::npos) << at.err;
+  std::istringstream found(at.out);
+  std::getline(found, header);
+  EXPECT_EQ(header, "phi,t,distance,direction");
+  for (const auto& node : nodes) {
+    ASSERT_TRUE(std::getline(found, line));
+    double phi = 0, t = 0, distance = 0;
+    ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf", &phi, &t, &distance), 3) << line;
+    EXPECT_NEAR(distance / node[2], 1.0, 2e-3) << line;
+  }
+  EXPECT_FALSE(std::getline(found, line));
+  writeFile(folder.path() / "bad.csv", "phi,t\n0.1,x\n");
+  const ProcessResult bad = runLinkage(
+      {"geometry", scene, "--distance-from", "start", "--grid", "48", "--points", "bad.csv"}, folder.path());
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("bad.csv:2: expected two finite numbers phi,t"), std::string::npos) << bad.err;
+  EXPECT_EQ(bad.out, "");
 }
 
 }  // namespace

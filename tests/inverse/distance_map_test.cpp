@@ -159,6 +159,27 @@ TEST_F(LinkageDistanceMap, AgreesWithConnect) {
   EXPECT_EQ(compared, 6);
 }
 
+// The distance at points between the grid's nodes (geometry --distance-from --points): exact, connect's shortest
+// motion to 1e-9, where the map itself is good to 1e-3; at a cut edge's midpoint too, where two geodesics arrive.
+TEST_F(LinkageDistanceMap, ShortestArrivalBetweenNodesIsConnectsShortest) {
+  const DistanceMap& map = *map_;
+  ConnectOptions options;
+  options.discreteRoute = false;
+  std::vector<std::pair<double, double>> points = {{0.123, -2.71}, {-0.9, 0.4567}, {1.2345, 2.0}, {-1.4, -0.33}};
+  ASSERT_FALSE(map.cutLocus.empty());
+  const Eigen::Vector3d cut = map.cutLocus[map.cutLocus.size() / 2].x;
+  points.emplace_back(std::asin(cut.z()), std::atan2(cut.y(), cut.x()));
+  for (const auto& [phi, t] : points) {
+    const Eigen::VectorXd to = pointOf(*chain_, phi, t);
+    const Eigen::Vector3d x(std::cos(phi) * std::cos(t), std::cos(phi) * std::sin(t), std::sin(phi));
+    const std::optional<Arrival> arrival = shortestArrival(*model_, map, *from_, to, x);
+    ASSERT_TRUE(arrival) << phi << ", " << t;
+    const std::vector<Connection> found = findConnections(*model_, chain_, *from_, to, options);
+    ASSERT_FALSE(found.empty());
+    EXPECT_NEAR(arrival->distance, found[0].length, 1e-9) << phi << ", " << t;
+  }
+}
+
 // The cut locus is a tree: one component, no cycle, in the graph of the grid's faces.
 TEST_F(LinkageDistanceMap, CutLocusIsATree) {
   const CutGraphShape shape = cutGraphShape(*map_);
