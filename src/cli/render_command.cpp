@@ -326,6 +326,8 @@ RenderCounts renderHere(const RenderPlan& plan, const nlohmann::json& info, bool
                            scene.output.size.width, scene.output.size.height, double(scene.output.fps)};
     settings.cancelled = interruptRequested;
     settings.maxStallSeconds = environment().encoderWaitSeconds;
+    settings.holdStartFrames = int(std::lround(scene.output.holdStart * scene.output.fps));
+    settings.holdEndFrames = int(std::lround(scene.output.holdEnd * scene.output.fps));
     videoSinks.push_back(std::make_unique<VideoSink>(settings, *videoManifests.back()));
   }
   if (plan.png) {

@@ -39,6 +39,8 @@ inline constexpr int kMaxPathSamplesPerFrame = 100;
 // bound a run's trail memory (32 x 60 s x 1000 fps x 16 bytes = 31 MB).
 inline constexpr int kMaxTrails = 32;
 inline constexpr double kMaxTrailFadeSeconds = 60;
+// A video may hold its first and its last frame this long (output.hold_start, output.hold_end).
+inline constexpr double kMaxHoldSeconds = 60;
 // A run's sphere path keeps at most this many points (older ones thinned to every other), the newest
 // kRecentPathPoints at full resolution: its memory is bounded whatever the duration and sampling.
 inline constexpr std::size_t kMaxPathPoints = 20000;

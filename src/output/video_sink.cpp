@@ -85,6 +85,11 @@ std::vector<std::string> ffmpegArguments(const VideoSettings& s, const std::stri
                                 "-framerate", rate,        "-i",        "pipe:0",   "-fflags", "+bitexact",
                                 "-flags:v", "+bitexact"};
   const auto add = [&](std::initializer_list<std::string> more) { args.insert(args.end(), more); };
+  const std::string hold = s.holdStartFrames > 0 || s.holdEndFrames > 0
+                               ? "tpad=start=" + std::to_string(s.holdStartFrames) +
+                                     ":stop=" + std::to_string(s.holdEndFrames) + ":start_mode=clone:stop_mode=clone"
+                               : "";
+  if (!hold.empty() && s.format != VideoFormat::Gif) add({"-vf", hold});
   switch (s.format) {
     case VideoFormat::Mp4:  // x264's constant quality: 18 is visually lossless for these flat-shaded frames
       add({"-c:v", "libx264", "-preset", "veryfast", "-crf", std::to_string(18 + 5 * level), "-pix_fmt", "yuv420p",
@@ -97,7 +102,7 @@ std::vector<std::string> ffmpegArguments(const VideoSettings& s, const std::stri
     case VideoFormat::Gif: {  // one palette for the whole clip (stats of every frame), ordered dithering: no shimmer
       const int colours = 256 >> level;
       add({"-filter_complex",
-           "[0:v]split[a][b];[a]palettegen=max_colors=" + std::to_string(colours) +
+           "[0:v]" + (hold.empty() ? "" : hold + ",") + "split[a][b];[a]palettegen=max_colors=" + std::to_string(colours) +
                ":stats_mode=full[p];[b][p]paletteuse=dither=bayer:bayer_scale=4",
            "-loop", "0"});
       break;
@@ -257,7 +262,8 @@ void VideoSink::verifyTemporary() const {
   }
   std::string text = probe.second;
   while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
-  const std::string expected = std::to_string(frames_.size());
+  const std::string expected =
+      std::to_string(frames_.size() + std::size_t(settings_.holdStartFrames) + std::size_t(settings_.holdEndFrames));
   if (probe.first != 0 || text != expected)
     throw std::runtime_error(failure + settings_.ffmpeg + " exited 0 but its output holds " +
                              (probe.first == 0 ? text : "no readable video") + " of " + expected +

@@ -39,6 +39,9 @@ struct VideoSettings {
   std::string ffprobe = "";       // empty: "ffprobe" beside ffmpeg (the same folder, or the PATH)
   bool (*cancelled)() = nullptr;  // asked while waiting for ffmpeg; true ends the video (EncodingCancelled)
   double maxStallSeconds = limits::kMaxEncoderStallSeconds;  // ffmpeg reading nothing this long: given up
+  // The first and the last frame held this many frames longer (ffmpeg's tpad, cloning them): output.hold_start and
+  // output.hold_end times the frame rate.
+  int holdStartFrames = 0, holdEndFrames = 0;
 };
 
 // The video was abandoned because `cancelled` said so (a signal): nothing was replaced.

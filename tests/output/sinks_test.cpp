@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <sstream>
 
 #include <stb/stb_image.h>
 
@@ -141,6 +142,40 @@ TEST(VideoSink, WebmAndGifByExtensionWithEveryFrameDeterministically) {
                          *std::make_unique<FrameManifest>(folder, nlohmann::json{{"t", 1}}, "x.json",
                                                          FrameManifest::Existing::replace)),
                std::invalid_argument);
+}
+
+// output.hold_start and output.hold_end: the first and the last frame shown longer (cloned by the encoder), every
+// frame still checked by ffprobe; in the lossless GIF the held frames decode to exactly the first and the last.
+TEST(VideoSink, HoldsTheFirstAndTheLastFrame) {
+  const testing::TempFolder temp;
+  const std::string folder = temp.path();
+  for (const VideoFormat format : {VideoFormat::Mp4, VideoFormat::Gif}) {
+    const std::string extension(traits(format).name);
+    SCOPED_TRACE(extension);
+    const std::string path = folder + "/held." + extension;
+    FrameManifest manifest(folder, {{"test", extension}}, "held." + extension + ".manifest.json");
+    {
+      VideoSettings settings{path, format, VideoQuality::High, 64, 48, 30};
+      settings.holdStartFrames = 5;
+      settings.holdEndFrames = 7;
+      VideoSink sink(settings, manifest);
+      for (int k = 0; k < 12; ++k) sink.consume(k, gradient(64, 48, k));
+      sink.finish();
+    }
+    EXPECT_EQ(run("ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 '" +
+                  path + "'"),
+              "24\n");
+    EXPECT_EQ(manifest.entry(11)->pixelSha256, sha256Hex(gradient(64, 48, 11).rgb));  // the frames, not the holds
+    if (format != VideoFormat::Gif) continue;
+    std::istringstream lines(run("ffmpeg -v error -i '" + path + "' -f framemd5 -"));
+    std::vector<std::string> hashes;
+    for (std::string line; std::getline(lines, line);)
+      if (!line.empty() && line[0] != '#') hashes.push_back(line.substr(line.rfind(',') + 1));
+    ASSERT_EQ(hashes.size(), 24u);
+    for (int k = 1; k <= 5; ++k) EXPECT_EQ(hashes[std::size_t(k)], hashes[0]) << k;
+    for (int k = 16; k < 23; ++k) EXPECT_EQ(hashes[std::size_t(k)], hashes[23]) << k;
+    EXPECT_NE(hashes[6], hashes[0]);
+  }
 }
 
 std::vector<std::string> folderNames(const std::string& folder) {

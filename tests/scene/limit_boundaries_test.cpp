@@ -117,6 +117,12 @@ TEST(LimitBoundaries, ViewBounds) {
   expectAccepted(baseScene(), "/view/trail_fade_seconds", limits::kMaxTrailFadeSeconds);
   expectRefused(baseScene(), "/view/trail_fade_seconds", above(limits::kMaxTrailFadeSeconds),
                 "view.trail_fade_seconds");
+  for (const std::string key : {"hold_start", "hold_end"}) {
+    expectAccepted(baseScene(), "/output/" + key, limits::kMaxHoldSeconds);
+    expectAccepted(baseScene(), "/output/" + key, 0.0);
+    expectRefused(baseScene(), "/output/" + key, above(limits::kMaxHoldSeconds), "output." + key);
+    expectRefused(baseScene(), "/output/" + key, below(0.0), "output." + key);
+  }
   json trails = baseScene();
   trails["linkage"] = {{"rods", 40}, {"L", 39}};
   trails["initial"] = {{"coords", std::vector<double>(38, 0.1)}, {"velocity", std::vector<double>(38, 0)}};
