@@ -27,6 +27,13 @@ std::string textOf(const char* name) {
   return text ? text : "";
 }
 
+bool progressJsonFrom(const char* name) {
+  const std::string text = textOf(name);
+  if (text.empty() || text == "text") return false;
+  if (text == "json") return true;
+  throw CommandExit(kExitBadInput, std::string(name) + ": found \"" + text + "\"; expected json or text");
+}
+
 Environment readEnvironment() {
   std::string switches;
   for (const char* name : {"GALLIUM_OVERRIDE_CPU_CAPS", "GALLIUM_NOSSE", "LP_NATIVE_VECTOR_WIDTH"})
@@ -34,7 +41,7 @@ Environment readEnvironment() {
       switches += (switches.empty() ? "" : " ") + std::string(name) + "=" + value;
   return {secondsFrom("LINKAGE_LOCK_WAIT", limits::kMaxLockWaitSeconds),
           secondsFrom("LINKAGE_ENCODER_WAIT", limits::kMaxEncoderStallSeconds), textOf("SL_SHADER_DIR"),
-          textOf("LINKAGE_GL"), switches};
+          textOf("LINKAGE_GL"), switches, progressJsonFrom("LINKAGE_PROGRESS")};
 }
 
 }  // namespace

@@ -89,6 +89,7 @@ int runCommand(int argc, char** argv) {
              sl::exitCodeHelp());
   sl::addCommands(app);
   try {
+    sl::environment();  // read once, first: an unusable variable is refused before any work starts
     app.parse(argc, argv);
     if (version) {
       printVersion();

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "cli/environment.hpp"
+
 namespace sl {
 
 namespace {
@@ -16,7 +18,8 @@ constexpr auto kLogHeartbeat = std::chrono::seconds(30);
 Progress::Progress(long total, bool quiet, std::string command, std::string unit)
     : total_(total),
       quiet_(quiet),
-      terminal_(::isatty(STDERR_FILENO) != 0),
+      terminal_(::isatty(STDERR_FILENO) != 0 && !environment().progressJson),
+      json_(environment().progressJson),
       command_(std::move(command)),
       unit_(std::move(unit)),
       start_(std::chrono::steady_clock::now()),
@@ -61,7 +64,12 @@ void Progress::update(long done) {
   const double seconds = std::chrono::duration<double>(now - start_).count();
   const double rate = seconds > 0 ? done / seconds : 0;
   const long eta = rate > 0 ? static_cast<long>((total_ - done) / rate) : 0;
-  if (terminal_)
+  if (json_)  // the command and the unit are the program's own words (no quoting needed)
+    std::fprintf(stderr,
+                 "{\"command\": \"%s\", \"unit\": \"%s\", \"done\": %ld, \"total\": %ld, \"rate\": %.4g, "
+                 "\"eta_seconds\": %ld}\n",
+                 command_.c_str(), unit_.c_str(), done, total_, rate, eta);
+  else if (terminal_)
     std::fprintf(stderr, "\r%s %ld/%ld  %.1f %ss/s  ETA %ld:%02ld   ", unit_.c_str(), done, total_, rate,
                  unit_.c_str(), eta / 60, eta % 60);
   else

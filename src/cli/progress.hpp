@@ -5,6 +5,9 @@
 // - stderr a file or pipe (a cluster job's log): a whole line each time another tenth of the work is done
 //   ("linkage render: frame 121/601 (20%), 31.5 frames/s, ETA 0:15"), and between tenths one at most every
 //   30 s when a tenth takes longer, so a log shows the job is alive without filling up;
+// - LINKAGE_PROGRESS=json (cli/environment.hpp): whatever stderr is, one JSON object per line at each tenth and
+//   at the end, {"command": "render", "unit": "frame", "done": 121, "total": 601, "rate": 31.5, "eta_seconds": 15},
+//   for a script or a scheduler to read;
 // - --quiet: nothing.
 
 #include <chrono>
@@ -28,7 +31,7 @@ class Progress {
 
  private:
   long total_;
-  bool quiet_, terminal_;
+  bool quiet_, terminal_, json_;
   std::string command_, unit_;
   bool drawn_ = false;
   long lastTenth_ = 0;

@@ -2,6 +2,7 @@
 // relative link resolved against its own folder, and a superseded render deleting only its own frames.
 #include <cstdio>
 #include <filesystem>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -100,6 +101,41 @@ TEST(EdgesCli, UnusableEnvironmentValuesAreNamed) {
     }
   }
   EXPECT_EQ(runShell("LINKAGE_LOCK_WAIT=2.5 " + render, folder.path()).code, 0);
+  const ProcessResult progress = runShell("LINKAGE_PROGRESS=xml " + render, folder.path());
+  EXPECT_EQ(progress.code, 2);
+  EXPECT_NE(progress.err.find("LINKAGE_PROGRESS: found \"xml\"; expected json or text"), std::string::npos)
+      << progress.err;
+}
+
+// LINKAGE_PROGRESS=json: every progress line on stderr is one JSON object a script can read, counting up to the
+// whole work, and the one-line summary still ends the command.
+TEST(EdgesCli, ProgressAsJsonLines) {
+  TempFolder folder;
+  const ProcessResult render =
+      runShell("LINKAGE_PROGRESS=json " + shellQuoted(linkageBinary()) + " render " +
+                   shellQuoted(shippedScene("seam.json")) + " --size 160x90 --frames 0:20 --out r",
+               folder.path());
+  ASSERT_EQ(render.code, 0) << render.err;
+  std::istringstream lines(render.err);
+  long last = -1, reports = 0;
+  std::string line, summary;
+  while (std::getline(lines, line)) {
+    if (line.empty() || line[0] != '{') {
+      summary = line;
+      continue;
+    }
+    const nlohmann::json report = nlohmann::json::parse(line);
+    EXPECT_EQ(report["command"], "render");
+    EXPECT_EQ(report["unit"], "frame");
+    EXPECT_EQ(report["total"], 20);
+    EXPECT_GT(report["done"].get<long>(), last);
+    EXPECT_GE(report["eta_seconds"].get<long>(), 0);
+    last = report["done"].get<long>();
+    ++reports;
+  }
+  EXPECT_GE(reports, 2);
+  EXPECT_EQ(last, 20);
+  EXPECT_EQ(summary.rfind("linkage render: ", 0), 0u) << render.err;
 }
 
 }  // namespace
