@@ -38,6 +38,7 @@
 #include "output/video_sink.hpp"
 #include "render/gl_backend.hpp"
 #include "render/renderer_pool.hpp"
+#include "contracts/limits.hpp"
 #include "contracts/parallel_for.hpp"
 #include "scene/output_folder.hpp"
 #include "scene/scene_cost.hpp"
@@ -55,6 +56,7 @@ struct RenderArguments {
   std::vector<std::string> videos;  // --video, repeatable
   bool png = false, noPng = false, quiet = false, resume = false, replace = false, preview = false, noClobber = false;
   int threads = 0;  // --threads; 0: the cores this process may use
+  int crf = -1;     // --crf; -1: not given
 };
 
 // What a render will do, after the scene's choices and the options are combined and checked.
@@ -133,6 +135,12 @@ RenderPlan planRender(const RenderArguments& args) {
     for (std::size_t j = 0; j < i; ++j)
       if (fs::absolute(video).lexically_normal() == fs::absolute(plan.videos[j]).lexically_normal())
         problems.push_back({videoPath, "names " + video + " twice; expected each video once"});
+  }
+  if (args.crf >= 0) {
+    if (args.crf > limits::kMaxVideoCrf)
+      problems.push_back({"--crf", "found " + std::to_string(args.crf) + "; expected an integer from 0 to " +
+                                       std::to_string(limits::kMaxVideoCrf)});
+    scene.output.videoCrf = args.crf;
   }
   if (!args.videoQuality.empty()) {
     if (const auto quality = parseKind(kVideoQualities, args.videoQuality)) {
@@ -326,6 +334,7 @@ RenderCounts renderHere(const RenderPlan& plan, const nlohmann::json& info, bool
                            scene.output.size.width, scene.output.size.height, double(scene.output.fps)};
     settings.cancelled = interruptRequested;
     settings.maxStallSeconds = environment().encoderWaitSeconds;
+    settings.crf = scene.output.videoCrf;
     settings.holdStartFrames = int(std::lround(scene.output.holdStart * scene.output.fps));
     settings.holdEndFrames = int(std::lround(scene.output.holdEnd * scene.output.fps));
     videoSinks.push_back(std::make_unique<VideoSink>(settings, *videoManifests.back()));
@@ -567,6 +576,10 @@ void addRenderCommand(CLI::App& app) {
                    "each frame, e.g. --video talk.mp4 --video blog.gif")
       ->allow_extra_args(false);
   command->add_option("--video-quality", args->videoQuality, "high, medium or small (default: output.video_quality, high)");
+  command->add_option("--crf", args->crf,
+                      "N: the constant rate factor of mp4 and webm videos instead of --video-quality's (0 lossless "
+                      "to 51; default: output.video_crf)")
+      ->check(CLI::NonNegativeNumber);
   command->add_flag("--png", args->png, "write PNG frames (the default unless the scene says output.png: false)");
   command->add_flag("--no-png", args->noPng, "no PNG frames (with --video: the video only)");
   command->add_option("--size", args->size,

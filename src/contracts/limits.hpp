@@ -41,6 +41,8 @@ inline constexpr int kMaxTrails = 32;
 inline constexpr double kMaxTrailFadeSeconds = 60;
 // A video may hold its first and its last frame this long (output.hold_start, output.hold_end).
 inline constexpr double kMaxHoldSeconds = 60;
+// A video's constant rate factor (output.video_crf, --crf): H.264's scale, 0 lossless to 51 (VP9's goes to 63).
+inline constexpr int kMaxVideoCrf = 51;
 // A run's sphere path keeps at most this many points (older ones thinned to every other), the newest
 // kRecentPathPoints at full resolution: its memory is bounded whatever the duration and sampling.
 inline constexpr std::size_t kMaxPathPoints = 20000;

@@ -16,6 +16,7 @@ struct OutputSettings {
   PngCompression pngCompression = PngCompression::Fast;
   std::string video;   // a .mp4, .webm or .gif path (the format by its extension), empty = no video
   VideoQuality videoQuality = VideoQuality::High;
+  int videoCrf = -1;  // the encoder's constant rate factor (mp4, webm) instead of videoQuality's; -1: not given
   double holdStart = 0, holdEnd = 0;  // seconds a video shows its first and its last frame before and after playing
 };
 

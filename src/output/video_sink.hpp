@@ -42,6 +42,7 @@ struct VideoSettings {
   // The first and the last frame held this many frames longer (ffmpeg's tpad, cloning them): output.hold_start and
   // output.hold_end times the frame rate.
   int holdStartFrames = 0, holdEndFrames = 0;
+  int crf = -1;  // mp4 and webm: this constant rate factor instead of the quality's (output.video_crf); -1: none
 };
 
 // The video was abandoned because `cancelled` said so (a signal): nothing was replaced.

@@ -550,6 +550,8 @@ void readOutput(const json& value, Scene& scene, std::vector<SceneProblem>& prob
     if (const auto kind = detail::pickKind(output.pathOf("video_quality"), *quality, kVideoQualities, problems))
       spec.videoQuality = *kind;
   }
+  if (const auto crf = output.integer("video_crf"); crf && output.checkBounds("video_crf", *crf))
+    spec.videoCrf = static_cast<int>(*crf);
   if (const auto hold = output.number("hold_start"); hold && output.checkBounds("hold_start", *hold))
     spec.holdStart = *hold;
   if (const auto hold = output.number("hold_end"); hold && output.checkBounds("hold_end", *hold))

@@ -256,6 +256,31 @@ TEST(EverydayCli, SeveralVideosFromOneDrawing) {
   EXPECT_FALSE(fs::exists(folder.path() / "w"));
 }
 
+// --crf: the encoder's constant rate factor, lower larger; out of range refused before any frame; and the hold
+// keys lengthen the video by their frames (ffprobe's check in the sink counts them).
+TEST(EverydayCli, EncoderSettingsAndHolds) {
+  TempFolder folder;
+  const auto render = [&](const std::string& video, std::vector<std::string> more) {
+    std::vector<std::string> args{"render", shippedScene("default.json"), "--size", "160x90", "--frames", "0:12",
+                                  "--no-png", "--quiet", "--video", video};
+    args.insert(args.end(), more.begin(), more.end());
+    return runLinkage(args, folder.path());
+  };
+  ASSERT_EQ(render("sharp.mp4", {"--crf", "10"}).code, 0);
+  ASSERT_EQ(render("soft.mp4", {"--crf", "45"}).code, 0);
+  EXPECT_GT(fs::file_size(folder.path() / "sharp.mp4"), 2 * fs::file_size(folder.path() / "soft.mp4"));
+  const ProcessResult refused = render("none.mp4", {"--crf", "60"});
+  EXPECT_EQ(refused.code, 2);
+  EXPECT_NE(refused.err.find("--crf: found 60; expected an integer from 0 to 51"), std::string::npos) << refused.err;
+  EXPECT_FALSE(fs::exists(folder.path() / "none.mp4"));
+  const ProcessResult held = render("held.gif", {"--set", "output.hold_start=0.5", "--set", "output.hold_end=1"});
+  ASSERT_EQ(held.code, 0) << held.err;
+  const ProcessResult probe = runShell(
+      "ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 held.gif",
+      folder.path());
+  EXPECT_EQ(probe.out, std::to_string(12 + 15 + 30) + "\n");  // 30 frames/s
+}
+
 // --help-all shows every command's notes and examples, as its own --help does (CLI11 left the footers out).
 TEST(EverydayCli, HelpAllShowsEveryCommandsExamples) {
   TempFolder folder;

@@ -178,6 +178,27 @@ TEST(VideoSink, HoldsTheFirstAndTheLastFrame) {
   }
 }
 
+// output.video_crf: the constant rate factor ffmpeg is given for mp4 and webm instead of the quality's; a GIF has
+// none.
+TEST(VideoSink, AConstantRateFactorReplacesTheQualitysOwn) {
+  const auto crfOf = [](const VideoSettings& s) {
+    const std::vector<std::string> args = ffmpegArguments(s, "x");
+    const auto at = std::find(args.begin(), args.end(), "-crf");
+    return at == args.end() ? std::string("none") : *(at + 1);
+  };
+  VideoSettings s{"x.mp4", VideoFormat::Mp4, VideoQuality::Medium, 64, 48, 30};
+  EXPECT_EQ(crfOf(s), "23");
+  s.crf = 35;
+  EXPECT_EQ(crfOf(s), "35");
+  s.format = VideoFormat::Webm;
+  EXPECT_EQ(crfOf(s), "35");
+  s.crf = -1;
+  EXPECT_EQ(crfOf(s), "36");
+  s.format = VideoFormat::Gif;
+  s.crf = 10;
+  EXPECT_EQ(crfOf(s), "none");
+}
+
 std::vector<std::string> folderNames(const std::string& folder) {
   std::vector<std::string> names;
   for (const auto& entry : std::filesystem::directory_iterator(folder)) names.push_back(entry.path().filename());

@@ -117,6 +117,10 @@ TEST(LimitBoundaries, ViewBounds) {
   expectAccepted(baseScene(), "/view/trail_fade_seconds", limits::kMaxTrailFadeSeconds);
   expectRefused(baseScene(), "/view/trail_fade_seconds", above(limits::kMaxTrailFadeSeconds),
                 "view.trail_fade_seconds");
+  expectAccepted(baseScene(), "/output/video_crf", limits::kMaxVideoCrf);
+  expectAccepted(baseScene(), "/output/video_crf", 0);
+  expectRefused(baseScene(), "/output/video_crf", limits::kMaxVideoCrf + 1, "output.video_crf");
+  expectRefused(baseScene(), "/output/video_crf", -1, "output.video_crf");
   for (const std::string key : {"hold_start", "hold_end"}) {
     expectAccepted(baseScene(), "/output/" + key, limits::kMaxHoldSeconds);
     expectAccepted(baseScene(), "/output/" + key, 0.0);
