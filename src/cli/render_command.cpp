@@ -57,6 +57,7 @@ struct RenderArguments {
   bool png = false, noPng = false, quiet = false, resume = false, replace = false, preview = false, noClobber = false;
   int threads = 0;  // --threads; 0: the cores this process may use
   int crf = -1;     // --crf; -1: not given
+  std::string quality;  // -q/--quality: a preset of size, frame rate and video quality
 };
 
 // What a render will do, after the scene's choices and the options are combined and checked.
@@ -85,6 +86,43 @@ std::string videoFolder(const std::string& video) {
   return parent.empty() ? "." : parent.string();
 }
 
+// -q/--quality: manim's presets (-ql 480p15, -qm 720p30, -qh 1080p60, -qk 2160p60); each differs from the scene in
+// size or rate, so its frames go to a folder of their own (output.folder-WxH-Nfps).
+struct QualityPreset {
+  const char* name;
+  ImageSize size;
+  int fps;
+  VideoQuality video;
+};
+constexpr QualityPreset kQualityPresets[] = {{"low", {854, 480}, 15, VideoQuality::Small},
+                                             {"medium", {1280, 720}, 30, VideoQuality::Medium},
+                                             {"high", {1920, 1080}, 60, VideoQuality::High},
+                                             {"4k", {3840, 2160}, 60, VideoQuality::High}};
+
+std::string qualityPresetWords() {
+  std::string words;
+  for (const QualityPreset& p : kQualityPresets)
+    words += (words.empty() ? "" : ", ") + std::string(p.name) + " (" + std::to_string(p.size.width) + "x" +
+             std::to_string(p.size.height) + ", " + std::to_string(p.fps) + " frames/s, " +
+             std::string(std::find_if(kVideoQualities.begin(), kVideoQualities.end(),
+                                      [&](const auto& q) { return q.kind == p.video; })->name) +
+             " video)";
+  return words;
+}
+
+// The preset's size (unless --size), frame rate and video quality (unless --video-quality); false if unknown.
+bool applyQualityPreset(const RenderArguments& args, Scene& scene) {
+  if (args.quality.empty()) return true;
+  for (const QualityPreset& p : kQualityPresets) {
+    if (args.quality != p.name) continue;
+    if (args.size.empty()) scene.output.size = p.size;
+    scene.output.fps = p.fps;
+    if (args.videoQuality.empty()) scene.output.videoQuality = p.video;
+    return true;
+  }
+  return false;
+}
+
 void applySize(const RenderArguments& args, Scene& scene) {
   if (args.preview && args.size.empty()) scene.output.size = previewSize(scene.output.size);
   if (args.size.empty()) return;
@@ -104,6 +142,9 @@ RenderPlan planRender(const RenderArguments& args) {
   });
   const int ownFps = outputOverridden && fs::is_regular_file(args.scene) ? loadSceneForCommand(args.scene).output.fps
                                                                           : scene.output.fps;
+  if (!applyQualityPreset(args, scene))
+    throw CommandExit(kExitBadInput, "-q/--quality: found \"" + args.quality + "\"; expected one of " +
+                                         qualityPresetWords());
   applySize(args, scene);
   plan.png = args.noPng ? false : (args.png || scene.output.png);
   plan.videos = args.videos;
@@ -582,6 +623,9 @@ void addRenderCommand(CLI::App& app) {
       ->check(CLI::NonNegativeNumber);
   command->add_flag("--png", args->png, "write PNG frames (the default unless the scene says output.png: false)");
   command->add_flag("--no-png", args->noPng, "no PNG frames (with --video: the video only)");
+  command->add_option("-q,--quality", args->quality,
+                      "a preset of frame size, frame rate and video quality, as manim's: " + qualityPresetWords() +
+                          "; --size and --video-quality still override. Into output.folder-WxH-Nfps");
   command->add_option("--size", args->size,
                       "override the frame size, WIDTHxHEIGHT, e.g. 640x360 (without --out: into output.folder-WxH)");
   command->add_flag("--preview", args->preview,

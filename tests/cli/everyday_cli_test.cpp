@@ -281,6 +281,35 @@ TEST(EverydayCli, EncoderSettingsAndHolds) {
   EXPECT_EQ(probe.out, std::to_string(12 + 15 + 30) + "\n");  // 30 frames/s
 }
 
+// -q/--quality: manim's presets set the size, the rate and the video quality, into a folder of their own; --size
+// still overrides the preset's size; an unknown preset is refused with the list.
+TEST(EverydayCli, QualityPresets) {
+  TempFolder folder;
+  const auto pngSize = [](const fs::path& png) {
+    const std::string bytes = readFile(png);
+    const auto be32 = [&](std::size_t at) {
+      return (unsigned(static_cast<unsigned char>(bytes.at(at))) << 24) |
+             (unsigned(static_cast<unsigned char>(bytes.at(at + 1))) << 16) |
+             (unsigned(static_cast<unsigned char>(bytes.at(at + 2))) << 8) | unsigned(static_cast<unsigned char>(bytes.at(at + 3)));
+    };
+    return std::to_string(be32(16)) + "x" + std::to_string(be32(20));
+  };
+  const ProcessResult low =
+      runLinkage({"render", shippedScene("default.json"), "-q", "low", "--frames", "0:2", "--quiet"}, folder.path());
+  ASSERT_EQ(low.code, 0) << low.err;
+  EXPECT_EQ(pngSize(folder.path() / "renders/default-854x480-15fps/frame_00001.png"), "854x480");
+  const ProcessResult sized = runLinkage(
+      {"render", shippedScene("default.json"), "--quality", "high", "--size", "320x180", "--frames", "0:1", "--quiet"},
+      folder.path());
+  ASSERT_EQ(sized.code, 0) << sized.err;
+  EXPECT_EQ(pngSize(folder.path() / "renders/default-320x180-60fps/frame_00000.png"), "320x180");
+  const ProcessResult unknown = runLinkage({"render", shippedScene("default.json"), "-q", "ultra"}, folder.path());
+  EXPECT_EQ(unknown.code, 2);
+  EXPECT_NE(unknown.err.find("-q/--quality: found \"ultra\"; expected one of low (854x480, 15 frames/s, small video)"),
+            std::string::npos)
+      << unknown.err;
+}
+
 // --help-all shows every command's notes and examples, as its own --help does (CLI11 left the footers out).
 TEST(EverydayCli, HelpAllShowsEveryCommandsExamples) {
   TempFolder folder;
