@@ -67,6 +67,17 @@ const QuadratureRule& gaussRule() {
   return rule;
 }
 
+// The rule on each of `parts` equal parts of [0, 1], in ascending order.
+QuadratureRule composed(const QuadratureRule& rule, int parts) {
+  QuadratureRule whole;
+  for (int part = 0; part < parts; ++part)
+    for (std::size_t j = 0; j < rule.nodes.size(); ++j) {
+      whole.nodes.push_back((part + rule.nodes[j]) / parts);
+      whole.weights.push_back(rule.weights[j] / parts);
+    }
+  return whole;
+}
+
 // A g-orthonormal frame of the tangent plane at x in the orientation of the outward normal, in both forms.
 struct OrientedFrame {
   Eigen::VectorXd sphere[2];   // sphere velocities
@@ -131,16 +142,12 @@ double coneCurvature(const ConfigurationSurface& surface, const Eigen::Vector3d&
   const QuadratureRule& rule = gaussRule<kQuadratureNodes>();
   double previous = 0;
   for (int parts = 1;; parts *= 2) {
-    std::vector<double> nodes, weights;
-    for (int part = 0; part < parts; ++part)
-      for (std::size_t j = 0; j < rule.nodes.size(); ++j) {
-        nodes.push_back((part + rule.nodes[j]) / parts);
-        weights.push_back(rule.weights[j] / parts);
-      }
+    const QuadratureRule composite = composed(rule, parts);
     std::vector<Eigen::Vector3d> points, derivatives;
-    sample(nodes, points, derivatives);
+    sample(composite.nodes, points, derivatives);
     double total = 0;
-    for (std::size_t j = 0; j < nodes.size(); ++j) total += weights[j] * coneIntegrand(surface, apex, points[j], derivatives[j]);
+    for (std::size_t j = 0; j < composite.nodes.size(); ++j)
+      total += composite.weights[j] * coneIntegrand(surface, apex, points[j], derivatives[j]);
     if (parts > 1 && std::abs(total - previous) <= kPieceTolerance * std::max(1.0, std::abs(total))) return total;
     if (parts >= kMaxPieceParts) return total;  // unconverged: the holonomy's own check will say so
     previous = total;
@@ -152,18 +159,13 @@ double coneCurvature(const ConfigurationSurface& surface, const Eigen::Vector3d&
 std::vector<double> sweptCurvature(const ConfigurationSurface& surface, const Eigen::Vector3d& apex,
                                    const PieceSampler& sample, int intervals) {
   const QuadratureRule& rule = gaussRule<kSweptNodes>();
-  std::vector<double> nodes, weights;
-  for (int k = 0; k < intervals; ++k)
-    for (std::size_t j = 0; j < rule.nodes.size(); ++j) {
-      nodes.push_back((k + rule.nodes[j]) / intervals);
-      weights.push_back(rule.weights[j] / intervals);
-    }
+  const QuadratureRule composite = composed(rule, intervals);
   std::vector<Eigen::Vector3d> points, derivatives;
-  sample(nodes, points, derivatives);
+  sample(composite.nodes, points, derivatives);
   std::vector<double> swept;
   double total = 0;
-  for (std::size_t j = 0; j < nodes.size(); ++j) {
-    total += weights[j] * coneIntegrand(surface, apex, points[j], derivatives[j]);
+  for (std::size_t j = 0; j < composite.nodes.size(); ++j) {
+    total += composite.weights[j] * coneIntegrand(surface, apex, points[j], derivatives[j]);
     if ((j + 1) % rule.nodes.size() == 0) swept.push_back(total);
   }
   return swept;
