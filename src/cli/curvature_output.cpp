@@ -107,9 +107,10 @@ std::string runHolonomy(const Scene& scene, const CurvatureRequest& request) {
       const std::vector<ClosedGeodesic> found = closedGeodesicsOf(chain, 0, interruptRequested);
       const std::size_t k = index.get<std::size_t>();
       if (k >= found.size())
-        throw CommandExit(kExitBadInput, where + ": periodic: found " + std::to_string(k) + "; linkage periodic lists " +
-                                             std::to_string(found.size()) + " closed geodesics here (indices 0.." +
-                                             std::to_string(found.size() - 1) + ")");
+        throw CommandExit(kExitBadInput, where + ": periodic: found " + std::to_string(k) +
+                                             "; linkage periodic lists " + std::to_string(found.size()) +
+                                             " closed geodesics here (indices 0.." + std::to_string(found.size() - 1) +
+                                             ")");
       h = closedGeodesicHolonomy(chain, found[k]);
       out["loop"] = {{"periodic", k}};
       what = "closed geodesic " + std::to_string(k) + (found[k].simple ? " (simple)" : "");

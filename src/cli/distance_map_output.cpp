@@ -106,7 +106,8 @@ std::string pointsCsv(const Chain& chain, const ConstrainedModel& model, const D
         shortestArrival(model, map, from, ConstrainedModel::stack(hingePositionsAt(chain, x)), x);
     if (!arrival) missed.push_back("(" + shortest(p(0)) + ", " + shortest(p(1)) + ")");
     std::string row;
-    for (double v : {p(0), p(1), arrival ? arrival->distance : std::nan(""), arrival ? arrival->direction : std::nan("")}) {
+    for (double v :
+         {p(0), p(1), arrival ? arrival->distance : std::nan(""), arrival ? arrival->direction : std::nan("")}) {
       if (!row.empty()) row += ',';
       appendCsvNumber(row, v);
     }
@@ -197,10 +198,10 @@ std::string runDistanceMap(const Scene& scene, const DistanceMapRequest& request
       request.points.empty() ? "" : ", the distance at " + std::to_string(request.points.size()) + " points";
   return "distance map from (phi, t) = (" + shortest(std::round(centre(0) * 1e6) / 1e6) + ", " +
          shortest(std::round(centre(1) * 1e6) / 1e6) + "), " + std::to_string(request.grid) + " x " +
-         std::to_string(request.grid) + " grid, " + std::to_string(map.geodesics) +
-         " geodesics, injectivity radius " + shortest(std::round(map.injectivityRadius * 1e6) / 1e6) +
-         " (Klingenberg: min(first conjugate " + shortest(std::round(map.conjugateRadius * 1e6) / 1e6) +
-         ", half the shortest loop " + shortest(std::round(map.shortestLoop / 2 * 1e6) / 1e6) + "))" + atPoints;
+         std::to_string(request.grid) + " grid, " + std::to_string(map.geodesics) + " geodesics, injectivity radius " +
+         shortest(std::round(map.injectivityRadius * 1e6) / 1e6) + " (Klingenberg: min(first conjugate " +
+         shortest(std::round(map.conjugateRadius * 1e6) / 1e6) + ", half the shortest loop " +
+         shortest(std::round(map.shortestLoop / 2 * 1e6) / 1e6) + "))" + atPoints;
 }
 
 }  // namespace sl

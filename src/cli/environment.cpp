@@ -40,8 +40,11 @@ Environment readEnvironment() {
     if (const std::string value = textOf(name); !value.empty())
       switches += (switches.empty() ? "" : " ") + std::string(name) + "=" + value;
   return {secondsFrom("LINKAGE_LOCK_WAIT", limits::kMaxLockWaitSeconds),
-          secondsFrom("LINKAGE_ENCODER_WAIT", limits::kMaxEncoderStallSeconds), textOf("SL_SHADER_DIR"),
-          textOf("LINKAGE_GL"), switches, progressJsonFrom("LINKAGE_PROGRESS")};
+          secondsFrom("LINKAGE_ENCODER_WAIT", limits::kMaxEncoderStallSeconds),
+          textOf("SL_SHADER_DIR"),
+          textOf("LINKAGE_GL"),
+          switches,
+          progressJsonFrom("LINKAGE_PROGRESS")};
 }
 
 }  // namespace

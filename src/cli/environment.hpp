@@ -36,8 +36,9 @@ inline constexpr EnvironmentWords kEnvironmentWords[] = {
     {"LINKAGE_GL", "the GL backend of commands that draw when --gl does not say (a name --gl takes)"},
     {"LINKAGE_LOCK_WAIT", "seconds a render waits for a lock another process holds on its folder (unset: a minute)"},
     {"LINKAGE_ENCODER_WAIT", "seconds the video encoder may read nothing before the render gives up (unset: a minute)"},
-    {"LINKAGE_PROGRESS", "json: progress as one JSON object per line on stderr ({\"command\", \"unit\", \"done\", "
-                         "\"total\", \"rate\", \"eta_seconds\"}), for scripts; text (unset): lines for people"},
+    {"LINKAGE_PROGRESS",
+     "json: progress as one JSON object per line on stderr ({\"command\", \"unit\", \"done\", "
+     "\"total\", \"rate\", \"eta_seconds\"}), for scripts; text (unset): lines for people"},
     {"SL_SHADER_DIR", "a folder to read the shaders from instead of the built-in ones"},
     {"GALLIUM_OVERRIDE_CPU_CAPS, GALLIUM_NOSSE, LP_NATIVE_VECTOR_WIDTH",
      "llvmpipe's switches that change its code and so the pixels; recorded with the renderer in every manifest"},

@@ -258,13 +258,13 @@ void runGeometry(const GeometryArguments& args) {
   const CommandSummary summary("geometry", args.quiet);
   const bool distance = !args.distanceFrom.empty();
   const int modes = (!distance && (args.grid > 0 || !args.maps.empty())) + (!distance && !args.points.empty()) +
-                    args.summary +
-                    !args.sweep.empty() + distance + !args.holonomy.empty() + !args.sectional.empty();
+                    args.summary + !args.sweep.empty() + distance + !args.holonomy.empty() + !args.sectional.empty();
   if (modes != 1)
-    throw CommandExit(kExitBadInput,
-                      "linkage geometry: expected exactly one of --grid N (with --csv and/or --maps DIR), "
-                      "--points FILE, --summary, --sweep-L A:B:N, --distance-from POINT (with --grid, --csv, --maps, --points), "
-                      "--holonomy LOOP, --sectional POINTS");
+    throw CommandExit(
+        kExitBadInput,
+        "linkage geometry: expected exactly one of --grid N (with --csv and/or --maps DIR), "
+        "--points FILE, --summary, --sweep-L A:B:N, --distance-from POINT (with --grid, --csv, --maps, --points), "
+        "--holonomy LOOP, --sectional POINTS");
   if (args.json && !distance) throw CommandExit(kExitBadInput, "--json: goes with --distance-from POINT");
   if (!args.chart.empty() && args.sweep.empty())
     throw CommandExit(kExitBadInput, "--chart: draws the L sweep; expected --sweep-L A:B:N with it");
@@ -304,8 +304,10 @@ void runGeometry(const GeometryArguments& args) {
     throw CommandExit(kExitBadInput, "--grid: found " + std::to_string(args.grid) +
                                          "; with --distance-from expected 8 to " + std::to_string(kMaxDistanceGrid));
   if (distance) {
-    DistanceMapRequest request{args.distanceFrom, args.grid > 0 ? args.grid : kDefaultDistanceGrid, args.csv,
-                               args.maps, args.json, args.quiet, formats, {}};
+    DistanceMapRequest request{args.distanceFrom, args.grid > 0 ? args.grid : kDefaultDistanceGrid,
+                               args.csv,          args.maps,
+                               args.json,         args.quiet,
+                               formats,           {}};
     if (!args.points.empty()) request.points = readPoints(args.points);
     summary.print(runDistanceMap(scene, request) + " of \"" + scene.name + "\" (L = " +
                   shortest(scene.chain.baseLength) + ")" + (args.csv.empty() ? "" : " -> " + args.csv));
@@ -392,11 +394,13 @@ void addGeometryCommand(CLI::App& app) {
       "Examples:\n  linkage geometry scenes/default.json --summary\n"
       "  linkage geometry scenes/default.json --grid 256 --csv renders/curvature.csv\n"
       "  linkage geometry scenes/default.json --sweep-L 2.1:3.9:37 --csv renders/sweep.csv --chart renders/sweep.png\n"
-      "  linkage geometry scenes/default.json --distance-from start --csv renders/distance.csv --maps renders/distance\n"
+      "  linkage geometry scenes/default.json --distance-from start --csv renders/distance.csv --maps "
+      "renders/distance\n"
       "  linkage geometry scenes/default.json --distance-from start --points points.csv --grid 64\n"
       "  linkage geometry scenes/default.json --holonomy '{\"latitude\": 0.5}'\n"
       "  linkage geometry scenes/default.json --holonomy '{\"periodic\": 0}'\n"
-      "  linkage geometry scenes/holonomy.json --holonomy '{\"corners\": [{\"coords\": [0.2, 0]}, {\"coords\": [0.3, 1.4]}, "
+      "  linkage geometry scenes/holonomy.json --holonomy '{\"corners\": [{\"coords\": [0.2, 0]}, {\"coords\": [0.3, "
+      "1.4]}, "
       "{\"coords\": [1.2, 0.6]}]}'\n"
       "  linkage geometry scenes/five-rods.json --sectional '[{\"coords\": [0.3, -0.2, 0.5]}]'\n"
       "Columns of --distance-from: phi,t,distance,direction (angle of the shortest geodesic at the point).\n"

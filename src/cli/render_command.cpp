@@ -17,18 +17,20 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
-#include "cli/environment.hpp"
-#include "cli/forked_workers.hpp"
 #include "cli/disk_space.hpp"
+#include "cli/environment.hpp"
 #include "cli/exit_codes.hpp"
+#include "cli/forked_workers.hpp"
 #include "cli/frame_range.hpp"
+#include "cli/gl_choice.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/progress.hpp"
 #include "cli/render_folder.hpp"
 #include "cli/run_report.hpp"
 #include "cli/scene_input.hpp"
-#include "cli/gl_choice.hpp"
 #include "cli/summary.hpp"
+#include "contracts/limits.hpp"
+#include "contracts/parallel_for.hpp"
 #include "frames/frame_builder.hpp"
 #include "output/distinct_files.hpp"
 #include "output/png_encoder.hpp"
@@ -38,8 +40,6 @@
 #include "output/video_sink.hpp"
 #include "render/gl_backend.hpp"
 #include "render/renderer_pool.hpp"
-#include "contracts/limits.hpp"
-#include "contracts/parallel_for.hpp"
 #include "scene/output_folder.hpp"
 #include "scene/scene_cost.hpp"
 #include "scene/scene_overrides.hpp"
@@ -105,7 +105,8 @@ std::string qualityPresetWords() {
     words += (words.empty() ? "" : ", ") + std::string(p.name) + " (" + std::to_string(p.size.width) + "x" +
              std::to_string(p.size.height) + ", " + std::to_string(p.fps) + " frames/s, " +
              std::string(std::find_if(kVideoQualities.begin(), kVideoQualities.end(),
-                                      [&](const auto& q) { return q.kind == p.video; })->name) +
+                                      [&](const auto& q) { return q.kind == p.video; })
+                             ->name) +
              " video)";
   return words;
 }
@@ -143,8 +144,8 @@ RenderPlan planRender(const RenderArguments& args) {
   const int ownFps = outputOverridden && fs::is_regular_file(args.scene) ? loadSceneForCommand(args.scene).output.fps
                                                                           : scene.output.fps;
   if (!applyQualityPreset(args, scene))
-    throw CommandExit(kExitBadInput, "-q/--quality: found \"" + args.quality + "\"; expected one of " +
-                                         qualityPresetWords());
+    throw CommandExit(kExitBadInput,
+                      "-q/--quality: found \"" + args.quality + "\"; expected one of " + qualityPresetWords());
   applySize(args, scene);
   plan.png = args.noPng ? false : (args.png || scene.output.png);
   plan.videos = args.videos;
@@ -617,9 +618,10 @@ void addRenderCommand(CLI::App& app) {
                    "each frame, e.g. --video talk.mp4 --video blog.gif")
       ->allow_extra_args(false);
   command->add_option("--video-quality", args->videoQuality, "high, medium or small (default: output.video_quality, high)");
-  command->add_option("--crf", args->crf,
-                      "N: the constant rate factor of mp4 and webm videos instead of --video-quality's (0 lossless "
-                      "to 51; default: output.video_crf)")
+  command
+      ->add_option("--crf", args->crf,
+                   "N: the constant rate factor of mp4 and webm videos instead of --video-quality's (0 lossless "
+                   "to 51; default: output.video_crf)")
       ->check(CLI::NonNegativeNumber);
   command->add_flag("--png", args->png, "write PNG frames (the default unless the scene says output.png: false)");
   command->add_flag("--no-png", args->noPng, "no PNG frames (with --video: the video only)");

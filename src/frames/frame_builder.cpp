@@ -153,9 +153,9 @@ FrameBuilder::FrameBuilder(const Scene& scene, const std::vector<InitialState>& 
                                              !scene.distanceFrom, scene.holonomyPoints)),
       title_(fillTitlePlaceholders(scene.title, scene, injectivityRadiusOf(sphereDecoration_))),
       shortTitle_(fillTitlePlaceholders(scene.shortTitle, scene, injectivityRadiusOf(sphereDecoration_))),
-      overview_(overviewMotion(scene, starts, cancelled,
-                               sphereDecoration_ && sphereDecoration_->transport ? &*sphereDecoration_->transport
-                                                                                 : nullptr)),
+      overview_(
+          overviewMotion(scene, starts, cancelled,
+                         sphereDecoration_ && sphereDecoration_->transport ? &*sphereDecoration_->transport : nullptr)),
 
       cameraDirections_(planDirectedCamera(scene, starts, view_, cancelled)) {
   for (size_t i = 0; i < runs_.size(); ++i) {
@@ -414,7 +414,11 @@ FrameState FrameBuilder::snapshot(int k) const {
         }
         break;
       case PlotKind::Holonomy:  // one line, the polygon's: known in advance, shown up to this frame
-        plot.series.push_back({"\u222bK dA swept", SphereTransport::kReturningColor, times, holonomy_.view(), {},
+        plot.series.push_back({"\u222bK dA swept",
+                               SphereTransport::kReturningColor,
+                               times,
+                               holonomy_.view(),
+                               {},
                                std::numeric_limits<double>::infinity()});
         break;
     }

@@ -141,7 +141,8 @@ MotionOverview overviewMotion(const Scene& scene, const std::vector<InitialState
         case PlotKind::Spread: return spread;
         case PlotKind::EnergyError: return energy;
         case PlotKind::Sectional: return sectional;
-        case PlotKind::Holonomy: return holonomy;
+        case PlotKind::Holonomy:
+          return holonomy;
       }
       throw std::logic_error("overviewMotion: a plot kind without values");
     }();

@@ -543,8 +543,7 @@ std::optional<Arrival> shortestArrival(const ConstrainedModel& model, const Dist
   const double phi = std::asin(std::clamp(x.z(), -1.0, 1.0)), t = std::atan2(x.y(), x.x());
   const double rowStep = map.phis[1] - map.phis[0], columnStep = map.ts[1] - map.ts[0];
   const std::size_t i = std::min(rows - 2, static_cast<std::size_t>(std::max(0.0, (phi - map.phis[0]) / rowStep)));
-  const std::size_t j =
-      static_cast<std::size_t>(std::max(0.0, std::floor((t - map.ts[0]) / columnStep))) % columns;
+  const std::size_t j = static_cast<std::size_t>(std::max(0.0, std::floor((t - map.ts[0]) / columnStep))) % columns;
   std::optional<Arrival> best;
   for (const std::size_t row : {i, i + 1})
     for (const std::size_t column : {j, (j + 1) % columns}) {

@@ -327,8 +327,9 @@ Holonomy closedGeodesicHolonomy(const Chain& chain, const ClosedGeodesic& geodes
     }
   }
   if (!(apex.norm() > 1e-6))
-    throw std::invalid_argument("holonomy: this closed geodesic has no side to call its inside (it balances round "
-                                "the sphere's centre)");
+    throw std::invalid_argument(
+        "holonomy: this closed geodesic has no side to call its inside (it balances round "
+        "the sphere's centre)");
   apex.normalize();
   const Eigen::VectorXd x0 = spherePointFromHinges(chain, ConstrainedModel::unstack(q0));
   const Eigen::VectorXd xdot0 =

@@ -93,18 +93,17 @@ std::vector<std::string> ffmpegArguments(const VideoSettings& s, const std::stri
   switch (s.format) {
     case VideoFormat::Mp4:  // x264's constant quality: 18 is visually lossless for these flat-shaded frames
       add({"-c:v", "libx264", "-preset", "veryfast", "-crf", std::to_string(s.crf >= 0 ? s.crf : 18 + 5 * level),
-           "-pix_fmt", "yuv420p",
-           "-movflags", "+faststart"});
+           "-pix_fmt", "yuv420p", "-movflags", "+faststart"});
       break;
     case VideoFormat::Webm:  // VP9 constant quality (-b:v 0), good deadline at a speed fit for long clips
-      add({"-c:v", "libvpx-vp9", "-crf", std::to_string(s.crf >= 0 ? s.crf : 30 + 6 * level), "-b:v", "0", "-deadline", "good",
-           "-cpu-used", "4", "-row-mt", "1", "-pix_fmt", "yuv420p"});
+      add({"-c:v", "libvpx-vp9", "-crf", std::to_string(s.crf >= 0 ? s.crf : 30 + 6 * level), "-b:v", "0", "-deadline",
+           "good", "-cpu-used", "4", "-row-mt", "1", "-pix_fmt", "yuv420p"});
       break;
     case VideoFormat::Gif: {  // one palette for the whole clip (stats of every frame), ordered dithering: no shimmer
       const int colours = 256 >> level;
       add({"-filter_complex",
-           "[0:v]" + (hold.empty() ? "" : hold + ",") + "split[a][b];[a]palettegen=max_colors=" + std::to_string(colours) +
-               ":stats_mode=full[p];[b][p]paletteuse=dither=bayer:bayer_scale=4",
+           "[0:v]" + (hold.empty() ? "" : hold + ",") + "split[a][b];[a]palettegen=max_colors=" +
+               std::to_string(colours) + ":stats_mode=full[p];[b][p]paletteuse=dither=bayer:bayer_scale=4",
            "-loop", "0"});
       break;
     }

@@ -210,8 +210,10 @@ std::vector<std::string> transportCaptions(const SphereTransport& transport, dou
   const double reached = duration > 0 ? time / duration : 1.0;
   if (reached < 1.0) {
     const std::string swept = fixed(transport.sweptAt(reached), 3);
-    return {"arrows: each side of the " + polygon + " carries on the vector the side before brings; \u222bK dA swept "
-                "so far = " + swept + " rad",
+    return {"arrows: each side of the " + polygon +
+                " carries on the vector the side before brings; \u222bK dA swept "
+                "so far = " +
+                swept + " rad",
             "arrows: a vector carried round the " + polygon + "; \u222bK dA swept so far = " + swept + " rad",
             "\u222bK dA swept so far = " + swept + " rad", "swept " + swept + " rad"};
   }

@@ -970,8 +970,8 @@ void drawTransport(const SphereTransport& transport, const PanelContext& context
     placer.avoidPoint(to);
     placer.avoidPoint({0.5f * (from.x + to.x), 0.5f * (from.y + to.y)});
   };
-  const double reached = context.frame.duration > 0 ? std::clamp(context.frame.time / context.frame.duration, 0.0, 1.0)
-                                                    : 1.0;
+  const double reached =
+      context.frame.duration > 0 ? std::clamp(context.frame.time / context.frame.duration, 0.0, 1.0) : 1.0;
   const std::size_t perSide = std::size_t(transport.samplesPerSide) + 1;
   for (std::size_t i = 0; i < transport.arrows.size(); ++i) {  // the arrows left behind, fading as the paths do
     const SphereTransport::Arrow& arrow = transport.arrows[i];
@@ -1056,8 +1056,12 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
       foot -= context.font.lineHeight(TextSize::Small);
     }
     if (transportCaption)
-      context.font.draw(batch, fittedForm(context.font, transportCaptions(*decoration->transport, context.frame.time, context.frame.duration), TextSize::Small, width),
-                        TextSize::Small, context.rect.x + pad, foot, palette::ink);
+      context.font.draw(
+          batch,
+          fittedForm(context.font,
+                     transportCaptions(*decoration->transport, context.frame.time, context.frame.duration),
+                     TextSize::Small, width),
+          TextSize::Small, context.rect.x + pad, foot, palette::ink);
     if (colored) {
       const SphereField& field = *decoration->field;
       // A gap of a text line from the panel's right edge: the bar never butts against a neighbouring plot's axis.

@@ -127,8 +127,9 @@ void drawTextPanel(const PanelContext& c, ShapeBatch& batch) {
       if (flowRuns(c, size, detail, pad, firstRow, nullptr) + holonomyLine <= bottom) {
         const float end = flowRuns(c, size, detail, pad, firstRow, &batch);
         if (holonomy)
-          c.font.draw(batch, fittedForm(c.font, transportCaptions(*decoration->transport, c.frame.time, c.frame.duration), TextSize::Small,
-                                        c.rect.width - 2 * pad),
+          c.font.draw(batch,
+                      fittedForm(c.font, transportCaptions(*decoration->transport, c.frame.time, c.frame.duration),
+                                 TextSize::Small, c.rect.width - 2 * pad),
                       TextSize::Small, c.rect.x + pad, end + holonomyLine, palette::ink);
         return;
       }

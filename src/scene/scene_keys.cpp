@@ -667,7 +667,8 @@ std::vector<SceneKey> describeKeys() {
        .target = "ViewSettings::panels, ViewSettings::plots",
        .meaning =
            "panels in layout order: `\"sphere\"`, `\"linkage\"`, `\"plot\"`, `\"text\"`, or objects `{ \"panel\": "
-           "\"plot\", \"plot\": \"divergence\" \\| \"energy\" \\| \"jacobi\" \\| \"spread\" \\| \"sectional\" \\| \"holonomy\", \"scale\": "
+           "\"plot\", \"plot\": \"divergence\" \\| \"energy\" \\| \"jacobi\" \\| \"spread\" \\| \"sectional\" \\| "
+           "\"holonomy\", \"scale\": "
            "\"log\" \\| \"linear\", \"y_range\": [lo, hi], "
            "\"rect\": [x, y, w, h] }` (rect in fractions of the frame from the top left; omitted = automatic layout, "
            "portrait frames stacked; a plot's axes span the whole animation from its first frame, y from the data of "

@@ -554,8 +554,7 @@ void readOutput(const json& value, Scene& scene, std::vector<SceneProblem>& prob
     spec.videoCrf = static_cast<int>(*crf);
   if (const auto hold = output.number("hold_start"); hold && output.checkBounds("hold_start", *hold))
     spec.holdStart = *hold;
-  if (const auto hold = output.number("hold_end"); hold && output.checkBounds("hold_end", *hold))
-    spec.holdEnd = *hold;
+  if (const auto hold = output.number("hold_end"); hold && output.checkBounds("hold_end", *hold)) spec.holdEnd = *hold;
   const auto format = videoFormatOfPath(spec.video);
   for (SceneProblem& problem : checkImageSize(spec.size, format && traits(*format).needsEvenSize, "output")) {
     problems.push_back(std::move(problem));

@@ -261,8 +261,11 @@ TEST(EverydayCli, SeveralVideosFromOneDrawing) {
 TEST(EverydayCli, EncoderSettingsAndHolds) {
   TempFolder folder;
   const auto render = [&](const std::string& video, std::vector<std::string> more) {
-    std::vector<std::string> args{"render", shippedScene("default.json"), "--size", "160x90", "--frames", "0:12",
-                                  "--no-png", "--quiet", "--video", video};
+    std::vector<std::string> args{"render",   shippedScene("default.json"),
+                                  "--size",   "160x90",
+                                  "--frames", "0:12",
+                                  "--no-png", "--quiet",
+                                  "--video",  video};
     args.insert(args.end(), more.begin(), more.end());
     return runLinkage(args, folder.path());
   };
@@ -290,7 +293,8 @@ TEST(EverydayCli, QualityPresets) {
     const auto be32 = [&](std::size_t at) {
       return (unsigned(static_cast<unsigned char>(bytes.at(at))) << 24) |
              (unsigned(static_cast<unsigned char>(bytes.at(at + 1))) << 16) |
-             (unsigned(static_cast<unsigned char>(bytes.at(at + 2))) << 8) | unsigned(static_cast<unsigned char>(bytes.at(at + 3)));
+             (unsigned(static_cast<unsigned char>(bytes.at(at + 2))) << 8) |
+             unsigned(static_cast<unsigned char>(bytes.at(at + 3)));
     };
     return std::to_string(be32(16)) + "x" + std::to_string(be32(20));
   };

@@ -264,8 +264,8 @@ TEST(DistanceMapCli, CsvJsonAndRefusals) {
 TEST(DistanceMapCli, DistanceAtGivenPoints) {
   TempFolder folder;
   const std::string scene = shippedScene("default.json");
-  const ProcessResult grid = runLinkage({"geometry", scene, "--distance-from", "start", "--grid", "48", "--quiet"},
-                                        folder.path());
+  const ProcessResult grid =
+      runLinkage({"geometry", scene, "--distance-from", "start", "--grid", "48", "--quiet"}, folder.path());
   ASSERT_EQ(grid.code, 0) << grid.err;
   std::istringstream rows(grid.out);
   std::string header, line;
@@ -296,8 +296,8 @@ TEST(DistanceMapCli, DistanceAtGivenPoints) {
   }
   EXPECT_FALSE(std::getline(found, line));
   writeFile(folder.path() / "bad.csv", "phi,t\n0.1,x\n");
-  const ProcessResult bad = runLinkage(
-      {"geometry", scene, "--distance-from", "start", "--grid", "48", "--points", "bad.csv"}, folder.path());
+  const ProcessResult bad =
+      runLinkage({"geometry", scene, "--distance-from", "start", "--grid", "48", "--points", "bad.csv"}, folder.path());
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.err.find("bad.csv:2: expected two finite numbers phi,t"), std::string::npos) << bad.err;
   EXPECT_EQ(bad.out, "");

@@ -777,7 +777,8 @@ TEST(SphereDecoration, HolonomyArrowsGoRoundTheTriangleAndItsFiguresAgree) {
     EXPECT_TRUE(near(t.carriedAt(side, 1.0).base, corners[(side + 1) % 3], 1e-8)) << side;
     const SphereTransport::Arrow between = t.carriedAt(side, 0.37);
     EXPECT_NEAR(between.base.x * between.direction.x + between.base.y * between.direction.y +
-                    between.base.z * between.direction.z, 0.0, 1e-12);
+                    between.base.z * between.direction.z,
+                0.0, 1e-12);
     EXPECT_NEAR(std::hypot(between.base.x, between.base.y, between.base.z), 1.0, 1e-12);
   }
   EXPECT_EQ(t.sweptAt(0.0), 0.0);

@@ -14,8 +14,8 @@
 #include "inverse/parallel_transport.hpp"
 #include "inverse/periodic.hpp"
 #include "inverse/self_check.hpp"
-#include "simulation/initial_state.hpp"
 #include "linkage/chain_constants.hpp"
+#include "simulation/initial_state.hpp"
 
 namespace sl {
 namespace {

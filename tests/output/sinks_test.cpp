@@ -162,9 +162,10 @@ TEST(VideoSink, HoldsTheFirstAndTheLastFrame) {
       for (int k = 0; k < 12; ++k) sink.consume(k, gradient(64, 48, k));
       sink.finish();
     }
-    EXPECT_EQ(run("ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 '" +
-                  path + "'"),
-              "24\n");
+    EXPECT_EQ(
+        run("ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 '" +
+            path + "'"),
+        "24\n");
     EXPECT_EQ(manifest.entry(11)->pixelSha256, sha256Hex(gradient(64, 48, 11).rgb));  // the frames, not the holds
     if (format != VideoFormat::Gif) continue;
     std::istringstream lines(run("ffmpeg -v error -i '" + path + "' -f framemd5 -"));
