@@ -104,10 +104,7 @@ std::string qualityPresetWords() {
   for (const QualityPreset& p : kQualityPresets)
     words += (words.empty() ? "" : ", ") + std::string(p.name) + " (" + std::to_string(p.size.width) + "x" +
              std::to_string(p.size.height) + ", " + std::to_string(p.fps) + " frames/s, " +
-             std::string(std::find_if(kVideoQualities.begin(), kVideoQualities.end(),
-                                      [&](const auto& q) { return q.kind == p.video; })
-                             ->name) +
-             " video)";
+             std::string(traitsOf(kVideoQualities, p.video).name) + " video)";
   return words;
 }
 

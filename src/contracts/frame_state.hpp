@@ -233,6 +233,11 @@ struct SphereTransport {
   double angleExcess = 0;        // 2 pi - sum of the turning angles at the corners (angle sum - pi for a triangle)
   double enclosedCurvature = 0;  // integral of K dA over the region to the loop's left
 
+  // How far round the sides are at `time` of an animation of this `duration`: every side is carried over the whole
+  // animation, so the fraction of each side's time is time / duration, in [0, 1].
+  static double carriedFraction(double time, double duration) {
+    return duration > 0 ? std::clamp(time / duration, 0.0, 1.0) : 1.0;
+  }
   // Side `side`'s carried vector at `fraction` of its time in [0, 1], between the two samples around it.
   Arrow carriedAt(std::size_t side, double fraction) const {
     const double at = std::clamp(fraction, 0.0, 1.0) * samplesPerSide;

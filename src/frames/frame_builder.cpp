@@ -312,7 +312,8 @@ void FrameBuilder::recordFrameState(std::size_t run, const Sample& sample) {
 void FrameBuilder::recordPlots(int k) {
   plotTimes_.push_back(scene_.frameTime(k));
   if (sphereDecoration_ && sphereDecoration_->transport)
-    holonomy_.push_back(sweptByTime(*sphereDecoration_->transport, scene_.frameTime(k), scene_.duration));
+    holonomy_.push_back(
+        sphereDecoration_->transport->sweptAt(SphereTransport::carriedFraction(scene_.frameTime(k), scene_.duration)));
   const Eigen::Matrix2Xd& reference = history_[0].hingesAtFrame;
   for (size_t run = 1; run < runs_.size(); ++run) {
     const Eigen::Matrix2Xd& other = history_[run].hingesAtFrame;

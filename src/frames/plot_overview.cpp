@@ -57,10 +57,6 @@ std::array<double, 2> curvatureThroughVelocity(const Chain& chain, const Sample&
   return sectionalCurvatureThrough(ChainConstants(chain), sample.spherePoint, sample.sphereVelocity);
 }
 
-double sweptByTime(const SphereTransport& transport, double t, double duration) {
-  return transport.sweptAt(duration > 0 ? t / duration : 1.0);
-}
-
 MotionOverview overviewMotion(const Scene& scene, const std::vector<InitialState>& starts,
                               const std::function<bool()>& cancelled, const SphereTransport* transport) {
   const std::vector<PlotSpec>& plots = scene.view.plots;
@@ -116,7 +112,8 @@ MotionOverview overviewMotion(const Scene& scene, const std::vector<InitialState
       divergence[r].push_back(r > 0 && samples[0] && samples[r] ? hingeDistance(samples[0]->hinges, samples[r]->hinges)
                                                                  : nan);
     }
-    if (transport && runCount > 0) holonomy[0].push_back(sweptByTime(*transport, t, scene.duration));  // one line
+    if (transport && runCount > 0)
+      holonomy[0].push_back(transport->sweptAt(SphereTransport::carriedFraction(t, scene.duration)));  // one line
     parallelFor(memberJobs.size(), [&](std::size_t j) {
       const auto [r, m] = memberJobs[j];
       if (k == 0 || memberSamples[j]) memberSamples[j] = members[r][m].sampleAt(t);  // a stopped member stays out

@@ -39,9 +39,6 @@ struct MotionOverview {
 MotionOverview overviewMotion(const Scene& scene, const std::vector<InitialState>& starts,
                               const std::function<bool()>& cancelled = {}, const SphereTransport* transport = nullptr);
 
-// The holonomy plot's value at time t of an animation of this duration: the curvature the sides have swept.
-double sweptByTime(const SphereTransport& transport, double t, double duration);
-
 // The sectional plot's values at a sample: the smallest and largest curvature of the planes through the velocity
 // (geometry/sectional_curvature.hpp); NaN where the chain is slack, has fewer than 5 rods or the sample is at rest.
 std::array<double, 2> curvatureThroughVelocity(const Chain& chain, const Sample& sample);

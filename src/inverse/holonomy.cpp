@@ -117,6 +117,23 @@ double turningAngle(const ConstrainedModel& model, const OrientedFrame& frame, c
 using PieceSampler = std::function<void(const std::vector<double>& s, std::vector<Eigen::Vector3d>& points,
                                         std::vector<Eigen::Vector3d>& derivatives)>;
 
+// The geodesic from `start` followed for `duration`, as a piece of a loop at parameters s in [0, 1].
+PieceSampler geodesicPiece(const Chain& chain, const GeodesicFlow& flow, const FlowState& start, double duration) {
+  return [&chain, &flow, start, duration](const std::vector<double>& nodes, std::vector<Eigen::Vector3d>& points,
+                                          std::vector<Eigen::Vector3d>& derivatives) {
+    FlowState along = start;
+    double at = 0;
+    for (double node : nodes) {
+      flow.advance(along, (node - at) * duration);
+      at = node;
+      const Eigen::VectorXd p = spherePointFromHinges(chain, ConstrainedModel::unstack(along.q));
+      points.emplace_back(p);
+      derivatives.emplace_back(duration *
+                               sphereVelocityFromHingeVelocities(chain, p, ConstrainedModel::unstack(along.v)));
+    }
+  };
+}
+
 // The cone's integrand at one point of the loop and its derivative d/ds there:
 // det[A, gamma, gamma'] * (integral of K dA along the chord from A to gamma, per unit det).
 double coneIntegrand(const ConfigurationSurface& surface, const Eigen::Vector3d& apex, const Eigen::Vector3d& point,
@@ -230,8 +247,10 @@ Holonomy polygonHolonomy(const Chain& chain, const std::vector<Eigen::VectorXd>&
     h.length += piece->length;
   }
   stopIfCancelled(cancelled);
-  const OrientedFrame start = orientedFrame(
-      chain, x[0], sphereVelocityFromHingeVelocities(chain, x[0], ConstrainedModel::unstack(velocity[0])));
+  std::vector<Eigen::VectorXd> xdot(m);  // each piece's start velocity, as a sphere velocity
+  for (std::size_t i = 0; i < m; ++i)
+    xdot[i] = sphereVelocityFromHingeVelocities(chain, x[i], ConstrainedModel::unstack(velocity[i]));
+  const OrientedFrame start = orientedFrame(chain, x[0], xdot[0]);
 
   // Ambient route, and each piece's arriving velocity and its points at the quadrature nodes.
   const GeodesicFlow flow(model, kTransportTolerance);
@@ -248,18 +267,8 @@ Holonomy polygonHolonomy(const Chain& chain, const std::vector<Eigen::VectorXd>&
     arriving[i] = s.v;
     w = model.projectVelocity(q[next], s.transported.col(0));
     // The piece at given parameters, for the enclosed curvature.
-    const PieceSampler piece = [&](const std::vector<double>& nodes, std::vector<Eigen::Vector3d>& points,
-                                   std::vector<Eigen::Vector3d>& derivatives) {
-      FlowState along{q[i], velocity[i], Eigen::MatrixXd(q[i].size(), 0), Eigen::MatrixXd(q[i].size(), 0)};
-      double at = 0;
-      for (double node : nodes) {
-        flow.advance(along, node - at);
-        at = node;
-        const Eigen::VectorXd p = spherePointFromHinges(chain, ConstrainedModel::unstack(along.q));
-        points.emplace_back(p);
-        derivatives.emplace_back(sphereVelocityFromHingeVelocities(chain, p, ConstrainedModel::unstack(along.v)));
-      }
-    };
+    const PieceSampler piece = geodesicPiece(
+        chain, flow, {q[i], velocity[i], Eigen::MatrixXd(q[i].size(), 0), Eigen::MatrixXd(q[i].size(), 0)}, 1.0);
     if (samplesPerPiece > 0) {  // a separate pass, so that the angle does not depend on how the loop is drawn
       FlowState shown{q[i], velocity[i], Eigen::MatrixXd(q[i].size(), 0), Eigen::MatrixXd(q[i].size(), 0), carried};
       const std::vector<double> swept = sweptCurvature(surface, apex, piece, samplesPerPiece);
@@ -281,8 +290,7 @@ Holonomy polygonHolonomy(const Chain& chain, const std::vector<Eigen::VectorXd>&
   Eigen::VectorXd ws = start.sphere[0];
   for (std::size_t i = 0; i < m; ++i) {
     const std::size_t next = (i + 1) % m;
-    const Eigen::VectorXd xdot = sphereVelocityFromHingeVelocities(chain, x[i], ConstrainedModel::unstack(velocity[i]));
-    const ChartTransport t = transportAlongGeodesicInCharts(gamma, x[i], xdot, 1.0, {ws}, kTransportTolerance);
+    const ChartTransport t = transportAlongGeodesicInCharts(gamma, x[i], xdot[i], 1.0, {ws}, kTransportTolerance);
     ws = t.vectors[0] - t.vectors[0].dot(x[next]) * x[next];
     h.chartChanges += t.chartChanges;
   }
@@ -291,12 +299,8 @@ Holonomy polygonHolonomy(const Chain& chain, const std::vector<Eigen::VectorXd>&
   // Gauss-Bonnet for a geodesic polygon: the region to the left has integral K dA = 2 pi - sum of turning angles.
   double turning = 0;
   for (std::size_t i = 0; i < m; ++i) {
-    const double e = turningAngle(
-        model,
-        i == 0 ? start
-               : orientedFrame(chain, x[i],
-                               sphereVelocityFromHingeVelocities(chain, x[i], ConstrainedModel::unstack(velocity[i]))),
-        arriving[(i + m - 1) % m], velocity[i]);
+    const double e = turningAngle(model, i == 0 ? start : orientedFrame(chain, x[i], xdot[i]),
+                                  arriving[(i + m - 1) % m], velocity[i]);
     h.interiorAngles.push_back(kPi - e);
     turning += e;
   }
@@ -352,21 +356,8 @@ Holonomy closedGeodesicHolonomy(const Chain& chain, const ClosedGeodesic& geodes
   h.chartChanges = t.chartChanges;
   // The curvature to the left, over the cone from the apex, piece by piece.
   const ConfigurationSurface surface(chain);
-  for (const FlowState& from : starts) {
-    const PieceSampler sample = [&](const std::vector<double>& nodes, std::vector<Eigen::Vector3d>& points,
-                                    std::vector<Eigen::Vector3d>& derivatives) {
-      FlowState s = from;
-      double at = 0;
-      for (double node : nodes) {
-        flow.advance(s, (node - at) * piece);
-        at = node;
-        const Eigen::VectorXd p = spherePointFromHinges(chain, ConstrainedModel::unstack(s.q));
-        points.emplace_back(p);
-        derivatives.emplace_back(piece * sphereVelocityFromHingeVelocities(chain, p, ConstrainedModel::unstack(s.v)));
-      }
-    };
-    h.enclosedCurvature += coneCurvature(surface, apex, sample);
-  }
+  for (const FlowState& from : starts)
+    h.enclosedCurvature += coneCurvature(surface, apex, geodesicPiece(chain, flow, from, piece));
   return h;
 }
 

@@ -207,7 +207,7 @@ std::vector<std::string> transportCaptions(const SphereTransport& transport, dou
   };
   const std::size_t m = transport.corners.size();
   const std::string polygon = m == 3 ? "triangle" : m == 4 ? "quadrilateral" : std::to_string(m) + "-gon";
-  const double reached = duration > 0 ? time / duration : 1.0;
+  const double reached = SphereTransport::carriedFraction(time, duration);
   if (reached < 1.0) {
     const std::string swept = fixed(transport.sweptAt(reached), 3);
     return {"arrows: each side of the " + polygon +

@@ -970,8 +970,7 @@ void drawTransport(const SphereTransport& transport, const PanelContext& context
     placer.avoidPoint(to);
     placer.avoidPoint({0.5f * (from.x + to.x), 0.5f * (from.y + to.y)});
   };
-  const double reached =
-      context.frame.duration > 0 ? std::clamp(context.frame.time / context.frame.duration, 0.0, 1.0) : 1.0;
+  const double reached = SphereTransport::carriedFraction(context.frame.time, context.frame.duration);
   const std::size_t perSide = std::size_t(transport.samplesPerSide) + 1;
   for (std::size_t i = 0; i < transport.arrows.size(); ++i) {  // the arrows left behind, fading as the paths do
     const SphereTransport::Arrow& arrow = transport.arrows[i];
