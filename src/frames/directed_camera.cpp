@@ -3,9 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "contracts/parallel_for.hpp"
 #include "contracts/registry.hpp"
-#include "simulation/family.hpp"
 #include "simulation/trajectory.hpp"
 
 namespace sl {
@@ -93,11 +91,15 @@ Vec3 toVec3(const Eigen::VectorXd& x, const ConfigurationView& view) { return vi
 // A point between two frames' points, back on the sphere.
 Vec3 between(const Vec3& a, const Vec3& b, double u) { return directionOf(a + u * (b - a)).value_or(a); }
 
+}  // namespace
+
 // One run as the camera samples it: its point per frame while it moves.
 struct RunTrack {
   std::vector<std::optional<Vec3>> points;              // per frame; empty once stopped
   std::vector<std::vector<std::optional<Vec3>>> members;  // [member][frame]
 };
+
+namespace {
 
 void addRunEvents(const Scene& scene, std::size_t r, const RunTrack& track, Trajectory& run,
                   std::vector<CameraEvent>& events) {
@@ -206,39 +208,30 @@ std::string_view cameraEventName(CameraEventKind kind) {
   return "?";
 }
 
-CameraTargets cameraTargets(const Scene& scene, const std::vector<InitialState>& starts, const ConfigurationView& view,
-                            const std::function<bool()>& cancelled) {
-  const int frames = scene.frameCount();
-  const std::size_t runCount = scene.runs.size();
-  std::vector<Trajectory> runs;
-  std::vector<RunTrack> tracks(runCount);
-  std::vector<std::vector<Trajectory>> members(runCount);
-  std::vector<std::pair<std::size_t, std::size_t>> memberJobs;
-  for (std::size_t r = 0; r < runCount; ++r) {
-    const RunSpec& spec = scene.runs[r];
-    runs.emplace_back(spec.chain, starts.at(r), spec.config);
-    runs.back().setCancellation(cancelled);
-    tracks[r].points.assign(std::size_t(frames), std::nullopt);
-    if (!spec.family) continue;
-    members[r] = familyMembers(spec.chain, starts.at(r), *spec.family, spec.config, cancelled);
-    tracks[r].members.assign(members[r].size(), std::vector<std::optional<Vec3>>(std::size_t(frames)));
-    for (std::size_t m = 0; m < members[r].size(); ++m) memberJobs.emplace_back(r, m);
-  }
-  // Each run and member by one thread, at every frame time in order: the same whatever the number of cores.
-  std::vector<std::pair<std::size_t, std::size_t>> jobs;
-  for (std::size_t r = 0; r < runCount; ++r) jobs.emplace_back(r, SIZE_MAX);
-  jobs.insert(jobs.end(), memberJobs.begin(), memberJobs.end());
-  parallelFor(jobs.size(), [&](std::size_t j) {
-    const auto [r, m] = jobs[j];
-    Trajectory& trajectory = m == SIZE_MAX ? runs[r] : members[r][m];
-    auto& points = m == SIZE_MAX ? tracks[r].points : tracks[r].members[m];
-    for (int k = 0; k < frames; ++k) {
-      const std::optional<Sample> sample = trajectory.sampleAt(scene.frameTime(k));
-      if (!sample || sample->spherePoint.size() == 0) break;
-      points[std::size_t(k)] = directionOf(toVec3(sample->spherePoint, view));
-    }
-  });
+CameraReader::CameraReader(const Scene& scene, const ConfigurationView& view)
+    : scene_(scene), view_(view), tracks_(std::make_unique<std::vector<RunTrack>>(scene.runs.size())) {}
 
+CameraReader::~CameraReader() = default;
+
+void CameraReader::read(const SurveyFrame& frame) {
+  const auto pointOf = [&](const Sample* sample) -> std::optional<Vec3> {
+    if (!sample || sample->spherePoint.size() == 0) return std::nullopt;
+    return directionOf(toVec3(sample->spherePoint, view_));
+  };
+  for (std::size_t r = 0; r < frame.runs.size(); ++r) {
+    RunTrack& track = (*tracks_)[r];
+    track.points.push_back(pointOf(frame.runs[r]));
+    track.members.resize(frame.members[r].size());
+    for (std::size_t m = 0; m < frame.members[r].size(); ++m) track.members[m].push_back(pointOf(frame.members[r][m]));
+  }
+}
+
+CameraTargets CameraReader::targets(MotionSurvey& survey) const {
+  const std::vector<RunTrack>& tracks = *tracks_;
+  const int frames = scene_.frameCount();
+  const std::size_t runCount = scene_.runs.size();
+  const Scene& scene = scene_;
+  std::vector<Trajectory>& runs = survey.runs;
   CameraTargets targets;
   for (int k = 0; k < frames; ++k) {
     Vec3 sum;
@@ -321,11 +314,26 @@ std::vector<Vec3> directCamera(const CameraTargets& targets, double fps, const V
   return camera;
 }
 
+bool plansDirectedCamera(const Scene& scene, const std::vector<InitialState>& starts, const ConfigurationView& view) {
+  return scene.view.camera.mode == CameraMode::Directed && view.space() == ViewSpace::Sphere && hasSpherePanel(scene) &&
+         !starts.empty() && starts.front().spherePoint.size() > 0;
+}
+
+std::vector<Vec3> CameraReader::directions(MotionSurvey& survey) const {
+  return directCamera(targets(survey), scene_.output.fps, scene_.view.camera.viewDirection);
+}
+
+CameraTargets cameraTargets(const Scene& scene, const std::vector<InitialState>& starts, const ConfigurationView& view,
+                            const std::function<bool()>& cancelled) {
+  CameraReader reader(scene, view);
+  MotionSurvey survey = surveyMotion(
+      scene, starts, true, [&](const SurveyFrame& frame) { reader.read(frame); }, cancelled);
+  return reader.targets(survey);
+}
+
 std::vector<Vec3> planDirectedCamera(const Scene& scene, const std::vector<InitialState>& starts,
                                      const ConfigurationView& view, const std::function<bool()>& cancelled) {
-  if (scene.view.camera.mode != CameraMode::Directed || view.space() != ViewSpace::Sphere || !hasSpherePanel(scene) ||
-      starts.empty() || starts.front().spherePoint.size() == 0)
-    return {};
+  if (!plansDirectedCamera(scene, starts, view)) return {};
   return directCamera(cameraTargets(scene, starts, view, cancelled), scene.output.fps, scene.view.camera.viewDirection);
 }
 

@@ -16,6 +16,7 @@
 // they keep the scene's direction, still (planDirectedCamera returns no directions for them).
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -23,6 +24,7 @@
 #include "contracts/run_config.hpp"
 #include "contracts/values.hpp"
 #include "frames/configuration_view.hpp"
+#include "frames/motion_survey.hpp"
 #include "scene/scene.hpp"
 
 namespace sl {
@@ -60,8 +62,24 @@ struct CameraTargets {
   std::vector<CameraEvent> events;          // in time order
 };
 
-// The targets of a scene of 4 rods from fresh trajectories of its runs (and their families) sampled at every frame
-// time; integration never depends on which times are asked for, so these are the states the frames show.
+struct RunTrack;
+
+// Reads the camera's targets off the survey (frames/motion_survey.hpp; with the families' members), frame by frame.
+class CameraReader {
+ public:
+  CameraReader(const Scene& scene, const ConfigurationView& view);
+  ~CameraReader();
+  void read(const SurveyFrame& frame);
+  CameraTargets targets(MotionSurvey& survey) const;
+  std::vector<Vec3> directions(MotionSurvey& survey) const;  // directCamera of the targets
+
+ private:
+  const Scene& scene_;
+  const ConfigurationView& view_;
+  std::unique_ptr<std::vector<RunTrack>> tracks_;  // per run: its point (and its members') per frame
+};
+
+// The targets of a scene of 4 rods from its own survey (for a scene's camera alone; frames share one survey).
 // `cancelled` is given to the trajectories (RunCancelled comes through).
 CameraTargets cameraTargets(const Scene& scene, const std::vector<InitialState>& starts, const ConfigurationView& view,
                             const std::function<bool()>& cancelled = {});
@@ -69,8 +87,10 @@ CameraTargets cameraTargets(const Scene& scene, const std::vector<InitialState>&
 // One unit direction per frame (frames at k / fps) from the targets; `fallback` where nothing was ever followed.
 std::vector<Vec3> directCamera(const CameraTargets& targets, double fps, const Vec3& fallback);
 
-// The directed camera of a scene: empty unless its camera is directed, its view the sphere (4 rods) and it has a
-// sphere panel.
+// Whether a scene has a directed camera: its camera directed, its view the sphere (4 rods), a sphere panel.
+bool plansDirectedCamera(const Scene& scene, const std::vector<InitialState>& starts, const ConfigurationView& view);
+
+// The directed camera of a scene from its own survey: empty unless plansDirectedCamera.
 std::vector<Vec3> planDirectedCamera(const Scene& scene, const std::vector<InitialState>& starts,
                                      const ConfigurationView& view, const std::function<bool()>& cancelled = {});
 

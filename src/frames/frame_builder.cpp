@@ -152,12 +152,8 @@ FrameBuilder::FrameBuilder(const Scene& scene, const std::vector<InitialState>& 
       sphereDecoration_(makeSphereDecoration(scene.chain, scene.view.sphereSurface, distancePoint(scene, starts),
                                              !scene.distanceFrom, scene.holonomyPoints)),
       title_(fillTitlePlaceholders(scene.title, scene, injectivityRadiusOf(sphereDecoration_))),
-      shortTitle_(fillTitlePlaceholders(scene.shortTitle, scene, injectivityRadiusOf(sphereDecoration_))),
-      overview_(
-          overviewMotion(scene, starts, cancelled,
-                         sphereDecoration_ && sphereDecoration_->transport ? &*sphereDecoration_->transport : nullptr)),
-
-      cameraDirections_(planDirectedCamera(scene, starts, view_, cancelled)) {
+      shortTitle_(fillTitlePlaceholders(scene.shortTitle, scene, injectivityRadiusOf(sphereDecoration_))) {
+  surveyBeforeFirstFrame(starts, cancelled);
   for (size_t i = 0; i < runs_.size(); ++i) {
     RunFrame& frame = history_[i].frame;
     frame.name = scene.runs[i].name;
@@ -172,6 +168,26 @@ FrameBuilder::FrameBuilder(const Scene& scene, const std::vector<InitialState>& 
     history_[i].memberPaths.resize(frame.members.size());
     history_[i].trails.resize(scene.view.trailHinges.size());
   }
+}
+
+// What must be known before the first frame, from one survey of the whole motion (frames/motion_survey.hpp) that
+// both readers share: the plots' ranges and the linkage box, and the directed camera.
+void FrameBuilder::surveyBeforeFirstFrame(const std::vector<InitialState>& starts,
+                                          const std::function<bool()>& cancelled) {
+  OverviewReader overview(scene_,
+                          sphereDecoration_ && sphereDecoration_->transport ? &*sphereDecoration_->transport : nullptr);
+  std::optional<CameraReader> camera;
+  if (plansDirectedCamera(scene_, starts, view_)) camera.emplace(scene_, view_);
+  if (!overview.needed() && !camera) return;
+  MotionSurvey survey = surveyMotion(
+      scene_, starts, overview.wantsMembers() || camera,
+      [&](const SurveyFrame& frame) {
+        if (overview.needed()) overview.read(frame);
+        if (camera) camera->read(frame);
+      },
+      cancelled);
+  if (overview.needed()) overview_ = overview.finish(survey);
+  if (camera) cameraDirections_ = camera->directions(survey);
 }
 
 // Path sample j of `substeps` on the way to frame k. The last is the frame time itself, computed as k / fps so it

@@ -5,8 +5,8 @@
 // Sharding: frame(k) for any k >= the last one asked gives exactly the FrameState a full run gives for
 // frame k, because every frame before k is still sampled (cheaply, without rendering) to build the path,
 // trail and plot history. Nothing beyond frame k's time is integrated for the history; what must be known before the
-// first frame (the plots' ranges, the directed camera) comes from fresh trajectories of the whole motion, the same in
-// every shard.
+// first frame (the plots' ranges, the linkage box, the directed camera) comes from one survey of the whole motion
+// (frames/motion_survey.hpp), the same in every shard.
 
 #include <vector>
 
@@ -59,6 +59,7 @@ class FrameBuilder {
     SharedTrack<double> curvatureLow, curvatureHigh;
   };
 
+  void surveyBeforeFirstFrame(const std::vector<InitialState>& starts, const std::function<bool()>& cancelled);
   void sampleFrame(int k);  // advance the history to frame k (k = sampled_ + 1)
   void sampleRunAt(size_t run, double t, bool isFrameTime);
   void markStopped(std::size_t run, double t);

@@ -5,12 +5,10 @@
 #include <stdexcept>
 
 #include "contracts/limits.hpp"
-#include "contracts/parallel_for.hpp"
 #include "contracts/registry.hpp"
 #include "geometry/sectional_curvature.hpp"
 #include "linkage/chain.hpp"
 #include "linkage/chain_constants.hpp"
-#include "simulation/family.hpp"
 #include "simulation/trajectory.hpp"
 
 namespace sl {
@@ -57,78 +55,66 @@ std::array<double, 2> curvatureThroughVelocity(const Chain& chain, const Sample&
   return sectionalCurvatureThrough(ChainConstants(chain), sample.spherePoint, sample.sphereVelocity);
 }
 
-MotionOverview overviewMotion(const Scene& scene, const std::vector<InitialState>& starts,
-                              const std::function<bool()>& cancelled, const SphereTransport* transport) {
+OverviewReader::OverviewReader(const Scene& scene, const SphereTransport* transport)
+    : scene_(scene),
+      transport_(transport),
+      divergence_(scene.runs.size()),
+      energy_(scene.runs.size()),
+      jacobi_(scene.runs.size()),
+      spread_(scene.runs.size()),
+      sectional_(scene.runs.size()),
+      holonomy_(scene.runs.size()) {
   const std::vector<PlotSpec>& plots = scene.view.plots;
+  const auto anyPlot = [&](PlotKind kind) {
+    return std::any_of(plots.begin(), plots.end(), [&](const PlotSpec& plot) { return plot.kind == kind; });
+  };
   const bool anyFamily =
       std::any_of(scene.runs.begin(), scene.runs.end(), [](const RunSpec& run) { return bool(run.family); });
-  const bool wantBox = showsLinkage(scene) && !anyFamily && !scene.runs.empty();
-  if (plots.empty() && !wantBox) return {};
-  const std::size_t runCount = scene.runs.size();
-  std::array<double, 4> box{0, 0, 0, 0};
-  for (const RunSpec& run : scene.runs) holdPoint(box, run.chain.baseLength, 0);
-  std::vector<Trajectory> runs;
-  for (std::size_t r = 0; r < runCount; ++r) {
-    runs.emplace_back(scene.runs[r].chain, starts.at(r), scene.runs[r].config);
-    runs.back().setCancellation(cancelled);
-  }
+  wantBox_ = showsLinkage(scene) && !anyFamily && !scene.runs.empty();
+  wantSpread_ = anyPlot(PlotKind::Spread);  // the families, only if a spread plot shows them
+  wantSectional_ = anyPlot(PlotKind::Sectional);
+  for (const RunSpec& run : scene.runs) holdPoint(box_, run.chain.baseLength, 0);
+}
 
-  // Per frame: each run's divergence from run 0 (index 0 unused) and its energy error; NaN where not defined.
-  const int frames = scene.frameCount();
+void OverviewReader::read(const SurveyFrame& frame) {
   const double nan = std::nan("");
-  std::vector<std::vector<double>> divergence(runCount), energy(runCount), jacobi(runCount), spread(runCount),
-      sectional(runCount), holonomy(runCount);
-  const bool wantSectional =
-      std::any_of(plots.begin(), plots.end(), [](const PlotSpec& plot) { return plot.kind == PlotKind::Sectional; });
-  std::vector<bool> stopped(runCount, false);
-  // The families, only if a spread plot shows them.
-  const bool wantSpread =
-      std::any_of(plots.begin(), plots.end(), [](const PlotSpec& plot) { return plot.kind == PlotKind::Spread; });
-  std::vector<std::vector<Trajectory>> members(runCount);
-  std::vector<std::pair<std::size_t, std::size_t>> memberJobs;
-  for (std::size_t r = 0; r < runCount && wantSpread; ++r) {
-    if (!scene.runs[r].family) continue;
-    const RunSpec& run = scene.runs[r];
-    members[r] = familyMembers(run.chain, starts.at(r), *run.family, run.config, cancelled);
-    for (std::size_t m = 0; m < members[r].size(); ++m) memberJobs.emplace_back(r, m);
-  }
-  std::vector<std::optional<Sample>> memberSamples(memberJobs.size());
-  for (int k = 0; k < frames; ++k) {
-    const double t = scene.frameTime(k);
-    std::vector<std::optional<Sample>> samples(runCount);
-    for (std::size_t r = 0; r < runCount; ++r) {
-      if (!stopped[r]) samples[r] = runs[r].sampleAt(t);
-      stopped[r] = stopped[r] || !samples[r];
-      if (samples[r])
-        for (Eigen::Index j = 0; j < samples[r]->hinges.cols(); ++j)
-          holdPoint(box, samples[r]->hinges(0, j), samples[r]->hinges(1, j));
-      energy[r].push_back(samples[r] ? std::abs(samples[r]->relativeEnergyDrift) : nan);
-      jacobi[r].push_back(samples[r] ? samples[r]->jacobi.value_or(nan) : nan);
-      if (wantSectional) {  // both ends of the range: the axis holds them all
-        const std::array<double, 2> through = samples[r] ? curvatureThroughVelocity(scene.runs[r].chain, *samples[r])
-                                                         : std::array<double, 2>{nan, nan};
-        sectional[r].insert(sectional[r].end(), through.begin(), through.end());
-      }
-      divergence[r].push_back(r > 0 && samples[0] && samples[r] ? hingeDistance(samples[0]->hinges, samples[r]->hinges)
-                                                                 : nan);
+  const std::size_t runCount = frame.runs.size();
+  const std::vector<const Sample*>& samples = frame.runs;
+  for (std::size_t r = 0; r < runCount; ++r) {
+    if (samples[r])
+      for (Eigen::Index j = 0; j < samples[r]->hinges.cols(); ++j)
+        holdPoint(box_, samples[r]->hinges(0, j), samples[r]->hinges(1, j));
+    energy_[r].push_back(samples[r] ? std::abs(samples[r]->relativeEnergyDrift) : nan);
+    jacobi_[r].push_back(samples[r] ? samples[r]->jacobi.value_or(nan) : nan);
+    if (wantSectional_) {  // both ends of the range: the axis holds them all
+      const std::array<double, 2> through =
+          samples[r] ? curvatureThroughVelocity(scene_.runs[r].chain, *samples[r]) : std::array<double, 2>{nan, nan};
+      sectional_[r].insert(sectional_[r].end(), through.begin(), through.end());
     }
-    if (transport && runCount > 0)
-      holonomy[0].push_back(transport->sweptAt(SphereTransport::carriedFraction(t, scene.duration)));  // one line
-    parallelFor(memberJobs.size(), [&](std::size_t j) {
-      const auto [r, m] = memberJobs[j];
-      if (k == 0 || memberSamples[j]) memberSamples[j] = members[r][m].sampleAt(t);  // a stopped member stays out
-    });
-    for (std::size_t r = 0; r < runCount; ++r) spread[r].push_back(nan);
-    for (std::size_t j = 0; j < memberJobs.size(); ++j) {
-      const std::size_t r = memberJobs[j].first;
-      if (!samples[r] || !memberSamples[j]) continue;
-      const double distance = hingeDistance(samples[r]->hinges, memberSamples[j]->hinges);
-      spread[r].back() = std::isnan(spread[r].back()) ? distance : std::max(spread[r].back(), distance);
+    divergence_[r].push_back(r > 0 && samples[0] && samples[r] ? hingeDistance(samples[0]->hinges, samples[r]->hinges)
+                                                               : nan);
+    spread_[r].push_back(nan);
+    for (std::size_t m = 0; m < frame.members[r].size() && wantSpread_; ++m) {
+      const Sample* member = frame.members[r][m];
+      if (!samples[r] || !member) continue;
+      const double distance = hingeDistance(samples[r]->hinges, member->hinges);
+      spread_[r].back() = std::isnan(spread_[r].back()) ? distance : std::max(spread_[r].back(), distance);
     }
   }
+  if (transport_ && runCount > 0)  // one line
+    holonomy_[0].push_back(transport_->sweptAt(SphereTransport::carriedFraction(frame.time, scene_.duration)));
+}
 
+MotionOverview OverviewReader::finish(const MotionSurvey& survey) const {
+  const Scene& scene = scene_;
+  const std::vector<PlotSpec>& plots = scene.view.plots;
+  const std::size_t runCount = scene.runs.size();
+  const int frames = scene.frameCount();
+  const std::vector<Trajectory>& runs = survey.runs;
+  const auto &divergence = divergence_, &energy = energy_, &jacobi = jacobi_, &spread = spread_,
+             &sectional = sectional_, &holonomy = holonomy_;
   MotionOverview overview;
-  if (wantBox) overview.linkageBox = box;
+  if (wantBox_) overview.linkageBox = box_;
   for (const PlotSpec& spec : plots) {
     const bool isDivergence = spec.kind == PlotKind::Divergence;
     const auto& values = [&]() -> const std::vector<std::vector<double>>& {
@@ -141,7 +127,7 @@ MotionOverview overviewMotion(const Scene& scene, const std::vector<InitialState
         case PlotKind::Holonomy:
           return holonomy;
       }
-      throw std::logic_error("overviewMotion: a plot kind without values");
+      throw std::logic_error("OverviewReader: a plot kind without values");
     }();
     double lo = INFINITY, hi = -INFINITY, largest = -INFINITY;
     // A level every run's values stay under: roundoff, or for an energy error of adaptive runs alone their

@@ -1,9 +1,8 @@
 #pragma once
 // What each plot panel shows over the whole animation, known before the first frame: the y range (so the axes
 // never jump), for a plot that stays empty why, for one within roundoff a line saying so; and the part of the
-// plane the chains sweep (so the linkage panel fills its panel and never jumps). Computed from fresh trajectories
-// of the scene's runs sampled at every frame time; integration never depends on which times are asked for, so the
-// values are exactly those the frames plot. Every shard computes the same overview.
+// plane the chains sweep (so the linkage panel fills its panel and never jumps). Read off the survey of the whole
+// motion (frames/motion_survey.hpp): the values are exactly those the frames plot, and every shard reads the same.
 
 #include <array>
 #include <functional>
@@ -13,6 +12,7 @@
 
 #include "contracts/frame_state.hpp"
 #include "contracts/run_config.hpp"
+#include "frames/motion_survey.hpp"
 #include "scene/scene.hpp"
 #include "simulation/trajectory.hpp"
 
@@ -33,11 +33,25 @@ struct MotionOverview {
   std::optional<std::array<double, 4>> linkageBox;
 };
 
-// Integrates fresh trajectories of the runs only when the scene has plots or a linkage panel to fit.
-// `cancelled` is given to the trajectories (Trajectory::setCancellation): RunCancelled comes through.
-// A holonomy plot's values come from `transport`, the polygon the sphere panel draws (its sides' swept curvature).
-MotionOverview overviewMotion(const Scene& scene, const std::vector<InitialState>& starts,
-                              const std::function<bool()>& cancelled = {}, const SphereTransport* transport = nullptr);
+// Reads the overview off the survey (frames/motion_survey.hpp), frame by frame. A holonomy plot's values come from
+// `transport`, the polygon the sphere panel draws (its sides' swept curvature).
+class OverviewReader {
+ public:
+  OverviewReader(const Scene& scene, const SphereTransport* transport);
+  bool needed() const { return !scene_.view.plots.empty() || wantBox_; }  // plots, or a linkage panel to fit
+  bool wantsMembers() const { return wantSpread_; }
+  void read(const SurveyFrame& frame);
+  MotionOverview finish(const MotionSurvey& survey) const;
+
+ private:
+  const Scene& scene_;
+  const SphereTransport* transport_;
+  bool wantBox_, wantSpread_, wantSectional_;
+  std::array<double, 4> box_{0, 0, 0, 0};
+  // Per run, per frame: divergence from run 0 (run 0's unused), energy error, Jacobi size, the family's spread, the
+  // sectional range (two per frame), the swept holonomy (run 0's only); NaN where not defined.
+  std::vector<std::vector<double>> divergence_, energy_, jacobi_, spread_, sectional_, holonomy_;
+};
 
 // The sectional plot's values at a sample: the smallest and largest curvature of the planes through the velocity
 // (geometry/sectional_curvature.hpp); NaN where the chain is slack, has fewer than 5 rods or the sample is at rest.
