@@ -34,7 +34,7 @@ void BM_ConnectShortest(benchmark::State& state) {
 
 void BM_ConnectDiscrete(benchmark::State& state) {
   const auto arc = sl::sphereArcPaths(chain, from, to, 40)[0];
-  for (auto _ : state) benchmark::DoNotOptimize(sl::discreteGeodesic(model, arc, "sphere arc"));
+  for (auto _ : state) benchmark::DoNotOptimize(sl::discreteGeodesic(model, arc, sl::DiscreteSeed::SphereArc));
 }
 
 void BM_ConnectAll(benchmark::State& state) {

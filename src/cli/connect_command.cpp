@@ -114,7 +114,7 @@ std::string runConnect(const ConnectArguments& args) {
       o["check"] = selfCheckName(selfCheck(c));
       if (c.discrete) {
         o["discrete_length"] = c.discrete->length;
-        o["discrete_seed"] = c.discrete->seed;
+        o["discrete_seed"] = nameOf(c.discrete->seed);
         o["length_difference"] = c.lengthDifference;
         o["path_difference"] = c.pathDifference;
       } else {

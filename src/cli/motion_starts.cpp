@@ -118,7 +118,7 @@ Found closedGeodesics(const Chain& chain, const FoundMotionSpec& request) {
     motion.sphereVelocity =
         sphereVelocityFromHingeVelocities(chain, motion.spherePoint, ConstrainedModel::unstack(g.velocity));
     motion.length = motion.time = g.length;
-    motion.stability = g.stability == "-" ? "" : g.stability;
+    motion.stability = g.stability;
     found.motions.push_back(motion);
     found.checks.push_back(selfCheck(g));
   }

@@ -36,14 +36,23 @@ struct PeriodicArguments {
   bool quiet = false;
 };
 
+// The words of a closed geodesic's kinds, as the table and the JSON list say them: "-" for none.
+std::string stabilityWord(const ClosedGeodesic& g) { return g.stability ? nameOf(*g.stability) : "-"; }
+std::string symmetryWords(const ClosedGeodesic& g) {
+  std::string words;
+  for (const ChainSymmetryOf& s : g.symmetries)
+    words += (words.empty() ? "" : ", ") + std::string(s.fixed ? "fixed by " : "") + nameOf(s.kind);
+  return words;
+}
+
 nlohmann::json geodesicJson(const Chain& chain, const ClosedGeodesic& g) {
   nlohmann::json o;
   o["length"] = g.length;
   o["simple"] = g.simple;
-  o["symmetry"] = g.symmetry;
-  o["stability"] = g.stability;
-  if (g.stability == "elliptic") o["rotation_number"] = g.rotationNumber;
-  if (g.stability != "-") {
+  o["symmetry"] = symmetryWords(g);
+  o["stability"] = stabilityWord(g);
+  if (g.stability == Stability::Elliptic) o["rotation_number"] = g.rotationNumber;
+  if (g.stability) {
     nlohmann::json eigen = nlohmann::json::array();
     for (int i = 0; i < 2; ++i) eigen.push_back({g.eigenvalues(i).real(), g.eigenvalues(i).imag()});
     o["eigenvalues"] = eigen;
@@ -101,12 +110,11 @@ std::string runPeriodic(const PeriodicArguments& args) {
     const ClosedGeodesic& g = found[i];
     char independent[32] = "-", rotation[32] = "-", trace[32] = "-";
     if (g.independentLength) std::snprintf(independent, sizeof independent, "%.12f", *g.independentLength);
-    if (g.stability == "elliptic") std::snprintf(rotation, sizeof rotation, "%.6f", g.rotationNumber);
-    if (g.stability != "-") std::snprintf(trace, sizeof trace, "%.6f", g.monodromy.trace());
+    if (g.stability == Stability::Elliptic) std::snprintf(rotation, sizeof rotation, "%.6f", g.rotationNumber);
+    if (g.stability) std::snprintf(trace, sizeof trace, "%.6f", g.monodromy.trace());
     std::printf("%3zu %16.12f %16s %6s %-10s %9s %9s %9.1e  %-15s  %s\n", i, g.length, independent,
-                g.simple ? "yes" : "no", g.stability.c_str(), rotation, trace,
-                g.closure(), selfCheckName(selfCheck(g)).c_str(),
-                g.symmetry.empty() ? "-" : g.symmetry.c_str());
+                g.simple ? "yes" : "no", stabilityWord(g).c_str(), rotation, trace, g.closure(),
+                selfCheckName(selfCheck(g)).c_str(), g.symmetries.empty() ? "-" : symmetryWords(g).c_str());
   }
   std::fflush(stdout);
   return foundWords(found, args.quiet);

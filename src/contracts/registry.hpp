@@ -203,6 +203,34 @@ inline constexpr std::array<GlBackendTraits, 4> kGlBackends{{
     {GlBackend::OsMesa, "osmesa", true, "OSMesa (llvmpipe); Mesa 25.1 and later no longer ship it"},
 }};
 
+// === What the inverse problems find (inverse/periodic.hpp, inverse/connect.hpp; docs/geometry.md)
+
+// A closed geodesic's linear stability, from the trace of its monodromy (|tr| < 2, > 2, = 2).
+enum class Stability { Elliptic, Hyperbolic, Parabolic };
+inline constexpr std::array<Named<Stability>, 3> kStabilities{{
+    {Stability::Elliptic, "elliptic"},
+    {Stability::Hyperbolic, "hyperbolic"},
+    {Stability::Parabolic, "parabolic"},
+}};
+
+// The 4-rod chain's symmetries: the mirror y -> -y, the end swap p_k -> (L - x, y) of p_(n-k), the half turn
+// p_k -> (L, 0) - p_(n-k) (the last two isometries only for masses symmetric end for end).
+enum class ChainSymmetry { Mirror, EndSwap, HalfTurn };
+inline constexpr std::array<Named<ChainSymmetry>, 3> kChainSymmetries{{
+    {ChainSymmetry::Mirror, "mirror"},
+    {ChainSymmetry::EndSwap, "end swap"},
+    {ChainSymmetry::HalfTurn, "half turn"},
+}};
+
+// Where a discrete geodesic (route 2) started: a great-circle arc of the sphere between the end points (the short
+// or the long way), or route 1's shot path.
+enum class DiscreteSeed { SphereArc, SphereArcLongWay, ShootingPath };
+inline constexpr std::array<Named<DiscreteSeed>, 3> kDiscreteSeeds{{
+    {DiscreteSeed::SphereArc, "sphere arc"},
+    {DiscreteSeed::SphereArcLongWay, "sphere arc, long way"},
+    {DiscreteSeed::ShootingPath, "shooting path"},
+}};
+
 // === Look-ups, the same for every table
 
 template <class Table>
@@ -255,5 +283,8 @@ inline std::string nameOf(Method m) { return std::string(traits(m).name); }
 inline std::string nameOf(Integrator i) { return std::string(traits(i).name); }
 inline std::string nameOf(StopReason r) { return std::string(traits(r).name); }
 inline std::string nameOf(GlBackend b) { return std::string(traits(b).name); }
+inline std::string nameOf(Stability s) { return std::string(traitsOf(kStabilities, s).name); }
+inline std::string nameOf(ChainSymmetry s) { return std::string(traitsOf(kChainSymmetries, s).name); }
+inline std::string nameOf(DiscreteSeed s) { return std::string(traitsOf(kDiscreteSeeds, s).name); }
 
 }  // namespace sl

@@ -64,7 +64,7 @@ struct FoundMotion {
   Eigen::VectorXd spherePoint, sphereVelocity;
   double length = 0;      // its length (the period of a closed geodesic at unit speed)
   double time = 0;        // when it reaches the target (connect) or closes (periodic)
-  std::string stability;  // periodic: "elliptic", "hyperbolic", ...; connect: ""
+  std::optional<Stability> stability;  // periodic (not on the 3-rod circle); connect: none
   int found = 0;          // how many motions the list held
 };
 

@@ -365,11 +365,11 @@ std::optional<Connection> shootConnection(const ConstrainedModel& model, const E
 }
 
 std::optional<DiscreteGeodesic> discreteGeodesic(const ConstrainedModel& model, std::vector<Eigen::VectorXd> nodes,
-                                                 const std::string& seedName, bool descend) {
+                                                 DiscreteSeed seedKind, bool descend) {
   for (std::size_t i = 1; i + 1 < nodes.size(); ++i) model.projectPosition(nodes[i]);
   Richardson lengths, paths;
   DiscreteGeodesic out;
-  out.seed = seedName;
+  out.seed = seedKind;
   Eigen::VectorXd previousLength;
   Eigen::VectorXd previousPath;
   for (int level = 0; level < 7; ++level) {
@@ -642,8 +642,8 @@ std::vector<Connection> findConnections(const ConstrainedModel& model, const Cha
   if (chain != nullptr) {
     const auto arcs = sphereArcPaths(*chain, from, to, 5 * kPathSamples);
     for (std::size_t k = 0; k < arcs.size(); ++k) {
-      const auto g =
-          discreteGeodesic(model, arcs[k], k == 0 ? "sphere arc" : "sphere arc, long way", d > kExactShootingFreedom);
+      const auto g = discreteGeodesic(model, arcs[k], k == 0 ? DiscreteSeed::SphereArc : DiscreteSeed::SphereArcLongWay,
+                                      d > kExactShootingFreedom);
       if (!g) continue;
       Connection* c = match(*g);
       // Long chains shoot few of the fan's seeds and may miss a geodesic route 2 found from the arc: shot
@@ -662,8 +662,8 @@ std::vector<Connection> findConnections(const ConstrainedModel& model, const Cha
   for (Connection& c : found) {
     if (c.discrete) continue;
     const int intervals = kPathSamples * std::max(5, static_cast<int>(std::ceil(2 * c.length)));
-    const auto g =
-        discreteGeodesic(model, shootingPath(model, from, c.velocity, intervals, options.tolerance), "shooting path");
+    const auto g = discreteGeodesic(model, shootingPath(model, from, c.velocity, intervals, options.tolerance),
+                                    DiscreteSeed::ShootingPath);
     if (g && match(*g) == &c) record(&c, *g);
   }
   return found;

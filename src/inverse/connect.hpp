@@ -16,6 +16,7 @@
 
 #include <Eigen/Dense>
 
+#include "contracts/registry.hpp"
 #include "contracts/run_control.hpp"
 #include "inverse/constrained_model.hpp"
 #include "linkage/chain.hpp"
@@ -35,7 +36,7 @@ struct DiscreteGeodesic {
   double lengthChange = 0;            // between the last two extrapolants: the error estimate
   std::vector<Eigen::VectorXd> path;  // extrapolated, at t = j / kPathSamples
   int nodes = 0;                      // the finest K
-  std::string seed;                   // where the discrete path started ("sphere arc", "shooting path", ...)
+  DiscreteSeed seed = DiscreteSeed::SphereArc;  // where the discrete path started
   Eigen::VectorXd startVelocity;      // the first chord over its time step at the finest K: a shooting seed
 };
 
@@ -70,7 +71,7 @@ std::optional<Connection> shootConnection(const ConstrainedModel& model, const E
 // where Newton's method fails from the seed, descend on the action first (long chains; docs/geometry.md, "Long
 // chains").
 std::optional<DiscreteGeodesic> discreteGeodesic(const ConstrainedModel& model, std::vector<Eigen::VectorXd> seed,
-                                                 const std::string& seedName, bool descend = false);
+                                                 DiscreteSeed seedKind, bool descend = false);
 
 // Shapes closer than this (the mass-weighted norm of their hinge difference) are one shape: a motion between them
 // would leave in a direction made of rounding noise. A motion back to the start is a closed geodesic (periodic).

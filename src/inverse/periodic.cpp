@@ -122,12 +122,12 @@ void classify(ClosedGeodesic& g) {
   const std::complex<double> root = std::sqrt(std::complex<double>(trace * trace / 4 - det));
   g.eigenvalues << trace / 2 + root, trace / 2 - root;
   if (std::abs(std::abs(trace) - 2) < 1e-9) {
-    g.stability = "parabolic";
+    g.stability = Stability::Parabolic;
   } else if (std::abs(trace) < 2) {
-    g.stability = "elliptic";
+    g.stability = Stability::Elliptic;
     g.rotationNumber = std::acos(trace / 2) / (2 * kPi);
   } else {
-    g.stability = "hyperbolic";
+    g.stability = Stability::Hyperbolic;
   }
 }
 
@@ -320,19 +320,17 @@ std::vector<ClosedGeodesic> findClosedGeodesics(const ConstrainedModel& model, c
   tell(rays.size() + seeds.size(), rays.size() + seeds.size());
   if (chain != nullptr) {
     for (std::size_t i = 0; i < found.size(); ++i) {
-      std::string names;
-      for (const char* name : {"mirror", "end swap", "half turn"}) {
-        if (std::string(name) != "mirror" && !symmetricMasses(*chain)) continue;
-        const Eigen::VectorXd image = applyChainSymmetry(*chain, name, found[i].point);
+      for (const ChainSymmetry symmetry : kindsOf(kChainSymmetries)) {
+        if (symmetry != ChainSymmetry::Mirror && !symmetricMasses(*chain)) continue;
+        const Eigen::VectorXd image = applyChainSymmetry(*chain, symmetry, found[i].point);
         if (distanceToOrbit(orbits[i], u * image) > onOrbitTolerance(orbits[i], found[i].length)) continue;
         bool fixed = true;
         for (int k = 0; k < kOrbitSamples; k += kOrbitSamples / 16) {
           const Eigen::VectorXd q = u.triangularView<Eigen::Upper>().solve(orbits[i][static_cast<std::size_t>(k)]);
-          if (maxAbs(applyChainSymmetry(*chain, name, q) - q) > 1e-6) fixed = false;
+          if (maxAbs(applyChainSymmetry(*chain, symmetry, q) - q) > 1e-6) fixed = false;
         }
-        names += std::string(names.empty() ? "" : ", ") + (fixed ? "fixed by " : "") + name;
+        found[i].symmetries.push_back({symmetry, fixed});
       }
-      found[i].symmetry = names;
     }
   }
   std::stable_sort(found.begin(), found.end(), [](const ClosedGeodesic& a, const ClosedGeodesic& b) {
@@ -394,17 +392,17 @@ double ellipsePerimeter(double a, double b) {
   return 4 * major * boost::math::ellint_2(std::sqrt(1 - (minor / major) * (minor / major)));
 }
 
-Eigen::VectorXd applyChainSymmetry(const Chain& chain, const std::string& name, const Eigen::VectorXd& q) {
+Eigen::VectorXd applyChainSymmetry(const Chain& chain, ChainSymmetry symmetry, const Eigen::VectorXd& q) {
   const int hinges = chain.hingeCount();
   Eigen::VectorXd out(q.size());
   for (int k = 0; k < hinges; ++k) {
-    if (name == "mirror") {
+    if (symmetry == ChainSymmetry::Mirror) {
       out(2 * k) = q(2 * k);
       out(2 * k + 1) = -q(2 * k + 1);
     } else {
       const int other = hinges - 1 - k;  // p_k <- p_(n-k)
       out(2 * k) = chain.baseLength - q(2 * other);
-      out(2 * k + 1) = (name == "end swap" ? 1.0 : -1.0) * q(2 * other + 1);
+      out(2 * k + 1) = (symmetry == ChainSymmetry::EndSwap ? 1.0 : -1.0) * q(2 * other + 1);
     }
   }
   return out;
@@ -473,7 +471,7 @@ std::vector<ClosedGeodesic> chainClosedGeodesics(const Chain& chain, const Perio
   if (symmetricMasses(chain)) {
     const double fixedSet = closedCurveLength(model, [&](double w) { return endSwapFixedPoint(chain, w); });
     for (ClosedGeodesic& g : found)
-      if (g.symmetry.find("fixed by end swap") != std::string::npos && std::abs(g.length - fixedSet) < 1e-6) {
+      if (g.fixedBy(ChainSymmetry::EndSwap) && std::abs(g.length - fixedSet) < 1e-6) {
         g.independentLength = fixedSet;
         g.independentRoute = "fixed set of the end swap, polygons extrapolated";
       }
@@ -485,7 +483,7 @@ std::vector<ClosedGeodesic> chainClosedGeodesics(const Chain& chain, const Perio
     };
     std::vector<DiscreteGeodesic> halves;
     for (const auto& arc : sphereArcPaths(chain, poles[0], poles[1], 5 * kPathSamples))
-      if (const auto half = discreteGeodesic(model, arc, "sphere arc")) halves.push_back(*half);
+      if (const auto half = discreteGeodesic(model, arc, DiscreteSeed::SphereArc)) halves.push_back(*half);
     for (ClosedGeodesic& g : found) {
       if (g.independentLength || !throughPoles(g)) continue;
       for (const DiscreteGeodesic& half : halves)
@@ -499,7 +497,8 @@ std::vector<ClosedGeodesic> chainClosedGeodesics(const Chain& chain, const Perio
       for (const Connection& between : betweenPoles) {
         if (discrete || std::abs(g.length - 2 * between.length) > 1e-6) continue;
         const int intervals = kPathSamples * std::max(5, static_cast<int>(std::ceil(2 * between.length)));
-        discrete = discreteGeodesic(model, shootingPath(model, poles[0], between.velocity, intervals), "shooting path");
+        discrete = discreteGeodesic(model, shootingPath(model, poles[0], between.velocity, intervals),
+                                    DiscreteSeed::ShootingPath);
       }
       if (discrete && std::abs(g.length - 2 * discrete->length) < 1e-6) {
         g.independentLength = 2 * discrete->length;
@@ -569,8 +568,7 @@ ClosedGeodesic circleClosedGeodesic(const Chain& chain) {
   flow.advance(s, period);
   out.positionClosure = maxAbs(s.q - q0);
   out.velocityClosure = maxAbs(s.v - v0);
-  out.stability = "-";
-  out.symmetry = "mirror";
+  out.symmetries = {{ChainSymmetry::Mirror, false}};
   out.independentLength = circleLength(chain, model);
   out.independentRoute = "the circle's length, its exact speed integrated (adaptive Gauss-Kronrod)";
   return out;

@@ -21,6 +21,7 @@
 
 #include <Eigen/Dense>
 
+#include "contracts/registry.hpp"
 #include "contracts/run_control.hpp"
 #include "inverse/constrained_model.hpp"
 #include "linkage/chain.hpp"
@@ -33,6 +34,13 @@ namespace sl {
 // in the orbit's own units with it.
 double orbitScale(double length);
 
+// A chain symmetry a closed geodesic is invariant under: as a curve (mapped onto itself), or point by point (fixed).
+struct ChainSymmetryOf {
+  ChainSymmetry kind = ChainSymmetry::Mirror;
+  bool fixed = false;
+  bool operator==(const ChainSymmetryOf&) const = default;
+};
+
 struct ClosedGeodesic {
   double length = 0;                                // route 1: the period at unit speed
   Eigen::VectorXd point, velocity;                  // a unit-speed start on it (stacked hinges for a chain)
@@ -41,10 +49,17 @@ struct ClosedGeodesic {
   double closure() const { return std::max(positionClosure, orbitScale(length) * velocityClosure); }
   bool simple = true;
   Eigen::Matrix2d monodromy = Eigen::Matrix2d::Identity();
-  std::string stability;      // "elliptic", "hyperbolic", "parabolic" ("-" on a circle)
+  std::optional<Stability> stability;  // none on a circle (the 3-rod chain's: no return map)
   double rotationNumber = 0;  // elliptic: acos(tr / 2) / (2 pi), in (0, 1/2)
   Eigen::Vector2cd eigenvalues;
-  std::string symmetry;                     // the chain symmetries it is invariant under ("" if none / not a chain)
+  std::vector<ChainSymmetryOf> symmetries;  // the chain symmetries it is invariant under (none / not a chain)
+  bool invariantUnder(ChainSymmetry kind) const {
+    return std::any_of(symmetries.begin(), symmetries.end(), [&](const ChainSymmetryOf& s) { return s.kind == kind; });
+  }
+  bool fixedBy(ChainSymmetry kind) const {
+    return std::any_of(symmetries.begin(), symmetries.end(),
+                       [&](const ChainSymmetryOf& s) { return s.kind == kind && s.fixed; });
+  }
   std::optional<double> independentLength;  // route 2
   std::string independentRoute;
 };
@@ -100,7 +115,7 @@ Eigen::VectorXd endSwapFixedPoint(const Chain& chain, double w);
 std::vector<Eigen::VectorXd> halfTurnFixedPoints(const Chain& chain);
 // Perimeter of the ellipse with semi-axes a, b (complete elliptic integral of the second kind).
 double ellipsePerimeter(double a, double b);
-// The chain's three symmetries applied to stacked hinges: "mirror" (y -> -y), "end swap", "half turn".
-Eigen::VectorXd applyChainSymmetry(const Chain& chain, const std::string& name, const Eigen::VectorXd& q);
+// One of the chain's three symmetries (contracts/registry.hpp) applied to stacked hinges.
+Eigen::VectorXd applyChainSymmetry(const Chain& chain, ChainSymmetry symmetry, const Eigen::VectorXd& q);
 
 }  // namespace sl

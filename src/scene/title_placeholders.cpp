@@ -37,7 +37,7 @@ std::string fillTitlePlaceholders(const std::string& title, const Scene& scene,
     char length[32];
     std::snprintf(length, sizeof length, "%.4f", motion->length);
     values.push_back({run + "length}", length});
-    if (!motion->stability.empty()) values.push_back({run + "stability}", motion->stability});
+    if (motion->stability) values.push_back({run + "stability}", nameOf(*motion->stability)});
   }
   if (injectivityRadius) {
     char radius[32];

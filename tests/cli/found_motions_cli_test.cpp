@@ -131,7 +131,9 @@ TEST(FoundMotions, PeriodicRunsReturnToTheirStartAfterOnePeriod) {
   for (std::size_t i = 0; i < scene.runs.size(); ++i) {
     SCOPED_TRACE(i);
     const FoundMotion& motion = *scene.runs[i].initial.motion;
-    EXPECT_TRUE(motion.stability == "elliptic" || motion.stability == "hyperbolic") << motion.stability;
+    ASSERT_TRUE(motion.stability);
+    EXPECT_TRUE(motion.stability == Stability::Elliptic || motion.stability == Stability::Hyperbolic)
+        << nameOf(*motion.stability);
     longest = std::max(longest, motion.length);
     Trajectory run(scene.runs[i].chain, starts[i], scene.runs[i].config);
     const auto start = run.sampleAt(0);
@@ -160,7 +162,7 @@ TEST(FoundMotions, TitlePlaceholdersShowLengthAndStability) {
   const Scene scene = resolvedScene(text);
   char expected[128];
   std::snprintf(expected, sizeof expected, "%s %.4f; %.4f; {runs[1].stability} 3",
-                scene.runs[0].initial.motion->stability.c_str(), scene.runs[0].initial.motion->length,
+                nameOf(scene.runs[0].initial.motion->stability.value()).c_str(), scene.runs[0].initial.motion->length,
                 scene.runs[1].initial.motion->length);
   EXPECT_EQ(scene.title, expected);
 }

@@ -39,6 +39,9 @@ TEST(Registry, TablesAreComplete) {
   expectComplete(kLinkageLayouts, static_cast<int>(LinkageLayout::Overlay) + 1);
   expectComplete(kCameraModes, static_cast<int>(CameraMode::Orbit) + 1);
   expectComplete(kGlBackends, static_cast<int>(GlBackend::OsMesa) + 1);
+  expectComplete(kStabilities, static_cast<int>(Stability::Parabolic) + 1);
+  expectComplete(kChainSymmetries, static_cast<int>(ChainSymmetry::HalfTurn) + 1);
+  expectComplete(kDiscreteSeeds, static_cast<int>(DiscreteSeed::ShootingPath) + 1);
 }
 
 // Only a GPU is not llvmpipe: the software backends are the ones whose bytes the reference frames pin.

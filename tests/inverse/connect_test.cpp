@@ -23,7 +23,7 @@ void expectRoutesAgree(const std::vector<Connection>& found) {
   }
   EXPECT_GE(both, 1);
   ASSERT_TRUE(found[0].discrete.has_value());
-  EXPECT_EQ(found[0].discrete->seed, "sphere arc");  // the shortest, found by route 2 on its own
+  EXPECT_EQ(found[0].discrete->seed, DiscreteSeed::SphereArc);  // the shortest, found by route 2 on its own
   EXPECT_EQ(found[0].morseIndex, 0);                 // a shortest path passes no conjugate point
 }
 
@@ -146,8 +146,8 @@ TEST(Connect, LongChainTargetBeyondTheArcsFold) {
   EXPECT_LE(direct->endError, 1e-12);
   // Route 2 on its own: Newton from the arc fails, the descent reaches the same geodesic.
   const auto arc = sphereArcPaths(chain, from, to, 5 * kPathSamples)[0];
-  EXPECT_FALSE(discreteGeodesic(model, arc, "sphere arc").has_value());
-  const auto discrete = discreteGeodesic(model, arc, "sphere arc", true);
+  EXPECT_FALSE(discreteGeodesic(model, arc, DiscreteSeed::SphereArc).has_value());
+  const auto discrete = discreteGeodesic(model, arc, DiscreteSeed::SphereArc, true);
   ASSERT_TRUE(discrete.has_value());
   EXPECT_NEAR(discrete->length, direct->length, 1e-8);
   const auto path = shootingPath(model, from, direct->velocity, kPathSamples);
@@ -237,7 +237,7 @@ TEST(Connect, DiscreteRouteEndsOnTheTarget) {
   const ConstrainedModel model = ConstrainedModel::fromChain(chain);
   const Eigen::VectorXd from = pointOf(chain, 0.2, 0.1), to = pointOf(chain, 0.9, -1.0);
   const auto arcs = sphereArcPaths(chain, from, to, 40);
-  const auto g = discreteGeodesic(model, arcs[0], "sphere arc");
+  const auto g = discreteGeodesic(model, arcs[0], DiscreteSeed::SphereArc);
   ASSERT_TRUE(g.has_value());
   EXPECT_LT((g->path.back() - to).cwiseAbs().maxCoeff(), 1e-15);
   const auto shot = directConnection(model, &chain, from, to);

@@ -26,7 +26,7 @@ TEST(Periodic, FourRodChainHasThreeSimpleClosedGeodesics) {
         ++checked;
         EXPECT_NEAR(g.length, *g.independentLength, 1e-8) << g.independentRoute;
       }
-      if (g.symmetry.find("fixed by end swap") != std::string::npos) fixedSet = true;
+      if (g.fixedBy(ChainSymmetry::EndSwap)) fixedSet = true;
     }
     EXPECT_GE(simple, 3) << "L = " << length;
     EXPECT_GE(checked, 3) << "L = " << length;
@@ -42,7 +42,7 @@ TEST(Periodic, AsymmetricMassesStillThreeSimple) {
   int simple = 0;
   for (const ClosedGeodesic& g : found) {
     EXPECT_LT(std::max(g.positionClosure, g.velocityClosure), 1e-10);
-    EXPECT_EQ(g.symmetry.find("end swap"), std::string::npos);  // not an isometry here
+    EXPECT_FALSE(g.invariantUnder(ChainSymmetry::EndSwap));  // not an isometry here
     simple += g.simple;
   }
   EXPECT_GE(simple, 3);
@@ -59,7 +59,7 @@ TEST(Periodic, TriaxialEllipsoidPrincipalEllipses) {
   options.maxLength = 14;
   const auto found = findClosedGeodesics(model, nullptr, points, options);
   const double expected[3] = {ellipsePerimeter(a, b), ellipsePerimeter(a, c), ellipsePerimeter(b, c)};
-  const char* stability[3] = {"elliptic", "hyperbolic", "elliptic"};
+  const Stability stability[3] = {Stability::Elliptic, Stability::Hyperbolic, Stability::Elliptic};
   ASSERT_GE(found.size(), 3u);
   for (int i = 0; i < 3; ++i) {
     EXPECT_TRUE(found[static_cast<std::size_t>(i)].simple);
@@ -126,11 +126,12 @@ TEST(Periodic, MassesFarApartListEachClosedGeodesicOnce) {
   options.maxLength = 24;
   const auto found = chainClosedGeodesics(chain, options);
   int simple = 0;
+  const std::vector<ChainSymmetryOf> mirrorOnly{{ChainSymmetry::Mirror, false}};
   for (std::size_t i = 0; i < found.size(); ++i) {
     simple += found[i].simple;
     EXPECT_EQ(selfCheck(found[i]), SelfCheck::confirmed) << i;
     for (std::size_t j = 0; j < i; ++j)
-      EXPECT_FALSE(found[i].symmetry == "mirror" && found[j].symmetry == "mirror" &&
+      EXPECT_FALSE(found[i].symmetries == found[j].symmetries && found[i].symmetries == mirrorOnly &&
                    std::abs(found[i].length - found[j].length) < 1e-7 * found[i].length &&
                    std::abs(found[i].monodromy.trace() - found[j].monodromy.trace()) < 1e-6)
           << "closed geodesics " << j << " and " << i << " are one (length " << found[i].length << ")";
@@ -161,8 +162,8 @@ TEST(Periodic, EndSwapFixedCurve) {
   for (double w : {0.0, 0.7, 2.0, 4.5}) {
     const Eigen::VectorXd q = endSwapFixedPoint(chain, w);
     EXPECT_LT(model.values(q).cwiseAbs().maxCoeff(), 1e-14);
-    EXPECT_LT((applyChainSymmetry(chain, "end swap", q) - q).cwiseAbs().maxCoeff(), 1e-14);
-    EXPECT_GT((applyChainSymmetry(chain, "mirror", q) - q).cwiseAbs().maxCoeff(), 1e-3);
+    EXPECT_LT((applyChainSymmetry(chain, ChainSymmetry::EndSwap, q) - q).cwiseAbs().maxCoeff(), 1e-14);
+    EXPECT_GT((applyChainSymmetry(chain, ChainSymmetry::Mirror, q) - q).cwiseAbs().maxCoeff(), 1e-3);
   }
 }
 
