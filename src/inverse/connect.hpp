@@ -5,11 +5,10 @@
 //   length); Gauss-Newton on the end point q(1; v) - target, the derivative dq(1)/dv from the linearised
 //   flow (GeodesicFlow's variations: Jacobi fields through the start). Seeds: a fan of unit-speed directions
 //   from the start, each followed up to the length bound, its closest approaches to the target kept.
-//   Route 2, the discrete action: nodes q_0 = start, ..., q_K = target, the discrete Lagrangian
-//   sum_i |q_(i+1) - q_i|_M^2 / (2h) made stationary under c(q_i) = 0 with multipliers,
-//     M (q_(i+1) - 2 q_i + q_(i-1)) + G(q_i)^T mu_i = 0,  c(q_i) = 0,
-//   solved by Newton's method on the block-tridiagonal system (sparse LU, one block per node), the nodes
-//   doubled until the Richardson-extrapolated length and path stop changing. No ODE is integrated.
+//   Route 2, the discrete action (inverse/discrete_action.hpp): the discrete Lagrangian made stationary on nodes
+//   between the end points, the nodes doubled until the extrapolated length and path stop changing. No ODE is
+//   integrated.
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,6 +18,7 @@
 #include "contracts/registry.hpp"
 #include "contracts/run_control.hpp"
 #include "inverse/constrained_model.hpp"
+#include "inverse/discrete_action.hpp"
 #include "linkage/chain.hpp"
 
 namespace sl {
@@ -30,15 +30,6 @@ constexpr int kExactShootingFreedom = 10;
 constexpr int kMaxExactShots = 6;  // beyond it, per Newton solve (each costs d bare shots)
 // Beyond it, the fan's closest approaches shot as seeds (60 below).
 constexpr std::size_t kLongChainSeeds = 8;
-
-struct DiscreteGeodesic {
-  double length = 0;                  // Richardson-extrapolated
-  double lengthChange = 0;            // between the last two extrapolants: the error estimate
-  std::vector<Eigen::VectorXd> path;  // extrapolated, at t = j / kPathSamples
-  int nodes = 0;                      // the finest K
-  DiscreteSeed seed = DiscreteSeed::SphereArc;  // where the discrete path started
-  Eigen::VectorXd startVelocity;      // the first chord over its time step at the finest K: a shooting seed
-};
 
 struct Connection {
   double length = 0;         // route 1: |v|_M
@@ -67,12 +58,6 @@ std::optional<Connection> shootConnection(const ConstrainedModel& model, const E
                                           const Eigen::VectorXd& to, Eigen::VectorXd velocity,
                                           double tolerance = 1e-12);
 
-// Route 2 from a seed path (K + 1 nodes, K a multiple of kPathSamples, end points the fixed ones). `descend`:
-// where Newton's method fails from the seed, descend on the action first (long chains; docs/geometry.md, "Long
-// chains").
-std::optional<DiscreteGeodesic> discreteGeodesic(const ConstrainedModel& model, std::vector<Eigen::VectorXd> seed,
-                                                 DiscreteSeed seedKind, bool descend = false);
-
 // Shapes closer than this (the mass-weighted norm of their hinge difference) are one shape: a motion between them
 // would leave in a direction made of rounding noise. A motion back to the start is a closed geodesic (periodic).
 inline constexpr double kSameShapeDistance = 1e-9;
@@ -95,13 +80,6 @@ std::vector<std::vector<Eigen::VectorXd>> sphereArcPaths(const Chain& chain, con
 
 // Conjugate points along the geodesic from `from` with velocity v over time 1, strictly inside (chains).
 int morseIndexOnChain(const Chain& chain, const Eigen::VectorXd& from, const Eigen::VectorXd& velocity);
-
-// The same from the discrete action (any model): route 2's equations solved on route 1's path sampled at
-// `intervals` segments, the negative eigenvalues of their second variation on the constraints counted. O(n^3)
-// per node by dense blocks, no determinant: what long chains use (docs/geometry.md, "Morse index"). -1 when
-// route 2 does not converge there.
-int discreteMorseIndex(const ConstrainedModel& model, const Eigen::VectorXd& from, const Eigen::VectorXd& velocity,
-                       int intervals = 40);
 
 // The path of route 1 sampled at t = j / intervals, j = 0..intervals.
 std::vector<Eigen::VectorXd> shootingPath(const ConstrainedModel& model, const Eigen::VectorXd& from,
