@@ -8,6 +8,8 @@
 #include <cstring>
 #include <utility>
 
+#include "output/deflate_codes.hpp"
+
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
 #define SL_FAST_PNG_X86 1
@@ -15,6 +17,8 @@
 
 namespace sl {
 namespace {
+
+using namespace detail;  // the deflate pieces (output/deflate_codes.hpp)
 
 // === The byte-level work, twice: portable and AVX2. Both compute exactly the same results.
 
@@ -86,124 +90,6 @@ Kernels kernelsFor(FastPngPath path) {
 #endif
   return {filterUpPortable, equalMaskPortable};
 }
-
-// === Deflate (RFC 1951) pieces
-
-constexpr int kMinRun = 3, kMaxRun = 258;
-constexpr int kRunStart = 8;  // repeats that start a run (a run's rest after cuts of 258 may be shorter)
-constexpr int kLitLenSymbols = 286, kEndOfBlock = 256;
-
-// Length symbols 257..285: first length and extra bits (RFC 1951, section 3.2.5).
-constexpr std::array<int, 29> kLengthBase{3,  4,  5,  6,  7,  8,  9,  10, 11,  13,  15,  17,  19,  23, 27,
-                                          31, 35, 43, 51, 59, 67, 83, 99, 115, 131, 163, 195, 227, 258};
-constexpr std::array<int, 29> kLengthExtra{0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2,
-                                           2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0};
-
-struct LengthCode {
-  int symbol = 0, extraBits = 0, extraValue = 0;
-};
-
-constexpr std::array<LengthCode, kMaxRun + 1> makeLengthCodes() {
-  std::array<LengthCode, kMaxRun + 1> codes{};
-  for (int length = kMinRun; length <= kMaxRun; ++length) {
-    int i = length == kMaxRun ? 28 : 27;
-    while (kLengthBase[i] > length) --i;
-    codes[length] = {257 + i, kLengthExtra[i], length - kLengthBase[i]};
-  }
-  return codes;
-}
-constexpr std::array<LengthCode, kMaxRun + 1> kLengthCodes = makeLengthCodes();
-
-// Huffman code lengths for the counts, none longer than `limit`; a complete code (Kraft sum 1), as zlib's
-// inflate requires. One used symbol gets a partner of the same length. Longer than `limit`: the counts are
-// halved (rounded up, so a used symbol stays used) and the code built again.
-void huffmanLengths(const std::uint32_t* counts, int symbols, int limit, std::uint8_t* lengths) {
-  std::vector<std::uint64_t> weight(counts, counts + symbols);
-  std::fill(lengths, lengths + symbols, 0);
-  while (true) {
-    std::vector<std::pair<std::uint64_t, int>> leaves;
-    for (int s = 0; s < symbols; ++s)
-      if (weight[s] > 0) leaves.emplace_back(weight[s], s);
-    if (leaves.empty()) return;
-    if (leaves.size() == 1) {
-      const int s = leaves[0].second;
-      lengths[s] = 1;
-      lengths[s == 0 ? 1 : 0] = 1;
-      return;
-    }
-    std::sort(leaves.begin(), leaves.end());
-    // Two queues (sorted leaves, then internal nodes in order of creation): parents have higher indices.
-    const std::size_t m = leaves.size(), nodes = 2 * m - 1;
-    std::vector<std::uint64_t> w(nodes);
-    std::vector<std::size_t> parent(nodes, 0);
-    for (std::size_t i = 0; i < m; ++i) w[i] = leaves[i].first;
-    std::size_t leaf = 0, inner = m, next = m;
-    auto pick = [&] { return (leaf < m && (inner >= next || w[leaf] <= w[inner])) ? leaf++ : inner++; };
-    while (next < nodes) {
-      const std::size_t a = pick(), b = pick();
-      w[next] = w[a] + w[b];
-      parent[a] = parent[b] = next++;
-    }
-    std::vector<int> depth(nodes, 0);
-    for (std::size_t i = nodes - 1; i-- > 0;) depth[i] = depth[parent[i]] + 1;
-    if (*std::max_element(depth.begin(), depth.begin() + static_cast<std::ptrdiff_t>(m)) <= limit) {
-      for (std::size_t i = 0; i < m; ++i) lengths[leaves[i].second] = static_cast<std::uint8_t>(depth[i]);
-      return;
-    }
-    for (auto& x : weight) x = (x + 1) / 2;
-  }
-}
-
-// Canonical codes for the lengths (RFC 1951, section 3.2.2), bit-reversed: deflate sends a code's first bit first
-// and the bit writer fills from the least significant bit.
-void canonicalCodes(const std::uint8_t* lengths, int symbols, std::uint32_t* codes) {
-  int count[16] = {};
-  for (int s = 0; s < symbols; ++s) ++count[lengths[s]];
-  count[0] = 0;
-  std::uint32_t next[16] = {};
-  std::uint32_t code = 0;
-  for (int bits = 1; bits < 16; ++bits) {
-    code = (code + static_cast<std::uint32_t>(count[bits - 1])) << 1;
-    next[bits] = code;
-  }
-  for (int s = 0; s < symbols; ++s) {
-    const int length = lengths[s];
-    codes[s] = 0;
-    if (length == 0) continue;
-    std::uint32_t c = next[length]++, reversed = 0;
-    for (int b = 0; b < length; ++b, c >>= 1) reversed = (reversed << 1) | (c & 1);
-    codes[s] = reversed;
-  }
-}
-
-// Least-significant-bit-first writer into memory sized in advance plus 8 bytes of slack: every put stores eight
-// bytes and moves on by the whole bytes filled, so there is no branch (at most 7 + 57 bits are ever pending).
-class BitWriter {
- public:
-  explicit BitWriter(std::uint8_t* out) : out_(out) {}
-  void put(std::uint64_t bits, int count) {  // count <= 57: the 7 bits still pending and these fit the buffer
-    buffer_ |= bits << filled_;
-    filled_ += count;
-    if constexpr (std::endian::native == std::endian::little) {
-      std::memcpy(out_, &buffer_, 8);
-    } else {
-      for (int k = 0; k < 8; ++k) out_[k] = static_cast<std::uint8_t>(buffer_ >> (8 * k));
-    }
-    const int bytes = filled_ >> 3;
-    out_ += bytes;
-    buffer_ >>= 8 * bytes;
-    filled_ &= 7;
-  }
-  const std::uint8_t* position() const { return out_; }
-  std::uint8_t* finish() {  // the last byte padded with zeros (already stored by put)
-    return out_ + (filled_ > 0 ? 1 : 0);
-  }
-
- private:
-  std::uint8_t* out_;
-  std::uint64_t buffer_ = 0;
-  int filled_ = 0;
-};
 
 // === The filtered stream: every row "up"-filtered behind its filter byte.
 
