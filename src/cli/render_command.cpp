@@ -24,11 +24,13 @@
 #include "cli/frame_range.hpp"
 #include "cli/gl_choice.hpp"
 #include "cli/interrupt.hpp"
+#include "cli/number_options.hpp"
 #include "cli/progress.hpp"
 #include "cli/render_folder.hpp"
 #include "cli/run_report.hpp"
 #include "cli/scene_input.hpp"
 #include "cli/summary.hpp"
+#include "contracts/csv_format.hpp"
 #include "contracts/limits.hpp"
 #include "contracts/parallel_for.hpp"
 #include "frames/frame_builder.hpp"
@@ -57,6 +59,7 @@ struct RenderArguments {
   bool png = false, noPng = false, quiet = false, resume = false, replace = false, preview = false, noClobber = false;
   int threads = 0;  // --threads; 0: the cores this process may use
   int crf = -1;     // --crf; -1: not given
+  double speed = 0;     // --speed; 0: not given
   std::string quality;  // -q/--quality: a preset of size, frame rate and video quality
 };
 
@@ -181,6 +184,7 @@ RenderPlan planRender(const RenderArguments& args) {
                                        std::to_string(limits::kMaxVideoCrf)});
     scene.output.videoCrf = args.crf;
   }
+  if (args.speed > 0) scene.output.playbackSpeed = args.speed;
   if (!args.videoQuality.empty()) {
     if (const auto quality = parseKind(kVideoQualities, args.videoQuality)) {
       scene.output.videoQuality = *quality;
@@ -369,13 +373,17 @@ RenderCounts renderHere(const RenderPlan& plan, const nlohmann::json& info, bool
         videoFolder(video), info, fs::path(video).filename().string() + ".manifest.json",
         FrameManifest::Existing::replace, FrameManifest::Claim::join, nullptr, environment().lockWaitSeconds));
     recordRenderer(*videoManifests.back(), renderers);
-    VideoSettings settings{video, *videoFormatOfPath(video), scene.output.videoQuality,
-                           scene.output.size.width, scene.output.size.height, double(scene.output.fps)};
+    VideoSettings settings{video,
+                           *videoFormatOfPath(video),
+                           scene.output.videoQuality,
+                           scene.output.size.width,
+                           scene.output.size.height,
+                           scene.output.videoFps()};
     settings.cancelled = interruptRequested;
     settings.maxStallSeconds = environment().encoderWaitSeconds;
     settings.crf = scene.output.videoCrf;
-    settings.holdStartFrames = int(std::lround(scene.output.holdStart * scene.output.fps));
-    settings.holdEndFrames = int(std::lround(scene.output.holdEnd * scene.output.fps));
+    settings.holdStartFrames = int(std::lround(scene.output.holdStart * scene.output.videoFps()));
+    settings.holdEndFrames = int(std::lround(scene.output.holdEnd * scene.output.videoFps()));
     videoSinks.push_back(std::make_unique<VideoSink>(settings, *videoManifests.back()));
   }
   if (plan.png) {
@@ -620,6 +628,13 @@ void addRenderCommand(CLI::App& app) {
                    "N: the constant rate factor of mp4 and webm videos instead of --video-quality's (0 lossless "
                    "to 51; default: output.video_crf)")
       ->check(CLI::NonNegativeNumber);
+  command
+      ->add_option("--speed", args->speed,
+                   "X: the video plays X times as fast as the scene's time, every frame shown (2: a 20 s scene in "
+                   "10 s; 0.5: slow motion; " +
+                       shortest(limits::kMinPlaybackSpeed) + " to " + shortest(limits::kMaxPlaybackSpeed) +
+                       "; default: output.playback_speed, 1)")
+      ->check(finiteRange(limits::kMinPlaybackSpeed, limits::kMaxPlaybackSpeed));
   command->add_flag("--png", args->png, "write PNG frames (the default unless the scene says output.png: false)");
   command->add_flag("--no-png", args->noPng, "no PNG frames (with --video: the video only)");
   command->add_option("-q,--quality", args->quality,

@@ -41,6 +41,10 @@ inline constexpr int kMaxTrails = 32;
 inline constexpr double kMaxTrailFadeSeconds = 60;
 // A video may hold its first and its last frame this long (output.hold_start, output.hold_end).
 inline constexpr double kMaxHoldSeconds = 60;
+// A video plays the scene this many times as fast at most (output.playback_speed, --speed): 0.1 is slow motion
+// by ten, 10 a twenty-second scene in two seconds.
+inline constexpr double kMinPlaybackSpeed = 0.1;
+inline constexpr double kMaxPlaybackSpeed = 10;
 // A video's constant rate factor (output.video_crf, --crf): H.264's scale, 0 lossless to 51 (VP9's goes to 63).
 inline constexpr int kMaxVideoCrf = 51;
 // A run's sphere path keeps at most this many points (older ones thinned to every other), the newest

@@ -18,6 +18,10 @@ struct OutputSettings {
   VideoQuality videoQuality = VideoQuality::High;
   int videoCrf = -1;  // the encoder's constant rate factor (mp4, webm) instead of videoQuality's; -1: not given
   double holdStart = 0, holdEnd = 0;  // seconds a video shows its first and its last frame before and after playing
+  // How many times as fast as the scene's time a video plays: every frame shown, at fps x playbackSpeed frames a
+  // second (the PNG frames are the same at any speed).
+  double playbackSpeed = 1;
+  double videoFps() const { return double(fps) * playbackSpeed; }
 };
 
 }  // namespace sl

@@ -655,6 +655,19 @@ std::vector<SceneKey> describeKeys() {
        .meaning = "the video shows its last frame this long after it plays (time to read the end); the PNG frames "
                   "are unchanged",
        .allowed = "0..{max}"},
+      {.path = "output.playback_speed",
+       .type = KeyType::Number,
+       .minimum = limits::kMinPlaybackSpeed,
+       .maximum = limits::kMaxPlaybackSpeed,
+       .expected = "a factor from {min} to {max}",
+       .fallback = output.playbackSpeed,
+       .summary = "how many times as fast as the scene's time the video plays",
+       .target = "OutputSettings::playbackSpeed",
+       .meaning = "the video plays this many times as fast as the scene's time (2: a 20 s scene in 10 s; 0.5: slow "
+                  "motion), every frame shown at `fps` times this frames a second (`--speed` overrides); for smooth "
+                  "slow motion raise `fps` too. `hold_start` and `hold_end` are seconds of the video; the PNG frames "
+                  "are unchanged",
+       .allowed = "{min}..{max}"},
       {.path = "view",
        .type = KeyType::Object,
        .summary = "how the frames look",

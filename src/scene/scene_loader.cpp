@@ -555,6 +555,8 @@ void readOutput(const json& value, Scene& scene, std::vector<SceneProblem>& prob
   if (const auto hold = output.number("hold_start"); hold && output.checkBounds("hold_start", *hold))
     spec.holdStart = *hold;
   if (const auto hold = output.number("hold_end"); hold && output.checkBounds("hold_end", *hold)) spec.holdEnd = *hold;
+  if (const auto speed = output.number("playback_speed"); speed && output.checkBounds("playback_speed", *speed))
+    spec.playbackSpeed = *speed;
   const auto format = videoFormatOfPath(spec.video);
   for (SceneProblem& problem : checkImageSize(spec.size, format && traits(*format).needsEvenSize, "output")) {
     problems.push_back(std::move(problem));

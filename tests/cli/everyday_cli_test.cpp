@@ -284,6 +284,41 @@ TEST(EverydayCli, EncoderSettingsAndHolds) {
   EXPECT_EQ(probe.out, std::to_string(12 + 15 + 30) + "\n");  // 30 frames/s
 }
 
+// Playback speed (--speed, output.playback_speed): every frame shown, at fps x speed frames a second, so the video
+// lasts duration / speed; a hold is seconds of the video; the PNG frames do not change; out of range is refused with
+// nothing written.
+TEST(EverydayCli, PlaybackSpeed) {
+  TempFolder folder;
+  const auto render = [&](const std::string& out, std::vector<std::string> more) {
+    std::vector<std::string> args{"render", shippedScene("default.json"), "--size", "160x90", "--frames", "0:12",
+                                  "--quiet"};
+    args.insert(args.end(), more.begin(), more.end());
+    return runLinkage(args, folder.path());
+  };
+  ASSERT_EQ(render("", {"--video", "fast.mp4", "--speed", "2", "--set", "output.hold_end=0.5", "--out", "fast"}).code,
+            0);
+  ASSERT_EQ(render("", {"--video", "slow.mp4", "--set", "output.playback_speed=0.5", "--out", "slow"}).code, 0);
+  const auto probe = [&](const std::string& video) {
+    return runShell(
+               "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+               "stream=r_frame_rate,nb_read_frames -of csv=p=0 " +
+                   video,
+               folder.path())
+        .out;
+  };
+  EXPECT_EQ(probe("fast.mp4"), "60/1," + std::to_string(12 + 30) + "\n");  // 0.5 s held at 60 frames/s
+  EXPECT_EQ(probe("slow.mp4"), "15/1,12\n");
+  for (int k = 0; k < 12; ++k) {  // the same frames at any speed
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05d.png", k);
+    EXPECT_EQ(readFile(folder.path() / "fast" / name), readFile(folder.path() / "slow" / name)) << name;
+  }
+  const ProcessResult refused = render("", {"--video", "none.mp4", "--no-png", "--speed", "20"});
+  EXPECT_EQ(refused.code, 2);
+  EXPECT_NE(refused.err.find("--speed"), std::string::npos) << refused.err;
+  EXPECT_FALSE(fs::exists(folder.path() / "none.mp4"));
+}
+
 // -q/--quality: manim's presets set the size, the rate and the video quality, into a folder of their own; --size
 // still overrides the preset's size; an unknown preset is refused with the list.
 TEST(EverydayCli, QualityPresets) {

@@ -127,6 +127,10 @@ TEST(LimitBoundaries, ViewBounds) {
     expectRefused(baseScene(), "/output/" + key, above(limits::kMaxHoldSeconds), "output." + key);
     expectRefused(baseScene(), "/output/" + key, below(0.0), "output." + key);
   }
+  expectAccepted(baseScene(), "/output/playback_speed", limits::kMinPlaybackSpeed);
+  expectAccepted(baseScene(), "/output/playback_speed", limits::kMaxPlaybackSpeed);
+  expectRefused(baseScene(), "/output/playback_speed", below(limits::kMinPlaybackSpeed), "output.playback_speed");
+  expectRefused(baseScene(), "/output/playback_speed", above(limits::kMaxPlaybackSpeed), "output.playback_speed");
   json trails = baseScene();
   trails["linkage"] = {{"rods", 40}, {"L", 39}};
   trails["initial"] = {{"coords", std::vector<double>(38, 0.1)}, {"velocity", std::vector<double>(38, 0)}};
