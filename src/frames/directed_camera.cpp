@@ -101,7 +101,7 @@ struct RunTrack {
 
 namespace {
 
-void addRunEvents(const Scene& scene, std::size_t r, const RunTrack& track, Trajectory& run,
+void addRunEvents(const Scene& scene, std::size_t r, const RunTrack& track, const Trajectory& run,
                   std::vector<CameraEvent>& events) {
   const int frames = int(track.points.size());
   const int index = int(r);
@@ -226,12 +226,12 @@ void CameraReader::read(const SurveyFrame& frame) {
   }
 }
 
-CameraTargets CameraReader::targets(MotionSurvey& survey) const {
+CameraTargets CameraReader::targets(const MotionSurvey& survey) const {
   const std::vector<RunTrack>& tracks = *tracks_;
   const int frames = scene_.frameCount();
   const std::size_t runCount = scene_.runs.size();
   const Scene& scene = scene_;
-  std::vector<Trajectory>& runs = survey.runs;
+  const std::vector<Trajectory>& runs = survey.runs;
   CameraTargets targets;
   for (int k = 0; k < frames; ++k) {
     Vec3 sum;
@@ -319,7 +319,7 @@ bool plansDirectedCamera(const Scene& scene, const std::vector<InitialState>& st
          !starts.empty() && starts.front().spherePoint.size() > 0;
 }
 
-std::vector<Vec3> CameraReader::directions(MotionSurvey& survey) const {
+std::vector<Vec3> CameraReader::directions(const MotionSurvey& survey) const {
   return directCamera(targets(survey), scene_.output.fps, scene_.view.camera.viewDirection);
 }
 
@@ -334,7 +334,10 @@ CameraTargets cameraTargets(const Scene& scene, const std::vector<InitialState>&
 std::vector<Vec3> planDirectedCamera(const Scene& scene, const std::vector<InitialState>& starts,
                                      const ConfigurationView& view, const std::function<bool()>& cancelled) {
   if (!plansDirectedCamera(scene, starts, view)) return {};
-  return directCamera(cameraTargets(scene, starts, view, cancelled), scene.output.fps, scene.view.camera.viewDirection);
+  CameraReader reader(scene, view);
+  const MotionSurvey survey = surveyMotion(
+      scene, starts, true, [&](const SurveyFrame& frame) { reader.read(frame); }, cancelled);
+  return reader.directions(survey);
 }
 
 }  // namespace sl

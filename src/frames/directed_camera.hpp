@@ -70,8 +70,8 @@ class CameraReader {
   CameraReader(const Scene& scene, const ConfigurationView& view);
   ~CameraReader();
   void read(const SurveyFrame& frame);
-  CameraTargets targets(MotionSurvey& survey) const;
-  std::vector<Vec3> directions(MotionSurvey& survey) const;  // directCamera of the targets
+  CameraTargets targets(const MotionSurvey& survey) const;
+  std::vector<Vec3> directions(const MotionSurvey& survey) const;  // directCamera of the targets
 
  private:
   const Scene& scene_;

@@ -16,12 +16,6 @@
 #include "linkage/chart.hpp"
 
 namespace sl {
-namespace {
-
-constexpr double kPi = std::numbers::pi;
-double maxAbs(const Eigen::VectorXd& v) { return v.cwiseAbs().maxCoeff(); }
-
-}  // namespace
 
 double closedCurveLength(const ConstrainedModel& model, const std::function<Eigen::VectorXd(double)>& curve) {
   Richardson table;
@@ -31,7 +25,7 @@ double closedCurveLength(const ConstrainedModel& model, const std::function<Eige
     double length = 0;
     Eigen::VectorXd first = curve(0.0), last = first;
     for (int i = 1; i <= points; ++i) {
-      const Eigen::VectorXd q = i == points ? first : curve(2 * kPi * i / points);
+      const Eigen::VectorXd q = i == points ? first : curve(2 * std::numbers::pi * i / points);
       length += model.norm(q - last);
       last = q;
     }
@@ -47,7 +41,7 @@ Eigen::VectorXd endSwapFixedPoint(const Chain& chain, double w) {
   // cos a + cos b = L/2 round (0, 0) is star-shaped: (a, b) = r (cos w, sin w), r by bisection.
   const double half = chain.baseLength / 2;
   auto f = [&](double r) { return std::cos(r * std::cos(w)) + std::cos(r * std::sin(w)) - half; };
-  double lo = 0, hi = kPi;
+  double lo = 0, hi = std::numbers::pi;
   for (int i = 0; i < 200 && hi - lo > 1e-16; ++i) {
     const double mid = (lo + hi) / 2;
     (f(mid) > 0 ? lo : hi) = mid;
@@ -94,7 +88,7 @@ double circleLength(const Chain& chain, const ConstrainedModel& model) {
       for (int r = 0; r < 2; ++r) tangent(r, k) = hinges(r, k).derivatives()(0);
     return model.norm(ConstrainedModel::stack(tangent));
   };
-  return boost::math::quadrature::gauss_kronrod<double, 31>::integrate(speed, 0.0, 2 * kPi, 20, 1e-13);
+  return boost::math::quadrature::gauss_kronrod<double, 31>::integrate(speed, 0.0, 2 * std::numbers::pi, 20, 1e-13);
 }
 
 }  // namespace

@@ -13,8 +13,6 @@ namespace sl {
 
 namespace {
 
-double maxAbs(const Eigen::VectorXd& v) { return v.cwiseAbs().maxCoeff(); }
-
 double pathDistance(const std::vector<Eigen::VectorXd>& a, const std::vector<Eigen::VectorXd>& b) {
   double worst = 0;
   for (std::size_t j = 0; j < a.size() && j < b.size(); ++j) worst = std::max(worst, maxAbs(a[j] - b[j]));

@@ -19,6 +19,9 @@
 
 namespace sl {
 
+// The largest coordinate in size: the inverse problems' closures, steps and path differences are measured in it.
+inline double maxAbs(const Eigen::VectorXd& v) { return v.cwiseAbs().maxCoeff(); }
+
 struct QuadraticConstraint {
   struct Entry {
     int row, col;

@@ -8,11 +8,6 @@
 #include "inverse/distance_map.hpp"
 
 namespace sl {
-namespace {
-
-constexpr double kPi = std::numbers::pi;
-
-}  // namespace
 
 CutGraphShape cutGraphShape(const DistanceMap& map) {
   const int rows = static_cast<int>(map.phis.size()), cols = static_cast<int>(map.ts.size());
@@ -58,15 +53,15 @@ CutGraphShape cutGraphShape(const DistanceMap& map) {
   shape.edgeComponents = count(faces);
   // The closure: a conjugate cut point joins the cut faces within three faces of its own, and the next
   // conjugate cut point within three grid spacings.
-  const double cell = kPi / (rows - 1);
+  const double cell = std::numbers::pi / (rows - 1);
   const auto& locus = map.conjugateLocus;
   for (std::size_t k = 0; k < locus.size(); ++k) {
     if (!locus[k].cut) continue;
     const int self = faces + static_cast<int>(k);
     parent[static_cast<std::size_t>(self)] = self;
     const double phi = std::asin(std::clamp(locus[k].x.z(), -1.0, 1.0)), t = std::atan2(locus[k].x.y(), locus[k].x.x());
-    const int fi = std::clamp(static_cast<int>((phi + kPi / 2) / cell), 0, rows - 2);
-    const int fj = static_cast<int>(std::floor((t + kPi) / (2 * kPi) * cols));
+    const int fi = std::clamp(static_cast<int>((phi + std::numbers::pi / 2) / cell), 0, rows - 2);
+    const int fj = static_cast<int>(std::floor((t + std::numbers::pi) / (2 * std::numbers::pi) * cols));
     for (int di = -3; di <= 3; ++di)
       for (int dj = -3; dj <= 3; ++dj) {
         const int i = fi + di, j = ((fj + dj) % cols + cols) % cols;

@@ -13,8 +13,6 @@
 namespace sl {
 namespace {
 
-double maxAbs(const Eigen::VectorXd& v) { return v.cwiseAbs().maxCoeff(); }
-
 // A node's multipliers by least squares: G G^T mu = -G r with r = M (q_(i+1) - 2 q_i + q_(i-1)), the discrete
 // Euler-Lagrange residual without them. Long chains (a sparse model) from the sparse M and G, O(n) instead of
 // O(n^2) (docs/geometry.md, "Long chains"); small models by the dense formulas.

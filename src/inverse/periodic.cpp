@@ -41,8 +41,6 @@ double onOrbitTolerance(const std::vector<Eigen::VectorXd>& orbit, double length
   return std::max(onOrbitTolerance(length), 2 * sag);
 }
 
-double maxAbs(const Eigen::VectorXd& v) { return v.cwiseAbs().maxCoeff(); }
-
 // A unit tangent vector M-orthogonal to the unit velocity v at q (2-dimensional models).
 Eigen::VectorXd across(const ConstrainedModel& model, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
   const Eigen::MatrixXd basis = model.tangentBasis(q);
