@@ -9,6 +9,9 @@
 namespace sl {
 namespace {
 
+// Pixels a joined section of a grid line may stray from the points it replaces (on top of sphereGridPiece's 0.05).
+constexpr float kGridMergeTolerance = 0.05f;
+
 double dot(const V3& a, const V3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 V3 chartPoint(double phi, double t) { return {std::cos(phi) * std::cos(t), std::cos(phi) * std::sin(t), std::sin(phi)}; }
 
@@ -70,6 +73,9 @@ std::size_t SphereGridLines::draw(ShapeBatch& batch, const SphereCamera& camera,
   const double past = 1.0 / distance - 0.02;
   std::vector<PolylinePoint> run;
   const auto flush = [&] {
+    // Most lines bend far less on screen than the chord length allows for (a meridian seen edge-on is straight):
+    // sections that stay within kGridMergeTolerance of a longer chord are joined, fewer quads for the same line.
+    mergeStraightRuns(run, kGridMergeTolerance);
     if (run.size() >= 2) batch.polyline(run);
     run.clear();
   };

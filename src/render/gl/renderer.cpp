@@ -4,7 +4,8 @@
 // drawn once into a cached layer and copied into each frame (the same bytes as drawing it, at the cost of a
 // copy). With a turning one, what does not depend on the camera's direction is cached as well: the plain opaque
 // ball (the lights turn with the camera) and the glass ball are drawn once per panel and copied, and per frame only
-// the opaque sphere's grid and poles are drawn over it, as lines (render/sphere_grid.hpp, shaders/sphere_grid.frag).
+// the opaque sphere's grid and poles are drawn over it, as lines tinting the lit ball (render/sphere_grid.hpp,
+// shaders/sphere_grid.frag).
 
 #include "render/renderer.hpp"
 
@@ -37,6 +38,8 @@ std::vector<std::string> stage(const char* file) { return {"common.glsl", file};
 std::vector<std::string> sphereStage(const char* look) { return {"common.glsl", look, "sphere.frag"}; }
 // The opaque sphere's grid: one program for its lines, one for its pole caps (the file before sphere_grid.frag).
 std::vector<std::string> gridStage(const char* part) { return {"common.glsl", part, "sphere_grid.frag"}; }
+// How every shape meets the frame: premultiplied colours over what is there.
+void blendOver() { glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA); }
 
 }  // namespace
 
@@ -310,7 +313,10 @@ struct Renderer::Impl {
     upload(grid);
     if (ribbons > 0) {
       setSphereUniforms(gridRibbons, list, view);
+      glUniform1f(gridRibbons.uniform("uOutline"), float(outline));
+      glBlendFunc(GL_DST_COLOR, GL_ZERO);  // the ribbons tint the lit ball (shaders/sphere_grid.frag)
       drawTriangles(0, ribbons);
+      blendOver();
     }
     if (caps > 0) {
       setSphereUniforms(poleCaps, list, view);
@@ -385,7 +391,7 @@ struct Renderer::Impl {
     context.bindFramebuffer();
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied alpha
+    blendOver();
     frameBlank = true;
     for (const PanelDrawing& panel : list.panels) drawPanel(list, panel);
     fillBackground(list);
