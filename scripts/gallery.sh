@@ -22,6 +22,7 @@ cut-locus	3.6	A half fan of 48 geodesics from one shape over the distance from i
 default	10	The drag-release geodesic on the configuration sphere beside its four-rod chain, hinge 2 trailing its recent positions.
 fan	7	Where K > 0 the fan of 32 geodesics from one start focuses again: the wavefront shrinks to a point.
 five-rods	10	Five rods move on S³, drawn in a ball: the distance from the centre is the angle from the start over π.
+holonomy	5.9	Three motions end where the next begins, a triangle on the sphere: the arrows carry one vector round it, and the plot climbs to the holonomy, the curvature the triangle holds (angle sum − π = ∫K dA).
 jacobi	8	The Jacobi field's zeros are conjugate points: each is marked on the path and written with its time in the plot.
 masses-curvature	10	All the mass on the rods: the rods are drawn thick, the massless hinges without balls, over the reshaped curvature.
 masses	10	One push, three mass placements, three different paths; ball and rod sizes in the linkage panel show where the mass sits.

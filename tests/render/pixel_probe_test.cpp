@@ -255,6 +255,30 @@ TEST_F(PixelProbe, NothingOnTheSphereHangsPastItsOutline) {
   EXPECT_EQ(drawnGlyph, 0) << drawnGlyph << " of " << probedGlyph << " pixels just outside the outline by an ellipse";
 }
 
+// The opaque sphere's grid tints the lit ball (shaders/sphere_grid.frag, multiplied into it): on the equator the ball
+// is darker by the grid colour's share, hue kept (red still above green above blue), and beside the line it is the
+// bare ball. A ribbon that lit itself wrongly, or drew white, or missed the ball would fail here.
+TEST_F(PixelProbe, TheGridDarkensTheBallAlongItsLines) {
+  const ImageSize size{1280, 720};
+  Renderer large(settings, size);
+  const Image picture = large.render(frame);
+  const SphereCamera view(settings.camera, frame.time, panelRect(settings, PanelKind::Sphere, size));
+  auto at = [&](double phi, double t) {
+    const Vec3 p = onSphere(phi * kDeg, t * kDeg);
+    const P2 q = view.project({p.x, p.y, p.z});
+    return pixel(picture, int(std::lround(q.x)), int(std::lround(q.y)));
+  };
+  for (const double t : {5.0, 10.0}) {
+    const Rgb8 line = at(0.0, t), bare = at(3.75, t);  // the equator; half way to the next parallel
+    ASSERT_TRUE(isCream(bare)) << int(bare.r) << " " << int(bare.g) << " " << int(bare.b);
+    const double ratio = double(line.r) / bare.r;
+    EXPECT_GT(ratio, 0.55) << "t = " << t;  // not darker than the grid's own colour over the cream
+    EXPECT_LT(ratio, 0.85) << "t = " << t;  // but visibly darker: the line is there
+    EXPECT_GT(line.r, line.g);
+    EXPECT_GT(line.g, line.b);
+  }
+}
+
 // Time on the sphere: the current state carries a direction mark, a dark chevron just past the ball on the side it
 // moves to (not on the side it came from), and at the limb the chevron stays within the outline. The state here is
 // off the view's centre and moving towards it: the ball, lifted higher than the path, is shifted outwards on the
