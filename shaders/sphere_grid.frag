@@ -10,7 +10,7 @@
 // its light plus the rim and highlight, so multiplying by mix(1, grid / cream, a) gives the lit line colour's share
 // a of the light with no ray or light per pixel (the rim and highlight dimmed under a line as the colour is). A ray
 // and three lights for every pixel of about 1,900 thin quads was a third of a turning frame (docs/rendering.md).
-// The outline cuts them by the circle the ball's silhouette is (radius uOutline pixels about uCentre).
+// The outline cuts them by the circle the ball's silhouette is (radius uOutline pixels about uCentre), a pixel in.
 in vec2 vLocal;
 flat in int vKind;
 in vec3 vParams;
@@ -33,7 +33,9 @@ float poleCap(vec3 hit) {
 
 void main() {
 #if GRID_PART == 0
-  float cover = edgeCoverage(uOutline - length(gl_FragCoord.xy - uCentre));
+  // Only where the ball covers the whole pixel (a pixel inside its anti-aliased edge): at the edge the frame holds
+  // the background too, which a tint would darken, and a transparent frame would not.
+  float cover = edgeCoverage(uOutline - 1.0 - length(gl_FragCoord.xy - uCentre));
   float alpha = vColor.a * bandCoverage(vParams.x, abs(vLocal.y)) * cover;
   if (alpha <= 0.0) discard;
   fragColor = vec4(mix(vec3(1.0), min(vColor.rgb / uSphereColor, vec3(1.0)), alpha), 1.0);
