@@ -7,7 +7,10 @@
 namespace sl {
 namespace {
 
-constexpr float kMargin = 1.0f;  // pixels of quad beyond the shape, room for the anti-aliased edge
+// Pixels of quad beyond the shape, room for the anti-aliased edge: a pixel's coverage reaches zero where its centre is
+// half a pixel past the edge (common.glsl's edgeCoverage and bandCoverage), so half a pixel is all a quad needs.
+// Thin quads pay for every pixel of margin: a 1.1 px grid line's ribbon was 3.1 px wide with a whole pixel's.
+constexpr float kMargin = 0.5f;
 
 P2 operator+(P2 a, P2 b) { return {a.x + b.x, a.y + b.y}; }
 P2 operator-(P2 a, P2 b) { return {a.x - b.x, a.y - b.y}; }
