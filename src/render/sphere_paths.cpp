@@ -198,14 +198,14 @@ std::optional<Box> drawBall(const RunFrame& run, const BallPlace& ball, const Pa
   std::optional<Box> arrowhead;
   if (!ball.shown) return arrowhead;
   const float unit = context.unit;
-  const ColorRGB& background = context.settings.background;
   const float radius = ball.radius;
   const P2 at = ball.at;
   const float mark = markUnit(unit);
-  // The arrowhead starts clear of the ball: measured from the path (markAt) it could fall under the ball, which is
-  // lifted off the surface and so shifted outwards on the screen near the limb. A filled arrowhead (a ribbon
-  // tapering from its base to a point) reads as a direction at any angle, where two strokes pointing up and to the
-  // right read as the digit 7.
+  // The arrowhead starts just past the ball's rim: measured from the path (markAt) it could fall under the ball,
+  // which is lifted off the surface and so shifted outwards on the screen near the limb. A filled arrowhead (a
+  // ribbon tapering from its base to a point) reads as a direction at any angle, where two strokes pointing up and to
+  // the right read as the digit 7. It is the run's colour with the ball's dark rim, so ball and arrowhead read as one
+  // thing pointing the way it moves: a black one on a light halo, apart from the ball, read as a mouse pointer.
   auto drawArrowhead = [&] {
     if (run.stopped || !ball.headingKnown || !ball.marksDirection) return;
     const P2 d = ball.heading, n{-d.y, d.x};
@@ -213,7 +213,7 @@ std::optional<Box> drawBall(const RunFrame& run, const BallPlace& ball, const Pa
     // twice the ball's size at 320x180).
     const float size = std::min(mark, std::max(unit, 0.15f * radius));
     const float halfWidth = (ball.behind ? 0.8f : 0.9f) * size;
-    const float clear = radius + 3 * size;
+    const float clear = radius + 1.0f * size;
     const float ox = ball.markAt.x - at.x, oy = ball.markAt.y - at.y, b = ox * d.x + oy * d.y;
     const float exit = -b + std::sqrt(std::max(b * b - (ox * ox + oy * oy - clear * clear), 0.0f));
     const float from = std::max(clear, exit);
@@ -239,9 +239,8 @@ std::optional<Box> drawBall(const RunFrame& run, const BallPlace& ball, const Pa
     if (ball.behind) {
       draw(back, 0, ghost(palette::ink));
     } else {
-      const Rgba halo{background.r, background.g, background.b, 0.75f};
-      draw(front, 0.9f * size, halo);
-      draw(front, 0, palette::ink);
+      draw(front, 0.5f * size, palette::withAlpha(palette::ink, 0.75f));
+      draw(front, 0, toRgba(run.color));
       const float w = halfWidth + 0.9f * size;
       arrowhead = Box{std::min({tip.x, left.x, right.x}) - w, std::min({tip.y, left.y, right.y}) - w,
                       std::max({tip.x, left.x, right.x}) + w, std::max({tip.y, left.y, right.y}) + w};

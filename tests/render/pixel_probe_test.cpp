@@ -279,13 +279,17 @@ TEST_F(PixelProbe, TheGridDarkensTheBallAlongItsLines) {
   }
 }
 
-// Time on the sphere: the current state carries a direction mark, a dark chevron just past the ball on the side it
-// moves to (not on the side it came from), and at the limb the chevron stays within the outline. The state here is
-// off the view's centre and moving towards it: the ball, lifted higher than the path, is shifted outwards on the
-// screen, and a heading measured from the ball's centre would point outwards instead.
+// Time on the sphere: the current state carries a direction mark, an arrowhead in the run's colour just past the ball
+// on the side it moves to (not on the side it came from), and at the limb the arrowhead stays within the outline. The
+// state here is off the view's centre and moving towards it: the ball, lifted higher than the path, is shifted outwards
+// on the screen, and a heading measured from the ball's centre would point outwards instead.
 TEST_F(PixelProbe, TheCurrentStateCarriesADirectionMarkWithinTheOutline) {
   const ImageSize size{1280, 720};
-  Renderer large(settings, size);
+  // The mark is in the run's colour, as its path is: the path faded out (drawn 100 s ago, fading over 1 s), so
+  // that the run's colour near the ball is the ball's and the mark's alone. The heading still comes from the path.
+  ViewSettings faded = settings;
+  faded.pathFadeSeconds = 1;
+  Renderer large(faded, size);
   const PixelRect panel = panelRect(settings, PanelKind::Sphere, size);
   const SphereCamera view(settings.camera, frame.time, panel);
   auto lifted = [](const Vec3& p, double r) { return V3{p.x * r, p.y * r, p.z * r}; };
@@ -297,18 +301,17 @@ TEST_F(PixelProbe, TheCurrentStateCarriesADirectionMarkWithinTheOutline) {
     run.pathTimes.clear();
     for (int k = 0; k <= 60; ++k) {
       run.path.push_back(onSphere(7.5 * kDeg, (t0 + (t1 - t0) * k / 60.0) * kDeg));
-      run.pathTimes.push_back(3.0);
+      run.pathTimes.push_back(moving.time - 100);
     }
     run.current = run.path.back();
     return moving;
   };
-  auto isInk = [](Rgb8 c) { return c.r < 110 && c.g < 110 && c.b < 110 && std::abs(c.r - c.b) < 30; };
-  // Dark neutral pixels within 3 px of `at`.
+  // Pixels of the run's colour within 3 px of `at`.
   auto inkNear = [&](const Image& picture, P2 at) {
     int ink = 0;
     for (int dy = -3; dy <= 3; ++dy)
       for (int dx = -3; dx <= 3; ++dx)
-        ink += isInk(pixel(picture, int(std::lround(at.x)) + dx, int(std::lround(at.y)) + dy));
+        ink += isRunRed(pixel(picture, int(std::lround(at.x)) + dx, int(std::lround(at.y)) + dy));
     return ink;
   };
   const FrameState inwards = runFrom(70, 40);
@@ -320,7 +323,7 @@ TEST_F(PixelProbe, TheCurrentStateCarriesADirectionMarkWithinTheOutline) {
   ASSERT_GT(length, 3);
   const P2 heading{float((on.x - back.x) / length), float((on.y - back.y) / length)};
   const float radius = std::max(3.5f, float(0.055 * view.pixelsPerUnitAt(lifted(state, 1.055))));
-  const float reach = radius + 7.5f;  // the chevron's tip is 8.5 frame units past the ball's edge
+  const float reach = radius + 6.0f;  // the arrowhead runs from 1 to 11 frame units past the ball's edge
   const P2 ahead{ball.x + reach * heading.x, ball.y + reach * heading.y};
   const P2 behind{ball.x - reach * heading.x, ball.y - reach * heading.y};
   EXPECT_GE(inkNear(picture, ahead), 3) << "no direction mark ahead of the state";
@@ -380,14 +383,14 @@ TEST_F(PixelProbe, CoincidingStatesShareOneDirectionMark) {
   ASSERT_GT(length, 3);
   const P2 heading{float((on.x - back.x) / length), float((on.y - back.y) / length)}, across{-heading.y, heading.x};
   const float radius = std::max(3.5f, float(0.055 * view.pixelsPerUnitAt(lifted(run.current, 1.055))));
-  auto isInk = [](Rgb8 c) { return c.r < 110 && c.g < 110 && c.b < 110 && std::abs(c.r - c.b) < 30; };
-  // Dark neutral pixels past the balls' edge (the chevron's tip is 8.5 frame units past it), across the whole group.
+  // Pixels of the first run's colour (the group's mark is in the colour of the run that draws it) past the balls'
+  // edge (the arrowhead runs from 1 to 11 frame units past it), across the whole group.
   auto inkAhead = [&](const Image& picture) {
     int ink = 0;
     for (float along = radius + 1.5f; along <= radius + 14; along += 1)
       for (float side = -2.5f * radius; side <= 2.5f * radius; side += 1)
-        ink += isInk(pixel(picture, int(std::lround(ball.x + along * heading.x + side * across.x)),
-                           int(std::lround(ball.y + along * heading.y + side * across.y))));
+        ink += isRunRed(pixel(picture, int(std::lround(ball.x + along * heading.x + side * across.x)),
+                              int(std::lround(ball.y + along * heading.y + side * across.y))));
     return ink;
   };
   const int alone = inkAhead(large.render(one)), together = inkAhead(large.render(two));
