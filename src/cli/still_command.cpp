@@ -2,7 +2,8 @@
 // At a frame time of the scene it is that frame of a full render, pixel for pixel: the same builder samples the
 // same history up to it. Between frame times the history is sampled at a multiple of the scene's frame rate
 // that has T as a frame time (path points per frame divided alike, so the path is as dense), and the state
-// shown is the one at T exactly.
+// shown is the one at T exactly; the plots' axes and the linkage panel's box are read off the video's own frames,
+// so that a still between two frames is drawn on the axes of the frames on either side.
 
 #include <algorithm>
 #include <cmath>
@@ -111,7 +112,8 @@ void runStill(StillArguments args) {
   std::optional<FrameBuilder> builder;
   FrameState state;
   try {
-    builder.emplace(scene, starts, startRuns(scene, starts), startFamilies(scene, starts), interruptRequested);
+    builder.emplace(scene, starts, startRuns(scene, starts), startFamilies(scene, starts), interruptRequested,
+                    multiple);
     for (int k = 0; k < frame && !interruptRequested(); ++k) builder->advanceTo(k);
     stopIfInterrupted("nothing was written");
     state = builder->frame(frame);

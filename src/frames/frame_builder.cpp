@@ -141,7 +141,8 @@ ColorRGB runColor(const Scene& scene, size_t run) {
 }
 
 FrameBuilder::FrameBuilder(const Scene& scene, const std::vector<InitialState>& starts, std::vector<Trajectory> runs,
-                           std::vector<std::vector<Trajectory>> families, const std::function<bool()>& cancelled)
+                           std::vector<std::vector<Trajectory>> families, const std::function<bool()>& cancelled,
+                           int videoStride)
     : scene_(scene),
       runs_(std::move(runs)),
       families_(std::move(families)),
@@ -153,7 +154,7 @@ FrameBuilder::FrameBuilder(const Scene& scene, const std::vector<InitialState>& 
                                              !scene.distanceFrom, scene.holonomyPoints)),
       title_(fillTitlePlaceholders(scene.title, scene, injectivityRadiusOf(sphereDecoration_))),
       shortTitle_(fillTitlePlaceholders(scene.shortTitle, scene, injectivityRadiusOf(sphereDecoration_))) {
-  surveyBeforeFirstFrame(starts, cancelled);
+  surveyBeforeFirstFrame(starts, cancelled, videoStride);
   for (size_t i = 0; i < runs_.size(); ++i) {
     RunFrame& frame = history_[i].frame;
     frame.name = scene.runs[i].name;
@@ -173,9 +174,10 @@ FrameBuilder::FrameBuilder(const Scene& scene, const std::vector<InitialState>& 
 // What must be known before the first frame, from one survey of the whole motion (frames/motion_survey.hpp) that
 // both readers share: the plots' ranges and the linkage box, and the directed camera.
 void FrameBuilder::surveyBeforeFirstFrame(const std::vector<InitialState>& starts,
-                                          const std::function<bool()>& cancelled) {
+                                          const std::function<bool()>& cancelled, int videoStride) {
   OverviewReader overview(scene_,
-                          sphereDecoration_ && sphereDecoration_->transport ? &*sphereDecoration_->transport : nullptr);
+                          sphereDecoration_ && sphereDecoration_->transport ? &*sphereDecoration_->transport : nullptr,
+                          videoStride);
   std::optional<CameraReader> camera;
   if (plansDirectedCamera(scene_, starts, view_)) camera.emplace(scene_, view_);
   if (!overview.needed() && !camera) return;

@@ -25,9 +25,11 @@ class FrameBuilder {
   // runs: one Trajectory per scene run, in the scene's order, run i from starts[i] on the run's own chain.
   // families[i]: the members of run i's family (empty without one; families may be empty for none at all).
   // The ball view of 5+ rods is centred on run 0's start. `cancelled` is asked during the builder's own
-  // integration (the plots' overview), which then throws RunCancelled.
+  // integration (the plots' overview), which then throws RunCancelled. `videoStride`: the video's frames are every
+  // videoStride-th of this scene's (a still between frame times); the plots' axes and the linkage box are the video's.
   FrameBuilder(const Scene& scene, const std::vector<InitialState>& starts, std::vector<Trajectory> runs,
-               std::vector<std::vector<Trajectory>> families = {}, const std::function<bool()>& cancelled = {});
+               std::vector<std::vector<Trajectory>> families = {}, const std::function<bool()>& cancelled = {},
+               int videoStride = 1);
 
   int frameCount() const { return frameCount_; }
   // Frame k; k must not be smaller than the previous call's.
@@ -59,7 +61,8 @@ class FrameBuilder {
     SharedTrack<double> curvatureLow, curvatureHigh;
   };
 
-  void surveyBeforeFirstFrame(const std::vector<InitialState>& starts, const std::function<bool()>& cancelled);
+  void surveyBeforeFirstFrame(const std::vector<InitialState>& starts, const std::function<bool()>& cancelled,
+                              int videoStride);
   void sampleFrame(int k);  // advance the history to frame k (k = sampled_ + 1)
   void sampleRunAt(size_t run, double t, bool isFrameTime);
   void markStopped(std::size_t run, double t);

@@ -55,9 +55,10 @@ std::array<double, 2> curvatureThroughVelocity(const Chain& chain, const Sample&
   return sectionalCurvatureThrough(ChainConstants(chain), sample.spherePoint, sample.sphereVelocity);
 }
 
-OverviewReader::OverviewReader(const Scene& scene, const SphereTransport* transport)
+OverviewReader::OverviewReader(const Scene& scene, const SphereTransport* transport, int videoStride)
     : scene_(scene),
       transport_(transport),
+      videoStride_(std::max(videoStride, 1)),
       divergence_(scene.runs.size()),
       energy_(scene.runs.size()),
       jacobi_(scene.runs.size()),
@@ -77,6 +78,7 @@ OverviewReader::OverviewReader(const Scene& scene, const SphereTransport* transp
 }
 
 void OverviewReader::read(const SurveyFrame& frame) {
+  if (frame.index % videoStride_ != 0) return;
   const double nan = std::nan("");
   const std::size_t runCount = frame.runs.size();
   const std::vector<const Sample*>& samples = frame.runs;
@@ -156,7 +158,7 @@ MotionOverview OverviewReader::finish(const MotionSurvey& survey) const {
     if (!(lo <= hi) && !plot.roundoff) {
       // Say why: runs that stopped at once, or values a log axis cannot show (exactly zero).
       for (std::size_t r = 0; r < runCount; ++r)
-        if (runs[r].stop() && runs[r].stop()->time <= scene.frameTime(std::min(frames - 1, 1)))
+        if (runs[r].stop() && runs[r].stop()->time <= scene.frameTime(std::min(frames - 1, videoStride_)))
           plot.earlyStops.push_back({scene.runs[r].name, runs[r].stop()->time, runs[r].stop()->reason});
       plot.emptiness = !plot.earlyStops.empty() ? PlotEmptiness::RunsStopped
                            : spec.logY                  ? PlotEmptiness::ZeroOnLogAxis

@@ -34,10 +34,12 @@ struct MotionOverview {
 };
 
 // Reads the overview off the survey (frames/motion_survey.hpp), frame by frame. A holonomy plot's values come from
-// `transport`, the polygon the sphere panel draws (its sides' swept curvature).
+// `transport`, the polygon the sphere panel draws (its sides' swept curvature). `videoStride`: the video's frames
+// are every videoStride-th of the scene's, and only those are read (a still between frame times samples the motion
+// that many times as densely, and its axes and box must be the video's).
 class OverviewReader {
  public:
-  OverviewReader(const Scene& scene, const SphereTransport* transport);
+  OverviewReader(const Scene& scene, const SphereTransport* transport, int videoStride = 1);
   bool needed() const { return !scene_.view.plots.empty() || wantBox_; }  // plots, or a linkage panel to fit
   bool wantsMembers() const { return wantSpread_; }
   void read(const SurveyFrame& frame);
@@ -46,6 +48,7 @@ class OverviewReader {
  private:
   const Scene& scene_;
   const SphereTransport* transport_;
+  int videoStride_;
   bool wantBox_, wantSpread_, wantSectional_;
   std::array<double, 4> box_{0, 0, 0, 0};
   // Per run, per frame: divergence from run 0 (run 0's unused), energy error, Jacobi size, the family's spread, the

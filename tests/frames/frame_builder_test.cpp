@@ -5,16 +5,17 @@
 
 #include <gtest/gtest.h>
 
-#include "contracts/registry.hpp"
 #include "contracts/limits.hpp"
+#include "contracts/registry.hpp"
 #include "frames/frame_builder.hpp"
 #include "geometry/sectional_curvature.hpp"
-#include "linkage/chain_constants.hpp"
-#include "simulation/trajectory.hpp"
 #include "linkage/chain.hpp"
+#include "linkage/chain_constants.hpp"
 #include "scene/scene_loader.hpp"
 #include "simulation/family.hpp"
 #include "simulation/initial_state.hpp"
+#include "simulation/trajectory.hpp"
+#include "support/scene_files.hpp"
 
 namespace sl {
 namespace {
@@ -407,6 +408,28 @@ TEST(FrameBuilder, PlotRangesAreTheWholeAnimationsFromTheFirstFrame) {
   Scene fixed = twoRunScene();
   fixed.view.plots[0].yRange = std::array<double, 2>{1e-12, 1.0};
   EXPECT_EQ(builderFor(fixed).frame(0).plots[0].valueRange, (std::array<double, 2>{1e-12, 1.0}));
+}
+
+// A still between frame times samples the motion m times as densely (cli/still_command.cpp) and reads the plots'
+// axes and the linkage box off every m-th frame, the video's: comparison.json near its stop, where the extra
+// frame times reach other values (without the stride the axes differ: 1e-13..1e-4 against the video's 1e-11..1e-3).
+TEST(FrameBuilder, AStillBetweenFramesKeepsTheVideosAxesAndBox) {
+  const Scene video = loadScene(testing::shippedScene("comparison.json"));
+  Scene dense = video;
+  const int m = 3;
+  dense.output.fps *= m;
+  const FrameState videoFrame = builderFor(video).frame(0);
+  const FrameState strided = FrameBuilder(dense, startsOf(dense), runsOf(dense), familiesOf(dense), {}, m).frame(0);
+  const FrameState unstrided = builderFor(dense).frame(0);
+  ASSERT_EQ(videoFrame.plots.size(), 2u);
+  bool anyDiffers = false;
+  for (std::size_t p = 0; p < videoFrame.plots.size(); ++p) {
+    ASSERT_TRUE(videoFrame.plots[p].valueRange) << p;
+    EXPECT_EQ(strided.plots[p].valueRange, videoFrame.plots[p].valueRange) << p;
+    anyDiffers = anyDiffers || unstrided.plots[p].valueRange != videoFrame.plots[p].valueRange;
+  }
+  EXPECT_TRUE(anyDiffers) << "the denser frames reach the video's values alone: the check cannot fail";
+  EXPECT_EQ(strided.linkageBox, videoFrame.linkageBox);
 }
 
 // A plot that stays empty for the whole animation says why: here the published run stops at once on the seam.
