@@ -16,6 +16,7 @@
 #include "render/plane_view.hpp"
 #include "render/renderer.hpp"
 #include "render/sphere_camera.hpp"
+#include "render/sphere_parts.hpp"
 
 namespace sl {
 namespace {
@@ -154,6 +155,43 @@ TEST_F(PixelProbe, CurrentStateBehindTheSphereIsAHollowRing) {
 
 // A path's section behind the sphere is drawn faint and dashed over it: along it some pixels are tinted (dashes)
 // and some are the bare sphere (gaps), and no pixel is the run's full colour.
+// Over a dark-ended colour map the far side's dashes lie on a light halo. The halo belongs to a line, not a mark: it
+// thins with the frame (a mark's floor of one 720p pixel made the dashes at 320x180, halo and all, wider than the
+// path in front on a ball four times smaller).
+TEST_F(PixelProbe, FarSideHalosThinWithTheFrame) {
+  auto decoration = std::make_shared<SphereDecoration>();
+  SphereField field{SphereColoring::Bending, false, 32, 64, {}, 0.0, 1.0};
+  field.values.assign(std::size_t(field.phiCount * field.tCount), 0.0f);
+  decoration->field = field;
+  FrameState dark = frame;
+  dark.sphereDecoration = decoration;
+  dark.runs[0].current = dark.runs[0].path.front();  // the ball in front: no hidden ring on a halo
+  // Every faint line's halo is the same white: the dashes' are told from the hidden poles' rings by where they are.
+  const Rgba halo = detail::farSideHalo(detail::ghost(toRgba(dark.runs[0].color)));
+  auto widestHalo = [&](ImageSize size) {
+    PixelRect rect = panelRect(settings, PanelKind::Sphere, size);
+    rect.width -= std::min(0.24f * rect.width, 0.45f * rect.height);  // framed left of the colour bar
+    const SphereCamera view(settings.camera, dark.time, rect);
+    const float unit = frameUnit(size);
+    float widest = 0;
+    for (const PanelDrawing& panel : FrameComposer(settings, size).compose(dark).panels)
+      for (const ShapeVertex& v : panel.shapes.vertices()) {
+        bool byPole = false;
+        for (const double z : {-1.0, 1.0}) {
+          const P2 pole = view.project({0, 0, z});
+          byPole = byPole || std::hypot(v.x - pole.x, v.y - pole.y) < 12 * std::max(unit, 1.0f);
+        }
+        if (!byPole && v.r == halo.r && v.g == halo.g && v.b == halo.b && v.a == halo.a)
+          widest = std::max(widest, v.size);
+      }
+    return widest;
+  };
+  const float large = widestHalo({1280, 720}), small = widestHalo({320, 180});
+  ASSERT_GT(large, 0) << "no far-side halo at 1280x720";
+  ASSERT_GT(small, 0) << "no far-side halo at 320x180";
+  EXPECT_LE(small, 0.5f * large);  // 0.82 with a mark's floor
+}
+
 TEST_F(PixelProbe, PathBehindTheSphereIsDashedAndFaint) {
   FrameState without = frame;
   without.runs.clear();
