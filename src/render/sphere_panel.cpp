@@ -40,9 +40,6 @@ void captionFamilies(const PanelContext& context, float width, ShapeBatch& batch
   }
 }
 
-// The strip at the panel's right kept for the colour bar (the sphere is framed in the rest).
-float colorBarStrip(const PixelRect& rect) { return std::min(0.24f * rect.width, 0.45f * rect.height); }
-
 }  // namespace
 
 SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {

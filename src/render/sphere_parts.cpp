@@ -73,6 +73,8 @@ bool onDarkEndedMap(const PanelContext& context) {
          context.frame.sphereDecoration->field && !context.frame.sphereDecoration->field->diverging;
 }
 
+float colorBarStrip(const PixelRect& rect) { return std::min(0.24f * rect.width, 0.45f * rect.height); }
+
 Rgba farSideHalo(Rgba ghostColor) { return {1, 1, 1, 0.8f * ghostColor.a}; }
 
 void dashedBehind(const PanelContext& context, const std::vector<PolylinePoint>& points, ShapeBatch& back) {

@@ -58,6 +58,8 @@ float hiddenHalfWidth(float own, float inFront);
 // they are drawn on a light halo, faint with them. The plain sphere and the diverging map (light in the middle, its
 // ends mid-tones) keep them bare: a halo there changed little and doubled the hidden dashes a fan of 64 draws.
 bool onDarkEndedMap(const PanelContext& context);
+// The strip at a sphere panel's right kept for the colour bar of a coloured sphere (the sphere is framed in the rest).
+float colorBarStrip(const PixelRect& rect);
 Rgba farSideHalo(Rgba ghostColor);
 // A hidden line, dashed and faint (on its halo over a dark-ended map); the halo's dashes are the line's own.
 void dashedBehind(const PanelContext& context, const std::vector<PolylinePoint>& points, ShapeBatch& back);

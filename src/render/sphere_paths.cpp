@@ -201,6 +201,7 @@ std::optional<Box> drawBall(const RunFrame& run, const BallPlace& ball, const Pa
   const float radius = ball.radius;
   const P2 at = ball.at;
   const float mark = markUnit(unit);
+  const Rgba rim = palette::withAlpha(palette::ink, 0.75f);  // the ball's, and its arrowhead's
   // The arrowhead starts just past the ball's rim: measured from the path (markAt) it could fall under the ball,
   // which is lifted off the surface and so shifted outwards on the screen near the limb. A filled arrowhead (a
   // ribbon tapering from its base to a point) reads as a direction at any angle, where two strokes pointing up and to
@@ -239,7 +240,7 @@ std::optional<Box> drawBall(const RunFrame& run, const BallPlace& ball, const Pa
     if (ball.behind) {
       draw(back, 0, ghost(palette::ink));
     } else {
-      draw(front, 0.5f * size, palette::withAlpha(palette::ink, 0.75f));
+      draw(front, 0.5f * size, rim);
       draw(front, 0, toRgba(run.color));
       const float w = halfWidth + 0.9f * size;
       arrowhead = Box{std::min({tip.x, left.x, right.x}) - w, std::min({tip.y, left.y, right.y}) - w,
@@ -263,8 +264,7 @@ std::optional<Box> drawBall(const RunFrame& run, const BallPlace& ball, const Pa
     front.disc(at, radius + 2.5f * unit, palette::stopRed, true, 0.2f, world, (radius + 2.5f * unit) / pixelsPerUnit);
   // A thin dark rim sets the ball off from its own path, which has its colour (small frames lost it in the tube).
   else
-    front.disc(at, radius + unit, palette::withAlpha(palette::ink, 0.75f), false, 0, world,
-               (radius + unit) / pixelsPerUnit);
+    front.disc(at, radius + unit, rim, false, 0, world, (radius + unit) / pixelsPerUnit);
   front.disc(at, radius, toRgba(run.color), true, 0.55f, world, radius / pixelsPerUnit);
   drawArrowhead();  // over the ball: where the outline pushes it back, it is never hidden by its own ball
   return arrowhead;

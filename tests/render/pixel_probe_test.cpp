@@ -153,8 +153,6 @@ TEST_F(PixelProbe, CurrentStateBehindTheSphereIsAHollowRing) {
   EXPECT_GE(tinted, 8) << "no ring around the hidden state";
 }
 
-// A path's section behind the sphere is drawn faint and dashed over it: along it some pixels are tinted (dashes)
-// and some are the bare sphere (gaps), and no pixel is the run's full colour.
 // Over a dark-ended colour map the far side's dashes lie on a light halo. The halo belongs to a line, not a mark: it
 // thins with the frame (a mark's floor of one 720p pixel made the dashes at 320x180, halo and all, wider than the
 // path in front on a ball four times smaller).
@@ -170,7 +168,7 @@ TEST_F(PixelProbe, FarSideHalosThinWithTheFrame) {
   const Rgba halo = detail::farSideHalo(detail::ghost(toRgba(dark.runs[0].color)));
   auto widestHalo = [&](ImageSize size) {
     PixelRect rect = panelRect(settings, PanelKind::Sphere, size);
-    rect.width -= std::min(0.24f * rect.width, 0.45f * rect.height);  // framed left of the colour bar
+    rect.width -= detail::colorBarStrip(rect);  // framed left of the colour bar
     const SphereCamera view(settings.camera, dark.time, rect);
     const float unit = frameUnit(size);
     float widest = 0;
@@ -192,6 +190,8 @@ TEST_F(PixelProbe, FarSideHalosThinWithTheFrame) {
   EXPECT_LE(small, 0.5f * large);  // 0.82 with a mark's floor
 }
 
+// A path's section behind the sphere is drawn faint and dashed over it: along it some pixels are tinted (dashes)
+// and some are the bare sphere (gaps), and no pixel is the run's full colour.
 TEST_F(PixelProbe, PathBehindTheSphereIsDashedAndFaint) {
   FrameState without = frame;
   without.runs.clear();
@@ -581,7 +581,7 @@ TEST_F(PixelProbe, ColouredSphereShowsTheFieldWhereItIs) {
   const Image picture = sideRenderer.render(colored);
   PixelRect rect = panelRect(side, PanelKind::Sphere);
   // The sphere is framed left of the colour bar: find its centre through the same camera the panel uses.
-  rect.width -= std::min(0.24f * rect.width, 0.45f * rect.height);
+  rect.width -= detail::colorBarStrip(rect);
   const SphereCamera sideCamera(side.camera, colored.time, rect);
   // At 25 degrees from the equator: clear of the poles' labels (both poles lie on the outline here).
   const P2 north = sideCamera.project({std::cos(25 * kDeg), 0, std::sin(25 * kDeg)});
@@ -602,7 +602,7 @@ SphereCamera colouredSphereCamera(const ViewSettings& side, double time) {
   PixelRect rect{};
   for (std::size_t i = 0; i < side.panels.size(); ++i)
     if (side.panels[i].kind == PanelKind::Sphere) rect = rects[i];
-  rect.width -= std::min(0.24f * rect.width, 0.45f * rect.height);
+  rect.width -= detail::colorBarStrip(rect);
   return SphereCamera(side.camera, time, rect);
 }
 
@@ -740,7 +740,7 @@ TEST_F(PixelProbe, HiddenDashesReadOnADarkColourMap) {
   Renderer large(settings, size);
   const Image picture = large.render(dark), sphere = large.render(bare);
   PixelRect rect = panelRect(settings, PanelKind::Sphere, size);
-  rect.width -= std::min(0.24f * rect.width, 0.45f * rect.height);  // framed left of the colour bar
+  rect.width -= detail::colorBarStrip(rect);  // framed left of the colour bar
   const SphereCamera view(settings.camera, dark.time, rect);
   auto luminance = [](Rgb8 c) { return 0.30 * c.r + 0.59 * c.g + 0.11 * c.b; };
   int readable = 0, gaps = 0, probed = 0;
