@@ -4,7 +4,8 @@
 #
 #   scripts/gallery.sh [build/linkage]
 #
-# Writes docs/gallery/<scene>.png (a key frame of every scenes/*.json at 640x360, by `linkage still`),
+# Writes docs/gallery/<scene>.png (a key frame of every scenes/*.json at 640x360, by `linkage still`) and
+# docs/gallery/<scene>-dark.png (the same frame in the dark theme, view.theme = dark, for dark slides),
 # docs/gallery.md (each picture with one sentence on what to look at) and the README's frame pictures in
 # docs/images/. Deterministic: the same program gives the same files. Fails if a shipped scene has no line below.
 set -euo pipefail
@@ -36,9 +37,9 @@ stiffness	10	The ellipses show how stiff the constraints are across the configur
 EOF
 )
 
-# scene, time, size, output file: one frame by `linkage still`.
+# scene, time, size, output file[, more options]: one frame by `linkage still`.
 still() {
-  "$linkage" still "scenes/$1.json" --time "$2" --size "$3" --out "$4" --quiet
+  "$linkage" still "scenes/$1.json" --time "$2" --size "$3" --out "$4" --quiet "${@:5}"
 }
 
 mkdir -p docs/gallery
@@ -51,13 +52,16 @@ done
   echo "# Gallery"
   echo
   echo "A key frame of every shipped scene (\`scenes/*.json\`) at 640x360, made by \`scripts/gallery.sh\` with"
-  echo "\`linkage still\`: rerun it after a change to the look. Render a whole scene with \`linkage render\`."
+  echo "\`linkage still\`: rerun it after a change to the look. Render a whole scene with \`linkage render\`. The"
+  echo "right-hand picture is the same frame in the dark theme (\`--set view.theme=dark\`), the look for dark slides."
   echo
-  echo "| scene | key frame | what to look at |"
-  echo "|---|---|---|"
+  echo "| scene | key frame | dark theme | what to look at |"
+  echo "|---|---|---|---|"
   while IFS=$'\t' read -r name time sentence; do
     still "$name" "$time" 640x360 "docs/gallery/$name.png"
-    echo "| [\`$name.json\`](../scenes/$name.json), t = $time | ![$name at t = $time](gallery/$name.png) | $sentence |"
+    still "$name" "$time" 640x360 "docs/gallery/$name-dark.png" --set view.theme=dark
+    echo "| [\`$name.json\`](../scenes/$name.json), t = $time | ![$name at t = $time](gallery/$name.png) |" \
+      "![$name at t = $time, dark theme](gallery/$name-dark.png) | $sentence |"
   done <<<"$scenes"
 } >"$work/gallery.md"
 mv "$work/gallery.md" docs/gallery.md

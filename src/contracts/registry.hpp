@@ -138,6 +138,15 @@ inline constexpr std::array<Named<LinkageLayout>, 3> kLinkageLayouts{{
     {LinkageLayout::Overlay, "overlay"},
 }};
 
+// The look of what is drawn on the frame's background (text, axes, labels, the floor and pins; view.theme): dark
+// ink on a light page for papers and light slides, light ink on a dark page for dark slides. The sphere and the
+// chain are objects lit the same way in both (render/palette.hpp).
+enum class Theme { Light, Dark };
+inline constexpr std::array<Named<Theme>, 2> kThemes{{
+    {Theme::Light, "light"},
+    {Theme::Dark, "dark"},
+}};
+
 // How the sphere panel's camera moves: facing the action and each event as it happens (frames/directed_camera.hpp
 // plans it from the whole motion), from one fixed direction, or orbiting about the vertical axis at a constant rate.
 enum class CameraMode { Directed, Fixed, Orbit };

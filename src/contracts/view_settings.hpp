@@ -46,6 +46,11 @@ struct SphereSurfaceSpec {
   }
 };
 
+// The page each theme draws on, unless the scene names its own background.
+constexpr ColorRGB themeBackground(Theme theme) {
+  return theme == Theme::Dark ? ColorRGB{0.11f, 0.12f, 0.14f} : ColorRGB{0.96f, 0.95f, 0.92f};
+}
+
 struct ViewSettings {
   std::vector<PanelSpec> panels;  // layout order; empty = sphere + linkage + text
   CameraSpec camera;
@@ -54,7 +59,8 @@ struct ViewSettings {
   int linkageRun = 0;          // for SingleRun
   double pathFadeSeconds = 0;  // 0 = the path never fades
   double trailFadeSeconds = 2;
-  ColorRGB background{0.96f, 0.95f, 0.92f};
+  Theme theme = Theme::Light;
+  ColorRGB background = themeBackground(Theme::Light);  // view.background, else the theme's
   bool antialias = true;
   // Without a text panel, the scene's title and the time on a line across the top of the frame.
   bool titleLine = true;

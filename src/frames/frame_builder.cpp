@@ -127,14 +127,26 @@ ColorRGB runColor(const Scene& scene, size_t run) {
   // red, where blue means K < 0), no blue, green or yellow on viridis (the bending and distance maps).
   static const ColorRGB offCurvature[] = {{0.00f, 0.62f, 0.45f}, {0.10f, 0.10f, 0.12f}, {0.90f, 0.62f, 0.00f},
                                           {0.80f, 0.47f, 0.65f}};
+  // On the dark page (view.theme) the charcoal run would vanish from the panels: lavender reads on the page (4.7:1)
+  // and on the map's white (3.3:1). Every default colour reads on the dark page (frame_builder_test.cpp).
+  static const ColorRGB offCurvatureDark[] = {
+      {0.00f, 0.62f, 0.45f}, {0.60f, 0.45f, 0.90f}, {0.90f, 0.62f, 0.00f}, {0.80f, 0.47f, 0.65f}};
   static const ColorRGB offBending[] = {{0.84f, 0.37f, 0.00f}, {0.80f, 0.47f, 0.65f}, {0.96f, 0.96f, 0.96f},
                                         {0.55f, 0.10f, 0.10f}};
+  static const ColorRGB offBendingDark[] = {{0.84f, 0.37f, 0.00f},
+                                            {0.80f, 0.47f, 0.65f},
+                                            {0.96f, 0.96f, 0.96f},
+                                            {0.92f, 0.36f, 0.36f}};  // the deep red lightened for the dark page
   const std::optional<ColorRGB>& chosen = scene.runs[run].color;
   if (chosen) return *chosen;
   switch (scene.view.sphereSurface.colorBy) {
-    case SphereColoring::Curvature: return offCurvature[run % std::size(offCurvature)];
+    case SphereColoring::Curvature:
+      return scene.view.theme == Theme::Dark ? offCurvatureDark[run % std::size(offCurvatureDark)]
+                                             : offCurvature[run % std::size(offCurvature)];
     case SphereColoring::Bending:
-    case SphereColoring::Distance: return offBending[run % std::size(offBending)];
+    case SphereColoring::Distance:
+      return scene.view.theme == Theme::Dark ? offBendingDark[run % std::size(offBendingDark)]
+                                             : offBending[run % std::size(offBending)];
     case SphereColoring::None: break;
   }
   return palette[run % std::size(palette)];

@@ -118,7 +118,7 @@ std::vector<std::uint8_t> fieldTexels(const SphereField& field) {
 }
 
 void drawColorBar(const ColorScale& scale, const std::string& label, const std::string& note, const PixelRect& area,
-                  const FontAtlas& font, ShapeBatch& batch) {
+                  const FontAtlas& font, const palette::PageInk& page, ShapeBatch& batch) {
   const float line = font.lineHeight(TextSize::Small);
   const float barWidth = std::max(6.0f, 0.018f * area.height);
   const float x1 = area.x + area.width;
@@ -151,7 +151,7 @@ void drawColorBar(const ColorScale& scale, const std::string& label, const std::
     batch.rect(x0, yOf(p1), x1, yOf(p0) + 0.5f, scale.colorAt(0.5 * (p0 + p1)));
   }
   const float edge = std::max(1.0f, 0.0012f * area.height);
-  const Rgba ink = palette::ink;
+  const Rgba ink = page.ink;
   batch.rect(x0 - edge, top - edge, x1 + edge, top, ink);
   batch.rect(x0 - edge, bottom, x1 + edge, bottom + edge, ink);
   batch.rect(x0 - edge, top, x0, bottom, ink);
@@ -188,14 +188,14 @@ void drawColorBar(const ColorScale& scale, const std::string& label, const std::
     font.draw(batch, text, TextSize::Small, textX, y + 0.4f * ascent, ink);
     if (breakNoted && v == 0)  // the note's words before the zero, as the note under the bar is written
       font.draw(batch, breakWords, TextSize::Small, textX - font.width(breakWords, TextSize::Small), y + 0.4f * ascent,
-                palette::softInk);
+                page.softInk);
   }
   // Label and note right-aligned to the bar, shortened with an ellipsis where the strip is narrower than they are.
   const std::string title = font.fitted(label, TextSize::Small, area.width);
   font.draw(batch, title, TextSize::Small, x1 - font.width(title, TextSize::Small), area.y + 0.4f * line + ascent, ink);
   float noteBaseline = bottom + 0.4f * line + ascent;
   for (const std::string& text : noteLines) {
-    font.draw(batch, text, TextSize::Small, x1 - font.width(text, TextSize::Small), noteBaseline, palette::softInk);
+    font.draw(batch, text, TextSize::Small, x1 - font.width(text, TextSize::Small), noteBaseline, page.softInk);
     noteBaseline += line;
   }
 }

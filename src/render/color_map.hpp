@@ -10,6 +10,7 @@
 
 #include "contracts/frame_state.hpp"
 #include "render/font_atlas.hpp"
+#include "render/palette.hpp"
 #include "render/shape_batch.hpp"
 #include "render/sphere_camera.hpp"
 
@@ -43,8 +44,8 @@ std::string tickLabel(double value, double step);
 // A vertical colour bar in `area` (its full height; the bar itself is a narrow strip at the area's right),
 // with ticks and their values on its left, `label` above and `note` (if any) below. A two-slope (diverging) scale
 // marks zero across the bar with a longer tick labelled "scale changes at 0" where the area is wide enough (and
-// leaves `note` out then), else "0" with the note.
+// leaves `note` out then), else "0" with the note. In the page's ink: the bar stands beside the sphere.
 void drawColorBar(const ColorScale& scale, const std::string& label, const std::string& note, const PixelRect& area,
-                  const FontAtlas& font, ShapeBatch& batch);
+                  const FontAtlas& font, const palette::PageInk& page, ShapeBatch& batch);
 
 }  // namespace sl

@@ -14,12 +14,13 @@
 namespace sl {
 namespace {
 
-void drawFloor(const PlaneView& view, double base, float rod, float unit, ShapeBatch& batch) {
-  batch.capsule(view(0, 0), view(base, 0), std::max(unit, 0.25f * rod), palette::floorGrey);
+void drawFloor(const PlaneView& view, double base, float rod, float unit, const palette::PageInk& page,
+               ShapeBatch& batch) {
+  batch.capsule(view(0, 0), view(base, 0), std::max(unit, 0.25f * rod), page.floorGrey);
   for (double pin : {0.0, base}) {  // ground hatching under each pin
     for (int k = -2; k <= 2; ++k) {
       const P2 top = view(pin + 0.06 * k, -0.02);
-      batch.capsule(top, {top.x - 0.8f * rod, top.y + 1.6f * rod}, std::max(0.6f * unit, 0.12f * rod), palette::floorGrey);
+      batch.capsule(top, {top.x - 0.8f * rod, top.y + 1.6f * rod}, std::max(0.6f * unit, 0.12f * rod), page.floorGrey);
     }
   }
 }
@@ -70,7 +71,7 @@ void drawCross(P2 at, float arm, float width, Rgba color, ShapeBatch& batch) {
 }
 
 void drawChain(const RunFrame& run, const PlaneView& view, double base, float rod, float outline, float unit,
-               ShapeBatch& batch) {
+               const palette::PageInk& page, ShapeBatch& batch) {
   const std::vector<P2> joints = chainJoints(run.hinges, view, base);
   const bool massesKnown = allJointsDrawn(run, joints);
   // Joints as balls while a rod is long enough on screen to show them apart (8 px at 720p); a long chain's hinges
@@ -95,7 +96,7 @@ void drawChain(const RunFrame& run, const PlaneView& view, double base, float ro
   }
   const float pinRadius = std::max(2.2f * rod, 3.3f * markUnit(unit));  // the pins stay visible however long the chain
   for (const P2& pin : {joints.front(), joints.back()}) {
-    batch.disc(pin, pinRadius, palette::pinCharcoal, true, 0.3f);
+    batch.disc(pin, pinRadius, page.pinCharcoal, true, 0.3f);
     batch.disc(pin, pinRadius * (0.7f / 2.2f), palette::silver);
   }
   if (run.stopped) {  // crossed out over the middle of the chain, at most a fifth of its span (a small frame's
@@ -103,17 +104,17 @@ void drawChain(const RunFrame& run, const PlaneView& view, double base, float ro
     const P2 middle = joints[joints.size() / 2];
     const float span = std::hypot(joints.back().x - joints.front().x, joints.back().y - joints.front().y);
     const float arm = std::min(9 * markUnit(unit), std::max(0.2f * span, 3 * unit));
-    drawCross(middle, arm, std::min(1.6f * markUnit(unit), 0.18f * arm), palette::stopRed, batch);
+    drawCross(middle, arm, std::min(1.6f * markUnit(unit), 0.18f * arm), page.stopRed, batch);
   }
 }
 
 // A push or drag start: an arrow from each pushed hinge along its start velocity, the fastest 55 units long, fading
 // out over the first frames.
-void drawPush(const RunFrame& run, const PlaneView& view, float unit, ShapeBatch& batch) {
+void drawPush(const RunFrame& run, const PlaneView& view, float unit, const palette::PageInk& page, ShapeBatch& batch) {
   double top = 0;
   for (const RunFrame::HingeArrow& arrow : run.push) top = std::max(top, std::hypot(arrow.velocity.x, arrow.velocity.y));
   if (!(top > 0) || run.pushShown <= 0) return;
-  const Rgba color = palette::withAlpha(palette::ink, 0.85f * run.pushShown);
+  const Rgba color = palette::withAlpha(page.ink, 0.85f * run.pushShown);
   const float width = 1.3f * markUnit(unit), head = 9 * markUnit(unit);
   for (const RunFrame::HingeArrow& arrow : run.push) {
     const std::size_t k = std::size_t(arrow.hinge - 1);
@@ -154,12 +155,12 @@ void drawRun(const PanelContext& context, const RunFrame* run, const PixelRect& 
   const float u = context.unit;
   const float rod = std::max(std::min(1.5f * u, std::max(0.9f * u, float(0.12 * view.scale))), float(0.045 * view.scale));
   const double base = run ? run->baseLength : context.frame.rods - 1;
-  drawFloor(view, base, rod, u, batch);
+  drawFloor(view, base, rod, u, context.page(), batch);
   if (!run) return;
   drawTrails(*run, view, rod, u, batch);
   drawFeather(*run, view, base, rod, u, batch);
-  drawChain(*run, view, base, rod, outline * rod, u, batch);
-  drawPush(*run, view, u, batch);
+  drawChain(*run, view, base, rod, outline * rod, u, context.page(), batch);
+  drawPush(*run, view, u, context.page(), batch);
   if (label) {
     // Centred under the chain; a name wider than the column wraps onto a second line where the column has room
     // below (cut at a word, "single…" beside "chart…", the names of small frames could not be told apart).

@@ -2,6 +2,7 @@
 // The look of the reference demo: cream sphere, silver chain, charcoal pins, warm grey ink.
 
 #include "contracts/frame_state.hpp"
+#include "contracts/registry.hpp"
 #include "render/shape_batch.hpp"
 
 namespace sl::palette {
@@ -28,5 +29,23 @@ inline constexpr Rgba returningVector{SphereTransport::kReturningColor.r, Sphere
                                       SphereTransport::kReturningColor.b, 1};
 
 inline Rgba withAlpha(Rgba c, float a) { return {c.r, c.g, c.b, a}; }
+
+// What is drawn on the frame's background rather than on the sphere or a chain, by view.theme: text, axes and their
+// grid, labels and their leaders, the floor and the pins, the marks of a stop in the plots and panels. The light page
+// is the look above; the dark one inverts the ink's lightness for dark slides (WCAG contrast on its page: ink 13:1,
+// soft ink 5:1, red 5.6:1, as on the light page) and lifts the red and the pins off the dark. What lies on the sphere
+// (its marks, paths, balls, arrows) keeps the colours above: the lit sphere is the same object on either page.
+struct PageInk {
+  Rgba ink, softInk, gridLight, nowCursor, floorGrey, pinCharcoal, stopRed;
+};
+inline constexpr PageInk kLightPage{ink, softInk, gridLight, nowCursor, floorGrey, pinCharcoal, stopRed};
+inline constexpr PageInk kDarkPage{.ink = {0.91f, 0.90f, 0.87f, 1},
+                                   .softInk = {0.58f, 0.57f, 0.55f, 1},
+                                   .gridLight = {0.20f, 0.21f, 0.23f, 1},
+                                   .nowCursor = {0.80f, 0.79f, 0.76f, 0.55f},
+                                   .floorGrey = {0.52f, 0.51f, 0.49f, 1},
+                                   .pinCharcoal = {0.50f, 0.51f, 0.55f, 1},
+                                   .stopRed = {0.96f, 0.42f, 0.36f, 1}};
+constexpr const PageInk& pageInk(Theme theme) { return theme == Theme::Dark ? kDarkPage : kLightPage; }
 
 }  // namespace sl::palette

@@ -11,6 +11,7 @@
 #include "contracts/view_settings.hpp"
 #include "render/draw_list.hpp"
 #include "render/font_atlas.hpp"
+#include "render/palette.hpp"
 #include "render/shape_batch.hpp"
 #include "render/sphere_camera.hpp"
 
@@ -22,6 +23,8 @@ struct PanelContext {
   const FontAtlas& font;
   PixelRect rect;
   float unit;  // frameUnit: pixels per 720 px of the frame's shorter side
+  // The ink of what is drawn on the background (text, axes, labels), by view.theme.
+  const palette::PageInk& page() const { return palette::pageInk(settings.theme); }
 };
 
 void drawLinkagePanel(const PanelContext& context, ShapeBatch& batch);

@@ -129,21 +129,21 @@ void drawAxes(const PanelContext& c, const PlotArea& area, const Axis& x, const 
   const float small = c.font.ascent(TextSize::Small);
   for (double v : y.ticks) {
     const P2 left = area.at(0, unit(y, v)), right = area.at(1, unit(y, v));
-    batch.capsule(left, right, 0.5f * c.unit, palette::gridLight);
+    batch.capsule(left, right, 0.5f * c.unit, c.page().gridLight);
     const std::string label = tickLabel(y, v);
     c.font.draw(batch, label, TextSize::Small, left.x - 0.5f * small - c.font.width(label, TextSize::Small),
-                left.y + 0.45f * small, palette::softInk);
+                left.y + 0.45f * small, c.page().softInk);
   }
   for (double t : x.ticks) {
     const P2 bottom = area.at(unit(x, t), 0), top = area.at(unit(x, t), 1);
-    batch.capsule(bottom, top, 0.5f * c.unit, palette::gridLight);
+    batch.capsule(bottom, top, 0.5f * c.unit, c.page().gridLight);
     const std::string label = tickLabel(x, t);
     c.font.draw(batch, label, TextSize::Small, bottom.x - 0.5f * c.font.width(label, TextSize::Small),
-                bottom.y + 0.5f * small + small, palette::softInk);
+                bottom.y + 0.5f * small + small, c.page().softInk);
   }
   const P2 corner = area.at(0, 0);
-  batch.capsule(corner, area.at(1, 0), 0.7f * c.unit, palette::softInk);
-  batch.capsule(corner, area.at(0, 1), 0.7f * c.unit, palette::softInk);
+  batch.capsule(corner, area.at(1, 0), 0.7f * c.unit, c.page().softInk);
+  batch.capsule(corner, area.at(0, 1), 0.7f * c.unit, c.page().softInk);
 }
 
 // Line half width: 1.1 px up to about 720-pixel frames, then growing with the text (3.4 px at 3840x2160), so
@@ -198,8 +198,8 @@ void drawStop(const PanelContext& c, const PlotSeries& series, const DrawnSample
   // Inside the plot area, clear of the tick labels round it (a stop at t = 0 sits in the corner).
   at.x = std::clamp(at.x, area.x0 + arm + 1, std::max(area.x0 + arm + 1, area.x1 - arm - 1));
   at.y = std::clamp(at.y, area.y0 + arm + 1, std::max(area.y0 + arm + 1, area.y1 - arm - 1));
-  batch.capsule({at.x - arm, at.y - arm}, {at.x + arm, at.y + arm}, width, palette::stopRed);
-  batch.capsule({at.x - arm, at.y + arm}, {at.x + arm, at.y - arm}, width, palette::stopRed);
+  batch.capsule({at.x - arm, at.y - arm}, {at.x + arm, at.y + arm}, width, c.page().stopRed);
+  batch.capsule({at.x - arm, at.y + arm}, {at.x + arm, at.y - arm}, width, c.page().stopRed);
   // The time above the cross, ending at its right arm; at the area's top, right of the cross (the line has ended
   // there), else below it; never on its left, where the line comes in (comparison.json, frame 593, had it there on
   // the line). No room: no label (a second run stopping at the same place and time says the same).
@@ -213,7 +213,7 @@ void drawStop(const PanelContext& c, const PlotSeries& series, const DrawnSample
     if (p.x < area.x0 || p.x + textWidth > area.x1 || p.y - ascent < area.y0 || p.y > area.y1) continue;
     if (!placed.free(p.x, p.y - ascent, p.x + textWidth, p.y + 0.2f * ascent)) continue;
     placed.add(p.x, p.y - ascent, p.x + textWidth, p.y + 0.2f * ascent);
-    c.font.draw(batch, text, TextSize::Small, p.x, p.y, palette::stopRed);
+    c.font.draw(batch, text, TextSize::Small, p.x, p.y, c.page().stopRed);
     return;
   }
 }
@@ -244,7 +244,7 @@ void drawSeries(const PanelContext& c, const PlotSeries& series, const Axis& x, 
     // Sized by the stop cross's width, which grows with the text: the same marks at every frame size.
     batch.capsule(foot, top, 0.45f * stopHalfWidth, toRgba(series.color, 0.45f));
     batch.disc(foot, 2.4f * stopHalfWidth, toRgba(series.color));
-    batch.disc(foot, 1.2f * stopHalfWidth, palette::withAlpha(palette::gridLight, 1.0f));
+    batch.disc(foot, 1.2f * stopHalfWidth, palette::withAlpha(c.page().gridLight, 1.0f));
     const float ascent = c.font.ascent(TextSize::Small);
     labelEvent(c, area, timeWords(t), {top.x, top.y + 0.6f * ascent}, 0.4f * ascent, toRgba(series.color), placed,
                batch);
@@ -277,7 +277,7 @@ float layLegend(const PanelContext& c, const PlotFrame& plot, float x, float rig
     if (batch) {
       const float mid = y - 0.35f * ascent, half = seriesWidth(c.font, k, plot.series.size());
       batch->capsule({x + half, mid}, {x + swatch - half, mid}, half, toRgba(series.color));
-      c.font.draw(*batch, series.label, TextSize::Small, x + swatch + 0.4f * ascent, y, palette::ink);
+      c.font.draw(*batch, series.label, TextSize::Small, x + swatch + 0.4f * ascent, y, c.page().ink);
     }
     x += width + gap;
   }
@@ -300,7 +300,7 @@ void drawRoundoffNote(const PanelContext& c, const PlotFrame& plot, const PlotLa
   float y = 0.5f * (top + bottom) - 0.5f * line * (float(note.size()) - 1) + 0.4f * ascent;
   for (const std::string& text : note) {
     c.font.draw(batch, text, TextSize::Small, 0.5f * (left + right - c.font.width(text, TextSize::Small)), y,
-                palette::ink);
+                c.page().ink);
     y += line;
   }
   if (layout.legendShown)
@@ -368,7 +368,7 @@ void drawPlotPanel(const PanelContext& c, int plotIndex, ShapeBatch& batch) {
   const float line = c.font.lineHeight(TextSize::Small), ascent = c.font.ascent(TextSize::Small);
   const PlotLayout layout =
       layoutPlot(c, plot, exists ? plotTitles(plot) : std::vector<std::string>{"(no plot data)", "(no data)"});
-  c.font.draw(batch, layout.title, layout.titleSize, c.rect.x + 0.5f * ascent, layout.titleBaseline, palette::ink);
+  c.font.draw(batch, layout.title, layout.titleSize, c.rect.x + 0.5f * ascent, layout.titleBaseline, c.page().ink);
   if (plot.roundoff) {  // nothing but roundoff to show: one line says so, in place of the axes
     drawRoundoffNote(c, plot, layout, batch);
     return;
@@ -381,15 +381,15 @@ void drawPlotPanel(const PanelContext& c, int plotIndex, ShapeBatch& batch) {
       std::clamp(int((area.x1 - area.x0) / (3.5f * std::max(timeLabelWidth(c, plot), ascent))), 1, 5);
   const Axis x = spanAxis(plot.timeMin, plot.timeMax, xSteps);
   // The axis name beyond its end, level with the axis: clear of every tick label below it.
-  c.font.draw(batch, "t", TextSize::Small, area.x1 + 0.4f * ascent, area.y1 + 0.35f * ascent, palette::softInk);
+  c.font.draw(batch, "t", TextSize::Small, area.x1 + 0.4f * ascent, area.y1 + 0.35f * ascent, c.page().softInk);
   drawAxes(c, area, x, y, batch);
   if (layout.valueLabelShown)
     c.font.draw(batch, c.font.fitted(valueAxisWords(plot.kind), TextSize::Small, c.rect.x + c.rect.width - area.x0),
-                TextSize::Small, c.rect.x + 0.5f * ascent, layout.valueLabelBaseline, palette::softInk);
+                TextSize::Small, c.rect.x + 0.5f * ascent, layout.valueLabelBaseline, c.page().softInk);
   // Now: a line across the plot at the frame's time, which relates the plot to the other panels.
   if (c.frame.time >= x.lo && c.frame.time <= x.hi) {
     const float at = area.at(unit(x, c.frame.time), 0).x;
-    batch.capsule({at, area.y0}, {at, area.y1}, 0.5f * seriesHalfWidth(c.font), palette::nowCursor);
+    batch.capsule({at, area.y0}, {at, area.y1}, 0.5f * seriesHalfWidth(c.font), c.page().nowCursor);
   }
   bool anyDrawn = false;
   PlacedLabels placed;
@@ -408,7 +408,7 @@ void drawPlotPanel(const PanelContext& c, int plotIndex, ShapeBatch& batch) {
     float y = 0.5f * (area.y0 + area.y1) - 0.5f * line * (float(note.size()) - 1) + 0.4f * ascent;
     for (const std::string& text : note) {
       c.font.draw(batch, text, TextSize::Small, 0.5f * (area.x0 + area.x1 - c.font.width(text, TextSize::Small)), y,
-                  palette::softInk);
+                  c.page().softInk);
       y += line;
     }
   }

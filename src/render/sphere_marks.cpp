@@ -49,7 +49,7 @@ void drawBallGuide(const PanelContext& context, const SphereCamera& camera, Shap
     const double a = 2 * std::acos(-1.0) * k / 96;
     ring.push_back({{at.x + half * float(std::cos(a)), at.y + half * float(std::sin(a))},
                     0.8f * context.unit,
-                    palette::withAlpha(palette::softInk, 0.55f),
+                    palette::withAlpha(context.page().softInk, 0.55f),
                     {}});
   }
   batch.polyline(ring);
@@ -66,7 +66,7 @@ void drawBallGuide(const PanelContext& context, const SphereCamera& camera, Shap
   }
   float y = context.rect.y + context.rect.height - pad - line * float(lines.size() - 1);
   for (const std::string& text : lines) {
-    context.font.draw(batch, text, TextSize::Small, context.rect.x + pad, y, palette::softInk);
+    context.font.draw(batch, text, TextSize::Small, context.rect.x + pad, y, context.page().softInk);
     y += line;
   }
 }
@@ -80,8 +80,8 @@ void drawBallStart(const PanelContext& context, const SphereCamera& camera, Shap
   const Rgba halo{b.r, b.g, b.b, 0.9f};
   batch.capsule({at.x - arm, at.y}, {at.x + arm, at.y}, width + 1.2f * markUnit(context.unit), halo);
   batch.capsule({at.x, at.y - arm}, {at.x, at.y + arm}, width + 1.2f * markUnit(context.unit), halo);
-  batch.capsule({at.x - arm, at.y}, {at.x + arm, at.y}, width, palette::ink);
-  batch.capsule({at.x, at.y - arm}, {at.x, at.y + arm}, width, palette::ink);
+  batch.capsule({at.x - arm, at.y}, {at.x + arm, at.y}, width, context.page().ink);
+  batch.capsule({at.x, at.y - arm}, {at.x, at.y + arm}, width, context.page().ink);
 }
 
 void drawEquator(const SphereCamera& camera, float unit, ShapeBatch& batch) {
@@ -152,7 +152,10 @@ void drawLabel(const std::string& text, P2 anchor, bool hidden, const PanelConte
   const auto spot = placer.place(anchor, width, height, 0.9f * ascent);
   if (!spot) return;  // no room in the panel
   const Box& box = spot->first;
-  const Rgba ink = hidden ? ghost(palette::softInk) : palette::softInk;
+  // A label names something on the sphere and mostly sits on it: it keeps the light page's ink and pad in either
+  // theme (on the dark page's pad it read as a hole in the cream ball).
+  const bool light = context.settings.theme == Theme::Light;
+  const Rgba ink = hidden ? ghost(palette::kLightPage.softInk) : palette::kLightPage.softInk;
   if (spot->second) {  // the leader: from the anchor (or the edge of a ball over it) to the nearest point of the box
     const P2 to{std::clamp(anchor.x, box.x0, box.x1), std::clamp(anchor.y, box.y0, box.y1)};
     const P2 from = placer.leaderStart(anchor, to);
@@ -161,7 +164,7 @@ void drawLabel(const std::string& text, P2 anchor, bool hidden, const PanelConte
       placer.recordLeader(from, to);
     }
   }
-  const ColorRGB& b = context.settings.background;
+  const ColorRGB b = light ? context.settings.background : themeBackground(Theme::Light);
   batch.rect(box.x0, box.y0, box.x1, box.y1, {b.r, b.g, b.b, 0.7f});
   context.font.draw(batch, text, TextSize::Small, box.x0 + pad, box.y0 + pad + 1.1f * ascent, ink);
   placed.push_back({box.x0, box.y0, box.x1 - box.x0, box.y1 - box.y0});

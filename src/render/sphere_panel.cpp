@@ -35,7 +35,7 @@ void captionFamilies(const PanelContext& context, float width, ShapeBatch& batch
       wrappedFittedForm(context.font, familyCaptions(members), TextSize::Small, width - 2 * pad, 2);
   float y = context.rect.y + context.rect.height - pad - line * float(lines.size() - 1);
   for (const std::string& caption : lines) {
-    context.font.draw(batch, caption, TextSize::Small, context.rect.x + pad, y, palette::softInk);
+    context.font.draw(batch, caption, TextSize::Small, context.rect.x + pad, y, context.page().softInk);
     y += line;
   }
 }
@@ -79,7 +79,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
     float foot = context.rect.y + context.rect.height - pad;
     if (!decoration->ellipses.empty()) {
       context.font.draw(batch, fittedForm(context.font, ellipseCaptions(), TextSize::Small, width), TextSize::Small,
-                        context.rect.x + pad, foot, palette::softInk);
+                        context.rect.x + pad, foot, context.page().softInk);
       foot -= context.font.lineHeight(TextSize::Small);
     }
     if (transportCaption)
@@ -88,7 +88,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
           fittedForm(context.font,
                      transportCaptions(*decoration->transport, context.frame.time, context.frame.duration),
                      TextSize::Small, width),
-          TextSize::Small, context.rect.x + pad, foot, palette::ink);
+          TextSize::Small, context.rect.x + pad, foot, context.page().ink);
     if (colored) {
       const SphereField& field = *decoration->field;
       // A gap of a text line from the panel's right edge: the bar never butts against a neighbouring plot's axis.
@@ -104,7 +104,7 @@ SphereImpostor drawSpherePanel(const PanelContext& context, ShapeBatch& batch) {
           : decoration->distance ? injectivityNotes(decoration->distance->injectivityRadius, fromStart)
                                  : std::vector<std::string>{};
       const std::string note = fittedWrappedForm(context.font, notes, TextSize::Small, bar.width, 2);
-      drawColorBar(scaleOf(field), caption, note, bar, context.font, batch);
+      drawColorBar(scaleOf(field), caption, note, bar, context.font, context.page(), batch);
       colorBarBox = bar;
     }
   }

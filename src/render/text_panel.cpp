@@ -80,8 +80,8 @@ float flowRuns(const PanelContext& c, TextSize size, StopDetail detail, float pa
     }
     if (batch) {
       drawSwatch(c, k, size, x, y, *batch);
-      float end = c.font.draw(*batch, text, size, x + 2.5f * swatch, y, palette::ink);
-      if (run.stopped) c.font.draw(*batch, stop, size, end, y, palette::stopRed);
+      float end = c.font.draw(*batch, text, size, x + 2.5f * swatch, y, c.page().ink);
+      if (run.stopped) c.font.draw(*batch, stop, size, end, y, c.page().stopRed);
     }
     x += width;
   }
@@ -92,7 +92,7 @@ float flowRuns(const PanelContext& c, TextSize size, StopDetail detail, float pa
     const std::string why = run.name + " " + stopSentence(run, detail) + " \u2014 " + stopMeaningWords(run.stopReason);
     for (const std::string& part : c.font.wrapped(why, TextSize::Small, c.rect.width - 2 * pad, 2)) {
       y += c.font.lineHeight(TextSize::Small);
-      if (batch) c.font.draw(*batch, part, TextSize::Small, c.rect.x + pad, y, palette::stopRed);
+      if (batch) c.font.draw(*batch, part, TextSize::Small, c.rect.x + pad, y, c.page().stopRed);
     }
   }
   return y + (line - c.font.ascent(size));
@@ -109,8 +109,8 @@ void drawTextPanel(const PanelContext& c, ShapeBatch& batch) {
   const float timeWidth = c.font.width(time, TextSize::Normal);
   // The title gives way to the time: shortened with an ellipsis rather than running under it.
   c.font.draw(batch, shownTitle(c.font, c.frame, TextSize::Title, c.rect.width - timeWidth - 4 * pad), TextSize::Title,
-              c.rect.x + pad, y, palette::ink);
-  c.font.draw(batch, time, TextSize::Normal, c.rect.x + c.rect.width - pad - timeWidth, y, palette::ink);
+              c.rect.x + pad, y, c.page().ink);
+  c.font.draw(batch, time, TextSize::Normal, c.rect.x + c.rect.width - pad - timeWidth, y, c.page().ink);
 
   // Runs flow left to right, wrapping to the next line, in normal text or, if that overflows the panel, small
   // text; when even that overflows (small frames, many runs) they share one row, each its name fitted to an
@@ -130,7 +130,7 @@ void drawTextPanel(const PanelContext& c, ShapeBatch& batch) {
           c.font.draw(batch,
                       fittedForm(c.font, transportCaptions(*decoration->transport, c.frame.time, c.frame.duration),
                                  TextSize::Small, c.rect.width - 2 * pad),
-                      TextSize::Small, c.rect.x + pad, end + holonomyLine, palette::ink);
+                      TextSize::Small, c.rect.x + pad, end + holonomyLine, c.page().ink);
         return;
       }
     }
@@ -152,8 +152,8 @@ void drawTextPanel(const PanelContext& c, ShapeBatch& batch) {
         !run.stopped ? "" : c.font.width(full, TextSize::Small) <= 0.6f * room ? full : brief;
     const std::string name = c.font.fitted(run.name, TextSize::Small, room - c.font.width(stopText, TextSize::Small));
     drawSwatch(c, k, TextSize::Small, x, rowY, batch);
-    const float end = c.font.draw(batch, name, TextSize::Small, x + 2.5f * swatch, rowY, palette::ink);
-    if (!stopText.empty()) c.font.draw(batch, stopText, TextSize::Small, end, rowY, palette::stopRed);
+    const float end = c.font.draw(batch, name, TextSize::Small, x + 2.5f * swatch, rowY, c.page().ink);
+    if (!stopText.empty()) c.font.draw(batch, stopText, TextSize::Small, end, rowY, c.page().stopRed);
   }
 }
 
@@ -172,8 +172,8 @@ void drawTitleLine(const PanelContext& c, ShapeBatch& batch) {
   batch.rect(c.rect.x + 0.5f * pad, c.rect.y, c.rect.x + 1.5f * pad + titleWidth, c.rect.y + band, veil);
   batch.rect(c.rect.x + c.rect.width - 1.5f * pad - timeWidth, c.rect.y, c.rect.x + c.rect.width - 0.5f * pad,
              c.rect.y + band, veil);
-  c.font.draw(batch, title, TextSize::Normal, c.rect.x + pad, y, palette::ink);
-  c.font.draw(batch, time, TextSize::Normal, c.rect.x + c.rect.width - pad - timeWidth, y, palette::ink);
+  c.font.draw(batch, title, TextSize::Normal, c.rect.x + pad, y, c.page().ink);
+  c.font.draw(batch, time, TextSize::Normal, c.rect.x + c.rect.width - pad - timeWidth, y, c.page().ink);
 }
 
 }  // namespace sl

@@ -301,6 +301,12 @@ void readView(const json& value, Scene& scene, bool rodsKnown, std::vector<Scene
   readLinkageChoice(view, scene, problems);
   readTrails(view, scene, rodsKnown);
   readFades(view, scene);
+  if (const auto theme = view.string("theme")) {
+    if (const auto kind = pickKind(view.pathOf("theme"), *theme, kThemes, problems)) {
+      render.theme = *kind;
+      render.background = themeBackground(*kind);  // the scene's own background, read next, wins
+    }
+  }
   if (const auto rgb = view.numbers("background"); rgb && view.checkSize("background", *rgb, 3, "red, green, blue")) {
     view.checkElements("background", *rgb);
     render.background = {float((*rgb)(0)), float((*rgb)(1)), float((*rgb)(2))};

@@ -99,6 +99,36 @@ void expectSameFrame(const FrameState& a, const FrameState& b) {
   }
 }
 
+// WCAG's contrast ratio of two colours (relative luminance of sRGB), written here apart from the palette's choice.
+double contrastRatio(const ColorRGB& a, const ColorRGB& b) {
+  const auto linear = [](double v) { return v <= 0.03928 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); };
+  const auto luminance = [&](const ColorRGB& c) {
+    return 0.2126 * linear(c.r) + 0.7152 * linear(c.g) + 0.0722 * linear(c.b);
+  };
+  const double la = luminance(a), lb = luminance(b);
+  return (std::max(la, lb) + 0.05) / (std::min(la, lb) + 0.05);
+}
+
+// On the dark page every run's default colour, over every sphere colouring, stands at least 3:1 off the page (the
+// charcoal run of a curvature-coloured scene was invisible in its panels); the light page keeps its colours.
+TEST(FrameBuilder, DefaultRunColoursReadOnTheDarkPage) {
+  Scene scene;
+  scene.runs.resize(8);
+  for (const auto& [coloring, name] : kSphereColorings) {
+    scene.view.sphereSurface.colorBy = coloring;
+    for (std::size_t run = 0; run < scene.runs.size(); ++run) {
+      scene.view.theme = Theme::Dark;
+      EXPECT_GE(contrastRatio(runColor(scene, run), themeBackground(Theme::Dark)), 3.0) << name << " run " << run;
+    }
+  }
+  scene.view.sphereSurface.colorBy = SphereColoring::Curvature;
+  scene.view.theme = Theme::Light;
+  EXPECT_LT(contrastRatio(runColor(scene, 1), ColorRGB{0, 0, 0}), 1.3);  // the light page keeps the charcoal run
+  scene.runs[1].color = ColorRGB{0.1f, 0.1f, 0.1f};
+  scene.view.theme = Theme::Dark;
+  EXPECT_EQ(runColor(scene, 1), (ColorRGB{0.1f, 0.1f, 0.1f}));  // a colour the scene chose is never replaced
+}
+
 TEST(FrameBuilder, FrameTimesAndCount) {
   const Scene scene = twoRunScene();
   FrameBuilder builder = builderFor(scene);

@@ -92,7 +92,7 @@ TEST(ColorBar, HasNoBanding) {
   const FrameComposer composer(ViewSettings{}, {3840, 2160});
   const PixelRect area{100, 100, 300, 1600};
   ShapeBatch batch;
-  drawColorBar({0, 1, false}, "bending", "", area, composer.font(), batch);
+  drawColorBar({0, 1, false}, "bending", "", area, composer.font(), palette::kLightPage, batch);
   std::size_t bands = 0;
   for (const ShapeVertex& v : batch.vertices()) bands += v.kind == float(ShapeKind::Rect);
   EXPECT_GT(bands / 6, 1200u);  // two triangles (6 vertices) a rect: at least one per row of the bar's ~1400
@@ -102,7 +102,8 @@ TEST(ColorBar, StaysInsideItsArea) {
   const FrameComposer composer(ViewSettings{}, {640, 360});
   ShapeBatch batch;
   const PixelRect area{500, 20, 120, 300};
-  drawColorBar({-0.27, 4.15, true}, "Gaussian curvature K", "each sign on its own scale", area, composer.font(), batch);
+  drawColorBar({-0.27, 4.15, true}, "Gaussian curvature K", "each sign on its own scale", area, composer.font(),
+               palette::kLightPage, batch);
   ASSERT_GT(batch.vertices().size(), 96u * 6);
   for (const ShapeVertex& v : batch.vertices()) {
     EXPECT_GE(v.x, area.x - 1);
@@ -113,7 +114,8 @@ TEST(ColorBar, StaysInsideItsArea) {
   // In a strip narrower than its label and note (small frames), both are shortened, never cut by the panel.
   ShapeBatch narrow;
   const PixelRect strip{580, 20, 50, 300};
-  drawColorBar({-0.27, 4.15, true}, "K, Gaussian curvature", "each sign on its own scale", strip, composer.font(), narrow);
+  drawColorBar({-0.27, 4.15, true}, "K, Gaussian curvature", "each sign on its own scale", strip, composer.font(),
+               palette::kLightPage, narrow);
   ASSERT_GT(narrow.vertices().size(), 96u * 6);
   for (const ShapeVertex& v : narrow.vertices()) {
     EXPECT_GE(v.x, strip.x - 1);
@@ -121,7 +123,7 @@ TEST(ColorBar, StaysInsideItsArea) {
   }
   // Too small to read: nothing rather than an illegible bar.
   ShapeBatch tiny;
-  drawColorBar({-1, 1, true}, "K", "", {0, 0, 40, 30}, composer.font(), tiny);
+  drawColorBar({-1, 1, true}, "K", "", {0, 0, 40, 30}, composer.font(), palette::kLightPage, tiny);
   EXPECT_TRUE(tiny.vertices().empty());
 }
 
@@ -144,16 +146,16 @@ TEST(ColorBar, ATwoSlopeScaleIsNotedAtItsBreak) {
   };
   const std::string note = "each sign on its own scale";
   ShapeBatch wide;
-  drawColorBar({-0.27, 4.15, true}, "K", note, {900, 40, 200, 560}, font, wide);
+  drawColorBar({-0.27, 4.15, true}, "K", note, {900, 40, 200, 560}, font, palette::kLightPage, wide);
   EXPECT_EQ(softGlyphs(wide), glyphsOf(scaleBreakWords().front() + " "));
   ShapeBatch narrow;
-  drawColorBar({-0.27, 4.15, true}, "K", note, {900, 40, 60, 560}, font, narrow);
+  drawColorBar({-0.27, 4.15, true}, "K", note, {900, 40, 60, 560}, font, palette::kLightPage, narrow);
   EXPECT_GT(softGlyphs(narrow), 0u) << "the note under the bar";
   ShapeBatch narrowWithoutNote;
-  drawColorBar({-0.27, 4.15, true}, "K", "", {900, 40, 60, 560}, font, narrowWithoutNote);
+  drawColorBar({-0.27, 4.15, true}, "K", "", {900, 40, 60, 560}, font, palette::kLightPage, narrowWithoutNote);
   EXPECT_EQ(softGlyphs(narrowWithoutNote), 0u) << "break words squeezed into a narrow strip";
   ShapeBatch oneSlope;
-  drawColorBar({0, 4.15, false}, "K", "", {900, 40, 200, 560}, font, oneSlope);
+  drawColorBar({0, 4.15, false}, "K", "", {900, 40, 200, 560}, font, palette::kLightPage, oneSlope);
   EXPECT_EQ(softGlyphs(oneSlope), 0u);
 }
 

@@ -511,6 +511,45 @@ TEST_F(PixelProbe, PinsAreCharcoal) {
   }
 }
 
+// view.theme dark: a dark page, and what stands on it (the text panel's title and time, the plot's axes and tick
+// labels, the pins) in light ink; the sphere and its paths are the same object on either page.
+TEST_F(PixelProbe, TheDarkThemeLightensTheInkNotTheSphere) {
+  ViewSettings dark = settings;
+  dark.theme = Theme::Dark;
+  dark.background = themeBackground(Theme::Dark);
+  const Image night = Renderer(dark, testing::kSmallSize).render(frame);
+  const Rgb8 corner = pixel(night, testing::kWidth - 1, testing::kHeight - 1);
+  EXPECT_LT(std::max({corner.r, corner.g, corner.b}), 45);
+  // Grey pixels (no run's colour) in a panel: dark ink on the light page, light ink on the dark one. Ink left dark
+  // on the dark page would leave no light grey pixel at all.
+  const auto greyInk = [](const Image& picture, const PixelRect& r, bool light) {
+    int count = 0;
+    for (int y = int(r.y); y < int(r.y + r.height); ++y)
+      for (int x = int(r.x); x < int(r.x + r.width); ++x) {
+        const Rgb8 c = pixel(picture, x, y);
+        const bool grey = std::max({c.r, c.g, c.b}) - std::min({c.r, c.g, c.b}) < 16;
+        count += grey && (light ? c.g > 120 : c.g < 100);
+      }
+    return count;
+  };
+  for (const PanelKind kind : {PanelKind::Text, PanelKind::Plot}) {
+    const PixelRect r = panelRect(settings, kind);
+    EXPECT_GT(greyInk(image, r, false), 40) << int(kind);
+    EXPECT_GT(greyInk(night, r, true), 40) << int(kind);
+  }
+  const FrameComposer composer(settings, testing::kSmallSize);
+  const auto view = fitFrameView(frame, panelRect(settings, PanelKind::Linkage), captionHeight(composer.font()));
+  const P2 pin = view(0.0, 0);
+  const float rod = std::max(1.5f, float(0.045 * view.scale));
+  const Rgb8 bolt = pixel(night, int(pin.x), int(pin.y - 1.4f * rod));
+  EXPECT_GT(int(bolt.g) - int(corner.g), 60) << "a charcoal pin vanishes on the dark page";
+  const P2 centre = camera.project({0, 0, 0});
+  for (const int dy : {-6, 0, 6}) {  // bare sphere, the path, bare sphere
+    const Rgb8 a = pixel(image, int(centre.x), int(centre.y) + dy), b = pixel(night, int(centre.x), int(centre.y) + dy);
+    EXPECT_TRUE(a.r == b.r && a.g == b.g && a.b == b.b) << dy;
+  }
+}
+
 TEST_F(PixelProbe, NoAntialiasingStillDrawsTheSameScene) {
   ViewSettings aliased = settings;
   aliased.antialias = false;

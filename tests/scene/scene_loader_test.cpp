@@ -100,6 +100,30 @@ TEST(SceneLoader, DefaultsFillWhatIsLeftOut) {
   EXPECT_EQ(scene.view.panels[1].kind, PanelKind::Linkage);
 }
 
+// A theme sets the page the frame is drawn on; a background the scene gives wins over it, whichever comes first.
+TEST(SceneLoader, ThemeSetsTheBackgroundUnlessTheSceneGivesOne) {
+  const auto viewOf = [](const std::string& view) {
+    return parseScene(
+               R"({"name": "d", "linkage": {"rods": 4, "L": 3}, "initial": {"coords": [0, 0], "velocity": [1, 0]},
+        "duration": 1, "runs": [{"name": "r"}], "view": )" +
+                   view + "}",
+               "d.json")
+        .view;
+  };
+  EXPECT_EQ(viewOf("{}").theme, Theme::Light);
+  EXPECT_EQ(viewOf("{}").background, themeBackground(Theme::Light));
+  const ViewSettings dark = viewOf(R"({"theme": "dark"})");
+  EXPECT_EQ(dark.theme, Theme::Dark);
+  EXPECT_EQ(dark.background, themeBackground(Theme::Dark));
+  EXPECT_NE(themeBackground(Theme::Dark), themeBackground(Theme::Light));
+  for (const char* view :
+       {R"({"theme": "dark", "background": [0, 0, 0.5]})", R"({"background": [0, 0, 0.5], "theme": "dark"})"}) {
+    const ViewSettings own = viewOf(view);
+    EXPECT_EQ(own.theme, Theme::Dark);
+    EXPECT_EQ(own.background, (ColorRGB{0, 0, 0.5f})) << view;
+  }
+}
+
 // The camera's mode: as asked; else a scene that fixes a direction or an orbit keeps it, the rest are directed. A mode
 // that contradicts the orbit rate is refused, naming the key.
 TEST(SceneLoader, CameraModeFollowsWhatTheSceneFixes) {
