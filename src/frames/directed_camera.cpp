@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "contracts/registry.hpp"
+#include "contracts/vec3_algebra.hpp"
 #include "simulation/trajectory.hpp"
 
 namespace sl {
@@ -13,14 +14,6 @@ using namespace directed_camera;
 
 const double kPi = std::acos(-1.0);
 double radians(double degrees) { return degrees * kPi / 180.0; }
-
-Vec3 operator+(const Vec3& a, const Vec3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-Vec3 operator-(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-Vec3 operator*(double s, const Vec3& v) { return {s * v.x, s * v.y, s * v.z}; }
-double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-double length(const Vec3& v) { return std::sqrt(dot(v, v)); }
-Vec3 cross(const Vec3& a, const Vec3& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-bool same(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
 
 // The direction of v, or empty for a vector too short (or not finite) to have one.
 std::optional<Vec3> directionOf(const Vec3& v, double shortest = 1e-9) {
@@ -67,7 +60,7 @@ std::vector<Vec3> smoothed(const std::vector<Vec3>& v, double sigma) {
     bool constant = true;
     for (long i = -reach; i <= reach; ++i) {
       const Vec3& at = v[std::size_t(std::clamp(k + i, 0L, count - 1))];
-      constant = constant && same(at, v[std::size_t(k)]);
+      constant = constant && at == v[std::size_t(k)];
       sum = sum + weights[std::size_t(i + reach)] * at;
     }
     out[std::size_t(k)] = constant ? v[std::size_t(k)] : directionOf(sum).value_or(v[std::size_t(k)]);

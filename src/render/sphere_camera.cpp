@@ -4,25 +4,14 @@
 #include <cmath>
 
 #include "contracts/limits.hpp"
+#include "contracts/vec3_algebra.hpp"
 
 namespace sl {
-namespace {
-
-V3 operator*(double s, const V3& v) { return {s * v.x, s * v.y, s * v.z}; }
-V3 operator-(const V3& a, const V3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-double dot(const V3& a, const V3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-V3 cross(const V3& a, const V3& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-V3 normalized(const V3& v) { return (1.0 / std::sqrt(dot(v, v))) * v; }
-
-}  // namespace
 
 SphereCamera::SphereCamera(const CameraSpec& spec, double time, const PixelRect& panel, double fitRadius) {
   const double pi = std::acos(-1.0);
-  V3 direction{spec.viewDirection.x, spec.viewDirection.y, spec.viewDirection.z};
-  if (!(dot(direction, direction) > 1e-12)) {  // a hand-built zero direction: the default view
-    const Vec3 fallback = CameraSpec{}.viewDirection;
-    direction = {fallback.x, fallback.y, fallback.z};
-  }
+  Vec3 direction = spec.viewDirection;
+  if (!(dot(direction, direction) > 1e-12)) direction = CameraSpec{}.viewDirection;  // a hand-built zero: the default
   direction = normalized(direction);
   const double orbit = spec.orbitDegreesPerSecond * time * pi / 180.0;
   const double c = std::cos(orbit), s = std::sin(orbit);
@@ -40,7 +29,7 @@ SphereCamera::SphereCamera(const CameraSpec& spec, double time, const PixelRect&
   distance_ = distance;
   eye_ = distance * direction;
   forward_ = -1.0 * direction;
-  const V3 vertical = std::abs(direction.z) > 0.999 ? V3{0, 1, 0} : V3{0, 0, 1};
+  const Vec3 vertical = std::abs(direction.z) > 0.999 ? Vec3{0, 1, 0} : Vec3{0, 0, 1};
   right_ = normalized(cross(forward_, vertical));
   up_ = cross(right_, forward_);
   centre_ = {panel.x + 0.5f * panel.width, panel.y + 0.5f * panel.height};
@@ -54,16 +43,16 @@ CameraSpec cameraOfFrame(const CameraSpec& spec, const FrameState& frame) {
   return directed;
 }
 
-P2 SphereCamera::project(const V3& p) const {
-  const V3 v = p - eye_;
+P2 SphereCamera::project(const Vec3& p) const {
+  const Vec3 v = p - eye_;
   const double depth = std::max(dot(v, forward_), 1e-6);
   return {static_cast<float>(centre_.x + focal_ * dot(v, right_) / depth),
           static_cast<float>(centre_.y - focal_ * dot(v, up_) / depth)};
 }
 
-double SphereCamera::pixelsPerUnitAt(const V3& p) const { return focal_ / std::max(dot(p - eye_, forward_), 1e-6); }
+double SphereCamera::pixelsPerUnitAt(const Vec3& p) const { return focal_ / std::max(dot(p - eye_, forward_), 1e-6); }
 
-bool SphereCamera::inFront(const V3& p) const { return dot(p - eye_, forward_) > 1e-3; }
+bool SphereCamera::inFront(const Vec3& p) const { return dot(p - eye_, forward_) > 1e-3; }
 
 double SphereCamera::outlineRadius() const {
   const double d2 = dot(eye_, eye_);

@@ -13,20 +13,15 @@ struct PixelRect {
   float x = 0, y = 0, width = 0, height = 0;  // pixels, y down
 };
 
-struct V3 {
-  double x = 0, y = 0, z = 0;
-  friend bool operator==(const V3&, const V3&) = default;  // exact (a NaN equals nothing)
-};
-
 class SphereCamera {
  public:
   // The camera frames a sphere of radius `fitRadius` about the origin in `panel`.
   SphereCamera(const CameraSpec& spec, double time, const PixelRect& panel, double fitRadius = 1.0);
 
-  P2 project(const V3& p) const;              // pixel position
-  double pixelsPerUnitAt(const V3& p) const;  // scale of a small object at p
-  bool inFront(const V3& p) const;            // in front of the eye plane
-  V3 eye() const { return eye_; }
+  P2 project(const Vec3& p) const;              // pixel position
+  double pixelsPerUnitAt(const Vec3& p) const;  // scale of a small object at p
+  bool inFront(const Vec3& p) const;            // in front of the eye plane
+  Vec3 eye() const { return eye_; }
   // The eye's distance from the centre as the camera chose it (from the panel and the field of view alone, exactly
   // the same for every direction; |eye()| may differ from it in the last bits).
   double distance() const { return distance_; }
@@ -35,14 +30,14 @@ class SphereCamera {
   double outlineRadius() const;
 
   // Shader uniforms: eye, forward * focal, right, up (world), panel centre (pixels).
-  const V3& forward() const { return forward_; }
-  const V3& right() const { return right_; }
-  const V3& up() const { return up_; }
+  const Vec3& forward() const { return forward_; }
+  const Vec3& right() const { return right_; }
+  const Vec3& up() const { return up_; }
   double focal() const { return focal_; }
   P2 centre() const { return centre_; }
 
  private:
-  V3 eye_, forward_, right_, up_;
+  Vec3 eye_, forward_, right_, up_;
   double focal_ = 1, distance_ = 1;
   P2 centre_;
 };

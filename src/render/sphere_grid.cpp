@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "contracts/vec3_algebra.hpp"
 #include "render/palette.hpp"
 
 namespace sl {
@@ -12,8 +13,9 @@ namespace {
 // Pixels a joined section of a grid line may stray from the points it replaces (on top of sphereGridPiece's 0.05).
 constexpr float kGridMergeTolerance = 0.05f;
 
-double dot(const V3& a, const V3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-V3 chartPoint(double phi, double t) { return {std::cos(phi) * std::cos(t), std::cos(phi) * std::sin(t), std::sin(phi)}; }
+Vec3 chartPoint(double phi, double t) {
+  return {std::cos(phi) * std::cos(t), std::cos(phi) * std::sin(t), std::sin(phi)};
+}
 
 }  // namespace
 
@@ -47,13 +49,13 @@ SphereGridLines::SphereGridLines(double step, double piece) : step_(step), piece
     }
     lines_.push_back(std::move(line));
   };
-  const auto always = [](const V3&) { return 1.0; };
+  const auto always = [](const Vec3&) { return 1.0; };
   // Parallels phi = k * step up to the last one short of the poles.
   const int parallels = int(std::floor(0.5 * pi / step - 1e-9));
   for (int k = -parallels; k <= parallels; ++k)
     add([&](double t) { return chartPoint(k * step, t); }, -pi, pi, k == 0 ? 0.9f : 0.55f, always);
   // Meridians t = j * step, faded out between |z| = 0.92 and 0.985 where they crowd at the poles.
-  const auto fade = [](const V3& p) {
+  const auto fade = [](const Vec3& p) {
     const double s = std::clamp((std::abs(p.z) - 0.92) / (0.985 - 0.92), 0.0, 1.0);
     return 1.0 - s * s * (3 - 2 * s);
   };
@@ -65,9 +67,9 @@ SphereGridLines::SphereGridLines(double step, double piece) : step_(step), piece
 
 std::size_t SphereGridLines::draw(ShapeBatch& batch, const SphereCamera& camera, float unit) const {
   const std::size_t first = batch.vertices().size();
-  const V3 eye = camera.eye();
+  const Vec3 eye = camera.eye();
   const double distance = camera.distance();
-  const V3 towardsEye{eye.x / distance, eye.y / distance, eye.z / distance};
+  const Vec3 towardsEye{eye.x / distance, eye.y / distance, eye.z / distance};
   // A point is in front where dot(p, towardsEye) >= 1 / D (the limb); a line runs a little past it so that its
   // end is cut by the outline's anti-aliasing (sphere_grid.frag), not by the polyline.
   const double past = 1.0 / distance - 0.02;
@@ -81,7 +83,7 @@ std::size_t SphereGridLines::draw(ShapeBatch& batch, const SphereCamera& camera,
   };
   for (const Line& line : lines_) {
     for (std::size_t i = 0; i < line.points.size(); ++i) {
-      const V3& p = line.points[i];
+      const Vec3& p = line.points[i];
       if (dot(p, towardsEye) < past) {
         flush();
         continue;
@@ -96,7 +98,7 @@ std::size_t SphereGridLines::draw(ShapeBatch& batch, const SphereCamera& camera,
   // The chart's poles: squares about the caps (0.035 of the radius on the surface, at most about 10 frame units;
   // sphere_grid.frag measures them), with room for their anti-aliased edge where the limb foreshortens them.
   for (const double z : {-1.0, 1.0}) {
-    const V3 pole{0, 0, z};
+    const Vec3 pole{0, 0, z};
     if (dot(pole, towardsEye) < past - 0.05) continue;
     batch.disc(camera.project(pole), float(0.035 * camera.pixelsPerUnitAt(pole)) + 8.0f, palette::poleMark);
   }

@@ -43,7 +43,7 @@ class SphereGridLines {
 
  private:
   struct Line {
-    std::vector<V3> points;
+    std::vector<Vec3> points;
     std::vector<float> alpha;
     float halfWidth;
   };

@@ -41,7 +41,7 @@ std::vector<std::string> packPhrases(const std::vector<std::string>& phrases, co
 }  // namespace
 
 void drawBallGuide(const PanelContext& context, const SphereCamera& camera, ShapeBatch& batch) {
-  const V3 centre{0, 0, 0};
+  const Vec3 centre{0, 0, 0};
   const P2 at = camera.project(centre);
   const float half = float(0.5 * camera.pixelsPerUnitAt(centre));
   std::vector<PolylinePoint> ring;
@@ -72,7 +72,7 @@ void drawBallGuide(const PanelContext& context, const SphereCamera& camera, Shap
 }
 
 void drawBallStart(const PanelContext& context, const SphereCamera& camera, ShapeBatch& batch) {
-  const V3 centre{0, 0, 0};
+  const Vec3 centre{0, 0, 0};
   const P2 at = camera.project(centre);
   const float arm = std::max(4.0f * markUnit(context.unit), 0.035f * float(camera.pixelsPerUnitAt(centre)));
   const float width = std::max(0.9f * markUnit(context.unit), 0.12f * arm);
@@ -88,7 +88,7 @@ void drawEquator(const SphereCamera& camera, float unit, ShapeBatch& batch) {
   std::vector<PolylinePoint> points;
   const double pi = std::acos(-1.0);
   for (int k = 0; k <= 256; ++k) {
-    const V3 p{std::cos(2 * pi * k / 256), std::sin(2 * pi * k / 256), 0};
+    const Vec3 p{std::cos(2 * pi * k / 256), std::sin(2 * pi * k / 256), 0};
     points.push_back({camera.project(p), 1.2f * unit, palette::withAlpha(palette::softInk, 0.8f), {}});
   }
   batch.polyline(points);
@@ -98,7 +98,7 @@ void drawEllipses(const std::vector<SphereEllipse>& ellipses, const SphereCamera
                   const PixelRect& rect, float unit, ShapeBatch& batch) {
   constexpr int kSegments = 40;
   const float halfWidth = std::max(0.6f * unit, 0.0011f * rect.height);
-  const V3 eye = camera.eye();
+  const Vec3 eye = camera.eye();
   const double eyeDistance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
   for (const SphereEllipse& e : ellipses) {
     // Seen edge-on near the outline an ellipse is a meaningless dash: fade it out there. The outline is where the
@@ -116,7 +116,7 @@ void drawEllipses(const std::vector<SphereEllipse>& ellipses, const SphereCamera
       const Vec3 p{e.centre.x + std::cos(a) * e.major.x + std::sin(a) * e.minor.x,
                    e.centre.y + std::cos(a) * e.major.y + std::sin(a) * e.minor.y,
                    e.centre.z + std::cos(a) * e.major.z + std::sin(a) * e.minor.z};
-      const V3 placed = placement.place(p);
+      const Vec3 placed = placement.place(p);
       visible = camera.inFront(placed);
       points.push_back({camera.project(placed), halfWidth, color, placement.world(placed)});
     }
@@ -129,7 +129,7 @@ void drawEllipses(const std::vector<SphereEllipse>& ellipses, const SphereCamera
       const Vec3 p{e.centre.x + s * e.major.x, e.centre.y + s * e.major.y, e.centre.z + s * e.major.z};
       const Vec3 side{e.centre.x + across * e.minor.x, e.centre.y + across * e.minor.y,
                       e.centre.z + across * e.minor.z};
-      const V3 placed = placement.place(p);
+      const Vec3 placed = placement.place(p);
       const P2 edge = camera.project(placement.place(side));
       const float half = std::hypot(edge.x - middle.x, edge.y - middle.y);
       fill.push_back({camera.project(placed), half, Rgba{1, 1, 1, 0.5f * alpha}, placement.world(placed)});
@@ -170,12 +170,12 @@ void drawLabel(const std::string& text, P2 anchor, bool hidden, const PanelConte
   placed.push_back({box.x0, box.y0, box.x1 - box.x0, box.y1 - box.y0});
 }
 
-float labelBudget(const SphereCamera& camera) { return 0.5f * float(camera.pixelsPerUnitAt(V3{0, 0, 0})); }
+float labelBudget(const SphereCamera& camera) { return 0.5f * float(camera.pixelsPerUnitAt(Vec3{0, 0, 0})); }
 
 void labelChartPoles(const PanelContext& context, const SphereCamera& camera, LabelPlacer& placer,
                      std::vector<PixelRect>& placed, ShapeBatch& back, ShapeBatch& batch) {
   for (const double z : {1.0, -1.0}) {
-    const V3 pole{0, 0, z * 1.001};
+    const Vec3 pole{0, 0, z * 1.001};
     if (!camera.inFront(pole)) continue;
     const P2 at = camera.project(pole);
     const bool hidden = behindSphere(camera, pole);
@@ -204,7 +204,7 @@ void drawSeams(const PanelContext& context, const SphereCamera& camera, LabelPla
     };
     for (int k = 0; k <= 128; ++k) {
       const double phi = -pi / 2 + pi * k / 128;
-      const V3 p{1.003 * std::cos(phi) * std::cos(t), 1.003 * std::cos(phi) * std::sin(t), 1.003 * std::sin(phi)};
+      const Vec3 p{1.003 * std::cos(phi) * std::cos(t), 1.003 * std::cos(phi) * std::sin(t), 1.003 * std::sin(phi)};
       if (!camera.inFront(p)) continue;
       const bool hidden = surfaceBehind(camera, p);
       auto& side = hidden ? back_ : front_;
@@ -212,7 +212,7 @@ void drawSeams(const PanelContext& context, const SphereCamera& camera, LabelPla
       if (!other.empty()) flush();
       side.push_back({camera.project(p), (hidden ? 0.6f : 1.0f) * context.unit, hidden ? ghost(red) : red, {}});
       if (!hidden) placer.avoidPoint(camera.project(p));  // labels keep off the seam as off the paths
-      const V3 eye = camera.eye();
+      const Vec3 eye = camera.eye();
       const double facing =
           (p.x * eye.x + p.y * eye.y + p.z * eye.z) / std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
       // A seam is named at a point of it in sight: not under a ball (a state on the seam covers it there).
@@ -234,7 +234,7 @@ void drawLoci(const SphereDecoration& decoration, const PanelContext& context, c
   const Placement onSurface{true, 0.006};
   const float halfWidth = std::max(1.1f * markUnit(context.unit), 0.0021f * context.rect.height);
   const float ghostHalfWidth = 0.6f * markUnit(context.unit);
-  const V3 eye = camera.eye();
+  const Vec3 eye = camera.eye();
   const double eyeDistance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
   struct Named {
     double facing = 0.15;  // only a point facing the eye this much is named
@@ -260,7 +260,7 @@ void drawLoci(const SphereDecoration& decoration, const PanelContext& context, c
     };
     bool wasHidden = false;
     for (const Vec3& point : curve.points) {
-      const V3 p = onSurface.place(point);
+      const Vec3 p = onSurface.place(point);
       if (!drawable(point) || !camera.inFront(p)) {
         flush();
         continue;
@@ -291,7 +291,7 @@ void drawLoci(const SphereDecoration& decoration, const PanelContext& context, c
   }
   if (decoration.distance && !decoration.distance->fromStart) {
     const Vec3& x = decoration.distance->point;
-    const V3 p = onSurface.place(x);
+    const Vec3 p = onSurface.place(x);
     if (camera.inFront(p)) {
       const bool behind = behindSphere(camera, p);
       const float radius = std::max(5 * markUnit(context.unit), 0.012f * context.rect.height);
@@ -314,7 +314,7 @@ void drawTransport(const SphereTransport& transport, const PanelContext& context
     const Vec3 tip{arrow.base.x + kTransportArrowLength * arrow.direction.x,
                    arrow.base.y + kTransportArrowLength * arrow.direction.y,
                    arrow.base.z + kTransportArrowLength * arrow.direction.z};
-    const V3 from3 = onSurface.place(arrow.base), to3 = onSurface.place(tip);
+    const Vec3 from3 = onSurface.place(arrow.base), to3 = onSurface.place(tip);
     if (!camera.inFront(from3) || !camera.inFront(to3)) return;
     const P2 from = camera.project(from3), to = camera.project(to3);
     const float length = std::hypot(to.x - from.x, to.y - from.y);
@@ -353,7 +353,7 @@ void drawTransport(const SphereTransport& transport, const PanelContext& context
     drawArrow(transport.carriedAt(side, reached), returning ? palette::returningVector : palette::ink, 1.5f);
   }
   if (!transport.corners.empty()) {
-    const V3 corner = onSurface.place(transport.corners.front());
+    const Vec3 corner = onSurface.place(transport.corners.front());
     if (camera.inFront(corner) && !surfaceBehind(camera, corner))
       front.ring(camera.project(corner), 4.5f * mark, 0.9f * mark, palette::ink);
   }

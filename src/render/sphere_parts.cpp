@@ -11,8 +11,6 @@
 
 namespace sl::detail {
 
-V3 toV3(const Vec3& p) { return {p.x, p.y, p.z}; }
-
 bool drawable(const Vec3& p) {
   return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && p.x * p.x + p.y * p.y + p.z * p.z < 400.0;
 }
@@ -21,18 +19,18 @@ double distance(const Vec3& a, const Vec3& b) {
   return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z));
 }
 
-bool behindSphere(const SphereCamera& camera, const V3& p) {
-  const V3 e = camera.eye();
-  const V3 d{p.x - e.x, p.y - e.y, p.z - e.z};
+bool behindSphere(const SphereCamera& camera, const Vec3& p) {
+  const Vec3 e = camera.eye();
+  const Vec3 d{p.x - e.x, p.y - e.y, p.z - e.z};
   const double dd = d.x * d.x + d.y * d.y + d.z * d.z;
   if (!(dd > 0)) return false;
   const double s = -(e.x * d.x + e.y * d.y + e.z * d.z) / dd;  // the sight line's closest approach to the centre
   if (s <= 0 || s >= 1) return false;
-  const V3 c{e.x + s * d.x, e.y + s * d.y, e.z + s * d.z};
+  const Vec3 c{e.x + s * d.x, e.y + s * d.y, e.z + s * d.z};
   return c.x * c.x + c.y * c.y + c.z * c.z < 1.0;
 }
 
-bool surfaceBehind(const SphereCamera& camera, const V3& lifted) {
+bool surfaceBehind(const SphereCamera& camera, const Vec3& lifted) {
   const double r = std::sqrt(lifted.x * lifted.x + lifted.y * lifted.y + lifted.z * lifted.z);
   if (!(r > 0)) return false;
   const double s = (1.0 - 1e-9) / r;  // just inside the surface: a point exactly on the limb counts as hidden
@@ -47,9 +45,9 @@ P2 withinOutline(const SphereCamera& camera, P2 at, float inset) {
   return {c.x + dx * limit / r, c.y + dy * limit / r};
 }
 
-SphereCover sphereCoverNear(const SphereCamera& camera, const V3& p, double reach) {
-  const V3 e = camera.eye();
-  const V3 d{p.x - e.x, p.y - e.y, p.z - e.z};
+SphereCover sphereCoverNear(const SphereCamera& camera, const Vec3& p, double reach) {
+  const Vec3 e = camera.eye();
+  const Vec3 d{p.x - e.x, p.y - e.y, p.z - e.z};
   const double toPoint = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
   if (!(toPoint > 0)) return SphereCover::PerPixel;
   const double closest = -(e.x * d.x + e.y * d.y + e.z * d.z) / toPoint;

@@ -32,16 +32,15 @@ constexpr float kThinPathTolerance = 0.05f;
 // A transported vector's arrow spans this much of the sphere whatever the frame's size.
 constexpr double kTransportArrowLength = 0.2;
 
-V3 toV3(const Vec3& p);
 // Finite and not absurdly far (the frame state promises the unit ball or sphere; this guards the drawing).
 bool drawable(const Vec3& p);
 double distance(const Vec3& a, const Vec3& b);
 // Hidden by the opaque unit sphere: the sight line from the eye to p passes through the sphere's inside before
 // reaching p (p itself lies on or outside the sphere).
-bool behindSphere(const SphereCamera& camera, const V3& p);
+bool behindSphere(const SphereCamera& camera, const Vec3& p);
 // Whether the surface point under a lifted one is on the far side. Lifted points just beyond the limb are still in
 // sight past the sphere, and drawn as in front they would hang outside its outline.
-bool surfaceBehind(const SphereCamera& camera, const V3& lifted);
+bool surfaceBehind(const SphereCamera& camera, const Vec3& lifted);
 // A point drawn on the sphere kept within its outline, `inset` pixels inside it: what is shifted sideways
 // (coinciding runs side by side) or lifted off the surface never hangs past the limb.
 P2 withinOutline(const SphereCamera& camera, P2 at, float inset);
@@ -49,7 +48,7 @@ P2 withinOutline(const SphereCamera& camera, P2 at, float inset);
 // (hiddenBySphere: the sight line's near hit against the fragment's distance, blended over a pixel) evaluated at
 // the nearest and farthest sight lines of that reach, with two pixels to spare: clear where no such pixel can be
 // hidden, hidden where all are, else left to the shader.
-SphereCover sphereCoverNear(const SphereCamera& camera, const V3& p, double reach);
+SphereCover sphereCoverNear(const SphereCamera& camera, const Vec3& p, double reach);
 Rgba ghost(Rgba c);
 // A hidden line's half width: its own, but never bolder than the line in front would be there (a small frame's floor
 // of a mark unit made hidden dashes bolder than the paths in front).
@@ -76,13 +75,13 @@ float pathAlpha(const ViewSettings& settings, double age);
 struct Placement {
   bool onSphere;
   double lift;
-  V3 place(const Vec3& p) const {
-    if (!onSphere) return toV3(p);
+  Vec3 place(const Vec3& p) const {
+    if (!onSphere) return p;
     const double r = std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
     const double s = r > 1e-12 ? (1.0 + lift) / r : 0.0;
     return {p.x * s, p.y * s, p.z * s};
   }
-  Occludable world(const V3& p) const { return {float(p.x), float(p.y), float(p.z), onSphere ? 1.0f : 0.0f}; }
+  Occludable world(const Vec3& p) const { return {float(p.x), float(p.y), float(p.z), onSphere ? 1.0f : 0.0f}; }
 };
 
 // === The runs (render/sphere_paths.cpp)
@@ -111,7 +110,7 @@ struct BallPlace {
   P2 heading{1, 0};
   bool headingKnown = false;
   bool behind = false;
-  V3 centre;
+  Vec3 centre;
   P2 markAt;
   bool marksDirection = true;
 };

@@ -50,7 +50,7 @@ void drawPath(const SharedSpan<Vec3>& path, const SharedSamples& times, const Pa
       alpha *= 0.45f + 0.55f * young;
       widthScale = 0.6f + 0.4f * young;
     }
-    const V3 p = placement.place(path[i]);
+    const Vec3 p = placement.place(path[i]);
     const bool hidden = alpha <= 0.0f || !drawable(path[i]) || !camera.inFront(p);
     const bool jump = throughAntipode && i > 0 && distance(path[i - 1], path[i]) > kMaxPathChord;
     const bool behind = !hidden && placement.onSphere && surfaceBehind(camera, p);
@@ -102,7 +102,7 @@ void drawFamily(const RunFrame& run, const PanelContext& context, const SphereCa
   const Rgba waveInk = palette::withAlpha(palette::ink, 0.9f);
   for (std::size_t m = 0; m < count; ++m) {
     const Vec3& at = run.members[m].current;
-    const V3 p = placement.place(at);
+    const Vec3 p = placement.place(at);
     const bool jump = throughAntipode && m > 0 && distance(run.members[m - 1].current, at) > kMaxPathChord;
     if (!drawable(at) || !camera.inFront(p) || jump) flush();
     if (!drawable(at) || !camera.inFront(p)) continue;
@@ -116,7 +116,7 @@ void drawFamily(const RunFrame& run, const PanelContext& context, const SphereCa
   flush();
   for (std::size_t m = 0; m < count; ++m) {
     const MemberFrame& member = run.members[m];
-    const V3 p = placement.place(member.current);
+    const Vec3 p = placement.place(member.current);
     if (!drawable(member.current) || !camera.inFront(p)) continue;
     const float pixelsPerUnit = float(camera.pixelsPerUnitAt(p));
     const float radius = std::max(1.5f * context.unit, 0.35f * float(kBallRadius) * pixelsPerUnit);
@@ -150,12 +150,12 @@ BallPlace placeBall(const RunFrame& run, float unit, const SphereCamera& camera,
   // The heading: from the last path point at least a few units back on the screen to the state, both as the path
   // is placed (the ball's centre, lifted higher, is shifted away from the sphere's centre on the screen: measured from
   // it, the heading would point outwards wherever the ball is off the centre).
-  const V3 state = placement.place(run.current);
+  const Vec3 state = placement.place(run.current);
   if (!camera.inFront(state)) return ball;
   const P2 now = camera.project(state);
   for (std::size_t i = run.path.size(); i-- > 0;) {
     if (!drawable(run.path[i])) break;
-    const V3 p = placement.place(run.path[i]);
+    const Vec3 p = placement.place(run.path[i]);
     if (!camera.inFront(p)) break;
     const P2 q = camera.project(p);
     if (std::hypot(now.x - q.x, now.y - q.y) >= 3 * unit) {
@@ -273,7 +273,7 @@ std::optional<Box> drawBall(const RunFrame& run, const BallPlace& ball, const Pa
 void drawStart(const RunFrame& run, float offset, float unit, const SphereCamera& camera, const Placement& placement,
                ShapeBatch& back, ShapeBatch& front) {
   if (run.path.size() < 2 || !drawable(run.path[0])) return;
-  const V3 p = placement.place(run.path[0]);
+  const Vec3 p = placement.place(run.path[0]);
   if (!camera.inFront(p)) return;
   const P2 at = camera.project(p);
   P2 along{1, 0};
@@ -308,7 +308,7 @@ void drawConjugatePoints(const RunFrame& run, float unit, const SphereCamera& ca
   Placement markPlacement = placement;
   markPlacement.lift = 1.5 * kTubeRadius;
   for (const Vec3& point : run.conjugatePoints) {
-    const V3 p = markPlacement.place(point);
+    const Vec3 p = markPlacement.place(point);
     if (!drawable(point) || !camera.inFront(p)) continue;
     const float pixelsPerUnit = float(camera.pixelsPerUnitAt(p));
     const float radius = std::max(3.0f * markUnit(unit), 0.7f * float(kBallRadius) * pixelsPerUnit);

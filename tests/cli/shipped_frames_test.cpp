@@ -192,12 +192,12 @@ TEST(ShippedFrames, PoleLabelsAreSizedToTheSphereAndStayByTheirPoles) {
         const std::string where = std::to_string(list.size.width) + "x" + std::to_string(list.size.height) +
                                   " frame " + std::to_string(k);
         EXPECT_EQ(sphere.labels.size(), 2u) << where << ": both poles named";
-        const float radius = float(sphere.camera.pixelsPerUnitAt(V3{0, 0, 0}));
+        const float radius = float(sphere.camera.pixelsPerUnitAt(Vec3{0, 0, 0}));
         const float line = composer->font().lineHeight(TextSize::Small);
         for (const PixelRect& label : sphere.labels) EXPECT_LT(label.width, 0.5f * radius + line) << where;
         for (const double z : {1.0, -1.0}) {
-          const V3 pole{0, 0, z};
-          const V3 eye = sphere.camera.eye();
+          const Vec3 pole{0, 0, z};
+          const Vec3 eye = sphere.camera.eye();
           if (eye.x * pole.x + eye.y * pole.y + eye.z * pole.z < 1) continue;  // behind the sphere
           const P2 at = sphere.camera.project(pole);
           float nearest = 1e9f;

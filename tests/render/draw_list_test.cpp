@@ -446,10 +446,10 @@ TEST(ShapeBatchTest, StraightRunsAreMergedWithinTheTolerance) {
 
 // shaders/lit.frag's hiddenBySphere, in double: how much the unit sphere hides a fragment at `pixel` whose point is
 // `world` (not a ball).
-double hiddenBySphereAt(const SphereCamera& camera, P2 pixel, V3 world, bool antialias) {
-  const V3 e = camera.eye(), f = camera.forward(), r = camera.right(), u = camera.up();
+double hiddenBySphereAt(const SphereCamera& camera, P2 pixel, Vec3 world, bool antialias) {
+  const Vec3 e = camera.eye(), f = camera.forward(), r = camera.right(), u = camera.up();
   const double focal = camera.focal(), dx = pixel.x - camera.centre().x, dy = pixel.y - camera.centre().y;
-  V3 ray{f.x * focal + r.x * dx - u.x * dy, f.y * focal + r.y * dx - u.y * dy, f.z * focal + r.z * dx - u.z * dy};
+  Vec3 ray{f.x * focal + r.x * dx - u.x * dy, f.y * focal + r.y * dx - u.y * dy, f.z * focal + r.z * dx - u.z * dy};
   const double n = std::sqrt(ray.x * ray.x + ray.y * ray.y + ray.z * ray.z);
   ray = {ray.x / n, ray.y / n, ray.z / n};
   const double closest = -(ray.x * e.x + ray.y * e.y + ray.z * e.z);

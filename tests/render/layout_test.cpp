@@ -150,12 +150,12 @@ TEST(SphereCamera, ProjectionAgreesWithPixelRays) {
   CameraSpec spec;
   spec.orbitDegreesPerSecond = 10;
   const SphereCamera camera(spec, 4.0, PixelRect{10, 20, 600, 400});
-  for (V3 p : {V3{1, 0, 0}, V3{0.3, -0.8, 0.52}, V3{0, 0, 1}, V3{-0.2, 0.1, -0.4}}) {
+  for (Vec3 p : {Vec3{1, 0, 0}, Vec3{0.3, -0.8, 0.52}, Vec3{0, 0, 1}, Vec3{-0.2, 0.1, -0.4}}) {
     const P2 pixel = camera.project(p);
-    const V3 f = camera.forward(), r = camera.right(), u = camera.up(), e = camera.eye();
+    const Vec3 f = camera.forward(), r = camera.right(), u = camera.up(), e = camera.eye();
     const double fx = camera.focal(), dx = pixel.x - camera.centre().x, dy = pixel.y - camera.centre().y;
-    V3 ray{f.x * fx + r.x * dx - u.x * dy, f.y * fx + r.y * dx - u.y * dy, f.z * fx + r.z * dx - u.z * dy};
-    const V3 toPoint{p.x - e.x, p.y - e.y, p.z - e.z};
+    Vec3 ray{f.x * fx + r.x * dx - u.x * dy, f.y * fx + r.y * dx - u.y * dy, f.z * fx + r.z * dx - u.z * dy};
+    const Vec3 toPoint{p.x - e.x, p.y - e.y, p.z - e.z};
     const double rayNorm = std::sqrt(ray.x * ray.x + ray.y * ray.y + ray.z * ray.z);
     const double pointNorm = std::sqrt(toPoint.x * toPoint.x + toPoint.y * toPoint.y + toPoint.z * toPoint.z);
     const double cosine = (ray.x * toPoint.x + ray.y * toPoint.y + ray.z * toPoint.z) / (rayNorm * pointNorm);

@@ -129,7 +129,7 @@ TEST_F(PixelProbe, CurrentStateBehindTheSphereIsAHollowRing) {
   behind.runs[0].path.clear();  // the state alone: no path or heading drawn through it
   behind.runs[0].pathTimes.clear();
   const Vec3 state = behind.runs[0].current;  // on the far side
-  const V3 centre{state.x * 1.055, state.y * 1.055, state.z * 1.055};
+  const Vec3 centre{state.x * 1.055, state.y * 1.055, state.z * 1.055};
   const P2 at = camera.project(centre);
   const Image picture = renderer.render(behind);
   FrameState without = behind;
@@ -247,12 +247,12 @@ TEST_F(PixelProbe, NothingOnTheSphereHangsPastItsOutline) {
   EXPECT_EQ(drawn, 0) << drawn << " of " << probed << " pixels just outside the outline are drawn on";
 
   // A path starting 2 deg in front of the limb (the circle where sight lines graze the sphere) and running along it.
-  const V3 eye = view.eye();
+  const Vec3 eye = view.eye();
   const double eyeDistance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
-  const V3 w{eye.x / eyeDistance, eye.y / eyeDistance, eye.z / eyeDistance};
+  const Vec3 w{eye.x / eyeDistance, eye.y / eyeDistance, eye.z / eyeDistance};
   const double ez = std::sqrt(w.x * w.x + w.y * w.y);  // a unit vector across w, then the third of the frame
   ASSERT_GT(ez, 0.1);
-  const V3 u{-w.y / ez, w.x / ez, 0}, v{w.y * u.z - w.z * u.y, w.z * u.x - w.x * u.z, w.x * u.y - w.y * u.x};
+  const Vec3 u{-w.y / ez, w.x / ez, 0}, v{w.y * u.z - w.z * u.y, w.z * u.x - w.x * u.z, w.x * u.y - w.y * u.x};
   const double polar = std::acos(1.0 / eyeDistance) - 2 * kDeg;
   FrameState start = frame;
   RunFrame& run = start.runs[0];
@@ -280,8 +280,10 @@ TEST_F(PixelProbe, NothingOnTheSphereHangsPastItsOutline) {
   FrameState glyph = start;
   auto decoration = std::make_shared<SphereDecoration>();
   const double s = std::sin(polar), z = std::cos(polar), a = -20 * kDeg;
-  const V3 out{std::cos(a) * v.x + std::sin(a) * u.x, std::cos(a) * v.y + std::sin(a) * u.y, std::cos(a) * v.z + std::sin(a) * u.z};
-  const V3 side{-std::sin(a) * v.x + std::cos(a) * u.x, -std::sin(a) * v.y + std::cos(a) * u.y, -std::sin(a) * v.z + std::cos(a) * u.z};
+  const Vec3 out{std::cos(a) * v.x + std::sin(a) * u.x, std::cos(a) * v.y + std::sin(a) * u.y,
+                 std::cos(a) * v.z + std::sin(a) * u.z};
+  const Vec3 side{-std::sin(a) * v.x + std::cos(a) * u.x, -std::sin(a) * v.y + std::cos(a) * u.y,
+                  -std::sin(a) * v.z + std::cos(a) * u.z};
   const Vec3 centre{z * w.x + s * out.x, z * w.y + s * out.y, z * w.z + s * out.z};
   const Vec3 along{0.08 * side.x, 0.08 * side.y, 0.08 * side.z};
   const Vec3 across{0.08 * (-s * w.x + z * out.x), 0.08 * (-s * w.y + z * out.y), 0.08 * (-s * w.z + z * out.z)};
@@ -330,7 +332,7 @@ TEST_F(PixelProbe, TheCurrentStateCarriesADirectionMarkWithinTheOutline) {
   Renderer large(faded, size);
   const PixelRect panel = panelRect(settings, PanelKind::Sphere, size);
   const SphereCamera view(settings.camera, frame.time, panel);
-  auto lifted = [](const Vec3& p, double r) { return V3{p.x * r, p.y * r, p.z * r}; };
+  auto lifted = [](const Vec3& p, double r) { return Vec3{p.x * r, p.y * r, p.z * r}; };
   // A run along phi = 7.5 deg from t = 70 deg to t = 40 deg (the view's centre is at t = 7.5 deg).
   auto runFrom = [&](double t0, double t1) {
     FrameState moving = frame;
@@ -370,7 +372,7 @@ TEST_F(PixelProbe, TheCurrentStateCarriesADirectionMarkWithinTheOutline) {
   // Out through the limb: a path along phi = 7.5 deg ending just in front of the limb (t = 97.5 deg is 90 deg from
   // the view's centre; the limb, where sight lines graze the sphere, is nearer). Just outside the outline nothing is
   // drawn but the ball, which stands on the surface at the outline: the chevron keeps within it.
-  const V3 eye = view.eye();
+  const Vec3 eye = view.eye();
   const double limb = std::acos(1.0 / std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z)) / kDeg;
   const FrameState outwards = runFrom(40, 7.5 + limb - 1.5);
   const Image atLimb = large.render(outwards);
@@ -401,7 +403,7 @@ TEST_F(PixelProbe, CoincidingStatesShareOneDirectionMark) {
   const ImageSize size{1280, 720};
   Renderer large(settings, size);
   const SphereCamera view(settings.camera, frame.time, panelRect(settings, PanelKind::Sphere, size));
-  auto lifted = [](const Vec3& p, double r) { return V3{p.x * r, p.y * r, p.z * r}; };
+  auto lifted = [](const Vec3& p, double r) { return Vec3{p.x * r, p.y * r, p.z * r}; };
   FrameState one = frame;  // along phi = 7.5 deg from t = 70 deg to t = 40 deg, towards the view's centre
   RunFrame& run = one.runs[0];
   run.path.clear();
@@ -673,10 +675,10 @@ TEST_P(FaithfulColour, ColouredSphereKeepsTheColoursOfItsBar) {
   std::vector<Rgba> bar;
   for (int k = 0; k <= 512; ++k) bar.push_back(scale.colorAt(k / 512.0));
   int probed = 0, faithful = 0;
-  const V3 eye = sideCamera.eye();
+  const Vec3 eye = sideCamera.eye();
   for (int k = 0; k < 1600; ++k) {  // points spread over the sphere; those facing the eye well inside the outline
     const double z = 1 - (k + 0.5) * 2 / 1600, r = std::sqrt(1 - z * z), a = k * 2.399963;
-    const V3 p{r * std::cos(a), r * std::sin(a), z};
+    const Vec3 p{r * std::cos(a), r * std::sin(a), z};
     const double facing = (p.x * eye.x + p.y * eye.y + p.z * eye.z) / std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
     if (facing < 0.5 || std::abs(z) > 0.95) continue;
     // Off the chart grid's lines (every 15 degrees in phi and t), which are drawn over the colours on purpose.

@@ -67,8 +67,8 @@ struct Renderer::Impl {
   std::optional<SphereGridLines> gridLines;  // the opaque sphere's grid on the unit sphere, for the last step
   ViewSpace cachedSpace = ViewSpace::Sphere;
   ColorRGB cachedBackground;  // the background the cached sphere layer was cleared to
-  V3 cachedEye;  // the camera the cached sphere layer was drawn by
-  V3 lastEye{std::nan(""), 0, 0};  // the camera of this renderer's last frame (none yet: equal to no eye)
+  Vec3 cachedEye;             // the camera the cached sphere layer was drawn by
+  Vec3 lastEye{std::nan(""), 0, 0};  // the camera of this renderer's last frame (none yet: equal to no eye)
   const SphereDecoration* uploadedDecoration = nullptr;  // the field in fieldTexture
   const SphereDecoration* cachedDecoration = nullptr;    // the decoration the cached sphere layer shows
   bool frameBlank = false;  // the frame being drawn has no background yet (fillBackground, copyLayer)
@@ -151,7 +151,7 @@ struct Renderer::Impl {
     glUniform1f(program.uniform("uAntialias"), antialias ? 1.0f : 0.0f);
     glUniform1f(program.uniform("uUnit"), frameUnit(size));
     if (!camera) return;
-    const auto set3 = [&](const char* name, const V3& v, double scale) {
+    const auto set3 = [&](const char* name, const Vec3& v, double scale) {
       glUniform3f(program.uniform(name), float(v.x * scale), float(v.y * scale), float(v.z * scale));
     };
     set3("uEye", camera->eye(), 1);
@@ -228,7 +228,7 @@ struct Renderer::Impl {
   void setSphereUniforms(const ShaderProgram& program, const DrawList& list, const SphereImpostor& view) const {
     setCommonUniforms(program, nullptr, list.antialias);
     const SphereCamera& camera = view.camera;
-    const auto set3 = [&](const char* name, const V3& v, double scale) {
+    const auto set3 = [&](const char* name, const Vec3& v, double scale) {
       glUniform3f(program.uniform(name), float(v.x * scale), float(v.y * scale), float(v.z * scale));
     };
     set3("uEye", {0, 0, camera.distance()}, 1);
@@ -334,7 +334,7 @@ struct Renderer::Impl {
   // for one use (a whole-frame fill and a panel's copy more per turning frame, same pixels).
   void drawSphereCached(const DrawList& list, const SphereImpostor& view, const PixelRect& rect) {
     if (!list.sphereIsStatic) return drawSphere(list, view);
-    const V3 eye = view.camera.eye();
+    const Vec3 eye = view.camera.eye();
     const bool atRest = eye == lastEye;
     lastEye = eye;
     if (!sphereLayer || eye != cachedEye || cachedSpace != list.viewSpace ||
