@@ -1,7 +1,8 @@
 // The linkage panel: the chain in its plane, drawn as lit 2D shapes (silver rods as cylinders, joints
 // as balls), the two pins as charcoal bolts on a floor line, and fading trails of chosen hinges.
-// The physics shows: a hinge's ball grows with its mass (a massless hinge has none), a rod thickens with its mass,
-// a stopped chain is grey and crossed out, a push or drag start is an arrow at each pushed hinge in the first frames.
+// The physics shows: a hinge's ball grows with its mass (a massless hinge is a dark rivet), a rod thickens with its
+// mass, a stopped chain is grey and crossed out, a push or drag start is an arrow at each pushed hinge in the first
+// frames.
 // The view is fixed per scene (plane_view.hpp), so the picture never jumps as the chain moves.
 
 #include <algorithm>
@@ -90,7 +91,12 @@ void drawChain(const RunFrame& run, const PlaneView& view, double base, float ro
     batch.capsule(joints[k], joints[k + 1], rodWidth(k), rodColor, jointsApart, 0.6f);
   for (std::size_t k = 1; jointsApart && k + 1 < joints.size(); ++k) {
     const float ball = massesKnown ? hingeBallScale(run, k - 1) : 1.0f;
-    if (ball == 0) continue;  // a massless hinge: a bare joint
+    if (ball == 0) {  // a massless hinge: a rivet where its rods meet, so thick rods still read as a chain of rods
+      const float width = std::max(rodWidth(k - 1), rodWidth(k));
+      const float rivet = std::min(width, std::max(0.5f * width, 1.2f * markUnit(unit)));  // legible when small
+      batch.disc(joints[k], rivet, run.stopped ? palette::stoppedGrey : palette::pinCharcoal, true, 0.3f);
+      continue;
+    }
     batch.disc(joints[k], 1.75f * ball * rod, run.stopped ? palette::stoppedGrey : palette::jointSilver, true, 0.5f);
     batch.disc(joints[k], 0.85f * ball * rod, runColor, true, 0.4f);
   }

@@ -552,6 +552,25 @@ TEST_F(PixelProbe, TheDarkThemeLightensTheInkNotTheSphere) {
   }
 }
 
+// A massless hinge between thick (massive) rods is a dark rivet where the rods meet: without it the chain read as
+// one bent pipe of silver (masses-curvature.json).
+TEST_F(PixelProbe, AMasslessHingeIsARivetBetweenThickRods) {
+  FrameState massive = frame;
+  RunFrame& run = massive.runs[0];
+  run.hingeMasses.assign(run.hinges.size(), 0.0);
+  run.rodMasses.assign(run.hinges.size() + 1, 3.0);
+  const ImageSize size{1280, 720};  // rods wide enough that a hinge's centre pixel is all rivet (or all rod)
+  const Image picture = Renderer(settings, size).render(massive);
+  const FrameComposer composer(settings, size);
+  const auto view =
+      fitFrameView(massive, panelRect(settings, PanelKind::Linkage, size), captionHeight(composer.font()));
+  for (std::size_t h = 0; h < run.hinges.size(); ++h) {
+    const P2 at = view(run.hinges[h]);
+    const Rgb8 c = pixel(picture, int(std::lround(at.x)), int(std::lround(at.y)));
+    EXPECT_LT(std::max({c.r, c.g, c.b}), 90) << "hinge " << h + 1 << ": " << c.r << " " << c.g << " " << c.b;
+  }
+}
+
 TEST_F(PixelProbe, NoAntialiasingStillDrawsTheSameScene) {
   ViewSettings aliased = settings;
   aliased.antialias = false;
