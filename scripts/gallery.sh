@@ -27,7 +27,7 @@ holonomy	5.9	Three motions end where the next begins, a triangle on the sphere: 
 jacobi	8	The Jacobi field's zeros are conjugate points: each is marked on the path and written with its time in the plot.
 masses-curvature	10	All the mass on the rods: the rods are drawn thick, the massless hinges without balls, over the reshaped curvature.
 masses	10	One push, three mass placements, three different paths; ball and rod sizes in the linkage panel show where the mass sits.
-massive-rods	10	Rods with mass (thick rods) under the default start; the energy plot says in one line that energy is conserved as the integrator's tolerance allows.
+massive-rods	10	Rods with mass (thick rods) against the default chain from the same drag-release start: the paths part on the sphere and the divergence plot says how far the two metrics carry the chains apart.
 periodic	12	The three simple closed geodesics of the four-rod chain at L = 3, drawn whole as faint curves, each run repeating one, with its length and whether it is stable (elliptic) or not (hyperbolic).
 pole-passage	10	Through a pole of the chart: the published method stops (grey, crossed out), chart switching and chart-free carry on.
 rope	1	A 200-rod rope whipped by a push near one end: the arrow marks the push in the first frames, the rope fills its panel.
