@@ -131,8 +131,9 @@ ColorRGB runColor(const Scene& scene, size_t run) {
   // and on the map's white (3.3:1). Every default colour reads on the dark page (frame_builder_test.cpp).
   static const ColorRGB offCurvatureDark[] = {
       {0.00f, 0.62f, 0.45f}, {0.60f, 0.45f, 0.90f}, {0.90f, 0.62f, 0.00f}, {0.80f, 0.47f, 0.65f}};
-  static const ColorRGB offBending[] = {{0.84f, 0.37f, 0.00f}, {0.80f, 0.47f, 0.65f}, {0.96f, 0.96f, 0.96f},
-                                        {0.55f, 0.10f, 0.10f}};
+  // The third is charcoal on the light page (white vanished there, and on the white cut locus), white on the dark.
+  static const ColorRGB offBending[] = {
+      {0.84f, 0.37f, 0.00f}, {0.80f, 0.47f, 0.65f}, {0.10f, 0.10f, 0.12f}, {0.55f, 0.10f, 0.10f}};
   static const ColorRGB offBendingDark[] = {{0.84f, 0.37f, 0.00f},
                                             {0.80f, 0.47f, 0.65f},
                                             {0.96f, 0.96f, 0.96f},

@@ -109,9 +109,10 @@ double contrastRatio(const ColorRGB& a, const ColorRGB& b) {
   return (std::max(la, lb) + 0.05) / (std::min(la, lb) + 0.05);
 }
 
-// On the dark page every run's default colour, over every sphere colouring, stands at least 3:1 off the page (the
-// charcoal run of a curvature-coloured scene was invisible in its panels); the light page keeps its colours.
-TEST(FrameBuilder, DefaultRunColoursReadOnTheDarkPage) {
+// Every run's default colour, over every sphere colouring, stands off its page: at least 3:1 on the dark page (the
+// charcoal run of a curvature-coloured scene was invisible in its panels there), 2:1 on the light one (Okabe-Ito's
+// orange and sky blue are 2:1; the white third run of a bending or distance scene was 1:1, its label unreadable).
+TEST(FrameBuilder, DefaultRunColoursReadOnTheirPage) {
   Scene scene;
   scene.runs.resize(8);
   for (const auto& [coloring, name] : kSphereColorings) {
@@ -119,6 +120,8 @@ TEST(FrameBuilder, DefaultRunColoursReadOnTheDarkPage) {
     for (std::size_t run = 0; run < scene.runs.size(); ++run) {
       scene.view.theme = Theme::Dark;
       EXPECT_GE(contrastRatio(runColor(scene, run), themeBackground(Theme::Dark)), 3.0) << name << " run " << run;
+      scene.view.theme = Theme::Light;
+      EXPECT_GE(contrastRatio(runColor(scene, run), themeBackground(Theme::Light)), 2.0) << name << " run " << run;
     }
   }
   scene.view.sphereSurface.colorBy = SphereColoring::Curvature;
