@@ -73,6 +73,7 @@ readme() {
 readme masses 300 640x360
 readme fan 40 960x540
 readme jacobi 240 960x540
+still holonomy 2.5 960x540 docs/images/holonomy-t2.5.png
 
 # The curvature map of the chart at L = 3 (geometry --maps draws it with gnuplot).
 "$linkage" geometry scenes/curvature.json --maps "$work/maps" --quiet

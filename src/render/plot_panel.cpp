@@ -329,9 +329,12 @@ PlotLayout layoutPlot(const PanelContext& c, const PlotFrame& plot, const std::v
   layout.legendRight = right;
   layout.legendRows = 1;
   layout.legendBaseline = layout.legendBottom = layout.titleBaseline;
+  // A legend of one series named as the plot's title begins (the holonomy's "∫K dA swept") only repeats it: none.
+  const bool legendRepeatsTitle = plot.series.size() == 1 && layout.title.rfind(plot.series.front().label, 0) == 0;
+  const bool legendWanted = !plot.series.empty() && !legendRepeatsTitle;
   layout.legendShown =
-      !plot.series.empty() && !std::isnan(layLegend(c, plot, layout.legendX, right, layout.titleBaseline, line, 1, nullptr));
-  if (!layout.legendShown && !compact && !plot.series.empty()) {
+      legendWanted && !std::isnan(layLegend(c, plot, layout.legendX, right, layout.titleBaseline, line, 1, nullptr));
+  if (!layout.legendShown && !compact && legendWanted) {
     layout.legendX = c.rect.x + pad;
     layout.legendRows = 2;
     layout.legendBaseline = layout.titleBaseline + 1.15f * line;

@@ -85,6 +85,22 @@ TEST(PlotMarks, TheValueAxisIsNamed) {
   EXPECT_FALSE(layoutPlot(context, frame.plots[1]).valueLabelShown) << "a roundoff-only plot has no axis to name";
 }
 
+// A legend of one series named as the plot's title begins (the holonomy plot's) is left out; one naming a run stays.
+TEST(PlotMarks, ALegendThatRepeatsTheTitleIsLeftOut) {
+  FrameState frame = syntheticFrame(7.0, 210);
+  const ViewSettings view = onePlot(1);
+  const FrameComposer composer(view, {1280, 720});
+  const PanelContext context{frame, view, composer.font(), composer.rects()[0], 1};
+  PlotFrame& plot = frame.plots[1];
+  plot.series.resize(1);
+  const PlotLayout named = layoutPlot(context, plot, {"relative energy error"});
+  EXPECT_TRUE(named.legendShown) << "one run's series keeps its name";
+  plot.series[0].label = "relative energy";
+  const PlotLayout repeated = layoutPlot(context, plot, {"relative energy error"});
+  EXPECT_FALSE(repeated.legendShown);
+  EXPECT_LE(repeated.areaY0, named.areaY0);
+}
+
 // A plot whose every value is roundoff says so in one line, and draws no axis, tick, line or now line.
 TEST(PlotMarks, ARoundoffOnlyPlotSaysSoInOneLineWithoutAnAxis) {
   FrameState frame = syntheticFrame(7.0, 210);
